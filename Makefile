@@ -1,0 +1,41 @@
+# Every target runs exactly what CI runs. The virtual environment is made here,
+# so a fresh machine needs nothing but python3.
+PY      ?= python3
+VENV    := .venv
+BIN     := $(VENV)/bin
+STAMP   := $(VENV)/.installed
+SAMPLE  ?= samples/six_link_press.toml
+OUT     ?= out
+
+.PHONY: run test bench lint fonts clean
+
+$(STAMP): pyproject.toml
+	$(PY) -m venv $(VENV)
+	$(BIN)/pip install -q --upgrade pip
+	$(BIN)/pip install -q -e '.[test]'
+	touch $(STAMP)
+
+# The drafting font (ISO 3098 / GOST 2.304 look). Optional: the sheets fall
+# back to a font with Cyrillic when it cannot be installed.
+fonts:
+	@fc-list 2>/dev/null | grep -qi osifont || \
+	  { command -v apt-get >/dev/null && [ "$$(id -u)" = 0 ] && \
+	    (apt-get install -y -q fonts-osifont >/dev/null 2>&1 || \
+	     (apt-get update -q >/dev/null 2>&1 && apt-get install -y -q fonts-osifont >/dev/null 2>&1)) ; } || \
+	  echo "fonts-osifont not installed: sheets use the fallback font"
+
+run: $(STAMP) fonts
+	$(BIN)/mmt-plans analyze $(SAMPLE) --json $(OUT)/results.json
+	@if $(BIN)/mmt-plans --help | grep -q ' draw'; then $(BIN)/mmt-plans draw $(SAMPLE) -o $(OUT); fi
+
+test: $(STAMP)
+	$(BIN)/python -m pytest
+
+bench: $(STAMP)
+	$(BIN)/python -m mmt_plans bench
+
+lint: $(STAMP)
+	$(BIN)/python -m compileall -q mmt_plans
+
+clean:
+	rm -rf $(VENV) $(OUT) .pytest_cache

@@ -1,0 +1,219 @@
+"""The analysis a sheet needs, computed on demand: extreme positions and
+strokes, the n positions, kinematics at every position, the plans at the
+planned ones, and the results JSON of SPEC_FORMAT.md.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+import numpy as np
+
+from .errors import AssemblyError, MmtError, StructureError
+from .kinematics.chain import Sweep
+from .kinematics.plans import PlanView, plan_view
+from .model import Mechanism, Stroke
+
+SCHEMA = "mmt_plans/results@1"
+EXTREME_TOL_DEG = 1e-9
+GRID = 1440
+
+
+@dataclass(frozen=True)
+class Position:
+    index: int | None  # None for an extra angle of `study.angles`
+    phi1_deg: float
+    stroke: Stroke
+
+
+class Analysis:
+    """Everything `mmt-plans analyze` reports, each part computed when asked."""
+
+    def __init__(self, mech: Mechanism) -> None:
+        self.mech = mech
+
+    @property
+    def structure(self):
+        return self.mech.structure
+
+    @property
+    def chain(self):
+        return self.mech.chain
+
+    # --- extreme positions and strokes ---------------------------------------------
+    def _along(self, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """s, ds/dφ and d²s/dφ² of the output along the working direction."""
+        wd = complex(*self.mech.study.working_direction)
+        out = self.mech.study.output
+        w = self.mech.drive.signed_omega
+        s = (sweep.position_of(out) * np.conj(wd)).real
+        ds = (sweep.velocity_of(out) * np.conj(wd)).real / w
+        d2s = (sweep.acceleration_of(out) * np.conj(wd)).real / (w * w)
+        return s, ds, d2s
+
+    @cached_property
+    def extremes(self) -> tuple[float, float]:
+        """Crank angles (deg) of the output's least and greatest position along
+        the working direction, to machine precision: Newton on ds/dφ = 0 with
+        the exact d²s/dφ² from the acceleration plan, started from a grid."""
+        grid = np.linspace(0.0, 360.0, GRID, endpoint=False)
+        sw = self.chain.sweep(grid)
+        s, _, _ = self._along(sw)
+        ok = sw.ok & np.isfinite(s)
+        if not ok.any():
+            raise sw.problem(0) or StructureError("the mechanism assembles at no crank angle")
+        if np.ptp(s[ok]) < 1e-12:
+            raise StructureError(
+                f"{self.mech.path}: output {self.mech.study.output} does not move along the "
+                "working direction: set study.working_direction or study.zero")
+        idx = np.flatnonzero(ok)
+        return (self._refine(grid[idx[np.argmin(s[ok])]], grid[1] - grid[0]),
+                self._refine(grid[idx[np.argmax(s[ok])]], grid[1] - grid[0]))
+
+    def _refine(self, phi0: float, step: float) -> float:
+        lo, hi = phi0 - step, phi0 + step
+        phi = phi0
+        for _ in range(60):
+            _, ds, d2s = self._along(self.chain.sweep(np.array([phi])))
+            if not (np.isfinite(ds[0]) and np.isfinite(d2s[0])) or d2s[0] == 0:
+                break
+            new = phi - math.degrees(ds[0] / d2s[0])
+            if not lo <= new <= hi:
+                new = 0.5 * (lo + hi) if not lo <= phi <= hi else phi
+                break
+            if abs(new - phi) <= 1e-15 * max(1.0, abs(phi)):
+                phi = new
+                break
+            phi = new
+        return phi % 360.0
+
+    @property
+    def sense_sign(self) -> int:
+        return 1 if self.mech.drive.sense == "ccw" else -1
+
+    @cached_property
+    def working_span_deg(self) -> float:
+        lo, hi = self.extremes
+        return ((hi - lo) * self.sense_sign) % 360.0
+
+    def stroke_of(self, phi1_deg: float) -> Stroke:
+        lo, _ = self.extremes
+        ahead = ((phi1_deg - lo) * self.sense_sign) % 360.0
+        if ahead <= self.working_span_deg + EXTREME_TOL_DEG or ahead >= 360.0 - EXTREME_TOL_DEG:
+            return "working"
+        return "idle"
+
+    # --- positions ------------------------------------------------------------------
+    @cached_property
+    def phi0_deg(self) -> float:
+        zero = self.mech.study.zero
+        return self.extremes[0] if zero is None else zero % 360.0
+
+    @cached_property
+    def positions(self) -> tuple[Position, ...]:
+        n = self.mech.study.positions
+        out = []
+        for i in range(n):
+            phi = (self.phi0_deg + self.sense_sign * 360.0 * i / n) % 360.0
+            out.append(Position(i, phi, self.stroke_of(phi)))
+        for phi in self.mech.study.angles:
+            out.append(Position(None, phi % 360.0, self.stroke_of(phi % 360.0)))
+        return tuple(out)
+
+    @cached_property
+    def plan_positions(self) -> tuple[int, ...]:
+        """`study.plans`, or the positions nearest the middle of the working
+        and of the idle stroke (SPEC_FORMAT's default)."""
+        if self.mech.study.plans is not None:
+            return self.mech.study.plans
+        lo, hi = self.extremes
+        span = self.working_span_deg
+        mids = [lo + self.sense_sign * span / 2, hi + self.sense_sign * (360.0 - span) / 2]
+        picks = []
+        for mid in mids:
+            dist = [abs((p.phi1_deg - mid + 180.0) % 360.0 - 180.0)
+                    for p in self.positions if p.index is not None]
+            picks.append(int(np.argmin(dist)))
+        return tuple(picks)
+
+    @property
+    def force_position(self) -> int:
+        fp = self.mech.study.force_position
+        return self.plan_positions[0] if fp is None else fp
+
+    # --- kinematics -----------------------------------------------------------------
+    @cached_property
+    def sweep(self) -> Sweep:
+        """Kinematics at every position and extra angle, in one vectorised pass."""
+        return self.chain.sweep(np.array([p.phi1_deg for p in self.positions]))
+
+    def problem(self, k: int) -> MmtError | None:
+        """Why entry k of `positions` has no kinematics (None when it has)."""
+        return self.sweep.problem(k)
+
+    def entry(self, index: int) -> int:
+        """Where position `index` sits in `positions`."""
+        return next(k for k, p in enumerate(self.positions) if p.index == index)
+
+    def plan(self, index: int) -> PlanView:
+        """The velocity and acceleration plan at position `index`."""
+        k = self.entry(index)
+        problem = self.problem(k)
+        if problem is not None:
+            raise problem
+        return plan_view(self.sweep, k, index)
+
+    # --- results JSON ---------------------------------------------------------------
+    def to_json(self) -> dict[str, Any]:
+        sw = self.sweep
+        mech = self.mech
+        cms = _cm_names(mech)
+        point_names = [n for n in self.chain.locate if n not in cms]
+        positions, kinematics = [], []
+        for k, pos in enumerate(self.positions):
+            head = {"index": pos.index, "phi1_deg": pos.phi1_deg}
+            problem = self.problem(k)
+            if isinstance(problem, AssemblyError):
+                positions.append({**head, "stroke": pos.stroke, "problem": str(problem)})
+                kinematics.append({**head, "problem": str(problem)})
+                continue
+            positions.append({**head, "stroke": pos.stroke,
+                              "points": {n: _pair(sw.points[n][k]) for n in point_names}})
+            if problem is not None:
+                kinematics.append({**head, "problem": str(problem)})
+                continue
+            kinematics.append({
+                **head,
+                "v": {n: _pair(sw.v[n][k]) for n in point_names},
+                "a": {n: _pair(sw.a[n][k]) for n in point_names},
+                "v_cm": {str(l.id): _pair(sw.v[l.cm_name][k]) for l in mech.links.values()},
+                "a_cm": {str(l.id): _pair(sw.a[l.cm_name][k]) for l in mech.links.values()},
+                "omega": {str(lid): float(sw.omega[lid][k]) for lid in mech.links},
+                "eps": {str(lid): float(sw.eps[lid][k]) for lid in mech.links},
+            })
+        drive = mech.drive
+        return {
+            "schema": SCHEMA,
+            "title": mech.title,
+            "structure": self.structure.as_dict(),
+            "drive": {"link": drive.link, "omega": drive.signed_omega, "sense": drive.sense,
+                      "gear_ratio": None if drive.gear_train is None else drive.gear_train.ratio,
+                      "n1_rpm": drive.n1_rpm},
+            "branches": self.chain.branch_note,
+            "extremes_deg": {"working_start": self.extremes[0], "working_end": self.extremes[1]},
+            "plans": list(self.plan_positions),
+            "positions": positions,
+            "kinematics": kinematics,
+        }
+
+
+def _pair(v) -> list[float]:
+    return [float(v[0]), float(v[1])]
+
+
+def _cm_names(mech: Mechanism) -> set[str]:
+    return {l.cm_name for l in mech.links.values()} - set(mech.point_owners)
+

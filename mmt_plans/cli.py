@@ -1,0 +1,68 @@
+"""`mmt-plans`: click commands. An `MmtError` becomes one clean message and
+exit code 2; anything else is a bug and keeps its traceback."""
+
+from __future__ import annotations
+
+import json
+import sys
+from functools import wraps
+from pathlib import Path
+
+import click
+
+
+from .errors import MmtError
+
+
+def reports_errors(fn):
+    @wraps(fn)
+    def wrapper(*args, **kwargs):
+        try:
+            return fn(*args, **kwargs)
+        except MmtError as err:
+            click.echo(f"error: {err}", err=True)
+            sys.exit(2)
+    return wrapper
+
+
+@click.group()
+@click.version_option(package_name="mmt_plans")
+def main() -> None:
+    """Graph-analytic analysis of planar linkages: plans, forces, A1 sheets."""
+
+
+@main.command()
+@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("--json", "json_out", type=click.Path(dir_okay=False, path_type=Path),
+              help="Write the results JSON here.")
+@click.option("--quiet", is_flag=True, help="Print nothing but errors.")
+@reports_errors
+def analyze(file: Path, json_out: Path | None, quiet: bool) -> None:
+    """Structural, kinematic (and force) analysis of FILE."""
+    from . import load
+    from .report import text_report
+
+    mech = load(file)
+    analysis = mech.analyze()
+    results = analysis.to_json()
+    if not quiet:
+        click.echo(text_report(analysis))
+    if json_out is not None:
+        json_out.parent.mkdir(parents=True, exist_ok=True)
+        json_out.write_text(json.dumps(results, indent=1, allow_nan=False) + "\n", encoding="utf-8")
+        if not quiet:
+            click.echo(f"results written to {json_out}")
+
+
+@main.command()
+@click.option("--samples", "sample_dir", default="samples", show_default=True,
+              type=click.Path(file_okay=False, path_type=Path))
+@click.option("--quick", is_flag=True, help="Fewer repeats (for a smoke run).")
+@reports_errors
+def bench(sample_dir: Path, quick: bool) -> None:
+    """Time the analysis of every sample and the vectorised sweep."""
+    from .bench import run_benchmarks
+
+    run_benchmarks(sample_dir, quick=quick, echo=click.echo)
+
+

@@ -1,0 +1,49 @@
+"""One root exception; each subclass also inherits the builtin it resembles.
+
+The CLI catches `MmtError`, prints `str(err)` and exits with code 2. Anything
+else reaching the CLI is a bug and keeps its traceback.
+"""
+
+from __future__ import annotations
+
+
+class MmtError(Exception):
+    """Root of every error mmt_plans reports to a user."""
+
+
+class SpecError(MmtError, ValueError):
+    """A mechanism file (or answers file) that cannot be accepted as written.
+
+    The message names the file, the entry and the fix.
+    """
+
+    def __init__(self, path: str, entry: str, problem: str, fix: str = "") -> None:
+        self.path, self.entry, self.problem, self.fix = str(path), entry, problem, fix
+        text = f"{self.path}: {entry}: {problem}"
+        if fix:
+            text += f"\n  fix: {fix}"
+        super().__init__(text)
+
+
+class StructureError(MmtError, ValueError):
+    """The links and pairs do not form a mechanism we can decompose or move."""
+
+
+class AssemblyError(MmtError, ArithmeticError):
+    """A group cannot assemble at a crank angle."""
+
+    def __init__(self, phi1_deg: float, group: str, reason: str) -> None:
+        self.phi1_deg, self.group, self.reason = phi1_deg, group, reason
+        super().__init__(f"at phi1 = {phi1_deg:.6g} deg, group {group} cannot assemble: {reason}")
+
+
+class SingularPlanError(MmtError, ArithmeticError):
+    """A velocity or acceleration plan whose two direction lines are parallel."""
+
+    def __init__(self, phi1_deg: float, group: str, reason: str) -> None:
+        self.phi1_deg, self.group, self.reason = phi1_deg, group, reason
+        super().__init__(f"at phi1 = {phi1_deg:.6g} deg, the plan of group {group} is singular: {reason}")
+
+
+class UnsupportedError(MmtError, NotImplementedError):
+    """Something the file describes correctly that mmt_plans does not solve."""

@@ -1,0 +1,388 @@
+"""The five dyads (class II Assur groups): positions in closed form, then the
+velocity and acceleration plans as the textbook draws them.
+
+Each dyad is oriented outer–inner–outer: link L1 joins the known link K1 by the
+first outer pair, L2 joins K2 by the last one. For the plans every kind writes
+two vector equations for one point X (seed 003 §1.3, §1.5):
+
+    V_X = V_1 + d1·x1 = V_2 + d2·x2
+    a_X = a_1 + n_1 + d1·y1 = a_2 + n_2 + d2·y2
+
+where a leg is either a rotation of a link about a known point P
+(d = i·(X - P), x = ω, n = -ω²·(X - P) the normal component, y = ε) or a slide
+relative to a known link K along the guide u (d = u, x = the relative
+velocity, n = 2·ω_K·x·i·u the Coriolis component, y = the relative
+acceleration). The tangential directions of the acceleration plan are those of
+the velocity plan, so one 2×2 determinant serves both.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+import numpy as np
+
+from ..model import Mechanism, Prismatic, Revolute
+from ..structure import AssurGroup
+from .geometry import circle_circle, circle_line, cross, line_line, turn_between
+
+LegKind = Literal["rotation", "slide"]
+
+
+class Motion:
+    """Working state of one link over N crank angles: pose e^{iθ}, origin o,
+    ω, velocity and acceleration of the origin, ε."""
+
+    __slots__ = ("e", "o", "w", "v", "eps", "a")
+
+    def __init__(self, e, o, w=0.0, v=0j, eps=0.0, a=0j) -> None:
+        self.e, self.o, self.w, self.v, self.eps, self.a = e, o, w, v, eps, a
+
+    def at(self, p_local: complex):
+        return self.o + self.e * p_local
+
+    def vel(self, P):
+        return self.v + 1j * self.w * (P - self.o)
+
+    def acc(self, P):
+        return self.a + (1j * self.eps - self.w * self.w) * (P - self.o)
+
+    def move_with(self, P, V_P, a_P, w, eps) -> None:
+        """Give the link ω, ε and the motion of one of its points P."""
+        r = self.o - P
+        self.w, self.eps = w, eps
+        self.v = V_P + 1j * w * r
+        self.a = a_P + (1j * eps - w * w) * r
+
+
+@dataclass
+class Leg:
+    kind: LegKind
+    start: str  # the plan image the leg starts from (a point, or "X∈K")
+    unknown: str  # what the leg's magnitude is: "ω2", "V_EX", …
+    d: np.ndarray  # direction line of the unknown component
+    V0: np.ndarray  # velocity at the leg's start
+    a0: np.ndarray  # acceleration at the leg's start
+    link: int  # the rotating link, or the link slid on
+    P: np.ndarray | None = None  # centre of the rotation
+    x: np.ndarray | None = None
+    n: np.ndarray | None = None  # normal (rotation) or Coriolis (slide) component
+    y: np.ndarray | None = None
+
+
+@dataclass
+class GroupPlan:
+    """One group's velocity and acceleration plan over the N angles."""
+
+    group: AssurGroup
+    X_name: str
+    X: np.ndarray  # the point whose two equations are solved
+    legs: tuple[Leg, Leg]
+    sin_angle: np.ndarray  # sine of the angle between the two direction lines
+    V_X: np.ndarray
+    a_X: np.ndarray
+
+
+def solve_two_lines(d1, b1, d2, b2):
+    """x1, x2 of b1 + d1·x1 = b2 + d2·x2: a 2×2 system by Cramer's rule."""
+    det = cross(d2, d1)
+    rhs = b2 - b1
+    singular = det == 0
+    safe = np.where(singular, 1.0, det)
+    x1 = np.where(singular, np.nan, cross(d2, rhs) / safe)
+    x2 = np.where(singular, np.nan, cross(d1, rhs) / safe)
+    return x1, x2
+
+
+class DyadSolver:
+    """Closed-form position and plans of one dyad of the mechanism."""
+
+    has_branches = False
+
+    def __init__(self, mech: Mechanism, group: AssurGroup) -> None:
+        self.mech = mech
+        self.group = group
+        self.L1, self.L2 = group.links
+        self.outer1, self.inner, self.outer2 = group.pairs
+        self.K1 = _other(self.outer1, self.L1)
+        self.K2 = _other(self.outer2, self.L2)
+        self.kind = group.kind
+
+    # local coordinates as complex numbers
+    def loc(self, link: int, name: str) -> complex:
+        pts = self.mech.frame if link == 0 else self.mech.links[link].points
+        p = pts[name]
+        return complex(p[0], p[1])
+
+    def prism_line(self, pair: Prismatic, m: dict, unknown: int, Q_local: complex, e):
+        """The line (P0, u) on which the point Q of the unknown link lies, its angle e known."""
+        direction = complex(*pair.direction)
+        through = complex(*pair.through)
+        S_local = self.loc(pair.slider, pair.slider_point)
+        u = e * direction
+        if unknown == pair.slider:
+            K = m[pair.guide]
+            P0 = K.at(through) - e * (S_local - Q_local)
+        else:
+            K = m[pair.slider]
+            P0 = K.at(S_local) + e * (Q_local - through)
+        return P0, u
+
+    def positions(self, m: dict, sign: int) -> None:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def legs(self, m: dict) -> tuple[str, np.ndarray, Leg, Leg]:  # pragma: no cover
+        raise NotImplementedError
+
+    def place(self, m: dict, plan: GroupPlan) -> None:  # pragma: no cover
+        raise NotImplementedError
+
+    def failure(self, m: dict, i: int, phi: float) -> str:  # pragma: no cover
+        raise NotImplementedError
+
+    # --- the plans ---------------------------------------------------------------
+    def plan(self, m: dict) -> GroupPlan:
+        X_name, X, leg1, leg2 = self.legs(m)
+        leg1.x, leg2.x = solve_two_lines(leg1.d, leg1.V0, leg2.d, leg2.V0)
+        for leg in (leg1, leg2):
+            if leg.kind == "rotation":
+                r = X - leg.P
+                leg.n = -(leg.x * leg.x) * r
+            else:
+                leg.n = 2.0 * m[leg.link].w * leg.x * 1j * leg.d
+        leg1.y, leg2.y = solve_two_lines(leg1.d, leg1.a0 + leg1.n, leg2.d, leg2.a0 + leg2.n)
+        V_X = leg1.V0 + leg1.d * leg1.x
+        a_X = leg1.a0 + leg1.n + leg1.d * leg1.y
+        norm = np.abs(leg1.d) * np.abs(leg2.d)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            sin_angle = np.abs(cross(leg2.d, leg1.d)) / norm
+        plan = GroupPlan(self.group, X_name, X, (leg1, leg2), sin_angle, V_X, a_X)
+        self.place(m, plan)
+        return plan
+
+    def rotation(self, link: int, P_name: str, P, X, K: "Motion") -> Leg:
+        return Leg("rotation", P_name.lower(), f"ω{link}", 1j * (X - P), K.vel(P), K.acc(P),
+                   link, P=P)
+
+    def slide(self, link: int, on: int, X, u, K: "Motion", start: str) -> Leg:
+        return Leg("slide", start, f"V{link}/{on}", u, K.vel(X), K.acc(X), on)
+
+
+class RRR(DyadSolver):
+    has_branches = True
+
+    def positions(self, m, sign):
+        a, b, c = self.outer1.point, self.inner.point, self.outer2.point
+        A = m[self.K1].at(self.loc(self.K1, a))
+        C = m[self.K2].at(self.loc(self.K2, c))
+        A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
+        C2, B2 = self.loc(self.L2, c), self.loc(self.L2, b)
+        B = circle_circle(A, abs(B1 - A1), C, abs(B2 - C2), sign)
+        e1 = turn_between(A1, B1, A, B)
+        e2 = turn_between(C2, B2, C, B)
+        m[self.L1] = Motion(e1, A - e1 * A1)
+        m[self.L2] = Motion(e2, C - e2 * C2)
+
+    def legs(self, m):
+        a, b, c = self.outer1.point, self.inner.point, self.outer2.point
+        K1, K2 = m[self.K1], m[self.K2]
+        A = K1.at(self.loc(self.K1, a))
+        C = K2.at(self.loc(self.K2, c))
+        B = m[self.L1].at(self.loc(self.L1, b))
+        return b, B, self.rotation(self.L1, a, A, B, K1), self.rotation(self.L2, c, C, B, K2)
+
+    def place(self, m, plan):
+        l1, l2 = plan.legs
+        m[self.L1].move_with(plan.X, plan.V_X, plan.a_X, l1.x, l1.y)
+        m[self.L2].move_with(plan.X, plan.V_X, plan.a_X, l2.x, l2.y)
+
+    def failure(self, m, i, phi):
+        a, b, c = self.outer1.point, self.inner.point, self.outer2.point
+        A = m[self.K1].at(self.loc(self.K1, a))[i]
+        C = m[self.K2].at(self.loc(self.K2, c))[i]
+        l1 = abs(self.loc(self.L1, b) - self.loc(self.L1, a))
+        l2 = abs(self.loc(self.L2, b) - self.loc(self.L2, c))
+        d = abs(C - A)
+        if d > l1 + l2:
+            return (f"links {self.L1} and {self.L2} cannot reach: |{a}{c}| = {d:.6g} m > "
+                    f"l{self.L1} + l{self.L2} = {l1 + l2:.6g} m")
+        return (f"links {self.L1} and {self.L2} cannot close: |{a}{c}| = {d:.6g} m < "
+                f"|l{self.L1} - l{self.L2}| = {abs(l1 - l2):.6g} m")
+
+
+class RRP(DyadSolver):
+    has_branches = True
+
+    def positions(self, m, sign):
+        a, b = self.outer1.point, self.inner.point
+        A = m[self.K1].at(self.loc(self.K1, a))
+        A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
+        B2 = self.loc(self.L2, b)
+        e2 = m[self.K2].e * np.ones_like(A)  # the slider keeps the guide's angle
+        P0, u = self.prism_line(self.outer2, m, self.L2, B2, e2)
+        B = circle_line(A, abs(B1 - A1), P0, u, sign)
+        e1 = turn_between(A1, B1, A, B)
+        m[self.L1] = Motion(e1, A - e1 * A1)
+        m[self.L2] = Motion(e2, B - e2 * B2)
+
+    def legs(self, m):
+        a, b = self.outer1.point, self.inner.point
+        K1, K2 = m[self.K1], m[self.K2]
+        A = K1.at(self.loc(self.K1, a))
+        B = m[self.L1].at(self.loc(self.L1, b))
+        u = m[self.L2].e * complex(*self.outer2.direction)
+        return b, B, self.rotation(self.L1, a, A, B, K1), self.slide(
+            self.L2, self.K2, B, u, K2, f"{b}{self.K2}")
+
+    def place(self, m, plan):
+        l1, _ = plan.legs
+        K2 = m[self.K2]
+        m[self.L1].move_with(plan.X, plan.V_X, plan.a_X, l1.x, l1.y)
+        m[self.L2].move_with(plan.X, plan.V_X, plan.a_X, K2.w, K2.eps)
+
+    def failure(self, m, i, phi):
+        a, b = self.outer1.point, self.inner.point
+        A = m[self.K1].at(self.loc(self.K1, a))[i]
+        l1 = abs(self.loc(self.L1, b) - self.loc(self.L1, a))
+        e2 = m[self.K2].e * np.ones(len(np.atleast_1d(m[self.K1].o)) or 1)
+        P0, u = self.prism_line(self.outer2, m, self.L2, self.loc(self.L2, b), e2)
+        P0, u = np.atleast_1d(P0)[i], np.atleast_1d(u)[i]
+        dist = abs(cross(u, A - P0))
+        return (f"link {self.L1} (l = {l1:.6g} m) cannot reach the guide of link {self.L2}: "
+                f"{b}'s line is {dist:.6g} m from {a}")
+
+
+class RPR(DyadSolver):
+    has_branches = True
+
+    def _parts(self, m):
+        pair: Prismatic = self.inner
+        s, g = pair.slider, pair.guide
+        a, c = self.outer1.point, self.outer2.point
+        pivot = {self.L1: (a, self.K1), self.L2: (c, self.K2)}
+        ps_name, Ks = pivot[s]
+        pg_name, Kg = pivot[g]
+        Ps = m[Ks].at(self.loc(Ks, ps_name))
+        Pg = m[Kg].at(self.loc(Kg, pg_name))
+        ps, pg = self.loc(s, ps_name), self.loc(g, pg_name)
+        d = complex(*pair.direction)
+        offset = cross((self.loc(s, pair.slider_point) - ps) - (complex(*pair.through) - pg), d)
+        return s, g, Ps, Pg, ps, pg, d, offset
+
+    def positions(self, m, sign):
+        s, g, Ps, Pg, ps, pg, d, offset = self._parts(m)
+        w = Ps - Pg
+        # cross(w, e·d) = -offset: |w|·sin(arg(e·d) - arg(w)) = -offset
+        with np.errstate(invalid="ignore", divide="ignore"):
+            psi = np.arcsin(-offset / np.abs(w))
+        if sign < 0:
+            psi = np.pi - psi
+        e = (w / np.abs(w)) * np.conj(d) * np.exp(1j * psi)
+        m[s] = Motion(e, Ps - e * ps)
+        m[g] = Motion(e, Pg - e * pg)
+
+    def legs(self, m):
+        a, c = self.outer1.point, self.outer2.point
+        K1, K2 = m[self.K1], m[self.K2]
+        A = K1.at(self.loc(self.K1, a))
+        C = K2.at(self.loc(self.K2, c))
+        u = m[self.inner.guide].e * complex(*self.inner.direction)
+        # X is the point of L2 that coincides with A (the textbook's A3)
+        slide = Leg("slide", a.lower(), f"V{a}{self.L2}{a}{self.L1}", u, K1.vel(A), K1.acc(A),
+                    self.L1)
+        return f"{a}{self.L2}", A, slide, self.rotation(self.L2, c, C, A, K2)
+
+    def plan(self, m):
+        # the slide's Coriolis term needs ω of L1, which is ω of L2, found by the
+        # velocity plan: give L1 its ω before the acceleration plan is solved
+        X_name, X, leg1, leg2 = self.legs(m)
+        leg1.x, leg2.x = solve_two_lines(leg1.d, leg1.V0, leg2.d, leg2.V0)
+        m[self.L1].w = leg2.x
+        leg2.n = -(leg2.x * leg2.x) * (X - leg2.P)
+        leg1.n = 2.0 * leg2.x * leg1.x * 1j * leg1.d
+        leg1.y, leg2.y = solve_two_lines(leg1.d, leg1.a0 + leg1.n, leg2.d, leg2.a0 + leg2.n)
+        V_X = leg2.V0 + leg2.d * leg2.x
+        a_X = leg2.a0 + leg2.n + leg2.d * leg2.y
+        with np.errstate(invalid="ignore", divide="ignore"):
+            sin_angle = np.abs(cross(leg2.d, leg1.d)) / (np.abs(leg1.d) * np.abs(leg2.d))
+        plan = GroupPlan(self.group, X_name, X, (leg1, leg2), sin_angle, V_X, a_X)
+        self.place(m, plan)
+        return plan
+
+    def place(self, m, plan):
+        slide, rot = plan.legs
+        m[self.L2].move_with(plan.X, plan.V_X, plan.a_X, rot.x, rot.y)
+        m[self.L1].move_with(plan.X, slide.V0, slide.a0, rot.x, rot.y)
+
+    def failure(self, m, i, phi):
+        s, g, Ps, Pg, ps, pg, d, offset = self._parts(m)
+        w = abs(np.atleast_1d(Ps - Pg)[i])
+        return (f"the guide of link {g} passes {abs(offset):.6g} m from link {s}'s point, "
+                f"but the pivots are only {w:.6g} m apart")
+
+
+class PRP(DyadSolver):
+    def positions(self, m, sign):
+        b = self.inner.point
+        B1, B2 = self.loc(self.L1, b), self.loc(self.L2, b)
+        n = np.ones_like(m[self.K1].o * m[self.K2].o)
+        e1, e2 = m[self.K1].e * n, m[self.K2].e * n
+        P1, u1 = self.prism_line(self.outer1, m, self.L1, B1, e1)
+        P2, u2 = self.prism_line(self.outer2, m, self.L2, B2, e2)
+        B = line_line(P1, u1, P2, u2)
+        m[self.L1] = Motion(e1, B - e1 * B1)
+        m[self.L2] = Motion(e2, B - e2 * B2)
+
+    def legs(self, m):
+        b = self.inner.point
+        K1, K2 = m[self.K1], m[self.K2]
+        B = m[self.L1].at(self.loc(self.L1, b))
+        u1 = m[self.L1].e * complex(*self.outer1.direction)
+        u2 = m[self.L2].e * complex(*self.outer2.direction)
+        return b, B, self.slide(self.L1, self.K1, B, u1, K1, f"{b}{self.K1}"), self.slide(
+            self.L2, self.K2, B, u2, K2, f"{b}{self.K2}")
+
+    def place(self, m, plan):
+        for L, K in ((self.L1, self.K1), (self.L2, self.K2)):
+            m[L].move_with(plan.X, plan.V_X, plan.a_X, m[K].w, m[K].eps)
+
+    def failure(self, m, i, phi):
+        return f"the guides of links {self.L1} and {self.L2} are parallel"
+
+
+class RPP(DyadSolver):
+    def positions(self, m, sign):
+        a = self.outer1.point
+        A = m[self.K1].at(self.loc(self.K1, a))
+        e = m[self.K2].e * np.ones_like(A)  # both keep the outer guide's angle
+        m[self.L1] = Motion(e, A - e * self.loc(self.L1, a))
+        P1, u1 = self.prism_line(self.inner, m, self.L2, 0j, e)
+        P2, u2 = self.prism_line(self.outer2, m, self.L2, 0j, e)
+        m[self.L2] = Motion(e, line_line(P1, u1, P2, u2))
+
+    def legs(self, m):
+        a = self.outer1.point
+        K1, K2 = m[self.K1], m[self.K2]
+        A = K1.at(self.loc(self.K1, a))
+        L1 = m[self.L1]
+        L1.move_with(A, K1.vel(A), K1.acc(A), K2.w, K2.eps)
+        u1 = m[self.inner.guide].e * complex(*self.inner.direction)
+        u2 = m[self.L2].e * complex(*self.outer2.direction)
+        return f"{a}{self.L2}", A, self.slide(self.L2, self.L1, A, u1, L1, a.lower()), self.slide(
+            self.L2, self.K2, A, u2, K2, f"{a}{self.K2}")
+
+    def place(self, m, plan):
+        K2 = m[self.K2]
+        m[self.L2].move_with(plan.X, plan.V_X, plan.a_X, K2.w, K2.eps)
+
+    def failure(self, m, i, phi):
+        return f"the guides of link {self.L2} are parallel"
+
+
+SOLVERS: dict[str, type[DyadSolver]] = {"RRR": RRR, "RRP": RRP, "RPR": RPR, "PRP": PRP, "RPP": RPP}
+
+
+def _other(pair: Revolute | Prismatic, link: int) -> int:
+    a, b = pair.links
+    return b if a == link else a

@@ -1,0 +1,60 @@
+"""Vector kernels over many crank angles at once.
+
+A plane vector is a complex number x + iy: turning by θ is a product with
+e^{iθ}, the perpendicular (k × r) is i·r, so a link's velocity field reads
+V_P = V_O + i·ω·(P - O) as the textbook writes it. NaN marks a position where
+a construction does not exist; it never leaves the solver (see `chain.Sweep`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """z-component of a × b."""
+    return a.real * b.imag - a.imag * b.real
+
+
+def dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    return a.real * b.real + a.imag * b.imag
+
+
+def as_complex(p) -> complex:
+    return complex(p[0], p[1])
+
+
+def circle_circle(A: np.ndarray, r1: float, C: np.ndarray, r2: float, sign: int) -> np.ndarray:
+    """The point B with |AB| = r1, |CB| = r2; sign +1 puts B left of A→C."""
+    d = C - A
+    L2 = d.real**2 + d.imag**2
+    L = np.sqrt(L2)
+    along = (r1 * r1 - r2 * r2 + L2) / (2 * L)
+    with np.errstate(invalid="ignore"):
+        h = np.sqrt(r1 * r1 - along * along)
+    return A + (d / L) * (along + 1j * sign * h)
+
+
+def circle_line(A: np.ndarray, r: float, P0: np.ndarray, u: np.ndarray, sign: int) -> np.ndarray:
+    """The point X on the line P0 + t·u (|u| = 1) with |AX| = r; sign +1 takes the larger t."""
+    w = P0 - A
+    b = dot(w, u)
+    foot = w - b * u  # from A to the nearest point of the line
+    with np.errstate(invalid="ignore"):
+        half = np.sqrt(r * r - (foot.real**2 + foot.imag**2))
+    return A + foot + sign * half * u
+
+
+def line_line(P1: np.ndarray, u1: np.ndarray, P2: np.ndarray, u2: np.ndarray) -> np.ndarray:
+    """Intersection of P1 + t·u1 and P2 + s·u2 (NaN where they are parallel)."""
+    det = cross(u1, u2)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.where(det != 0, cross(P2 - P1, u2) / np.where(det != 0, det, 1.0), np.nan)
+    return P1 + t * u1
+
+
+def turn_between(p_local: complex, q_local: complex, P: np.ndarray, Q: np.ndarray) -> np.ndarray:
+    """e^{iθ} of a link whose local points p, q sit at global P, Q."""
+    q = (Q - P) / (q_local - p_local)
+    with np.errstate(invalid="ignore"):
+        return q / np.abs(q)

@@ -1,0 +1,246 @@
+"""The one model of a mechanism: frozen dataclasses, SI units inside.
+
+A mechanism file gives lengths in mm; `spec.py` converts them to metres once,
+so everything below this module computes in SI.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from functools import cached_property
+from typing import TYPE_CHECKING, Any, Literal, Mapping
+
+import numpy as np
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .analysis import Analysis
+    from .kinematics.chain import Sweep
+    from .structure import Structure
+
+Sense = Literal["ccw", "cw"]
+Acts = Literal["working", "always"]
+Stroke = Literal["working", "idle"]
+
+FRAME = 0
+
+
+def frozen_array(values: Any) -> np.ndarray:
+    """A float array that cannot be written to (results are values, not buffers)."""
+    arr = np.array(values, dtype=float)
+    arr.setflags(write=False)
+    return arr
+
+
+@dataclass(frozen=True)
+class Link:
+    """A rigid link: its named points in its own coordinates (m)."""
+
+    id: int
+    points: Mapping[str, np.ndarray]
+    mass: float = 0.0
+    cm: np.ndarray = field(default_factory=lambda: frozen_array([0.0, 0.0]))
+    J: float = 0.0
+    k: float = 1.0 / 12.0
+
+    @property
+    def point_names(self) -> tuple[str, ...]:
+        return tuple(self.points)
+
+    @property
+    def length(self) -> float:
+        """Distance of the first two points: the textbook's l of J = k·m·l²."""
+        names = self.point_names
+        if len(names) < 2:
+            return 0.0
+        return float(np.linalg.norm(self.points[names[1]] - self.points[names[0]]))
+
+    @property
+    def cm_name(self) -> str:
+        return f"S{self.id}"
+
+
+@dataclass(frozen=True)
+class Revolute:
+    """A revolute (class V) pair at a point shared by two links; `links[0]` carries the pin."""
+
+    point: str
+    links: tuple[int, int]
+
+    @property
+    def name(self) -> str:
+        return self.point
+
+    @property
+    def kind(self) -> Literal["R"]:
+        return "R"
+
+
+@dataclass(frozen=True)
+class Prismatic:
+    """A prismatic pair: `slider` moves along a guide line fixed in link `guide`.
+
+    The slider's first point lies on the line; the slider keeps the guide's
+    angle (its own axes stay parallel to those of the guide link).
+    """
+
+    slider: int
+    guide: int
+    through: np.ndarray  # a point of the guide line, guide-link coordinates (m)
+    direction: np.ndarray  # unit vector of the line, guide-link coordinates
+    slider_point: str  # the slider link's first point
+
+    @property
+    def links(self) -> tuple[int, int]:
+        return (self.slider, self.guide)
+
+    @property
+    def name(self) -> str:
+        return f"P{self.slider}/{self.guide}"
+
+    @property
+    def kind(self) -> Literal["P"]:
+        return "P"
+
+
+Pair = Revolute | Prismatic
+
+
+@dataclass(frozen=True)
+class Force:
+    """An external force from `[[force]]` (the production resistance, usually)."""
+
+    name: str
+    link: int
+    at: str
+    magnitude: float
+    acts: Acts = "working"
+    direction: np.ndarray | None = None  # unit vector, global
+
+
+@dataclass(frozen=True)
+class Drive:
+    link: int
+    omega: float  # rad/s, magnitude
+    sense: Sense = "ccw"
+    rpm: float | None = None
+    gear_train: Any = None  # gears.GearTrain when [gears] is given
+
+    @property
+    def signed_omega(self) -> float:
+        return self.omega if self.sense == "ccw" else -self.omega
+
+    @property
+    def n1_rpm(self) -> float:
+        return self.omega * 30.0 / math.pi
+
+
+@dataclass(frozen=True)
+class Study:
+    output: str
+    positions: int = 12
+    working_direction: np.ndarray = field(default_factory=lambda: frozen_array([1.0, 0.0]))
+    zero: float | None = None  # None: the extreme position; else a crank angle (deg)
+    plans: tuple[int, ...] | None = None
+    force_position: int | None = None
+    angles: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """A planar linkage as read from a mechanism file (SI units)."""
+
+    title: str
+    path: str
+    frame: Mapping[str, np.ndarray]
+    links: Mapping[int, Link]
+    sliders: tuple[Prismatic, ...]
+    forces: tuple[Force, ...]
+    drive: Drive
+    study: Study
+    sketch: Mapping[str, np.ndarray] = field(default_factory=dict)
+    higher_pairs: tuple[tuple[int, int], ...] = ()
+    g: float = 9.81
+    sheet: Mapping[str, str] = field(default_factory=dict)
+
+    def with_changes(self, **kw: Any) -> "Mechanism":
+        """A copy with some fields replaced (caches are not carried over)."""
+        return replace(self, **kw)
+
+    # --- derived, computed once -------------------------------------------------
+    @cached_property
+    def revolutes(self) -> tuple[Revolute, ...]:
+        """Every shared point name is a revolute pair; k links make k - 1 pairs.
+
+        The frame, or else the lowest-numbered link, carries the pin (SPEC_FORMAT).
+        """
+        owners: dict[str, list[int]] = {}
+        for name in self.frame:
+            owners.setdefault(name, []).append(FRAME)
+        for link in self.links.values():
+            for name in link.points:
+                owners.setdefault(name, []).append(link.id)
+        pairs = []
+        for name, ids in owners.items():
+            ids = sorted(ids)
+            pairs.extend(Revolute(name, (ids[0], other)) for other in ids[1:])
+        return tuple(pairs)
+
+    @property
+    def pairs(self) -> tuple[Pair, ...]:
+        return self.revolutes + self.sliders
+
+    @cached_property
+    def point_owners(self) -> dict[str, tuple[int, ...]]:
+        owners: dict[str, list[int]] = {}
+        for name in self.frame:
+            owners.setdefault(name, []).append(FRAME)
+        for link in self.links.values():
+            for name in link.points:
+                owners.setdefault(name, []).append(link.id)
+        return {k: tuple(v) for k, v in owners.items()}
+
+    @cached_property
+    def crank_pivot(self) -> str:
+        """The point the driving link shares with the frame."""
+        link = self.links[self.drive.link]
+        return next(p for p in link.points if FRAME in self.point_owners[p])
+
+    @cached_property
+    def crank_pin(self) -> str:
+        """The one point the driving link shares with another moving link (A)."""
+        link = self.links[self.drive.link]
+        return next(
+            p for p in link.points
+            if any(o not in (FRAME, link.id) for o in self.point_owners[p])
+        )
+
+    @property
+    def crank_length(self) -> float:
+        link = self.links[self.drive.link]
+        return float(np.linalg.norm(link.points[self.crank_pin] - link.points[self.crank_pivot]))
+
+    @cached_property
+    def structure(self) -> "Structure":
+        from .structure import analyse_structure
+
+        return analyse_structure(self)
+
+    @cached_property
+    def chain(self):  # -> kinematics.chain.Chain
+        """The kinematic chain: crank, then the Assur groups with their branches."""
+        from .kinematics.chain import Chain
+
+        return Chain.build(self)
+
+    def sweep(self, phi1_deg: Any) -> "Sweep":
+        """Positions, velocities and accelerations of every point, ω and ε of
+        every link, over many crank angles at once (numpy arrays, NaN where a
+        group cannot assemble; see `Sweep.check()`)."""
+        return self.chain.sweep(np.asarray(phi1_deg, dtype=float))
+
+    def analyze(self) -> "Analysis":
+        """The full analysis the CLI prints and writes as JSON."""
+        from .analysis import Analysis
+
+        return Analysis(self)
