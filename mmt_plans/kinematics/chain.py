@@ -46,11 +46,20 @@ class LinkState:
 
 
 def _xy(z: np.ndarray) -> np.ndarray:
-    out = np.empty(z.shape + (2,))
-    out[..., 0] = z.real
-    out[..., 1] = z.imag
+    """The same numbers seen as [x, y] pairs (no copy)."""
+    z = np.ascontiguousarray(z, dtype=complex)
+    out = z.view(np.float64).reshape(z.shape + (2,))
     out.setflags(write=False)
     return out
+
+
+def _full(x, n: int, dtype) -> np.ndarray:
+    """x as a read-only (n,) array, copying only a scalar that must be spread out."""
+    x = np.asarray(x)
+    if x.shape != (n,) or x.dtype != dtype:
+        x = np.full(n, x, dtype=dtype) if x.ndim == 0 else x.astype(dtype)
+    x.setflags(write=False)
+    return x
 
 
 def _ro(a) -> np.ndarray:
@@ -92,16 +101,22 @@ class Sweep:
         return state.acc(state.at(local))
 
     @cached_property
+    def _positions(self) -> dict[str, np.ndarray]:
+        return {name: self.position_of(name) for name in self.chain.locate}
+
+    @cached_property
     def points(self) -> dict[str, np.ndarray]:
-        return {name: _xy(self.position_of(name)) for name in self.chain.locate}
+        return {name: _xy(P) for name, P in self._positions.items()}
 
     @cached_property
     def v(self) -> dict[str, np.ndarray]:
-        return {name: _xy(self.velocity_of(name)) for name in self.chain.locate}
+        return {name: _xy(self.links[self.chain.locate[name][0]].vel(P))
+                for name, P in self._positions.items()}
 
     @cached_property
     def a(self) -> dict[str, np.ndarray]:
-        return {name: _xy(self.acceleration_of(name)) for name in self.chain.locate}
+        return {name: _xy(self.links[self.chain.locate[name][0]].acc(P))
+                for name, P in self._positions.items()}
 
     @property
     def omega(self) -> dict[int, np.ndarray]:
@@ -211,14 +226,10 @@ class Chain:
             plan = solver.plan(m)
             singular[name] = _ro(~failed[name] & ~(plan.sin_angle > SINGULAR_SIN))
             plans.append(plan)
-        states = {}
-        for lid, mo in m.items():
-            states[lid] = LinkState(
-                e=_ro(mo.e), o=_ro(mo.o),
-                omega=_ro(np.broadcast_to(np.asarray(mo.w, dtype=float), (n,)).copy()),
-                v=_ro(np.broadcast_to(mo.v, (n,)).astype(complex)),
-                eps=_ro(np.broadcast_to(np.asarray(mo.eps, dtype=float), (n,)).copy()),
-                a=_ro(np.broadcast_to(mo.a, (n,)).astype(complex)))
+        states = {lid: LinkState(e=_full(mo.e, n, complex), o=_full(mo.o, n, complex),
+                                 omega=_full(mo.w, n, float), v=_full(mo.v, n, complex),
+                                 eps=_full(mo.eps, n, float), a=_full(mo.a, n, complex))
+                  for lid, mo in m.items()}
         return Sweep(self, _ro(phi1_deg.copy()), states, tuple(plans), failed, singular)
 
     def reason(self, solver: DyadSolver, phi1_deg: float) -> str:

@@ -1,0 +1,88 @@
+"""`mmt-plans bench` / `make bench`: per-item times, measured in-process.
+
+Each figure is the best of several repeats (the least disturbed by the rest
+of the machine), reported per position or per crank angle.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import replace
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from . import load
+from .report import table
+
+
+def best_time(fn: Callable[[], object], repeat: int, number: int = 1) -> float:
+    best = float("inf")
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        for _ in range(number):
+            fn()
+        best = min(best, (time.perf_counter() - t0) / number)
+    return best
+
+
+def full_analysis(mech):
+    """Everything `analyze` computes, from a mechanism with no caches."""
+    fresh = replace(mech)
+    return fresh.analyze().to_json()
+
+
+def sweep_everything(mech, phi):
+    sw = mech.sweep(phi)
+    return sw.points, sw.v, sw.a, sw.omega, sw.eps
+
+
+def run_benchmarks(sample_dir: Path, quick: bool = False, echo=print) -> None:
+    repeat = 3 if quick else 7
+    files = sorted(Path(sample_dir).glob("*.toml"))
+    rows = []
+    for path in files:
+        mech = load(path)
+        n = mech.study.positions + len(mech.study.angles)
+        t = best_time(lambda: full_analysis(mech), repeat)
+        rows.append([path.stem, str(n), f"{t * 1e3:.2f}", f"{t / n * 1e6:.0f}"])
+    echo("Full analysis (structure, branches, extremes, positions, plans, JSON), in-process")
+    echo(table(["sample", "positions", "total ms", "per position us"], rows))
+    echo("")
+
+    rows = []
+    for path in files:
+        mech = load(path)
+        mech.chain  # built once, as a script sweeping many times would
+        for count in (360, 36_000):
+            phi = np.linspace(0.0, 360.0, count, endpoint=False)
+            t = best_time(lambda: sweep_everything(mech, phi), repeat)
+            rows.append([path.stem, str(count), f"{t * 1e3:.2f}", f"{t / count * 1e6:.3f}"])
+    echo("Vectorised sweep: positions, velocities, accelerations of every point, omega and eps")
+    echo(table(["sample", "angles", "total ms", "per angle us"], rows))
+    echo("")
+
+    for section in _extra_sections():
+        section(files, repeat, echo)
+
+
+def _extra_sections() -> list[Callable]:
+    """Benchmarks of the later stages (forces, diagrams, sheets), where present."""
+    sections = []
+    try:
+        from .forces.bench import bench_forces
+        sections.append(bench_forces)
+    except ImportError:
+        pass
+    try:
+        from .diagrams_bench import bench_diagrams
+        sections.append(bench_diagrams)
+    except ImportError:
+        pass
+    try:
+        from .sheets.bench import bench_sheets
+        sections.append(bench_sheets)
+    except ImportError:
+        pass
+    return sections

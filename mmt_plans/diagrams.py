@@ -1,0 +1,624 @@
+"""S–V–a diagrams of the output point by graphical differentiation (seed 003, 1.7–1.8).
+
+The module knows nothing of mechanisms: it receives the output's displacement
+``s`` (m, signed along the working direction, ``s[0] = 0`` at position 0) at
+``n`` equal crank steps over one turn, and builds the textbook's construction
+as data a sheet can draw:
+
+1. the S diagram: points ``(i·L/n, s_i/μ_S)`` mm, joined by chords;
+2. from the pole H1, ``OH1`` mm left of the origin of the V diagram, a ray
+   parallel to each chord meets the ordinate axis at ``K_i``, at the height
+   ``OH1·Δs_mm/Δt_mm``; carried horizontally to the middle of the interval it
+   gives the points ``1'', 2'', …``;
+3. a smooth curve through those points (a periodic cubic spline) is the V
+   diagram; read at each position it gives V there;
+4. the same again from the V diagram, with the pole H2, gives the a diagram.
+
+Scales: μ_t = 60/(n1·L), μ_V = μ_S/(μ_t·OH1), μ_a = μ_V/(μ_t·OH2).
+
+Pole distances when not given: OH is a whole number of millimetres in
+30…50 whose scale ``μ_source/(μ_t·OH)`` is nearest, as a ratio, to the
+standard series (1, 1.25, 2, 2.5, 4, 5, 8)·10^k (seed 000: 1, 2, 4, 5, 8, 25,
+125 times a power of ten); of equally near ones the longest pole wins, since
+a longer pole draws a taller diagram that is read more accurately. Because
+the series never skips more than a factor 1.6 < 50/30, some standard value
+always lies within the range, and with whole millimetres the scale lands on
+it or within 0.5 mm's worth of it (at most 30.5/30, 1.7 %).
+
+Values in SI do not depend on L, μ_S, OH1 or OH2: the scales cancel, and V at
+the middle of an interval is exactly the chord's slope Δs/Δt.
+
+`compare_with_plans` is the 5 % check of 1.8, formulas (12) and (13), with
+the reason for every position that fails it. `spectral_derivatives` and
+`central_difference_derivatives` differentiate the same samples far more
+accurately, for a benchmark of time against error.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from mmt_plans.scales import MANTISSAS
+
+__all__ = [
+    "DEFAULT_TIME_AXIS_MM",
+    "POLE_DISTANCE_RANGE_MM",
+    "POSITION_CANDIDATES",
+    "DIFFERENTIATION_METHODS",
+    "GraphicalDerivative",
+    "KinematicDiagrams",
+    "ErrorFlag",
+    "PlanComparison",
+    "time_scale",
+    "derived_scale",
+    "pole_distance",
+    "graphical_differentiation",
+    "compare_with_plans",
+    "spectral_derivatives",
+    "central_difference_derivatives",
+    "textbook_derivatives",
+]
+
+Array = NDArray[np.float64]
+
+DEFAULT_TIME_AXIS_MM = 240.0
+POLE_DISTANCE_RANGE_MM = (30, 50)
+POSITION_CANDIDATES = (12, 24, 36, 48, 72, 120, 360)
+ERROR_LIMIT_PERCENT = 5.0
+
+# A plan value this small next to the largest one is a zero of the curve (an
+# extreme position for V): formula (12)/(13) has nothing to divide by.
+_ZERO_PLAN = 1e-6
+# Below this share of the largest plan value, a relative error is a large
+# number made from a small absolute one: the curve is crossing zero.
+_SMALL_PLAN = 0.25
+
+
+def _frozen(values: ArrayLike) -> Array:
+    arr = np.array(values, dtype=np.float64)
+    arr.setflags(write=False)
+    return arr
+
+
+# --------------------------------------------------------------------------- scales
+
+
+def time_scale(n1: float, L: float) -> float:
+    """μ_t = 60/(n1·L), s/mm: one turn of the crank over L mm (seed 003, 1.7)."""
+    if not (n1 > 0 and L > 0):
+        raise ValueError(f"n1 and L must be positive, got n1={n1!r}, L={L!r}")
+    return 60.0 / (n1 * L)
+
+
+def derived_scale(mu_source: float, mu_t: float, H: float) -> float:
+    """μ_V = μ_S/(μ_t·OH1) or μ_a = μ_V/(μ_t·OH2) (seed 003, 1.7)."""
+    return mu_source / (mu_t * H)
+
+
+def _distance_to_standard(mu: float) -> float:
+    """|ln(μ/μ_std)| to the nearest value of the standard series."""
+    exponent = math.floor(math.log10(mu))
+    best = math.inf
+    for k in (exponent - 1, exponent, exponent + 1):
+        for m in MANTISSAS:
+            best = min(best, abs(math.log(mu / (m * 10.0**k))))
+    return best
+
+
+def pole_distance(mu_source: float, mu_t: float) -> float:
+    """OH (mm): whole millimetres in 30…50 making μ_source/(μ_t·OH) nearest a standard scale.
+
+    Ties (within 1e-9 in the log) go to the longer pole. See the module docstring.
+    """
+    lo, hi = POLE_DISTANCE_RANGE_MM
+    best_H, best_d = float(hi), math.inf
+    for H in range(hi, lo - 1, -1):  # longest first, so a tie keeps the longer pole
+        d = _distance_to_standard(derived_scale(mu_source, mu_t, H))
+        if d < best_d - 1e-9:
+            best_H, best_d = float(H), d
+    return best_H
+
+
+# --------------------------------------------------------------------------- the smooth curve
+
+
+def _periodic_spline_moments(y: Array, h: float) -> Array:
+    """Second derivatives M_j of the periodic cubic spline through y_j at step h.
+
+    M_{j-1} + 4 M_j + M_{j+1} = 6/h² (y_{j-1} − 2 y_j + y_{j+1}) is circulant, so
+    the discrete Fourier transform diagonalises it; 4 + 2 cos θ ≥ 2 never vanishes.
+    """
+    n = y.size
+    theta = 2.0 * np.pi * np.arange(n) / n
+    rhs = np.fft.fft(y) * (6.0 / h**2) * (2.0 * np.cos(theta) - 2.0)
+    return np.fft.ifft(rhs / (4.0 + 2.0 * np.cos(theta))).real
+
+
+def _periodic_spline_eval(x: Array, x0: float, h: float, y: Array, M: Array) -> Array:
+    """The periodic cubic spline with nodes x0 + j·h, ordinates y and moments M, at x."""
+    n = y.size
+    u = np.mod((np.asarray(x, dtype=np.float64) - x0) / h, n)
+    j = np.minimum(np.floor(u).astype(np.int64), n - 1)
+    tau = u - j
+    j1 = (j + 1) % n
+    linear = (1.0 - tau) * y[j] + tau * y[j1]
+    return linear - h**2 / 6.0 * tau * (1.0 - tau) * ((2.0 - tau) * M[j] + (1.0 + tau) * M[j1])
+
+
+# --------------------------------------------------------------------------- the construction
+
+
+@dataclass(frozen=True)
+class GraphicalDerivative:
+    """One graphical differentiation (S → V or V → a), in the new diagram's own axes, mm.
+
+    The new diagram's origin is at (0, 0), time to the right; the pole H sits at
+    (−OH, 0). The differentiated curve is given in its own axes as well.
+    """
+
+    pole_distance: float  # OH, mm
+    pole: Array  # (2,): H = (−OH, 0)
+    source_points: Array  # (n+1, 2): the differentiated diagram at positions 0…n (n closes)
+    chords: Array  # (n, 2, 2): 0–1′, 1′–2′, … as [start, end]
+    rays: Array  # (n, 2, 2): H–K_i, parallel to chord i
+    k_points: Array  # (n, 2): K_i = (0, OH·slope_i)
+    mid_points: Array  # (n, 2): 1″, 2″, …: K_i carried to the middle of interval i
+    curve: Array  # (m, 2): the smooth curve through the mid points, 0 … L
+    ordinates: Array  # (n,): the curve read at positions 0…n−1, mm
+    scale: float  # μ of the new diagram (μ_V or μ_a)
+    values: Array  # (n,): ordinates · scale, SI
+
+    def read(self, x_mm: ArrayLike) -> Array:
+        """The smooth curve's ordinate (mm) at abscissae x_mm (periodic in L)."""
+        x_mid = self.mid_points[:, 0]
+        h = float(x_mid[1] - x_mid[0])
+        y = np.asarray(self.mid_points[:, 1])
+        return _periodic_spline_eval(np.asarray(x_mm, dtype=np.float64), float(x_mid[0]), h, y,
+                                     _periodic_spline_moments(y, h))
+
+
+@dataclass(frozen=True)
+class KinematicDiagrams:
+    """S, V, a of the output over one turn: the construction (mm) and the values (SI)."""
+
+    n1: float  # crank speed, rpm
+    L: float  # time axis, mm
+    mu_t: float  # s/mm
+    mu_S: float  # m/mm
+    mu_V: float  # (m/s)/mm
+    mu_a: float  # (m/s²)/mm
+    H1: float  # pole distance OH1, mm
+    H2: float  # pole distance OH2, mm
+    abscissae: Array  # (n,): positions on the time axis, mm
+    t: Array  # (n,): time of each position, s
+    s_points: Array  # (n+1, 2): the S diagram, mm (point n closes the turn)
+    velocity: GraphicalDerivative  # S → V
+    acceleration: GraphicalDerivative  # V → a
+    s: Array  # (n,) m
+    v: Array  # (n,) m/s
+    a: Array  # (n,) m/s²
+
+    @property
+    def n(self) -> int:
+        return int(self.s.size)
+
+    def values_at(self, t: ArrayLike) -> tuple[Array, Array]:
+        """V and a read off the smooth curves at times t (s)."""
+        x = np.asarray(t, dtype=np.float64) / self.mu_t
+        return (self.velocity.read(x) * self.mu_V, self.acceleration.read(x) * self.mu_a)
+
+
+def _differentiate(
+    points: Array, H: float, scale: float, samples_per_interval: int
+) -> GraphicalDerivative:
+    x, y = points[:, 0], points[:, 1]
+    n = x.size - 1
+    slope = np.diff(y) / np.diff(x)
+    k = np.column_stack([np.zeros(n), H * slope])
+    x_mid = 0.5 * (x[:-1] + x[1:])
+    mid = np.column_stack([x_mid, k[:, 1]])
+    pole = np.array([-H, 0.0])
+
+    h = float(x[1] - x[0])
+    M = _periodic_spline_moments(mid[:, 1], h)
+    L = float(x[-1])
+    xs = np.linspace(0.0, L, n * samples_per_interval + 1)
+    curve = np.column_stack([xs, _periodic_spline_eval(xs, float(x_mid[0]), h, mid[:, 1], M)])
+    ordinates = _periodic_spline_eval(x[:-1], float(x_mid[0]), h, mid[:, 1], M)
+
+    return GraphicalDerivative(
+        pole_distance=float(H),
+        pole=_frozen(pole),
+        source_points=_frozen(points),
+        chords=_frozen(np.stack([points[:-1], points[1:]], axis=1)),
+        rays=_frozen(np.stack([np.broadcast_to(pole, k.shape), k], axis=1)),
+        k_points=_frozen(k),
+        mid_points=_frozen(mid),
+        curve=_frozen(curve),
+        ordinates=_frozen(ordinates),
+        scale=float(scale),
+        values=_frozen(ordinates * scale),
+    )
+
+
+def _check_samples(s: ArrayLike, name: str = "s") -> Array:
+    arr = np.asarray(s, dtype=np.float64)
+    if arr.ndim != 1 or arr.size < 4:
+        raise ValueError(f"{name} must be a 1-d array of at least 4 positions, got {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be finite at every position")
+    return arr
+
+
+def graphical_differentiation(
+    s: ArrayLike,
+    *,
+    n1: float,
+    mu_S: float,
+    L: float = DEFAULT_TIME_AXIS_MM,
+    H1: float | None = None,
+    H2: float | None = None,
+    samples_per_interval: int = 16,
+) -> KinematicDiagrams:
+    """Graphical differentiation of S_E(t) into V_E(t) and a_E(t) (seed 003, 1.7).
+
+    ``s``: displacement (m) at n equal crank steps over one turn, position 0
+    first; n1 in rpm; L and the pole distances in mm; μ_S in m/mm. A pole
+    distance left as None follows the rule of the module docstring.
+    V_E = |i − i*|·μ_V at each position, with μ_t = 60/(n1·L),
+    μ_V = μ_S/(μ_t·OH1), μ_a = μ_V/(μ_t·OH2).
+    """
+    s_arr = _check_samples(s)
+    if not mu_S > 0:
+        raise ValueError(f"mu_S must be positive, got {mu_S!r}")
+    if samples_per_interval < 1:
+        raise ValueError(f"samples_per_interval must be at least 1, got {samples_per_interval!r}")
+    for name, H in (("H1", H1), ("H2", H2)):
+        if H is not None and not H > 0:
+            raise ValueError(f"{name} must be positive, got {H!r}")
+    n = s_arr.size
+    mu_t = time_scale(n1, L)
+    H1 = pole_distance(mu_S, mu_t) if H1 is None else float(H1)
+    mu_V = derived_scale(mu_S, mu_t, H1)
+    H2 = pole_distance(mu_V, mu_t) if H2 is None else float(H2)
+    mu_a = derived_scale(mu_V, mu_t, H2)
+
+    # Position n is position 0 one turn later: the chords close the cycle.
+    x = np.arange(n + 1) * (L / n)
+    s_points = np.column_stack([x, np.append(s_arr, s_arr[0]) / mu_S])
+    velocity = _differentiate(s_points, H1, mu_V, samples_per_interval)
+    # The V diagram is differentiated where it is read: at the positions.
+    v_points = np.column_stack([x, np.append(velocity.ordinates, velocity.ordinates[0])])
+    acceleration = _differentiate(v_points, H2, mu_a, samples_per_interval)
+
+    return KinematicDiagrams(
+        n1=float(n1), L=float(L), mu_t=mu_t, mu_S=float(mu_S), mu_V=mu_V, mu_a=mu_a,
+        H1=H1, H2=H2,
+        abscissae=_frozen(x[:-1]),
+        t=_frozen(x[:-1] * mu_t),
+        s_points=_frozen(s_points),
+        velocity=velocity,
+        acceleration=acceleration,
+        s=_frozen(s_arr),
+        v=velocity.values,
+        a=acceleration.values,
+    )
+
+
+# --------------------------------------------------------------------------- better differentiation
+
+
+def _omega(n1: float) -> float:
+    if not n1 > 0:
+        raise ValueError(f"n1 must be positive, got {n1!r}")
+    return 2.0 * np.pi * n1 / 60.0
+
+
+def spectral_derivatives(s: ArrayLike, *, n1: float) -> tuple[Array, Array]:
+    """V = ds/dt and a = d²s/dt² at the positions by the periodic Fourier derivative.
+
+    s(t) repeats every turn, so its k-th harmonic turns at k·ω1: multiply by
+    i·k·ω1 once for V, twice for a. The Nyquist harmonic of an even n has no
+    sign to give a first derivative, so it is dropped there and kept for a.
+    Exact for displacements with no harmonic above n/2.
+    """
+    s_arr = _check_samples(s)
+    n = s_arr.size
+    w = _omega(n1)
+    k = np.arange(n // 2 + 1, dtype=np.float64)
+    c = np.fft.rfft(s_arr)
+    d1 = 1j * k * w
+    if n % 2 == 0:
+        d1[-1] = 0.0
+    v = np.fft.irfft(c * d1, n)
+    a = np.fft.irfft(c * -((k * w) ** 2), n)
+    return _frozen(v), _frozen(a)
+
+
+def _central_weights(derivative: int, half_width: int) -> Array:
+    """Weights c_j, j = −m…m, with Σ c_j j^p / p! = δ(p, derivative): Taylor's conditions."""
+    j = np.arange(-half_width, half_width + 1, dtype=np.float64)
+    p = np.arange(2 * half_width + 1)
+    A = j[None, :] ** p[:, None] / np.array([math.factorial(int(q)) for q in p])[:, None]
+    rhs = np.zeros(p.size)
+    rhs[derivative] = 1.0
+    return np.linalg.solve(A, rhs)
+
+
+def central_difference_derivatives(
+    s: ArrayLike, *, n1: float, order: int = 8
+) -> tuple[Array, Array]:
+    """V and a at the positions by periodic central differences of the given even order.
+
+    order 2 is the centred chord (V_i ≈ (s_{i+1} − s_{i−1})/2Δt); order 8 uses four
+    neighbours each side, error O(Δt^8).
+    """
+    if order < 2 or order % 2:
+        raise ValueError(f"order must be even and at least 2, got {order!r}")
+    s_arr = _check_samples(s)
+    m = order // 2
+    if 2 * m + 1 > s_arr.size:
+        raise ValueError(f"order {order} needs at least {2 * m + 1} positions, got {s_arr.size}")
+    _omega(n1)
+    dt = 60.0 / (n1 * s_arr.size)
+    v = np.zeros_like(s_arr)
+    a = np.zeros_like(s_arr)
+    for offset, c1, c2 in zip(range(-m, m + 1), _central_weights(1, m), _central_weights(2, m)):
+        shifted = np.roll(s_arr, -offset)  # s_{i+offset}, wrapping over the turn
+        v += c1 * shifted
+        a += c2 * shifted
+    return _frozen(v / dt), _frozen(a / dt**2)
+
+
+def textbook_derivatives(s: ArrayLike, *, n1: float) -> tuple[Array, Array]:
+    """V and a at the positions by the construction of 1.7 (scales cancel, so any will do)."""
+    d = graphical_differentiation(s, n1=n1, mu_S=1.0, H1=40.0, H2=40.0, samples_per_interval=1)
+    return d.v, d.a
+
+
+DIFFERENTIATION_METHODS: Mapping[str, Callable[..., tuple[Array, Array]]] = MappingProxyType({
+    "textbook": textbook_derivatives,
+    "central8": central_difference_derivatives,
+    "spectral": spectral_derivatives,
+})
+
+
+# --------------------------------------------------------------------------- the 5 % check
+
+FlagKind = Literal["sign_change", "small_value", "fast_change", "plan_mismatch", "unexplained"]
+
+
+@dataclass(frozen=True)
+class ErrorFlag:
+    """A position where formula (12) or (13) exceeds the limit, or cannot be evaluated."""
+
+    quantity: Literal["v", "a"]
+    index: int
+    error_percent: float | None  # None: the plan value is zero, (12)/(13) is undefined
+    plan: float
+    diagram: float
+    kind: FlagKind
+    reason: str
+
+    @property
+    def construction_own(self) -> bool:
+        """True when the graphical construction itself, not the plan, makes the error."""
+        return self.kind in ("sign_change", "small_value", "fast_change")
+
+
+@dataclass(frozen=True)
+class PlanComparison:
+    """The check of 1.8: Δ_V, Δ_a at every position (percent), the failures and the cure."""
+
+    v_error_percent: tuple[float | None, ...]
+    a_error_percent: tuple[float | None, ...]
+    flags: tuple[ErrorFlag, ...]
+    limit_percent: float
+    positions: int  # positions of the diagrams compared
+    # Fewest positions that bring every construction-own error with a defined
+    # value under the limit; `positions` itself when nothing needs it.
+    positions_needed: int
+    positions_needed_how: Literal["current", "trial", "estimate"]
+    # (positions, worst error in percent over those positions) for each trial
+    trials: tuple[tuple[int, float], ...]
+
+    @property
+    def passed(self) -> bool:
+        return not self.flags
+
+
+def _relative_error(plan: Array, diagram: Array) -> list[float | None]:
+    """Formula (12)/(13): (plan − diagram)/plan · 100 %, None where the plan is zero."""
+    big = float(np.max(np.abs(plan))) if plan.size else 0.0
+    out: list[float | None] = []
+    for p, d in zip(plan, diagram):
+        if big == 0.0 or abs(p) <= _ZERO_PLAN * big:
+            out.append(None)
+        else:
+            out.append(float((p - d) / p * 100.0))
+    return out
+
+
+def _sign_changes_next_to(plan: Array, i: int) -> bool:
+    n = plan.size
+    # Round-off leaves a zero of the plan (an extreme position) with either sign.
+    sign = np.where(np.abs(plan) <= _ZERO_PLAN * float(np.max(np.abs(plan))), 0.0, np.sign(plan))
+    return bool(sign[i] * sign[(i - 1) % n] <= 0.0 or sign[i] * sign[(i + 1) % n] <= 0.0)
+
+
+def _reference(s: Array | None, s_of_n: Callable[[int], np.ndarray] | None, n: int,
+               n1: float) -> tuple[Array, Array, Array, Array] | None:
+    """Accurate V, a at the n positions and a bound on their own error.
+
+    With s_of_n, the spectral derivative of at least 360 positions (an even
+    multiple of n, so the n positions are among them); otherwise of the n samples, its
+    error bounded by how far the 8th-order differences are from it.
+    """
+    if s_of_n is not None:
+        m = 2 * math.ceil(180 / n)  # even, so half as many samples still hold the n positions
+        fine = _check_samples(s_of_n(n * m), f"s_of_n({n * m})")
+        if fine.size != n * m:
+            raise ValueError(f"s_of_n({n * m}) returned {fine.size} values")
+        v, a = spectral_derivatives(fine, n1=n1)
+        # The spectral error falls faster than any power of Δt: the distance to
+        # the derivative of every other sample bounds the fine one's error.
+        v2, a2 = spectral_derivatives(fine[::2], n1=n1)
+        h = m // 2
+        return v[::m], a[::m], np.abs(v2[::h] - v[::m]), np.abs(a2[::h] - a[::m])
+    if s is None:
+        return None
+    if s.size != n:
+        raise ValueError(f"s has {s.size} positions, the diagrams {n}")
+    v, a = spectral_derivatives(s, n1=n1)
+    if n >= 9:
+        vc, ac = central_difference_derivatives(s, n1=n1, order=8)
+        return v, a, np.abs(vc - v), np.abs(ac - a)
+    return v, a, np.zeros(n), np.zeros(n)
+
+
+def _explain(
+    quantity: Literal["v", "a"], i: int, err: float | None, plan: Array, diagram: Array,
+    ref: Array | None, ref_err: Array | None, limit: float, n: int,
+) -> tuple[FlagKind, str]:
+    p, d = float(plan[i]), float(diagram[i])
+    sym, unit = ("V", "m/s") if quantity == "v" else ("a", "m/s²")
+    if ref is not None and ref_err is not None:
+        miss = abs(p - float(ref[i]))
+        if miss > max(limit / 100.0 * abs(p), 3.0 * float(ref_err[i])) and miss > 1e-9 * float(
+            np.max(np.abs(plan))
+        ):
+            return "plan_mismatch", (
+                f"an accurate derivative of the same displacements gives"
+                f" {sym} = {float(ref[i]):.6g} {unit},"
+                f" not the plan's {p:.6g} {unit}: the plan (or the displacement) is wrong here,"
+                " not the construction"
+            )
+    big = float(np.max(np.abs(plan)))
+    if _sign_changes_next_to(plan, i):
+        where = ("an extreme position of the output, where V changes sign" if quantity == "v"
+                 else "where a changes sign (V at its largest or smallest)")
+        if err is None:
+            return "sign_change", (
+                f"{sym}_plan is zero here ({where}): formula ({12 if quantity == 'v' else 13}) is"
+                f" undefined; the construction reads {d:.6g} {unit}"
+            )
+        return "sign_change", (
+            f"next to {where}: {sym}_plan = {p:.6g} {unit} is small, so the construction's"
+            f" absolute error {abs(p - d):.3g} {unit} is {abs(err):.3g} % of it"
+        )
+    if abs(p) < _SMALL_PLAN * big:
+        return "small_value", (
+            f"{sym}_plan = {p:.6g} {unit} is only {abs(p) / big * 100:.3g} % of the largest value,"
+            f" so the construction's absolute error {abs(p - d):.3g} {unit}"
+            f" is {abs(err or 0):.3g} % of it"
+        )
+    if ref is None:
+        return "unexplained", (
+            f"no displacements were given to tell the construction's error from the plan's:"
+            f" {sym}_plan = {p:.6g}, {sym}_diagram = {d:.6g} {unit}"
+        )
+    k = (i + 1) % n
+    change = abs(float(plan[k]) - float(plan[i - 1])) / 2.0
+    return "fast_change", (
+        f"{sym} changes fast here (about {change:.3g} {unit} per interval of {360.0 / n:.3g}°):"
+        f" the chords of {n} positions cut the curve; more positions shorten them"
+    )
+
+
+def compare_with_plans(
+    v_diagram: ArrayLike,
+    a_diagram: ArrayLike,
+    v_plan: ArrayLike,
+    a_plan: ArrayLike,
+    *,
+    n1: float,
+    s: ArrayLike | None = None,
+    s_of_n: Callable[[int], np.ndarray] | None = None,
+    limit_percent: float = ERROR_LIMIT_PERCENT,
+    candidates: Sequence[int] = POSITION_CANDIDATES,
+) -> PlanComparison:
+    """Δ_V = (V_plan − V_diagrams)/V_plan·100 % (12) and Δ_a likewise (13), seed 003 1.8.
+
+    All arrays are signed along the working direction, one value per position.
+    ``s`` (the displacements the diagrams were drawn from) or ``s_of_n`` (the
+    displacements at any number of equal steps from the same position 0) lets
+    each failure be told apart: the construction's own error (a sign change, a
+    fast change) or a plan that disagrees with the motion. With ``s_of_n`` the
+    cure is found by redrawing with each candidate number of positions;
+    without it, by the construction's Δt² law: n·sqrt(worst/limit).
+    """
+    vd, ad = np.asarray(v_diagram, float), np.asarray(a_diagram, float)
+    vp, ap = np.asarray(v_plan, float), np.asarray(a_plan, float)
+    n = vd.size
+    for name, arr in (("a_diagram", ad), ("v_plan", vp), ("a_plan", ap)):
+        if arr.shape != (n,):
+            raise ValueError(f"{name} has shape {arr.shape}, v_diagram {vd.shape}")
+    for arr in (vd, ad, vp, ap):
+        if not np.all(np.isfinite(arr)):
+            raise ValueError("diagram and plan values must be finite")
+    s_arr = None if s is None else _check_samples(s)
+
+    ev, ea = _relative_error(vp, vd), _relative_error(ap, ad)
+    ref = _reference(s_arr, s_of_n, n, n1)
+
+    flags: list[ErrorFlag] = []
+    for quantity, errs, plan, diagram, r, re in (
+        ("v", ev, vp, vd, None if ref is None else ref[0], None if ref is None else ref[2]),
+        ("a", ea, ap, ad, None if ref is None else ref[1], None if ref is None else ref[3]),
+    ):
+        for i, err in enumerate(errs):
+            if err is not None and abs(err) <= limit_percent:
+                continue
+            kind, reason = _explain(quantity, i, err, plan, diagram, r, re, limit_percent, n)
+            flags.append(
+                ErrorFlag(quantity, i, err, float(plan[i]), float(diagram[i]), kind, reason)
+            )
+
+    # Only errors the construction makes, and that (12)/(13) can measure, can be cured by positions.
+    curable = [f for f in flags if f.construction_own and f.error_percent is not None]
+    trials: list[tuple[int, float]] = []
+    needed: int | None = n
+    how: Literal["current", "trial", "estimate"] = "current"
+    if curable:
+        worst = max(abs(f.error_percent or 0.0) for f in curable)
+        needed, how = None, "estimate"
+        last_n, last_worst = n, worst
+        if s_of_n is not None:
+            t = np.arange(n) * (60.0 / (n1 * n))
+            for c in sorted(int(c) for c in candidates if int(c) > n):
+                d = graphical_differentiation(s_of_n(c), n1=n1, mu_S=1.0, H1=40.0, H2=40.0,
+                                              samples_per_interval=1)
+                v_c, a_c = d.values_at(t)
+                worst_c = 0.0
+                for f in curable:
+                    plan, value = (vp, v_c) if f.quantity == "v" else (ap, a_c)
+                    p = plan[f.index]
+                    worst_c = max(worst_c, abs((p - value[f.index]) / p) * 100.0)
+                trials.append((c, float(worst_c)))
+                last_n, last_worst = c, worst_c
+                if worst_c <= limit_percent:
+                    needed, how = c, "trial"
+                    break
+        if needed is None:
+            estimate = math.ceil(last_n * math.sqrt(last_worst / limit_percent))
+            larger = [int(c) for c in candidates if int(c) >= estimate and int(c) > last_n]
+            needed = min(larger) if larger else estimate
+
+    assert needed is not None
+    return PlanComparison(
+        v_error_percent=tuple(ev),
+        a_error_percent=tuple(ea),
+        flags=tuple(flags),
+        limit_percent=float(limit_percent),
+        positions=n,
+        positions_needed=needed,
+        positions_needed_how=how,
+        trials=tuple(trials),
+    )
