@@ -166,6 +166,73 @@ class Analysis:
             raise problem
         return plan_view(self.sweep, k, index)
 
+    # --- S–V–a diagrams of the output (seed 003 §1.7–1.8) ------------------------------
+    @cached_property
+    def mu_l(self) -> float:
+        """Scale of the mechanism drawing: the standard value that draws the
+        span of every point's trajectory in 150–300 mm (μ_l = l_OA / OA, (2))."""
+        from .scales import DrawnLength, scale_for
+
+        grid = self.chain.sweep(np.linspace(0.0, 360.0, 72, endpoint=False))
+        pts = np.concatenate([grid.position_of(n)[grid.ok] for n in self.mech.point_owners])
+        span = max(np.ptp(pts.real), np.ptp(pts.imag), self.mech.crank_length)
+        return scale_for(span, DrawnLength("mechanism", 150.0, 300.0, 220.0))
+
+    def output_along(self, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """s, V, a of the output along the working direction (SI, signed)."""
+        wd = np.conj(complex(*self.mech.study.working_direction))
+        out = self.mech.study.output
+        return ((sweep.position_of(out) * wd).real, (sweep.velocity_of(out) * wd).real,
+                (sweep.acceleration_of(out) * wd).real)
+
+    def _s_at(self, n: int) -> np.ndarray:
+        phi = self.phi0_deg + self.sense_sign * 360.0 * np.arange(n) / n
+        s, _, _ = self.output_along(self.chain.sweep(phi))
+        return s - s[0]
+
+    @cached_property
+    def diagrams(self):
+        """The graphical differentiation and its 5 % check against the plans."""
+        from .diagrams import compare_with_plans, graphical_differentiation
+
+        n = self.mech.study.positions
+        k = [self.entry(i) for i in range(n)]
+        if not self.sweep.ok[k].all():
+            bad = next(i for i in range(n) if not self.sweep.ok[k[i]])
+            raise self.problem(k[bad]) or MmtError("diagrams need every position")
+        s, v, a = (x[k] for x in self.output_along(self.sweep))
+        s = s - s[0]
+        n1 = self.mech.drive.n1_rpm
+        construction = graphical_differentiation(s, n1=n1, mu_S=self.mu_l)
+        check = compare_with_plans(construction.v, construction.a, v, a, n1=n1, s=s,
+                                   s_of_n=self._s_at)
+        return construction, check, v, a
+
+    def diagrams_json(self) -> dict[str, Any]:
+        try:
+            construction, check, v, a = self.diagrams
+        except MmtError as err:
+            return {"output": self.mech.study.output, "problem": str(err)}
+        n = self.mech.study.positions
+        return {
+            "output": self.mech.study.output,
+            "phi1_deg": [self.positions[i].phi1_deg for i in range(n)],
+            "s": [float(x) for x in construction.s],
+            "v_diagram": [float(x) for x in construction.v],
+            "a_diagram": [float(x) for x in construction.a],
+            "v_plan": [float(x) for x in v],
+            "a_plan": [float(x) for x in a],
+            "error_percent": {"v": list(check.v_error_percent), "a": list(check.a_error_percent)},
+            "scales": {"mu_S": construction.mu_S, "mu_t": construction.mu_t,
+                       "mu_V": construction.mu_V, "mu_a": construction.mu_a,
+                       "H1_mm": construction.H1, "H2_mm": construction.H2, "L_mm": construction.L},
+            "limit_percent": check.limit_percent,
+            "passed": check.passed,
+            "flags": [{"quantity": f.quantity, "index": f.index, "error_percent": f.error_percent,
+                       "kind": f.kind, "reason": f.reason} for f in check.flags],
+            "positions_needed": check.positions_needed,
+        }
+
     # --- results JSON ---------------------------------------------------------------
     def to_json(self) -> dict[str, Any]:
         sw = self.sweep
@@ -207,6 +274,7 @@ class Analysis:
             "plans": list(self.plan_positions),
             "positions": positions,
             "kinematics": kinematics,
+            "diagrams": self.diagrams_json(),
         }
 
 

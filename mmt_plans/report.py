@@ -65,7 +65,37 @@ def text_report(analysis: Analysis) -> str:
                 for lid in mech.links]
         out.append(_indent(table(["link", "omega rad/s", "eps rad/s2"], rows)))
         out.append("")
+    out += diagrams_report(analysis)
     return "\n".join(out)
+
+
+def diagrams_report(analysis: Analysis) -> list[str]:
+    d = analysis.diagrams_json()
+    out = [f"Kinematic diagrams of {d['output']} (graphical differentiation) against the plans"]
+    if "problem" in d:
+        return out + [f"  ! {d['problem']}", ""]
+    sc = d["scales"]
+    out.append(f"  mu_S = {sc['mu_S']:.6g} m/mm, mu_t = {sc['mu_t']:.6g} s/mm, H1 = {sc['H1_mm']:g} mm, "
+               f"mu_V = {sc['mu_V']:.6g} (m/s)/mm, H2 = {sc['H2_mm']:g} mm, "
+               f"mu_a = {sc['mu_a']:.6g} (m/s2)/mm")
+    plans = set(analysis.plan_positions)
+    rows = []
+    for i in range(len(d["s"])):
+        ev, ea = d["error_percent"]["v"][i], d["error_percent"]["a"][i]
+        rows.append([f"{i}{'*' if i in plans else ''}", num(d["s"][i] * 1e3), num(d["v_plan"][i]),
+                     num(d["v_diagram"][i]), "-" if ev is None else f"{ev:.2f}",
+                     num(d["a_plan"][i]), num(d["a_diagram"][i]), "-" if ea is None else f"{ea:.2f}"])
+    out.append(_indent(table(["pos", "s mm", "V plan", "V diagram", "dV %", "a plan",
+                              "a diagram", "da %"], rows)))
+    out.append(f"  (* planned positions) 5 % check: {'passed' if d['passed'] else 'NOT passed'}")
+    for f in d["flags"]:
+        err = "undefined" if f["error_percent"] is None else f"{f['error_percent']:.2f} %"
+        out.append(f"  ! position {f['index']}, {f['quantity']}: {err}: {f['reason']}")
+    if not d["passed"]:
+        out.append(f"  {d['positions_needed']} positions would bring the construction's own "
+                   "errors under 5 %")
+    out.append("")
+    return out
 
 
 def _indent(text: str) -> str:
