@@ -90,6 +90,40 @@ class Analysis:
             phi = new
         return phi % 360.0
 
+    @cached_property
+    def assembly_ranges(self) -> tuple[tuple[float, float], ...]:
+        """Crank-angle intervals (deg, counter-clockwise from start to end) where
+        every group assembles; ((0, 360),) for a mechanism that turns fully.
+        The ends are found to 1e-9° by bisection between grid angles."""
+        grid = np.linspace(0.0, 360.0, GRID, endpoint=False)
+        ok = self.chain.sweep(grid).ok
+        if ok.all():
+            return ((0.0, 360.0),)
+        if not ok.any():
+            return ()
+        step = grid[1] - grid[0]
+        starts = [i for i in range(GRID) if ok[i] and not ok[i - 1]]
+        ranges = []
+        for i in starts:
+            j = i
+            while ok[(j + 1) % GRID]:
+                j += 1
+            lo = self._edge(grid[i] - step, grid[i])
+            hi = self._edge(grid[j % GRID] + step, grid[j % GRID])
+            ranges.append((lo % 360.0, hi % 360.0))
+        return tuple(ranges)
+
+    def _edge(self, bad: float, good: float) -> float:
+        for _ in range(60):
+            mid = 0.5 * (bad + good)
+            if abs(good - bad) < 1e-10:
+                break
+            if self.chain.sweep(np.array([mid])).ok[0]:
+                good = mid
+            else:
+                bad = mid
+        return good
+
     @property
     def sense_sign(self) -> int:
         return 1 if self.mech.drive.sense == "ccw" else -1

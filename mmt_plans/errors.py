@@ -34,7 +34,7 @@ class AssemblyError(MmtError, ArithmeticError):
 
     def __init__(self, phi1_deg: float, group: str, reason: str) -> None:
         self.phi1_deg, self.group, self.reason = phi1_deg, group, reason
-        super().__init__(f"at phi1 = {phi1_deg:.6g} deg, group {group} cannot assemble: {reason}")
+        super().__init__(f"at phi1 = {phi1_deg:.10g} deg, group {group} cannot assemble: {reason}")
 
 
 class SingularPlanError(MmtError, ArithmeticError):
@@ -42,7 +42,7 @@ class SingularPlanError(MmtError, ArithmeticError):
 
     def __init__(self, phi1_deg: float, group: str, reason: str) -> None:
         self.phi1_deg, self.group, self.reason = phi1_deg, group, reason
-        super().__init__(f"at phi1 = {phi1_deg:.6g} deg, the plan of group {group} is singular: {reason}")
+        super().__init__(f"at phi1 = {phi1_deg:.10g} deg, the plan of group {group} is singular: {reason}")
 
 
 class UnsupportedError(MmtError, NotImplementedError):

@@ -37,6 +37,10 @@ def text_report(analysis: Analysis) -> str:
                f"({d.n1_rpm:.6g} rpm, {d.sense})"
                + (f", gear ratio u = {d.gear_train.ratio:.6g}" if d.gear_train else ""))
     out.append(f"Assembly: {mech.chain.branch_note or 'one configuration'}")
+    ranges = analysis.assembly_ranges
+    if ranges != ((0.0, 360.0),):
+        spans = ", ".join(f"{a:.9g} -> {b:.9g} deg" for a, b in ranges) or "no crank angle"
+        out.append(f"The mechanism assembles only for phi1 in: {spans} (counter-clockwise)")
     lo, hi = analysis.extremes
     out.append(f"Working stroke: phi1 = {lo:.9g} deg -> {hi:.9g} deg "
                f"({analysis.working_span_deg:.6g} deg of crank turn); "

@@ -10,6 +10,9 @@ from __future__ import annotations
 
 import numpy as np
 
+# relative size of rounding noise accepted as "exactly at the limit position"
+ROUNDING = 8 * np.finfo(float).eps
+
 
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """z-component of a × b."""
@@ -30,8 +33,12 @@ def circle_circle(A: np.ndarray, r1: float, C: np.ndarray, r2: float, sign: int)
     L2 = d.real**2 + d.imag**2
     L = np.sqrt(L2)
     along = (r1 * r1 - r2 * r2 + L2) / (2 * L)
+    h2 = r1 * r1 - along * along
+    # at a toggle (|AC| = r1 + r2 exactly) rounding may leave h² a few ulps below zero:
+    # that is the limit position itself, not a failure to assemble
+    h2 = np.where((h2 < 0) & (h2 > -ROUNDING * (r1 * r1 + L2)), 0.0, h2)
     with np.errstate(invalid="ignore"):
-        h = np.sqrt(r1 * r1 - along * along)
+        h = np.sqrt(h2)
     return A + (d / L) * (along + 1j * sign * h)
 
 
@@ -40,8 +47,10 @@ def circle_line(A: np.ndarray, r: float, P0: np.ndarray, u: np.ndarray, sign: in
     w = P0 - A
     b = dot(w, u)
     foot = w - b * u  # from A to the nearest point of the line
+    half2 = r * r - (foot.real**2 + foot.imag**2)
+    half2 = np.where((half2 < 0) & (half2 > -ROUNDING * (r * r + dot(w, w))), 0.0, half2)
     with np.errstate(invalid="ignore"):
-        half = np.sqrt(r * r - (foot.real**2 + foot.imag**2))
+        half = np.sqrt(half2)
     return A + foot + sign * half * u
 
 
