@@ -238,6 +238,10 @@ class ScaleLabel:
     value: str  # "0.01"
     unit: str  # "(m/s)/mm"
 
+    def markup(self) -> str:
+        """For Backend.rich_text: "μ_{V} = 0.01 (m/s)/mm" sets V as a subscript."""
+        return f"{self.symbol}_{{{self.index}}} = {self.value} {self.unit}"
+
     def __str__(self) -> str:
         # A lowercase index written on the line reads badly ("μl" looks like
         # "μ1"), so the plain-text form marks it as a subscript with "_".

@@ -1,0 +1,169 @@
+"""A backend that records every drawing call, for tests (ezdxf `debug_backend.py`)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Sequence
+
+from .backend import Backend, Fill, HAlign, LineType, Point, PointLike, VAlign, as_point
+
+__all__ = ["Call", "RecordingBackend"]
+
+
+@dataclass(frozen=True)
+class Call:
+    """One drawing call: its name, its arguments (points as float tuples) and
+    the ids of the groups it was drawn in, outermost first."""
+
+    name: str
+    args: dict[str, Any]
+    groups: tuple[str, ...] = ()
+
+    def __getitem__(self, key: str) -> Any:
+        return self.args[key]
+
+    def points(self) -> list[Point]:
+        """The defining points of the call (for bounds and containment checks)."""
+        a = self.args
+        if self.name == "line" or self.name == "arrow":
+            return [a["start"], a["end"]]
+        if self.name in ("polyline", "polygon"):
+            return list(a["points"])
+        if self.name in ("circle", "arc"):
+            (cx, cy), r = a["center"], a["radius"]
+            return [(cx - r, cy - r), (cx + r, cy + r)]
+        if self.name == "text":
+            return [a["pos"]]
+        return []
+
+
+class RecordingBackend(Backend):
+    """Keeps `calls` in order; `begin_group`/`end_group` are recorded too."""
+
+    def __init__(self, width: float = 841.0, height: float = 594.0, look=None) -> None:
+        super().__init__(width, height, look)
+        self.calls: list[Call] = []
+
+    def _record(self, name: str, **args: Any) -> None:
+        self.calls.append(Call(name, args, tuple(self._open_groups)))
+
+    # --- queries -------------------------------------------------------------
+
+    def named(self, *names: str) -> list[Call]:
+        return [c for c in self.calls if c.name in names]
+
+    def in_group(self, group_id: str) -> list[Call]:
+        """Calls drawn inside the group `group_id` (at any depth)."""
+        return [c for c in self.calls if group_id in c.groups and not c.name.endswith("group")]
+
+    def texts(self) -> list[str]:
+        return [c["content"] for c in self.named("text")]
+
+    def text_box(self, call: Call) -> tuple[float, float, float, float]:
+        """Estimated (xmin, ymin, xmax, ymax) of an unrotated text call's capitals."""
+        if call.name != "text":
+            raise ValueError("text_box needs a text call")
+        if call["rotation"] % 360.0 != 0.0:
+            raise ValueError("text_box handles unrotated text only")
+        x, y = call["pos"]
+        size = call["size"]
+        w = self.look.lettering.width(call["content"], size, call["max_width"])
+        x0 = {"left": x, "center": x - w / 2, "right": x - w}[call["anchor"]]
+        y0 = {"baseline": y, "middle": y - size / 2, "top": y - size}[call["valign"]]
+        return (x0, y0, x0 + w, y0 + size)
+
+    # --- the interface -------------------------------------------------------
+
+    def line(self, start: PointLike, end: PointLike, line: LineType = "main") -> None:
+        self._check_line(line)
+        self._record("line", start=as_point(start), end=as_point(end), line=line)
+
+    def polyline(self, points: Sequence[PointLike], line: LineType = "main") -> None:
+        self._check_line(line)
+        self._record("polyline", points=tuple(as_point(p) for p in points), line=line)
+
+    def polygon(
+        self, points: Sequence[PointLike], line: LineType | None = "main", fill: Fill = "none"
+    ) -> None:
+        self._check_line(line, allow_none=True)
+        self._check_fill(fill)
+        self._record("polygon", points=tuple(as_point(p) for p in points), line=line, fill=fill)
+
+    def circle(
+        self, center: PointLike, radius: float, line: LineType | None = "main", fill: Fill = "none"
+    ) -> None:
+        self._check_line(line, allow_none=True)
+        self._check_fill(fill)
+        self._record("circle", center=as_point(center), radius=float(radius), line=line, fill=fill)
+
+    def arc(
+        self,
+        center: PointLike,
+        radius: float,
+        start_deg: float,
+        end_deg: float,
+        line: LineType = "main",
+    ) -> None:
+        self._check_line(line)
+        self._record(
+            "arc",
+            center=as_point(center),
+            radius=float(radius),
+            start_deg=float(start_deg),
+            end_deg=float(end_deg),
+            line=line,
+        )
+
+    def arrow(
+        self,
+        start: PointLike,
+        end: PointLike,
+        line: LineType = "main",
+        *,
+        head_length: float | None = None,
+        head_width: float | None = None,
+    ) -> None:
+        self._check_line(line)
+        hl = self.look.arrow_length if head_length is None else float(head_length)
+        hw = self.look.arrow_width if head_width is None else float(head_width)
+        s, e = as_point(start), as_point(end)
+        self._record(
+            "arrow",
+            start=s,
+            end=e,
+            line=line,
+            head_length=hl,
+            head_width=hw,
+            length=math.dist(s, e),
+        )
+
+    def text(
+        self,
+        pos: PointLike,
+        content: str,
+        size: float = 3.5,
+        *,
+        anchor: HAlign = "left",
+        valign: VAlign = "baseline",
+        rotation: float = 0.0,
+        max_width: float | None = None,
+    ) -> None:
+        self._check_text(size, anchor, valign, max_width)
+        self._record(
+            "text",
+            pos=as_point(pos),
+            content=str(content),
+            size=float(size),
+            anchor=anchor,
+            valign=valign,
+            rotation=float(rotation),
+            max_width=None if max_width is None else float(max_width),
+        )
+
+    def _begin_group(self, id: str, cls: str | None) -> None:
+        # Recorded with the groups as they were before this one opened.
+        self.calls.append(Call("begin_group", {"id": id, "cls": cls}, tuple(self._open_groups[:-1])))
+
+    def _end_group(self) -> None:
+        self._record("end_group")

@@ -1,0 +1,41 @@
+"""Composing the A1 sheets from solved data: page, frame, title block, tables, layout."""
+
+from __future__ import annotations
+
+from .layout import Element, LayoutError, SheetLayout, as_footprint, find_overlaps
+from .page import (
+    FIELDS,
+    GOST_MARGINS,
+    PAGE_SIZES,
+    Cell,
+    Margins,
+    Page,
+    Rect,
+    TitleBlock,
+    draw_frame,
+    draw_page,
+    draw_title_block,
+    title_block_texts,
+)
+from .table import Table
+
+__all__ = [
+    "FIELDS",
+    "GOST_MARGINS",
+    "PAGE_SIZES",
+    "Cell",
+    "Element",
+    "LayoutError",
+    "Margins",
+    "Page",
+    "Rect",
+    "SheetLayout",
+    "Table",
+    "TitleBlock",
+    "as_footprint",
+    "draw_frame",
+    "draw_page",
+    "draw_title_block",
+    "find_overlaps",
+    "title_block_texts",
+]

@@ -1,0 +1,212 @@
+"""Placing drawings on a sheet and checking that nothing overlaps.
+
+Every element on a sheet (a kinematic scheme, a plan, a table, a label, the
+main inscription) registers its footprint: a shapely polygon in page mm.
+`SheetLayout.place` finds room for a rectangle inside the frame and clear of
+what is already there; `find_overlaps` / `SheetLayout.overlaps` report every
+pair of footprints that share area (or come closer than a clearance).
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+from typing import Iterable, Literal, Mapping, Sequence, Union
+
+import shapely
+from shapely.geometry import Polygon, box
+from shapely.geometry.base import BaseGeometry
+
+from ..errors import MmtError
+from ..render.backend import PointLike, as_point
+from .page import Page, Rect
+
+__all__ = [
+    "ElementKind",
+    "Corner",
+    "Element",
+    "LayoutError",
+    "FootprintLike",
+    "as_footprint",
+    "find_overlaps",
+    "SheetLayout",
+]
+
+ElementKind = Literal["drawing", "label", "table", "title_block", "note"]
+Corner = Literal["top-left", "top-right", "bottom-left", "bottom-right"]
+FootprintLike = Union[Rect, BaseGeometry, Sequence[PointLike]]
+
+_EPS = 1e-9
+
+
+class LayoutError(MmtError, ValueError):
+    """A drawing that does not fit in the free space of its sheet."""
+
+
+def as_footprint(shape: FootprintLike) -> BaseGeometry:
+    """A shapely geometry from a Rect, a shapely geometry or a ring of points."""
+    if isinstance(shape, Rect):
+        return box(*shape.bounds)
+    if isinstance(shape, BaseGeometry):
+        return shape
+    points = [as_point(p) for p in shape]
+    if len(points) < 3:
+        raise ValueError("a footprint polygon needs at least three points")
+    return Polygon(points)
+
+
+@dataclass(frozen=True)
+class Element:
+    """Something drawn on the sheet, by name, kind and footprint."""
+
+    name: str
+    kind: ElementKind
+    footprint: BaseGeometry
+
+    @property
+    def bounds(self) -> Rect:
+        return Rect.from_bounds(*self.footprint.bounds)
+
+
+def _clash(a: BaseGeometry, b: BaseGeometry, clearance: float) -> bool:
+    if clearance > 0.0:
+        return a.distance(b) < clearance - _EPS
+    # Interiors meet: touching along an edge or at a corner is allowed.
+    return a.intersects(b) and not a.touches(b)
+
+
+def find_overlaps(
+    elements: Iterable[Element] | Mapping[str, FootprintLike], clearance: float = 0.0
+) -> list[tuple[str, str]]:
+    """Every pair of elements whose footprints overlap, in registration order.
+
+    With clearance > 0, pairs closer than `clearance` mm count as well.
+    """
+    if isinstance(elements, Mapping):
+        items = [(name, as_footprint(shape)) for name, shape in elements.items()]
+    else:
+        items = [(e.name, e.footprint) for e in elements]
+    geoms = [g for _, g in items]
+    tree = shapely.STRtree(geoms)
+    pairs: list[tuple[int, int]] = []
+    for i, g in enumerate(geoms):
+        probe = g.buffer(clearance) if clearance > 0.0 else g
+        for j in sorted(int(k) for k in tree.query(probe)):
+            if j > i and _clash(g, geoms[j], clearance):
+                pairs.append((i, j))
+    return [(items[i][0], items[j][0]) for i, j in sorted(pairs)]
+
+
+class SheetLayout:
+    """The elements of one sheet and the free space left for more.
+
+    The main inscription is registered at the start as "title-block". Free
+    space is the frame's interior less `frame_clearance` on each side; new
+    drawings keep `gap` mm from every element.
+    """
+
+    def __init__(self, page: Page, *, gap: float = 10.0, frame_clearance: float = 5.0) -> None:
+        if gap < 0 or frame_clearance < 0:
+            raise ValueError("gap and frame_clearance must not be negative")
+        self.page = page
+        self.gap = float(gap)
+        self.frame_clearance = float(frame_clearance)
+        self._elements: dict[str, Element] = {}
+        self.register("title-block", page.title_block.rect, "title_block")
+
+    @property
+    def elements(self) -> tuple[Element, ...]:
+        return tuple(self._elements.values())
+
+    def __getitem__(self, name: str) -> Element:
+        return self._elements[name]
+
+    @property
+    def region(self) -> Rect:
+        """Where drawings may go: the frame's interior less the clearance."""
+        return self.page.frame.inset(self.frame_clearance)
+
+    def register(self, name: str, shape: FootprintLike, kind: ElementKind = "drawing") -> Element:
+        """Record an element that was placed by other means (labels, free drawings)."""
+        if name in self._elements:
+            raise ValueError(f"an element named {name!r} is already on the sheet")
+        element = Element(name, kind, as_footprint(shape))
+        self._elements[name] = element
+        return element
+
+    def fits(self, rect: Rect, gap: float | None = None, within: Rect | None = None) -> bool:
+        """True if rect lies in the region (or `within`) and keeps `gap` from every element."""
+        gap = self.gap if gap is None else gap
+        region = within if within is not None else self.region
+        if not region.contains(rect, tol=1e-6):
+            return False
+        candidate = box(*rect.bounds)
+        return not any(_clash(candidate, e.footprint, gap) for e in self._elements.values())
+
+    def place(
+        self,
+        name: str,
+        width: float,
+        height: float,
+        *,
+        kind: ElementKind = "drawing",
+        corner: Corner = "top-left",
+        within: Rect | None = None,
+        gap: float | None = None,
+    ) -> Rect:
+        """Find room for a width × height rectangle, register it, return it.
+
+        Candidate positions line up with the region's edges and with the edges
+        of placed elements (a gap away); the one nearest `corner` wins, rows
+        first: "top-left" fills the top of the sheet from the left, then goes
+        down.
+        """
+        if not (width > 0 and height > 0):
+            raise ValueError(f"{name}: a drawing needs a positive size, got {width} x {height}")
+        gap = self.gap if gap is None else float(gap)
+        region = within if within is not None else self.region
+        xs = {region.left, region.right - width}
+        ys = {region.bottom, region.top - height}
+        for e in self._elements.values():
+            b = e.bounds
+            xs.update((b.right + gap, b.left - gap - width))
+            ys.update((b.top + gap, b.bottom - gap - height))
+        xs = {x for x in xs if region.left - _EPS <= x <= region.right - width + _EPS}
+        ys = {y for y in ys if region.bottom - _EPS <= y <= region.top - height + _EPS}
+
+        top_first = corner.startswith("top")
+        left_first = corner.endswith("left")
+
+        def preference(xy: tuple[float, float]) -> tuple[float, float]:
+            x, y = xy
+            return (-y if top_first else y, x if left_first else -x)
+
+        for x, y in sorted(itertools.product(xs, ys), key=preference):
+            rect = Rect(x, y, width, height)
+            if self.fits(rect, gap, region):
+                self.register(name, rect, kind)
+                return rect
+        raise LayoutError(
+            f"{name}: no room for {width:.0f} x {height:.0f} mm on the sheet "
+            f"(free region {region.width:.0f} x {region.height:.0f} mm, "
+            f"{len(self._elements)} elements placed)"
+        )
+
+    def overlaps(self, clearance: float = 0.0) -> list[tuple[str, str]]:
+        """Pairs of registered elements whose footprints overlap."""
+        return find_overlaps(self._elements.values(), clearance)
+
+    def outside(self) -> list[str]:
+        """Elements that leave the frame's interior (the main inscription excepted)."""
+        frame = box(*self.page.frame.bounds)
+        return [
+            e.name
+            for e in self._elements.values()
+            if e.kind != "title_block" and not frame.buffer(_EPS).contains(e.footprint)
+        ]
+
+    def problems(self, clearance: float = 0.0) -> list[str]:
+        """Human-readable list of overlaps and elements outside the frame."""
+        out = [f"{a} overlaps {b}" for a, b in self.overlaps(clearance)]
+        out += [f"{name} leaves the frame" for name in self.outside()]
+        return out

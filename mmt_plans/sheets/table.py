@@ -1,0 +1,185 @@
+"""A table drawn on a sheet: velocities, accelerations, reactions.
+
+Placed by its top-left corner (tables grow downwards); `draw` returns the
+bounding box so the layout can register the table's footprint. Lines as on
+the main inscription: the outline, the column lines and the line under the
+header main, the lines between rows thin. Rows at least 8 mm (GOST 2.105).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Sequence
+
+from ..render.backend import Backend, HAlign, PointLike, as_point
+from ..render.look import Lettering, load_look
+from .page import Rect
+
+__all__ = ["Table"]
+
+_PAD = 1.0  # clearance between lettering and cell lines, mm
+_TITLE_GAP = 3.0  # between the title's baseline and the table's top line, mm
+
+
+@dataclass(frozen=True, init=False)
+class Table:
+    """A grid of text cells with one header row.
+
+    `header_height` None fits the (possibly multi-line, "\\n") header texts.
+    `align` gives each column's alignment (default centred).
+    """
+
+    header: tuple[str, ...]
+    rows: tuple[tuple[str, ...], ...]
+    column_widths: tuple[float, ...]
+    text_size: float = 3.5
+    row_height: float = 8.0
+    header_height: float | None = None
+    title: str | None = None
+    title_size: float = 5.0
+    align: tuple[HAlign, ...] | None = None
+    lettering: Lettering | None = None
+
+    def __init__(
+        self,
+        header: Sequence[Any],
+        rows: Sequence[Sequence[Any]],
+        column_widths: Sequence[float],
+        text_size: float = 3.5,
+        row_height: float = 8.0,
+        header_height: float | None = None,
+        title: str | None = None,
+        title_size: float = 5.0,
+        align: Sequence[HAlign] | None = None,
+        lettering: Lettering | None = None,
+    ) -> None:
+        n = len(column_widths)
+        if n == 0:
+            raise ValueError("a table needs at least one column")
+        if len(header) != n:
+            raise ValueError(f"header has {len(header)} cells for {n} columns")
+        for i, row in enumerate(rows):
+            if len(row) != n:
+                raise ValueError(f"row {i + 1} has {len(row)} cells for {n} columns")
+        if any(not w > 0 for w in column_widths):
+            raise ValueError("column widths must be positive")
+        if align is not None and len(align) != n:
+            raise ValueError(f"align has {len(align)} entries for {n} columns")
+        set_ = object.__setattr__
+        set_(self, "header", tuple(str(h) for h in header))
+        set_(self, "rows", tuple(tuple(str(c) for c in row) for row in rows))
+        set_(self, "column_widths", tuple(float(w) for w in column_widths))
+        set_(self, "text_size", float(text_size))
+        set_(self, "row_height", float(row_height))
+        set_(self, "header_height", None if header_height is None else float(header_height))
+        set_(self, "title", title)
+        set_(self, "title_size", float(title_size))
+        set_(self, "align", None if align is None else tuple(align))
+        set_(self, "lettering", lettering)
+
+    # --- geometry -------------------------------------------------------------
+
+    def _lettering(self, backend: Backend | None = None) -> Lettering:
+        if self.lettering is not None:
+            return self.lettering
+        return backend.look.lettering if backend is not None else load_look().lettering
+
+    def _header_h(self, let: Lettering) -> float:
+        if self.header_height is not None:
+            return self.header_height
+        lines = max(len(self._header_lines(i, let)[1]) for i in range(len(self.header)))
+        return max(self.row_height, let.block_height(lines, self.text_size) + 2 * _PAD + 2.0)
+
+    def _header_lines(self, col: int, let: Lettering) -> tuple[float, list[str]]:
+        width = self.column_widths[col] - 2 * _PAD
+        sizes = tuple(s for s in let.sizes if s <= self.text_size) or (self.text_size,)
+        if self.header_height is None:
+            # Shrink only when a single word is wider than the column.
+            size = self.text_size
+            lines = let.wrap(self.header[col], size, width)
+            if all(let.width(line, size) <= width for line in lines):
+                return size, lines
+        box_h = (self.header_height or self.row_height) - 2 * _PAD
+        return let.fit(self.header[col], width, box_h, sizes)
+
+    @property
+    def width(self) -> float:
+        return sum(self.column_widths)
+
+    def height(self, lettering: Lettering | None = None) -> float:
+        """Height of the grid plus the title line above it, mm."""
+        let = lettering or self._lettering()
+        h = self._header_h(let) + self.row_height * len(self.rows)
+        if self.title:
+            h += self.title_size + _TITLE_GAP
+        return h
+
+    def bbox(self, top_left: PointLike, lettering: Lettering | None = None) -> Rect:
+        """Footprint of the table placed with its top-left corner at top_left."""
+        x, top = as_point(top_left)
+        let = lettering or self._lettering()
+        width = self.width
+        if self.title:
+            width = max(width, let.width(self.title, self.title_size))
+        h = self.height(let)
+        return Rect(x, top - h, width, h)
+
+    # --- drawing -------------------------------------------------------------
+
+    def draw(self, backend: Backend, top_left: PointLike, id: str = "table") -> Rect:
+        """Draw the table with the top-left corner of its footprint at top_left."""
+        let = self._lettering(backend)
+        x0, top = as_point(top_left)
+        box = self.bbox((x0, top), let)
+        with backend.group(id, "table"):
+            if self.title:
+                backend.text((x0, top - self.title_size), self.title, self.title_size)
+                top -= self.title_size + _TITLE_GAP
+            header_h = self._header_h(let)
+            bottom = top - header_h - self.row_height * len(self.rows)
+            xs = [x0]
+            for w in self.column_widths:
+                xs.append(xs[-1] + w)
+            # Row lines between body rows thin; header line and outline main.
+            for i in range(1, len(self.rows)):
+                y = top - header_h - i * self.row_height
+                backend.line((xs[0], y), (xs[-1], y), "thin")
+            if self.rows:
+                backend.line((xs[0], top - header_h), (xs[-1], top - header_h), "main")
+            for x in xs[1:-1]:
+                backend.line((x, top), (x, bottom), "main")
+            backend.rectangle((xs[0], bottom), xs[-1] - xs[0], top - bottom, "main")
+
+            for col in range(len(self.header)):
+                size, lines = self._header_lines(col, let)
+                cx = (xs[col] + xs[col + 1]) / 2.0
+                pitch = let.line_pitch * size
+                first = top - header_h / 2.0 + pitch * (len(lines) - 1) / 2.0
+                for k, line in enumerate(lines):
+                    backend.text(
+                        (cx, first - k * pitch),
+                        line,
+                        size,
+                        anchor="center",
+                        valign="middle",
+                        max_width=self.column_widths[col] - 2 * _PAD,
+                    )
+
+            sizes = tuple(s for s in let.sizes if s <= self.text_size) or (self.text_size,)
+            for r, row in enumerate(self.rows):
+                cy = top - header_h - (r + 0.5) * self.row_height
+                for col, content in enumerate(row):
+                    if not content:
+                        continue
+                    width = self.column_widths[col] - 2 * _PAD
+                    size = let.fit_line(content, width, self.row_height - 2 * _PAD, sizes)
+                    anchor: HAlign = self.align[col] if self.align else "center"
+                    x = {
+                        "left": xs[col] + _PAD,
+                        "center": (xs[col] + xs[col + 1]) / 2.0,
+                        "right": xs[col + 1] - _PAD,
+                    }[anchor]
+                    backend.text(
+                        (x, cy), content, size, anchor=anchor, valign="middle", max_width=width
+                    )
+        return box
