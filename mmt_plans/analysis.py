@@ -268,7 +268,7 @@ class Analysis:
         }
 
     # --- results JSON ---------------------------------------------------------------
-    def to_json(self) -> dict[str, Any]:
+    def to_json(self, diagrams: bool = True) -> dict[str, Any]:
         sw = self.sweep
         mech = self.mech
         cms = _cm_names(mech)
@@ -308,7 +308,7 @@ class Analysis:
             "plans": list(self.plan_positions),
             "positions": positions,
             "kinematics": kinematics,
-            "diagrams": self.diagrams_json(),
+            **({"diagrams": self.diagrams_json()} if diagrams else {}),
         }
 
 
