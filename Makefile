@@ -26,7 +26,7 @@ fonts:
 
 run: $(STAMP) fonts
 	$(BIN)/mmt-plans analyze $(SAMPLE) --json $(OUT)/results.json
-	@if $(BIN)/mmt-plans --help | grep -q ' draw'; then $(BIN)/mmt-plans draw $(SAMPLE) -o $(OUT); fi
+	$(BIN)/mmt-plans draw $(SAMPLE) -o $(OUT) --sheet 1
 
 test: $(STAMP)
 	$(BIN)/python -m pytest

@@ -66,3 +66,9 @@ def bench(sample_dir: Path, quick: bool) -> None:
     run_benchmarks(sample_dir, quick=quick, echo=click.echo)
 
 
+
+
+# registered last: the draw command uses reports_errors from this module
+from .sheets.draw_cmd import draw  # noqa: E402
+
+main.add_command(draw)

@@ -1,0 +1,117 @@
+"""The kinematics of the mechanism at the one position a force analysis is made for.
+
+Plane vectors are complex numbers, as in `kinematics/`: the perpendicular
+k × r is i·r, the z-component of a × b is Im(conj(a)·b).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from ..model import FRAME, Mechanism, Prismatic, Stroke, frozen_array
+from .errors import ForceError
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..analysis import Analysis
+    from ..kinematics.chain import Sweep
+
+
+def cross(a: complex, b: complex) -> float:
+    """z-component of a × b (the moment of force b applied at arm a)."""
+    return a.real * b.imag - a.imag * b.real
+
+
+def xy(z: complex) -> np.ndarray:
+    """A complex plane vector as a read-only [x, y] array."""
+    return frozen_array((z.real, z.imag))
+
+
+@dataclass(frozen=True)
+class LinkPose:
+    """Pose and motion of one link at one position: e^{iθ}, origin o, ω, V_o, ε, a_o."""
+
+    e: complex
+    o: complex
+    omega: float
+    v: complex
+    eps: float
+    a: complex
+
+    def at(self, local: complex) -> complex:
+        return self.o + self.e * local
+
+    def vel(self, P: complex) -> complex:
+        return self.v + 1j * self.omega * (P - self.o)
+
+    def acc(self, P: complex) -> complex:
+        return self.a + (1j * self.eps - self.omega * self.omega) * (P - self.o)
+
+
+@dataclass(frozen=True)
+class PositionState:
+    """Where every link is and how it moves at one crank angle."""
+
+    mech: Mechanism
+    index: int | None  # the position's number, None for another angle
+    phi1_deg: float
+    stroke: Stroke
+    links: dict[int, LinkPose]
+
+    def local(self, link: int, name: str) -> complex:
+        pts = self.mech.frame if link == FRAME else self.mech.links[link].points
+        p = pts[name]
+        return complex(p[0], p[1])
+
+    def point(self, link: int, name: str) -> complex:
+        """Global position of point `name` of `link` (m)."""
+        return self.links[link].at(self.local(link, name))
+
+    def centre_of_mass(self, link: int) -> complex:
+        cm = self.mech.links[link].cm
+        return self.links[link].at(complex(cm[0], cm[1]))
+
+    def guide(self, pair: Prismatic) -> tuple[complex, complex]:
+        """The sliding line of a prismatic pair: its unit direction u (global) and
+        the slider's point on it, the reference point of the pair's reaction."""
+        u = self.links[pair.guide].e * complex(pair.direction[0], pair.direction[1])
+        return u, self.point(pair.slider, pair.slider_point)
+
+    @property
+    def omega1(self) -> float:
+        return self.links[self.mech.drive.link].omega
+
+
+def state_at(analysis: "Analysis", entry: int | None = None, *,
+             phi1_deg: float | None = None) -> PositionState:
+    """The state at entry `entry` of `analysis.positions` (its sweep), or at any
+    crank angle `phi1_deg` (solved on the spot). A position whose kinematics
+    failed raises the kinematics' own error."""
+    if (entry is None) == (phi1_deg is None):
+        raise ForceError("give either an entry of the analysis or a crank angle, not both",
+                         "call with entry=k or phi1_deg=angle")
+    if phi1_deg is not None:
+        phi = float(phi1_deg) % 360.0
+        sweep = analysis.chain.sweep(np.array([phi]))
+        k, index, stroke = 0, None, analysis.stroke_of(phi)
+    else:
+        if not 0 <= entry < len(analysis.positions):
+            raise ForceError(f"entry {entry} does not exist",
+                             f"use 0..{len(analysis.positions) - 1}")
+        sweep, k = analysis.sweep, entry
+        pos = analysis.positions[entry]
+        index, stroke = pos.index, pos.stroke
+    return from_sweep(analysis.mech, sweep, k, index, stroke)
+
+
+def from_sweep(mech: Mechanism, sweep: "Sweep", k: int, index: int | None,
+               stroke: Stroke) -> PositionState:
+    problem = sweep.problem(k)
+    if problem is not None:
+        raise problem
+    links = {lid: LinkPose(complex(s.e[k]), complex(s.o[k]), float(s.omega[k]), complex(s.v[k]),
+                           float(s.eps[k]), complex(s.a[k]))
+             for lid, s in sweep.links.items()}
+    return PositionState(mech, index, float(sweep.phi1_deg[k]), stroke, links)

@@ -1,0 +1,39 @@
+"""`mmt-plans draw`: the A1 sheets of a mechanism file as SVG, PDF, PNG."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from ..cli import reports_errors
+
+
+def _formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[str, ...]:
+    from .compose import FORMATS
+
+    items = tuple(v.strip().lower() for v in value.split(",") if v.strip())
+    bad = [v for v in items if v not in FORMATS]
+    if bad or not items:
+        raise click.BadParameter(f"expected a comma-separated subset of {','.join(FORMATS)}")
+    return items
+
+
+@click.command()
+@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("-o", "--out", "out_dir", default="out", show_default=True,
+              type=click.Path(file_okay=False, path_type=Path), help="Directory for the sheets.")
+@click.option("--format", "formats", default="svg,pdf,png", show_default=True, callback=_formats,
+              help="Comma-separated: svg, pdf, png.")
+@click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
+@click.option("--sheet", type=click.Choice(["1", "2", "all"]), default="all", show_default=True)
+@reports_errors
+def draw(file: Path, out_dir: Path, formats: tuple[str, ...], lang: str, sheet: str) -> None:
+    """Draw the A1 sheets of FILE."""
+    from .. import load
+    from .compose import available_sheets, write_sheets
+
+    analysis = load(file).analyze()
+    numbers = sorted(available_sheets()) if sheet == "all" else [int(sheet)]
+    for path in write_sheets(analysis, out_dir, formats, lang, numbers):  # type: ignore[arg-type]
+        click.echo(f"written {path}")

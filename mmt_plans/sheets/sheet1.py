@@ -1,0 +1,708 @@
+"""Sheet 1: structural and kinematic analysis (seed 003, Sheet 1, Appendix A).
+
+Each drawing is first sketched in its own millimetre coordinates into a
+recording, so that its footprint is known before it is placed; the layout
+then finds free room on the sheet and the recording is replayed there.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping, Sequence
+
+import numpy as np
+
+from ..render.backend import Backend
+from ..render.recording import RecordingBackend
+from ..scales import ACCELERATION_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
+from .layout import LayoutError, SheetLayout
+from .page import FIELDS, Language, Page, Rect, draw_page
+from .table import Table
+
+__all__ = ["Sheet1", "Sketch", "compose_sheet1", "GROUPS"]
+
+GROUPS = (
+    "mechanism",
+    "structural-formula",
+    "diagram-s",
+    "diagram-v",
+    "diagram-a",
+    "table-velocities",
+    "table-accelerations",
+    "table-omega-eps",
+    "table-check",
+)
+
+_TEXT = 3.5
+_SMALL = 2.5
+_TITLE = 5.0
+_PAD = 2.0  # clearance added round every sketch's drawn extent, mm
+_DENSE = 181  # positions of the dense sweep for the trajectories
+
+_WORDS: Mapping[str, Mapping[str, str]] = {
+    "en": {
+        "mechanism": "Kinematic diagram of the mechanism",
+        "velocity_plan": "Velocity plan, position {i}",
+        "acceleration_plan": "Acceleration plan, position {i}",
+        "diagram_s": "Displacement diagram S(t)",
+        "diagram_v": "Velocity diagram V(t)",
+        "diagram_a": "Acceleration diagram a(t)",
+        "velocities": "Velocities, m/s",
+        "accelerations": "Accelerations, m/s²",
+        "omega_eps": "Angular velocities and accelerations",
+        "check": "Diagrams vs plans (limit 5 %)",
+        "quantity": "Quantity",
+        "position": "Pos.",
+        "link": "Link",
+        "plan": "plan",
+        "diagram": "diagram",
+        "structure": "Structural formula",
+    },
+    "uk": {
+        "mechanism": "Кінематична схема механізму",
+        "velocity_plan": "План швидкостей, положення {i}",
+        "acceleration_plan": "План прискорень, положення {i}",
+        "diagram_s": "Діаграма переміщень S(t)",
+        "diagram_v": "Діаграма швидкостей V(t)",
+        "diagram_a": "Діаграма прискорень a(t)",
+        "velocities": "Швидкості, м/с",
+        "accelerations": "Прискорення, м/с²",
+        "omega_eps": "Кутові швидкості та прискорення",
+        "check": "Діаграми і плани (допуск 5 %)",
+        "quantity": "Величина",
+        "position": "Пол.",
+        "link": "Ланка",
+        "plan": "план",
+        "diagram": "діагр.",
+        "structure": "Структурна формула",
+    },
+}
+
+
+# --- sketches: drawings in their own coordinates ---------------------------------
+
+
+class Sketch(RecordingBackend):
+    """A drawing recorded in local mm, measured, then replayed at an offset."""
+
+    def __init__(self, look: Any) -> None:
+        super().__init__(841.0, 594.0, look)
+
+    def extent(self) -> Rect:
+        xs: list[float] = []
+        ys: list[float] = []
+        for c in self.calls:
+            if c.name == "text":
+                x0, y0, x1, y1 = self.text_box(c)
+                pts = [(x0, y0), (x1, y1)]
+            else:
+                pts = c.points()
+            for x, y in pts:
+                xs.append(x)
+                ys.append(y)
+        if not xs:
+            return Rect(0.0, 0.0, 1.0, 1.0)
+        return Rect.from_bounds(min(xs) - _PAD, min(ys) - _PAD, max(xs) + _PAD, max(ys) + _PAD)
+
+    def replay(self, backend: Backend, dx: float, dy: float) -> None:
+        def t(p: Sequence[float]) -> tuple[float, float]:
+            return (p[0] + dx, p[1] + dy)
+
+        for c in self.calls:
+            a = c.args
+            if c.name == "begin_group":
+                backend.begin_group(a["id"], a["cls"])
+            elif c.name == "end_group":
+                backend.end_group()
+            elif c.name == "line":
+                backend.line(t(a["start"]), t(a["end"]), a["line"])
+            elif c.name == "polyline":
+                backend.polyline([t(p) for p in a["points"]], a["line"])
+            elif c.name == "polygon":
+                backend.polygon([t(p) for p in a["points"]], a["line"], a["fill"])
+            elif c.name == "circle":
+                backend.circle(t(a["center"]), a["radius"], a["line"], a["fill"])
+            elif c.name == "arc":
+                backend.arc(t(a["center"]), a["radius"], a["start_deg"], a["end_deg"], a["line"])
+            elif c.name == "arrow":
+                backend.arrow(
+                    t(a["start"]), t(a["end"]), a["line"],
+                    head_length=a["head_length"], head_width=a["head_width"],
+                )
+            elif c.name == "text":
+                backend.text(
+                    t(a["pos"]), a["content"], a["size"], anchor=a["anchor"],
+                    valign=a["valign"], rotation=a["rotation"], max_width=a["max_width"],
+                )
+            else:  # pragma: no cover - a new primitive must be added here
+                raise ValueError(f"cannot replay {c.name!r}")
+
+
+@dataclass
+class Sheet1:
+    """What compose_sheet1 drew: the layout, the scales, where each local origin went."""
+
+    layout: SheetLayout
+    scales: dict[str, float] = field(default_factory=dict)
+    origins: dict[str, tuple[float, float]] = field(default_factory=dict)
+    placed: dict[str, Rect] = field(default_factory=dict)
+    shrink: int = 0  # series steps the plan scales were raised by to make room
+
+
+def _image_markup(name: str) -> str:
+    """"S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters."""
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
+    if m:
+        return f"{m.group(1).lower()}_{{{m.group(2)}}}"
+    return name.lower()
+
+
+def _point_markup(name: str) -> str:
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
+    return f"{m.group(1)}_{{{m.group(2)}}}" if m else name
+
+
+def _component_markup(label: str) -> str:
+    """"a^n_BA" → "a^{n}_{BA}", "V_E/0" → "V_{E/0}"."""
+    m = re.fullmatch(r"([A-Za-z])(?:\^(\w))?_(.+)", label)
+    if not m:
+        return label
+    sup = f"^{{{m.group(2)}}}" if m.group(2) else ""
+    return f"{m.group(1)}{sup}_{{{m.group(3)}}}"
+
+
+def _plain(label: str) -> str:
+    """A label for plain lettering (tables): "a^n_BA" → "anBA"."""
+    return label.replace("^", "").replace("_", "")
+
+
+def _fmt(x: float, digits: int = 3) -> str:
+    if x is None or not math.isfinite(x):
+        return "—"
+    text = f"{x:.{digits}g}" if abs(x) >= 1e-12 else "0"
+    if "e" in text:
+        text = f"{x:.4f}"
+    return text
+
+
+def _tidy(mu: float) -> float:
+    """0.7999999999999999 → 0.8: a scale computed as a product, shown as its series value."""
+    return float(f"{float(mu):.9g}")
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    n = float(np.hypot(*v))
+    return v / n if n > 1e-12 else np.array([1.0, 0.0])
+
+
+# --- the mechanism -----------------------------------------------------------------
+
+
+def _hatched_base(sk: Sketch, p: np.ndarray, width: float = 8.0, down: float = 4.0) -> None:
+    """A frame pivot: the pin, two legs and a hatched ground line."""
+    x, y = p
+    sk.circle((x, y), 1.2, "main", "white")
+    sk.line((x, y), (x - width / 3, y - down), "main")
+    sk.line((x, y), (x + width / 3, y - down), "main")
+    gy = y - down
+    sk.line((x - width / 2, gy), (x + width / 2, gy), "main")
+    for k in range(5):
+        hx = x - width / 2 + k * width / 4 + 0.5
+        sk.line((hx, gy), (hx - 2.0, gy - 2.0), "thin")
+
+
+def _guide(sk: Sketch, a: np.ndarray, b: np.ndarray, u: np.ndarray, offset: float) -> None:
+    """A slider's guide: a main line `offset` mm under the slider's path, hatched below."""
+    n = np.array([-u[1], u[0]])
+    a, b = a - offset * n, b - offset * n
+    sk.line(a, b, "main")
+    length = float(np.hypot(*(b - a)))
+    steps = max(2, int(length / 4.0))
+    for k in range(steps + 1):
+        q = a + (b - a) * k / steps
+        sk.line(q, q - 2.0 * (u + n), "thin")
+
+
+def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> Sketch:
+    mech = analysis.mech
+    pts = analysis.sweep.points
+    owners = {p: (0 if 0 in o else o[0], o) for p, o in mech.point_owners.items()}
+    n = len(analysis.positions)
+    main = {0, *(analysis.entry(i) for i in analysis.plan_positions)}
+    sk = Sketch(look)
+
+    def at(name: str, k: int) -> np.ndarray:
+        return np.asarray(pts[name][k], dtype=float) / mu_l
+
+    with sk.group("mechanism", "mechanism"):
+        # Trajectories from a dense sweep: thin polylines.
+        phi0 = float(analysis.positions[0].phi1_deg)
+        dense = mech.sweep(np.linspace(phi0, phi0 + 360.0, _DENSE))
+        ok = np.asarray(getattr(dense, "ok", np.ones(_DENSE, bool)), dtype=bool)
+        frame_links = {lid for lid, link in mech.links.items() if any(owners.get(p, (None,))[0] == 0 for p in link.points)}
+        traced = [p for p, (l0, _) in owners.items() if l0 != 0]
+        for lid, link in mech.links.items():
+            s = f"S{lid}"
+            if s in pts and lid not in frame_links and len(link.points) > 1:
+                traced.append(s)
+        for name in traced:
+            if name not in dense.points:
+                continue
+            arr = np.asarray(dense.points[name], dtype=float)[ok] / mu_l
+            arr = arr[np.all(np.isfinite(arr), axis=1)]
+            if len(arr) > 1 and float(np.ptp(arr, axis=0).max()) > 0.5:
+                sk.polyline([tuple(p) for p in arr], "thin")
+
+        # Links in every position.
+        for k in range(n):
+            kind = "main" if k in main else "thin"
+            for link in mech.links.values():
+                names = [p for p in link.points if p in pts]
+                for i in range(len(names)):
+                    for j in range(i + 1, len(names)):
+                        a, b = at(names[i], k), at(names[j], k)
+                        if np.all(np.isfinite(a)) and np.all(np.isfinite(b)):
+                            sk.line(a, b, kind)
+
+        # Sliders as rectangles along their guides; the guides hatched.
+        for slider in mech.sliders:
+            u = _unit(np.asarray(slider.direction, dtype=float))
+            name = slider.slider_point
+            along = [float(np.dot(at(name, k), u)) for k in range(n)]
+            base = np.asarray(slider.through, dtype=float) / mu_l
+            base = base - np.dot(base, u) * u
+            sk_a = base + (min(along) - 12.0) * u
+            sk_b = base + (max(along) + 12.0) * u
+            _guide(sk, sk_a, sk_b, u, 3.5)
+            nrm = np.array([-u[1], u[0]])
+            for k in sorted(main):
+                c = at(name, k)
+                corners = [c + sx * 6.0 * u + sy * 3.5 * nrm for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+                sk.polygon([tuple(p) for p in corners], "main" if k in main else "thin", "white" if k in main else "none")
+
+        # Joints of the main positions, the frame pivots, letters.
+        for k in sorted(main):
+            for name, (l0, _) in owners.items():
+                if l0 != 0 and name in pts:
+                    sk.circle(at(name, k), 1.0, "main", "white")
+        for name, (l0, _) in owners.items():
+            if l0 == 0:
+                _hatched_base(sk, at(name, 0))
+        centre = at(mech.crank_pivot, 0)
+        for name in owners:
+            if name in pts:
+                p = at(name, 0)
+                d = _unit(p - centre) if name != mech.crank_pivot else np.array([-1.0, 0.0])
+                q = p + 3.5 * _unit(d + np.array([0.3, 0.6]))
+                sk.rich_text(q, _point_markup(name), _TEXT, valign="middle",
+                             anchor="left" if d[0] >= 0 else "right")
+        # Numbered positions of the crank pin.
+        for k in range(n):
+            p = at(mech.crank_pin, k)
+            d = _unit(p - centre)
+            sk.text(tuple(p + 5.0 * d), str(analysis.positions[k].index), _SMALL,
+                    anchor="center", valign="middle")
+
+        ext = sk.extent()
+        label = scale_label(mu_l, "length", lang)
+        sk.rich_text((ext.x + _PAD, ext.bottom - 6.0), label.markup(), _TEXT)
+        sk.text((ext.x + _PAD, ext.top + 3.0), _WORDS[lang]["mechanism"], _TITLE)
+    return sk
+
+
+def sketch_formula(analysis: Any, look: Any, lang: Language) -> Sketch:
+    st = analysis.mech.structure
+    sk = Sketch(look)
+    with sk.group("structural-formula", "structural-formula"):
+        sk.text((0.0, 14.0), _WORDS[lang]["structure"], _TITLE)
+        mobility = f"W = 3n - 2p_{{5}} - p_{{4}} = 3·{st.n} - 2·{st.p5} - {st.p4} = {st.W}"
+        sk.rich_text((0.0, 6.0), mobility, _TEXT)
+        # osifont has no arrow glyph: the arrows between groups are drawn.
+        x = 0.0
+        for i, part in enumerate(str(st.formula).split("<-")):
+            if i:
+                sk.arrow((x + 6.0, 1.2), (x + 1.0, 1.2), "thin", head_length=2.0, head_width=1.2)
+                x += 8.0
+            part = part.strip()
+            x += sk.rich_text((x, 0.0), part, _TEXT)
+    return sk
+
+
+# --- plans -------------------------------------------------------------------------
+
+
+def _moving_points(analysis: Any) -> list[str]:
+    owners = analysis.mech.point_owners
+    names = [p for p, o in owners.items() if 0 not in o]
+    names += [p for p in analysis.sweep.points if p not in owners]
+    return names
+
+
+def sketch_plan(
+    analysis: Any, index: int, mu: float, kind: str, look: Any, lang: Language
+) -> tuple[Sketch, dict[str, np.ndarray]]:
+    """A velocity ("velocity") or acceleration ("acceleration") plan at `index`.
+
+    The pole is at the local origin; returns the sketch and the images in mm.
+    """
+    view = analysis.plan(index)
+    images_si = view.velocity_images if kind == "velocity" else view.acceleration_images
+    images = {n: np.asarray(v, dtype=float) / mu for n, v in images_si.items()}
+    sk = Sketch(look)
+    gid = f"{kind}-plan-{index}"
+    pole = "p" if kind == "velocity" else "π"
+    moving = _moving_points(analysis)
+    with sk.group(gid, "plan"):
+        # Components of the vector equations, dashed.
+        for g in view.groups:
+            comps = g.velocity if kind == "velocity" else g.acceleration
+            for c in comps:
+                s = np.asarray(c.start, dtype=float) / mu
+                e = s + np.asarray(c.vector, dtype=float) / mu
+                if float(np.hypot(*(e - s))) < 0.5:
+                    continue
+                at_pole = float(np.hypot(*s)) < 1e-6
+                if at_pole and any(float(np.hypot(*(e - images[p]))) < 1e-6 for p in moving if p in images):
+                    continue  # coincides with an absolute vector
+                sk.arrow(s, e, "dashed", head_length=3.0, head_width=1.0)
+                if c.kind in ("normal", "coriolis"):
+                    tag = "n" if c.kind == "normal" else "k"
+                    sk.rich_text(e + np.array([1.0, 1.0]), f"{tag}_{{{c.label.split('_', 1)[-1]}}}", _SMALL)
+        # Absolute vectors from the pole, main lines.
+        labels: dict[tuple[int, int], list[str]] = {}
+        for name in moving:
+            if name not in images:
+                continue
+            v = images[name]
+            if float(np.hypot(*v)) >= 0.5 and not name.startswith("S"):
+                sk.arrow((0.0, 0.0), v)
+            elif float(np.hypot(*v)) >= 0.5:
+                sk.circle(v, 0.6, "thin", "black")
+            key = (round(float(v[0]) * 2), round(float(v[1]) * 2))
+            labels.setdefault(key, []).append(name)
+        for key, names in labels.items():
+            v = images[names[0]]
+            if float(np.hypot(*v)) < 0.5:
+                continue
+            d = _unit(v)
+            text = ", ".join(_image_markup(n) for n in names)
+            sk.rich_text(v + 2.5 * d, text, _TEXT, anchor="left" if d[0] >= 0 else "right",
+                         valign="middle")
+        sk.circle((0.0, 0.0), 0.8, "main", "black")
+        sk.text((-2.0, -2.0), pole, _TEXT, anchor="right", valign="top")
+        ext = sk.extent()
+        q = "velocity" if kind == "velocity" else "acceleration"
+        sk.rich_text(((ext.left + ext.right) / 2, ext.bottom - 5.0),
+                     scale_label(mu, q, lang).markup(), _TEXT, anchor="center")
+        title = _WORDS[lang][f"{kind}_plan"].format(i=index)
+        sk.text(((ext.left + ext.right) / 2, ext.top + 3.0), title, _TEXT, anchor="center")
+    return sk, images
+
+
+# --- diagrams ----------------------------------------------------------------------
+
+
+def _axes(sk: Sketch, x0: float, x1: float, y0: float, y1: float, ylabel: str, xlabel: str) -> None:
+    sk.arrow((x0, 0.0), (x1, 0.0), "main", head_length=3.0, head_width=1.2)
+    sk.arrow((0.0, y0), (0.0, y1), "main", head_length=3.0, head_width=1.2)
+    sk.rich_text((2.0, y1 - 3.0), ylabel, _TEXT)
+    sk.text((x1, -5.0), xlabel, _TEXT, anchor="right", valign="top")
+
+
+def sketch_diagram(construction: Any, which: str, look: Any, lang: Language) -> Sketch:
+    c = construction
+    sk = Sketch(look)
+    L = float(c.s_points[-1][0])
+    with sk.group(f"diagram-{which}", "diagram"):
+        if which == "s":
+            pts = np.asarray(c.s_points, dtype=float)
+            curve = pts
+            deriv = c.velocity
+            label = "S, m"
+            scales = [scale_label(_tidy(c.mu_S), "displacement", lang),
+                      scale_label(_tidy(c.mu_t), "time", lang)]
+        elif which == "v":
+            deriv = c.velocity
+            pts = np.asarray(deriv.mid_points, dtype=float)
+            curve = np.asarray(deriv.curve, dtype=float)
+            label = "V, m/s"
+            scales = [scale_label(_tidy(c.mu_V), "velocity", lang)]
+        else:
+            deriv = c.acceleration
+            pts = np.asarray(deriv.mid_points, dtype=float)
+            curve = np.asarray(deriv.curve, dtype=float)
+            label = "a, m/s^{2}"
+            scales = [scale_label(_tidy(c.mu_a), "acceleration", lang)]
+        ymin = min(0.0, float(curve[:, 1].min()))
+        ymax = max(0.0, float(curve[:, 1].max()))
+        x_lo = float(deriv.pole[0]) - 4.0 if which != "s" else -4.0
+        _axes(sk, x_lo, L + 12.0, ymin - 4.0, ymax + 10.0, label, "t, s")
+        # Ordinates at the positions, numbered under the axis.
+        for i, x in enumerate(np.asarray(c.abscissae, dtype=float).tolist() + [L]):
+            sk.text((x, -1.5 if which != "s" else -1.5), str(i % len(c.abscissae)), _SMALL,
+                    anchor="center", valign="top")
+            if which == "s":
+                y = float(c.s_points[i][1])
+                if abs(y) > 0.5:
+                    sk.line((x, 0.0), (x, y), "thin")
+        sk.polyline([tuple(p) for p in curve], "main")
+        if which != "s":
+            # The construction: pole H, rays H–K_i, K_i carried to the mid points.
+            H = np.asarray(deriv.pole, dtype=float)
+            sk.circle(H, 0.8, "main", "black")
+            sk.text((H[0], -1.5), "H", _TEXT, anchor="center", valign="top")
+            for (s, e) in np.asarray(deriv.rays, dtype=float):
+                sk.line(s, e, "thin")
+            for kp, mp in zip(np.asarray(deriv.k_points, dtype=float), pts):
+                sk.line(kp, (mp[0], kp[1]), "thin")
+                sk.circle(mp, 0.6, "thin", "black")
+        # Chords of the graphical differentiation drawn on the source diagram.
+        chords = None
+        if which == "s":
+            chords = c.velocity.chords
+        elif which == "v":
+            chords = c.acceleration.chords
+        if chords is not None:
+            for (s, e) in np.asarray(chords, dtype=float):
+                sk.line(s, e, "dashed")
+        ext = sk.extent()
+        y = ext.bottom - 5.0
+        x = ext.x + _PAD
+        for lab in scales:
+            x += sk.rich_text((x, y), lab.markup(), _TEXT) + 8.0
+        if which != "s":
+            sk.rich_text((x, y), f"H = {float(-deriv.pole[0]):g} mm", _TEXT)
+        sk.text((ext.x + _PAD, ext.top + 3.0), _WORDS[lang][f"diagram_{which}"], _TEXT)
+    return sk
+
+
+def _stack(parts: Sequence[Sketch], look: Any, gap: float = 6.0) -> Sketch:
+    """One sketch of several, top to bottom, their local origins on one vertical line."""
+    out = Sketch(look)
+    y = 0.0
+    for part in parts:
+        ext = part.extent()
+        dy = y - ext.top
+        for c in part.calls:
+            shifted = Sketch(look)
+            shifted.calls = [c]
+            rec = Sketch(look)
+            shifted.replay(rec, 0.0, dy) if c.name not in ("begin_group", "end_group") else None
+            if c.name in ("begin_group", "end_group"):
+                out.calls.append(c)
+            else:
+                out.calls.extend(type(k)(k.name, k.args, c.groups) for k in rec.calls)
+        y = ext.bottom + dy - gap
+    return out
+
+
+# --- tables ------------------------------------------------------------------------
+
+
+def _table_sketch(
+    look: Any, gid: str, title: str, header: Sequence[str], rows: Sequence[Sequence[str]],
+    widths: Sequence[float], first_markup: Sequence[str],
+) -> Sketch:
+    """A Table whose first column is set with indices (rich_text) over empty cells."""
+    sk = Sketch(look)
+    body = [["", *r[1:]] for r in rows]
+    row_h, head_h = 8.0, 12.0
+    table = Table(header, body, widths, text_size=3.5, row_height=row_h, header_height=head_h,
+                  title=title, title_size=_TEXT)
+    table.draw(sk, (0.0, 0.0), gid)
+    # The overlay goes into the table's group: reopen it by replaying into it.
+    top = -(_TEXT + 3.0) - head_h
+    extra = Sketch(look)
+    for r, text in enumerate(first_markup):
+        extra.rich_text((widths[0] / 2, top - (r + 0.5) * row_h), text, _TEXT,
+                        anchor="center", valign="middle")
+    # Splice the overlay calls before the table group's end.
+    end = max(i for i, c in enumerate(sk.calls) if c.name == "end_group")
+    sk.calls[end:end] = [type(c)(c.name, c.args, (gid,)) for c in extra.calls]
+    return sk
+
+
+def _sketch_tables(analysis: Any, look: Any, lang: Language) -> dict[str, Sketch]:
+    w = _WORDS[lang]
+    idx = list(analysis.plan_positions)
+    views = [analysis.plan(i) for i in idx]
+    moving = _moving_points(analysis)
+    out: dict[str, Sketch] = {}
+
+    for kind, gid, title, sym in (
+        ("velocity", "table-velocities", w["velocities"], "V"),
+        ("acceleration", "table-accelerations", w["accelerations"], "a"),
+    ):
+        rows: list[list[str]] = []
+        marks: list[str] = []
+        for name in moving:
+            vals = []
+            for v in views:
+                img = (v.velocity_images if kind == "velocity" else v.acceleration_images).get(name)
+                vals.append(_fmt(float(np.hypot(*img))) if img is not None else "—")
+            rows.append([name, *vals])
+            marks.append(f"{sym}_{{{name}}}")
+        labels: list[str] = []
+        for g in views[0].groups:
+            for c in (g.velocity if kind == "velocity" else g.acceleration):
+                if c.kind in ("slide",) or c.label in labels:
+                    continue
+                labels.append(c.label)
+        for lab in labels:
+            vals = []
+            for v in views:
+                found = [c for g in v.groups for c in (g.velocity if kind == "velocity" else g.acceleration) if c.label == lab]
+                vals.append(_fmt(float(np.hypot(*found[0].vector))) if found else "—")
+            rows.append([lab, *vals])
+            marks.append(_component_markup(lab))
+        header = [w["quantity"], *(f"{w['position']} {i}" for i in idx)]
+        out[gid] = _table_sketch(look, gid, title, header, rows, [22.0] + [20.0] * len(idx), marks)
+
+    rows = []
+    marks = []
+    links = sorted(views[0].omega)
+    for lid in links:
+        vals = []
+        for v in views:
+            vals += [_fmt(float(v.omega.get(lid, float("nan")))), _fmt(float(v.eps.get(lid, float("nan"))))]
+        rows.append([str(lid), *vals])
+        marks.append(str(lid))
+    header = [w["link"]]
+    for i in idx:
+        header += [f"ω, 1/s ({i})", f"ε, 1/s² ({i})"]
+    out["table-omega-eps"] = _table_sketch(
+        look, "table-omega-eps", w["omega_eps"], header, rows, [14.0] + [20.0] * (2 * len(idx)), marks
+    )
+
+    _, check, v_plan, a_plan = analysis.diagrams
+    construction = analysis.diagrams[0]
+    rows = []
+    marks = []
+    for i in idx:
+        k = analysis.entry(i)
+        ev, ea = check.v_error_percent[k], check.a_error_percent[k]
+        rows.append([
+            str(i),
+            _fmt(float(v_plan[k])), _fmt(float(construction.v[k]) if hasattr(construction, "v") else float("nan")),
+            "—" if ev is None else f"{ev:.1f}",
+            _fmt(float(a_plan[k])), _fmt(float(construction.a[k]) if hasattr(construction, "a") else float("nan")),
+            "—" if ea is None else f"{ea:.1f}",
+        ])
+        marks.append(str(i))
+    header = [w["position"], f"V {w['plan']}", f"V {w['diagram']}", "δV, %",
+              f"a {w['plan']}", f"a {w['diagram']}", "δa, %"]
+    out["table-check"] = _table_sketch(
+        look, "table-check", w["check"], header, rows, [12.0] + [18.0] * 6, marks
+    )
+    return out
+
+
+# --- composing ---------------------------------------------------------------------
+
+
+def _next_scale(mu: float, steps: int) -> float:
+    """The series value `steps` places above mu (mu itself for 0)."""
+    if steps <= 0:
+        return mu
+    values = list(series(mu * (1 + 1e-6), mu * 1e4))
+    return values[steps - 1]
+
+
+def _title_fields(analysis: Any) -> dict[str, str]:
+    mech = analysis.mech
+    fields = {k: str(v) for k, v in dict(mech.sheet or {}).items() if k in FIELDS}
+    fields.setdefault("title", str(mech.title))
+    fields.setdefault("sheet", "1")
+    fields.setdefault("sheets", "2")
+    return fields
+
+
+_PLACEMENT: Mapping[str, str] = {
+    "mechanism": "top-left",
+    "structural-formula": "top-left",
+    "diagrams": "bottom-left",
+    "diagram-s": "bottom-left",
+    "diagram-v": "bottom-left",
+    "diagram-a": "bottom-left",
+    "table-velocities": "top-right",
+    "table-accelerations": "top-right",
+    "table-omega-eps": "top-right",
+    "table-check": "top-right",
+}
+
+
+def _plan_scales(analysis: Any) -> tuple[float, float]:
+    """μV and μa from V_A and a_A at the first planned position (seed 003, eqs. 5, 9)."""
+    pin = analysis.mech.crank_pin
+    v_a = a_a = 0.0
+    for i in analysis.plan_positions:
+        view = analysis.plan(i)
+        v_a = max(v_a, float(np.hypot(*view.velocity_images[pin])))
+        a_a = max(a_a, float(np.hypot(*view.acceleration_images[pin])))
+    return scale_for(v_a, VELOCITY_PLAN), scale_for(a_a, ACCELERATION_PLAN)
+
+
+def _sketch_all(analysis: Any, look: Any, lang: Language, shrink: int, stacked: bool = True) -> tuple[dict[str, Sketch], dict[str, float]]:
+    mu_v, mu_a = _plan_scales(analysis)
+    mu_v, mu_a = _next_scale(mu_v, shrink), _next_scale(mu_a, shrink)
+    mu_l = _next_scale(float(analysis.mu_l), max(0, shrink - 1))
+    sketches: dict[str, Sketch] = {}
+    sketches["mechanism"] = sketch_mechanism(analysis, mu_l, look, lang)
+    sketches["structural-formula"] = sketch_formula(analysis, look, lang)
+    for i in analysis.plan_positions:
+        sketches[f"velocity-plan-{i}"], _ = sketch_plan(analysis, i, mu_v, "velocity", look, lang)
+        sketches[f"acceleration-plan-{i}"], _ = sketch_plan(analysis, i, mu_a, "acceleration", look, lang)
+    construction = analysis.diagrams[0]
+    diagrams = [sketch_diagram(construction, which, look, lang) for which in ("s", "v", "a")]
+    if stacked:
+        sketches["diagrams"] = _stack(diagrams, look)
+    else:
+        for which, sk in zip("sva", diagrams):
+            sketches[f"diagram-{which}"] = sk
+    sketches.update(_sketch_tables(analysis, look, lang))
+    return sketches, {"mu_l": mu_l, "mu_V": mu_v, "mu_a": mu_a}
+
+
+def compose_sheet1(analysis: Any, backend: Backend, lang: Language = "en", *,
+                   page: Page | None = None) -> Sheet1:
+    """Draw sheet 1 of `analysis` on `backend`; returns the layout and scales used."""
+    page = page if page is not None else Page.of("A1")
+    if lang not in _WORDS:
+        raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(_WORDS)}")
+    last: Exception | None = None
+    attempts = [(shrink, stacked, gap) for shrink in range(5) for stacked in (True, False)
+                for gap in (8.0, 5.0)]
+    for shrink, stacked, gap in attempts:
+        if True:
+            sketches, scales = _sketch_all(analysis, backend.look, lang, shrink, stacked)
+            layout = SheetLayout(page, gap=gap)
+            placed: dict[str, Rect] = {}
+            try:
+                # Big fixed pieces first: the mechanism top left, the column of
+                # diagrams bottom left, the tables from the top right; the plans
+                # then take the free middle.
+                columns = ["diagrams"] if stacked else ["diagram-s", "diagram-v", "diagram-a"]
+                order = ["mechanism", *columns, "table-velocities", "table-accelerations",
+                         "table-omega-eps", "table-check", "structural-formula"] + [
+                    n for n in sketches if n.startswith("velocity-plan") or n.startswith("acceleration-plan")
+                ]
+                for name in order:
+                    ext = sketches[name].extent()
+                    corner = _PLACEMENT.get(name, "top-left")
+                    kind = "table" if name.startswith("table") else "drawing"
+                    placed[name] = layout.place(name, ext.width, ext.height, kind=kind, corner=corner)  # type: ignore[arg-type]
+            except LayoutError as err:
+                last = err
+                continue
+            result = Sheet1(layout, scales, shrink=shrink)
+            for name in order:
+                ext, rect = sketches[name].extent(), placed[name]
+                dx, dy = rect.x - ext.x, rect.y - ext.y
+                sketches[name].replay(backend, dx, dy)
+                result.origins[name] = (dx, dy)
+                result.placed[name] = rect
+            draw_page(backend, page, _title_fields(analysis), lang)
+            return result
+    raise LayoutError(f"sheet 1 does not fit on {page.name or 'the page'}: {last}")

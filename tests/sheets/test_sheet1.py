@@ -1,0 +1,150 @@
+"""Sheet 1 through recorded drawing calls: groups, plan geometry, layout."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import mmt_plans
+from mmt_plans.render.recording import RecordingBackend
+from mmt_plans.scales import ACCELERATION_PLAN, VELOCITY_PLAN, scale_for
+from mmt_plans.sheets.sheet1 import compose_sheet1
+
+ROOT = Path(__file__).resolve().parents[2]
+SAMPLES = sorted((ROOT / "samples").glob("*.toml"))
+PRESS = ROOT / "samples" / "six_link_press.toml"
+
+
+@pytest.fixture(scope="module")
+def press():
+    analysis = mmt_plans.load(PRESS).analyze()
+    backend = RecordingBackend()
+    sheet = compose_sheet1(analysis, backend)
+    backend.close()
+    return analysis, backend, sheet
+
+
+def _group_ids(backend: RecordingBackend) -> set[str]:
+    return {c["id"] for c in backend.named("begin_group")}
+
+
+def test_every_required_group_is_drawn(press):
+    analysis, backend, _ = press
+    ids = _group_ids(backend)
+    required = {
+        "mechanism", "structural-formula", "diagram-s", "diagram-v", "diagram-a",
+        "table-velocities", "table-accelerations", "table-omega-eps", "table-check",
+        "frame", "title-block",
+    }
+    for i in analysis.plan_positions:
+        required |= {f"velocity-plan-{i}", f"acceleration-plan-{i}"}
+    assert required <= ids
+    for gid in required:
+        assert backend.in_group(gid), f"{gid} is empty"
+
+
+def test_plan_scales_are_the_standard_ones(press):
+    analysis, _, sheet = press
+    pin = analysis.mech.crank_pin
+    view = analysis.plan(analysis.plan_positions[0])
+    assert sheet.shrink == 0
+    assert sheet.scales["mu_V"] == scale_for(float(np.hypot(*view.velocity_images[pin])), VELOCITY_PLAN)
+    assert sheet.scales["mu_a"] == scale_for(
+        float(np.hypot(*view.acceleration_images[pin])), ACCELERATION_PLAN
+    )
+
+
+@pytest.mark.parametrize("kind", ["velocity", "acceleration"])
+def test_plan_vectors_are_drawn_to_scale(press, kind):
+    """|pb|·μV = |V_B| (and |πb|·μa = |a_B|) within 0.1 % for every drawn absolute vector."""
+    analysis, backend, sheet = press
+    mu = sheet.scales["mu_V" if kind == "velocity" else "mu_a"]
+    checked = 0
+    for i in analysis.plan_positions:
+        gid = f"{kind}-plan-{i}"
+        view = analysis.plan(i)
+        images = view.velocity_images if kind == "velocity" else view.acceleration_images
+        pole = sheet.origins[gid]
+        arrows = [c for c in backend.in_group(gid) if c.name == "arrow" and c["line"] == "main"]
+        assert arrows
+        for c in arrows:
+            assert math.dist(c["start"], pole) < 1e-9  # absolute vectors leave the pole
+            end = np.subtract(c["end"], pole)
+            name = min(images, key=lambda n: np.hypot(*(images[n] / mu - end)))
+            value = float(np.hypot(*images[name]))
+            assert c["length"] * mu == pytest.approx(value, rel=1e-3)
+            checked += 1
+        # B is drawn on every plan of the press.
+        assert any(
+            math.dist(c["end"], tuple(np.add(pole, images["B"] / mu))) < 1e-6 for c in arrows
+        )
+    assert checked >= 4
+
+
+def test_page_is_a1(press):
+    _, backend, sheet = press
+    assert (backend.width, backend.height) == (841.0, 594.0)
+    page = sheet.layout.page
+    assert (page.width, page.height) == (841.0, 594.0)
+
+
+def test_structural_formula_is_written(press):
+    analysis, backend, _ = press
+    texts = [c["content"] for c in backend.in_group("structural-formula") if c.name == "text"]
+    assert any("W = 3n" in t for t in texts)
+    assert any("II(2,3)" in t for t in texts)
+
+
+def test_drawings_stay_inside_their_placed_rectangles(press):
+    _, backend, sheet = press
+    for name, rect in sheet.placed.items():
+        ids = {name} if name != "diagrams" else {"diagram-s", "diagram-v", "diagram-a"}
+        for gid in ids:
+            for c in backend.in_group(gid):
+                pts = [backend.text_box(c)[:2], backend.text_box(c)[2:]] if c.name == "text" else c.points()
+                for x, y in pts:
+                    assert rect.left - 1e-6 <= x <= rect.right + 1e-6, (gid, c)
+                    assert rect.bottom - 1e-6 <= y <= rect.top + 1e-6, (gid, c)
+
+
+@pytest.mark.parametrize("path", SAMPLES, ids=lambda p: p.stem)
+def test_no_overlaps_on_any_sample(path):
+    analysis = mmt_plans.load(path).analyze()
+    backend = RecordingBackend()
+    sheet = compose_sheet1(analysis, backend)
+    backend.close()
+    assert sheet.layout.problems() == []
+    assert "title-block" in _group_ids(backend)
+
+
+def test_ukrainian_sheet(press):
+    analysis, _, _ = press
+    backend = RecordingBackend()
+    compose_sheet1(analysis, backend, lang="uk")
+    assert any("План швидкостей" in t for t in backend.texts())
+
+
+def test_write_sheets_svg(press, tmp_path):
+    from mmt_plans.sheets.compose import write_sheets
+
+    analysis, _, _ = press
+    paths = write_sheets(analysis, tmp_path, formats=("svg",))
+    assert [p.name for p in paths] == ["sheet1.svg"]
+    assert 'id="velocity-plan-2"' in paths[0].read_text(encoding="utf-8")
+
+
+def test_draw_command(tmp_path):
+    from click.testing import CliRunner
+
+    from mmt_plans.sheets.draw_cmd import draw
+
+    runner = CliRunner()
+    ok = runner.invoke(draw, [str(PRESS), "-o", str(tmp_path), "--format", "svg", "--sheet", "1"])
+    assert ok.exit_code == 0, ok.output
+    assert (tmp_path / "sheet1.svg").exists()
+    missing = runner.invoke(draw, [str(tmp_path / "nope.toml"), "-o", str(tmp_path)])
+    assert missing.exit_code == 2
+    assert missing.output.startswith("error:") or "error:" in (missing.stderr if hasattr(missing, "stderr") else "")
