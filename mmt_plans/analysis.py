@@ -309,7 +309,20 @@ class Analysis:
             "positions": positions,
             "kinematics": kinematics,
             **({"diagrams": self.diagrams_json()} if diagrams else {}),
+            "forces": self.forces_json(),
         }
+
+    def forces_json(self) -> dict[str, Any]:
+        """SPEC_FORMAT's `forces` object at the force position (with `problem`
+        instead when that position has no kinematics or no force plan)."""
+        from .forces import force_analysis
+
+        try:
+            return force_analysis(self).to_json()
+        except MmtError as err:
+            k = self.entry(self.force_position)
+            return {"index": self.force_position, "phi1_deg": self.positions[k].phi1_deg,
+                    "problem": str(err)}
 
 
 def _pair(v) -> list[float]:

@@ -70,6 +70,7 @@ def text_report(analysis: Analysis) -> str:
         out.append(_indent(table(["link", "omega rad/s", "eps rad/s2"], rows)))
         out.append("")
     out += diagrams_report(analysis)
+    out.append(_forces(analysis))
     return "\n".join(out)
 
 
@@ -100,6 +101,17 @@ def diagrams_report(analysis: Analysis) -> list[str]:
                    "errors under 5 %")
     out.append("")
     return out
+
+
+def _forces(analysis: Analysis) -> str:
+    """The force analysis at the force position (mmt_plans.forces.text)."""
+    from .errors import MmtError
+    from .forces import force_analysis, text
+
+    try:
+        return text(force_analysis(analysis))
+    except MmtError as err:
+        return f"Force analysis at position {analysis.force_position}: ! {err}"
 
 
 def _indent(text: str) -> str:

@@ -250,5 +250,5 @@ def _f(x: float) -> float | None:
 
 
 def _pair(v: np.ndarray) -> list[float]:
-    return [float(v[0]), float(v[1])]
+    return [float(v[0]) + 0.0, float(v[1]) + 0.0]  # + 0.0: no -0.0
 

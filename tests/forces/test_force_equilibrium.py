@@ -132,3 +132,26 @@ def test_equilibrium_at_any_angle(analysis, phi):
     expected = virtual_power_balancing_force(mech, sweep, 0, stroke)
     assert abs(fa.balancing_force_plans - expected) <= TOL * abs(expected)
     assert abs(fa.balancing_force_lever - expected) <= TOL * abs(expected)
+
+
+@pytest.mark.parametrize("name", ["six_link_press", "shaper", "five_dyads"])
+def test_clockwise_crank(name):
+    """With the crank turning clockwise F_bal is still positive when it drives;
+    the lever's plan is turned by +90° (against the rotation)."""
+    from dataclasses import replace
+
+    from force_checks import ROOT
+
+    mech = mmt_plans.load(ROOT / "samples" / f"{name}.toml")
+    a = mech.with_changes(drive=replace(mech.drive, sense="cw")).analyze()
+    for k, pos, fa in every_position(a):
+        assert fa.lever.turn_deg == 90.0
+        expected = virtual_power_balancing_force(a.mech, a.sweep, k, pos.stroke)
+        assert abs(fa.balancing_force_plans - expected) <= TOL * abs(expected)
+        assert abs(fa.balancing_force_lever - expected) <= TOL * abs(expected)
+        t = balancing_direction(a.mech, a.sweep, k)
+        V_A = c(a.sweep.v[a.mech.crank_pin][k])
+        assert abs(t - V_A / abs(V_A)) < 1e-12  # "in the sense of rotation" is along V_A
+        for link, (F, M, scale) in equilibrium_residuals(a.mech, a.sweep, k, pos.stroke,
+                                                         fa).items():
+            assert F <= TOL * scale and M <= TOL * scale
