@@ -1,0 +1,102 @@
+"""Every task of seeds 003 and 002 as a mechanism file (samples/tasks, written
+by samples/tasks/make_tasks.py; the schemes are explained in samples/README.md).
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import mmt_plans
+
+ROOT = Path(__file__).resolve().parents[1]
+TASKS = ROOT / "samples" / "tasks"
+README = ROOT / "samples" / "README.md"
+FILES = sorted(TASKS.rglob("*.toml"))
+TURN = np.linspace(0.0, 360.0, 720, endpoint=False)
+
+# The table values the files correct, each with a "# Correction:" comment.
+SEED003_FIXES = {
+    "seed003/task02_v2.toml": ("crank", 250.0),  # L_O1A = 25 in the table
+    "seed003/task10_v3.toml": ("rod", 450.0),  # L_CD = 45
+    "seed003/task11_v2.toml": ("rocker", 440.0),  # L_O2C = 44
+}
+SEED002_FIXED = {
+    "seed002/task1_v02.toml", "seed002/task1_v05.toml", "seed002/task1_v06.toml",
+    "seed002/task2_v00.toml", "seed002/task2_v01.toml", "seed002/task2_v03.toml",
+    "seed002/task2_v04.toml", "seed002/task2_v05.toml", "seed002/task2_v06.toml",
+    "seed002/task2_v07.toml", "seed002/task2_v09.toml", "seed002/task4_v04.toml",
+    "seed002/task5_v02.toml",
+}
+
+
+def rel(path: Path) -> str:
+    return path.relative_to(TASKS).as_posix()
+
+
+def test_every_task_and_variant_has_a_file():
+    names = {rel(p) for p in FILES}
+    seed003 = {f"seed003/task{t:02d}_v{v}.toml" for t in range(1, 12) for v in range(1, 6)}
+    seed002 = {f"seed002/task{t}_v{v:02d}.toml" for t in range(1, 7) for v in range(10)}
+    assert names == seed003 | seed002
+
+
+@pytest.mark.parametrize("path", FILES, ids=rel)
+def test_task_file_analyses_over_the_whole_turn(path):
+    mech = mmt_plans.load(path)
+    sweep = mech.sweep(TURN)
+    assert sweep.ok.all(), f"{rel(path)} does not assemble at {TURN[~sweep.ok][:3]} deg"
+    results = mech.analyze().to_json()
+    assert results["structure"]["W"] == 1
+    assert results["forces"]["discrepancy_percent"] < 5.0  # plans against the lever (2.10)
+
+
+def test_seed003_task1_variant1_has_the_structure_of_the_default_sample():
+    press = mmt_plans.load(ROOT / "samples" / "six_link_press.toml")
+    task = mmt_plans.load(TASKS / "seed003" / "task01_v1.toml")
+    assert task.structure.formula == press.structure.formula == "I(0,1) <- II(2,3) <- II(4,5)"
+
+
+@pytest.mark.parametrize("name", sorted(SEED003_FIXES))
+def test_seed003_misprints_are_corrected_with_the_reason(name):
+    text = (TASKS / name).read_text(encoding="utf-8")
+    assert re.search(r"^# Correction: .*dropped zero", text, re.M), name
+    which, length = SEED003_FIXES[name]
+    link = {"crank": 1, "rod": 4, "rocker": 3}[which]
+    points = tomllib.loads(text)["link"][link - 1]["points"]
+    assert max(np.hypot(*p) for p in points.values()) == pytest.approx(length)
+
+
+def test_the_corrected_files_are_the_listed_ones_and_in_the_readme():
+    corrected = {rel(p) for p in FILES
+                 if re.search(r"^# Correction: ", p.read_text(encoding="utf-8"), re.M)}
+    assert corrected == set(SEED003_FIXES) | SEED002_FIXED
+    readme = README.read_text(encoding="utf-8")
+    for name in corrected:
+        stem = Path(name).stem  # "task2_v00"; the README lists v00, v01, ... after the first
+        task, variant = stem.split("_")
+        assert re.search(rf"{Path(name).parent}/{task}_v\d+[^|]*\b{variant}\b", readme) or \
+            f"{Path(name).parent}/{stem}" in readme, name
+
+
+def test_seed002_files_carry_their_gear_train_and_crank_angle():
+    for path in FILES:
+        if "seed002" not in path.parts:
+            continue
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        mech = mmt_plans.load(path)
+        assert mech.drive.gear_train is not None, rel(path)
+        phi1 = data["study"]["angles"][0]
+        assert mech.study.angles == (phi1,)
+        assert mech.analyze().to_json()["forces"]["phi1_deg"] == pytest.approx(phi1 % 360)
+
+
+def test_seed002_task1_train_is_the_worked_example_shape():
+    # pair 1-2, then planetary 3-4-4'-5: variant 0, z = 20/80 | 30-32-30-48
+    mech = mmt_plans.load(TASKS / "seed002" / "task1_v00.toml")
+    u = mech.drive.gear_train.ratio
+    assert u == pytest.approx((-80 / 20) * (1 - (32 / 30) * (48 / 30)))
