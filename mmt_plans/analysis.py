@@ -45,14 +45,10 @@ class Analysis:
 
     # --- extreme positions and strokes ---------------------------------------------
     def _along(self, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """s, ds/dφ and d²s/dφ² of the output along the working direction."""
-        wd = complex(*self.mech.study.working_direction)
-        out = self.mech.study.output
+        """s, ds/dφ and d²s/dφ² of the output along the working direction (ε1 = 0)."""
         w = self.mech.drive.signed_omega
-        s = (sweep.position_of(out) * np.conj(wd)).real
-        ds = (sweep.velocity_of(out) * np.conj(wd)).real / w
-        d2s = (sweep.acceleration_of(out) * np.conj(wd)).real / (w * w)
-        return s, ds, d2s
+        s, v, a = self.output_along(sweep)
+        return s, v / w, a / (w * w)
 
     @cached_property
     def extremes(self) -> tuple[float, float]:

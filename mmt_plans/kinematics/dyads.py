@@ -129,6 +129,9 @@ class DyadSolver:
             P0 = K.at(S_local) + e * (Q_local - through)
         return P0, u
 
+    def after_velocities(self, m: dict, leg1: Leg, leg2: Leg) -> None:
+        """Hook between the velocity and the acceleration plan."""
+
     def positions(self, m: dict, sign: int) -> None:  # pragma: no cover - abstract
         raise NotImplementedError
 
@@ -145,6 +148,7 @@ class DyadSolver:
     def plan(self, m: dict) -> GroupPlan:
         X_name, X, leg1, leg2 = self.legs(m)
         leg1.x, leg2.x = solve_two_lines(leg1.d, leg1.V0, leg2.d, leg2.V0)
+        self.after_velocities(m, leg1, leg2)
         for leg in (leg1, leg2):
             if leg.kind == "rotation":
                 r = X - leg.P
@@ -293,22 +297,10 @@ class RPR(DyadSolver):
                     self.L1)
         return f"{a}{self.L2}", A, slide, self.rotation(self.L2, c, C, A, K2)
 
-    def plan(self, m):
-        # the slide's Coriolis term needs ω of L1, which is ω of L2, found by the
-        # velocity plan: give L1 its ω before the acceleration plan is solved
-        X_name, X, leg1, leg2 = self.legs(m)
-        leg1.x, leg2.x = solve_two_lines(leg1.d, leg1.V0, leg2.d, leg2.V0)
+    def after_velocities(self, m, leg1, leg2):
+        # the slide's Coriolis term needs ω of L1, which is ω of L2, found by
+        # the velocity plan: give L1 its ω before the acceleration plan
         m[self.L1].w = leg2.x
-        leg2.n = -(leg2.x * leg2.x) * (X - leg2.P)
-        leg1.n = 2.0 * leg2.x * leg1.x * 1j * leg1.d
-        leg1.y, leg2.y = solve_two_lines(leg1.d, leg1.a0 + leg1.n, leg2.d, leg2.a0 + leg2.n)
-        V_X = leg2.V0 + leg2.d * leg2.x
-        a_X = leg2.a0 + leg2.n + leg2.d * leg2.y
-        with np.errstate(invalid="ignore", divide="ignore"):
-            sin_angle = np.abs(cross(leg2.d, leg1.d)) / (np.abs(leg1.d) * np.abs(leg2.d))
-        plan = GroupPlan(self.group, X_name, X, (leg1, leg2), sin_angle, V_X, a_X)
-        self.place(m, plan)
-        return plan
 
     def place(self, m, plan):
         slide, rot = plan.legs
