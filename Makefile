@@ -26,7 +26,7 @@ fonts:
 
 run: $(STAMP) fonts
 	$(BIN)/mmt-plans analyze $(SAMPLE) --json $(OUT)/results.json
-	$(BIN)/mmt-plans draw $(SAMPLE) -o $(OUT) --sheet 1
+	$(BIN)/mmt-plans draw $(SAMPLE) -o $(OUT)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest

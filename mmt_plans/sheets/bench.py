@@ -1,0 +1,45 @@
+"""Sheet writing times for `make bench` (targets: both sheets as SVG under
+0.5 s, as PDF under 3 s, for the default sample).
+
+Each figure starts from a loaded mechanism with no cached results, so that it
+includes everything the sheets ask the solver for (sheet 1: positions, plans
+at the planned positions, diagrams; sheet 2: the force analysis at the force
+position), then composes, writes SVG, and for PDF converts through Cairo.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from dataclasses import replace
+from pathlib import Path
+from typing import Callable, Sequence
+
+from .. import load
+from ..bench import best_time
+from ..report import table
+from .compose import available_sheets, write_sheets
+
+DEFAULT = "six_link_press"
+
+
+def bench_sheets(files: Sequence[Path], repeat: int, echo: Callable[[str], None]) -> None:
+    chosen = [p for p in files if p.stem == DEFAULT] or list(files[:1])
+    sheets = sorted(available_sheets())
+    rows = []
+    with tempfile.TemporaryDirectory() as out:
+        for path in chosen:
+            mech = load(path)
+            for fmt in ("svg", "pdf"):
+                for n in [*sheets, tuple(sheets)]:
+                    numbers = n if isinstance(n, tuple) else (n,)
+
+                    def write() -> None:
+                        write_sheets(replace(mech).analyze(), out, (fmt,), "en", numbers)
+
+                    t = best_time(write, max(1, repeat // 2))
+                    what = "both" if isinstance(n, tuple) else f"sheet {n}"
+                    rows.append([path.stem, what, fmt, f"{t:.3f}"])
+    echo("Writing the A1 sheets (analysis on demand + compose + write; PDF through Cairo):")
+    echo(table(["sample", "sheets", "format", "seconds"], rows))
+    echo("targets: both sheets as SVG < 0.5 s, as PDF < 3 s")
+    echo("")

@@ -1,0 +1,720 @@
+"""Sheet 2: force (kinetostatic) analysis (seed 003, Sheet 2 §2.1–2.10, Appendix B).
+
+At the force position only: the mechanism with every load (G, F_IN shifted by
+h, F_PR, F_bal), each Assur group drawn apart to μ_l with its loads, the
+reactions of its outer pairs (R^n, R^t dashed) and the arms of the moment
+equation that gives R^t, its force polygon to μF (the inner reaction closing
+the polygon of one link), the driving link with F_bal and its polygon,
+Zhukovsky's lever (the velocity plan turned by 90° with the forces at the
+images of their points and their arms about the pole), and the tables of
+loads, reactions, the lever's moments and the balancing force by both methods.
+
+Forces on the mechanism, the groups and the lever are drawn to direction, not
+to scale (their lengths grow with the square root of the magnitude); the
+force polygons are to scale.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Any, Iterable, Mapping, Sequence
+
+import numpy as np
+
+from ..forces import ForceAnalysis, ForcePolygon, force_analysis
+from ..forces.state import PositionState
+from ..model import FRAME
+from ..render.backend import Backend
+from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
+from .labels import Labels
+from .layout import LayoutError, SheetLayout
+from .page import Language, Page, Rect, draw_page
+from .sheet1 import (Sketch, _guide, _hatched_base, _next_scale, _point_markup, _table_sketch,
+                     _title_fields, _unit)
+
+__all__ = ["Sheet2", "compose_sheet2", "force_markup", "GROUPS"]
+
+_TEXT = 3.5
+_TITLE = 5.0
+_PAD = 2.0
+_ARROW = dict(head_length=3.5, head_width=1.2)
+
+GROUPS = ("force-mechanism", "driving-link", "force-polygon-1", "zhukovsky-lever",
+          "table-loads", "table-reactions", "table-lever", "table-balancing")
+
+_WORDS: Mapping[str, Mapping[str, str]] = {
+    "en": {
+        "mechanism": "Mechanism in position {i} with its loads",
+        "group": "Assur group {name} ({kind})",
+        "driving": "Driving link {link}",
+        "polygon": "Force polygon: {title}",
+        "lever": "Zhukovsky's lever (velocity plan turned by 90°)",
+        "not_to_scale": "forces to direction, not to scale",
+        "short": "shorter than 1 mm: {names}",
+        "loads": "Loads of the links, position {i}",
+        "reactions": "Reactions in the kinematic pairs, N",
+        "lever_table": "Moments on the lever about p",
+        "balancing": "Balancing force (limit 5 %)",
+        "link": "Link",
+        "pair": "Pair",
+        "force": "Force",
+        "no": "No.",
+        "quantity": "Quantity",
+        "value": "Value",
+        "plans": "F_{bal} (force plans), N",
+        "by_lever": "F_{bal} (Zhukovsky's lever), N",
+        "delta": "Discrepancy Δ, %",
+        "moment": "M_{bal}, N·m",
+        "equation": "F_{bal}·pa = Σ F_{i}·h_{i}",
+    },
+    "uk": {
+        "mechanism": "Механізм у положенні {i} з навантаженнями",
+        "group": "Група Ассура {name} ({kind})",
+        "driving": "Ведуча ланка {link}",
+        "polygon": "План сил: {title}",
+        "lever": "Важіль Жуковського (план швидкостей, повернутий на 90°)",
+        "not_to_scale": "сили показано за напрямом, не в масштабі",
+        "short": "коротші за 1 мм: {names}",
+        "loads": "Навантаження ланок, положення {i}",
+        "reactions": "Реакції в кінематичних парах, Н",
+        "lever_table": "Моменти на важелі відносно p",
+        "balancing": "Зрівноважувальна сила (допуск 5 %)",
+        "link": "Ланка",
+        "pair": "Пара",
+        "force": "Сила",
+        "no": "№",
+        "quantity": "Величина",
+        "value": "Значення",
+        "plans": "F_{зр} (плани сил), Н",
+        "by_lever": "F_{зр} (важіль Жуковського), Н",
+        "delta": "Розбіжність Δ, %",
+        "moment": "M_{зр}, Н·м",
+        "equation": "F_{зр}·pa = Σ F_{i}·h_{i}",
+    },
+}
+
+_POLYGON_TITLES = {"uk": (("group", "група"), ("link", "ланка"))}
+
+
+@dataclass
+class Sheet2:
+    """What compose_sheet2 drew: the force analysis, layout, scales, placements."""
+
+    forces: ForceAnalysis
+    layout: SheetLayout
+    scales: dict[str, float] = field(default_factory=dict)
+    origins: dict[str, tuple[float, float]] = field(default_factory=dict)
+    placed: dict[str, Rect] = field(default_factory=dict)
+    arms: dict[str, list[tuple[str, float]]] = field(default_factory=dict)  # lever: label, h mm
+    shrink: int = 0
+
+
+# --- lettering ------------------------------------------------------------------------
+
+def force_markup(label: str) -> str:
+    """A solver's force label as lettering: "R34^n" → "R^{n}_{34}", "F_in4" → "F_{in4}",
+    "R0_11" → "R_{0,11}", "G2" → "G_{2}", "F_bal" → "F_{bal}"."""
+    m = re.fullmatch(r"R(\d+)_(\d+)(?:\^(\w))?", label)
+    if m:
+        sup = f"^{{{m.group(3)}}}" if m.group(3) else ""
+        return f"R{sup}_{{{m.group(1)},{m.group(2)}}}"
+    m = re.fullmatch(r"([A-Z])(\d+)(?:\^(\w))?", label)
+    if m:
+        sup = f"^{{{m.group(3)}}}" if m.group(3) else ""
+        return f"{m.group(1)}{sup}_{{{m.group(2)}}}"
+    m = re.fullmatch(r"([A-Z])'?_(\w+)", label.replace("'", ""))
+    if m:
+        return f"{m.group(1)}_{{{m.group(2)}}}"
+    return label
+
+
+def _equation_markup(equation: str) -> str:
+    return re.sub(r"[A-Za-z]+'?[\w^]*", lambda m: force_markup(m.group(0)), equation)
+
+
+# --- primitives -------------------------------------------------------------------------
+
+def _c(v: Any) -> complex:
+    return v if isinstance(v, complex) else complex(float(v[0]), float(v[1]))
+
+
+def _xy(z: complex) -> np.ndarray:
+    return np.array([z.real, z.imag])
+
+
+def _num(x: float, digits: int = 4) -> str:
+    """A table value to `digits` significant figures, never in exponent form: 12970, 0.0523."""
+    x = float(x)
+    if not math.isfinite(x):
+        return "—"
+    if abs(x) < 1e-9:
+        return "0"
+    decimals = max(0, digits - 1 - math.floor(math.log10(abs(x))))
+    return f"{round(x, decimals):.{decimals}f}"
+
+
+def _scale_step(mu: float, steps: int) -> float:
+    """The series value `steps` places above mu (below it for negative steps)."""
+    if steps >= 0:
+        return _next_scale(mu, steps)
+    below = list(series(mu * 1e-4, mu * (1 - 1e-6)))
+    return below[steps]
+
+
+def _arrow_length(magnitude: float, largest: float) -> float:
+    """Drawn length of a force shown to direction only: 8 … 26 mm by √|F|."""
+    if largest <= 0.0:
+        return 8.0
+    return 8.0 + 18.0 * math.sqrt(max(0.0, magnitude) / largest)
+
+
+class _Drawing:
+    """One drawing of sheet 2 in progress: a sketch, its labels, the state."""
+
+    def __init__(self, look: Any, state: PositionState, mu_l: float) -> None:
+        self.sk = Sketch(look)
+        self.labels = Labels(self.sk, _TEXT)
+        self.state = state
+        self.mu_l = mu_l
+        self._pending: list[tuple[np.ndarray, str, np.ndarray | None]] = []
+
+    def mm(self, P: Any) -> np.ndarray:
+        return _xy(_c(P)) / self.mu_l
+
+    def line(self, a: np.ndarray, b: np.ndarray, kind: str = "main") -> None:
+        self.sk.line(a, b, kind)
+        self.labels.avoid_line(a, b)
+
+    def later(self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None) -> None:
+        """A label written after every line, so that it can avoid them all."""
+        self._pending.append((np.asarray(anchor, float), markup, towards))
+
+    def write_labels(self) -> None:
+        for anchor, markup, towards in self._pending:
+            self.labels.place(anchor, markup, towards=towards)
+        self._pending.clear()
+
+    def force(self, at: np.ndarray, F: np.ndarray, label: str, largest: float,
+              line: str = "main") -> None:
+        size = float(np.hypot(*F))
+        if size <= 1e-9 * max(largest, 1e-300):
+            return
+        u = np.asarray(F, float) / size
+        end = at + _arrow_length(size, largest) * u
+        self.sk.arrow(at, end, line, **_ARROW)  # type: ignore[arg-type]
+        self.labels.avoid_line(at, end)
+        self.later(end, force_markup(label), u)
+
+    def moment(self, centre: np.ndarray, M: float, label: str, radius: float = 6.0) -> None:
+        """A couple as an arc with its arrowhead in the sense of M (ccw positive)."""
+        if M == 0.0:
+            return
+        a0, a1 = 20.0, 250.0
+        self.sk.arc(centre, radius, a0, a1, "main")
+        self.labels.avoid_circle(centre, radius + 0.4)
+        end_deg = a1 if M > 0 else a0
+        t = math.radians(end_deg)
+        tip = centre + radius * np.array([math.cos(t), math.sin(t)])
+        tangent = np.array([-math.sin(t), math.cos(t)]) * (1.0 if M > 0 else -1.0)
+        self.sk.arrow(tip - 2.5 * tangent, tip, "main", head_length=2.5, head_width=1.0)
+        self.later(centre + (radius + 1.0) * np.array([math.cos(t), math.sin(t)]),
+                   force_markup(label), np.array([math.cos(t), math.sin(t)]))
+
+    def arm(self, pivot: np.ndarray, at: np.ndarray, F: np.ndarray, label: str) -> float:
+        """The perpendicular from `pivot` to the force's line of action; its length, mm."""
+        u = _unit(np.asarray(F, float))
+        r = at - pivot
+        foot = pivot + r - float(np.dot(r, u)) * u
+        h = float(np.hypot(*(foot - pivot)))
+        if h >= 1.0:
+            self.sk.line(pivot, foot, "thin")
+            self.labels.avoid_line(pivot, foot)
+            # the line of action carried on to the foot, thin
+            self.sk.line(at, foot, "thin")
+            self.later((pivot + foot) / 2, label, None)
+        return h
+
+    # the mechanism's links -----------------------------------------------------------
+
+    def links(self, lids: Iterable[int], *, frame: bool) -> None:
+        """The links `lids` at the state's position; with `frame`, the frame's
+        pivots and guides hatched as on the kinematic diagram."""
+        lids = set(lids)
+        state, mech = self.state, self.state.mech
+        for lid in sorted(lids):
+            names = list(mech.links[lid].points)
+            for i in range(len(names)):
+                for j in range(i + 1, len(names)):
+                    self.line(self.mm(state.point(lid, names[i])), self.mm(state.point(lid, names[j])))
+        for pair in mech.sliders:
+            if pair.slider not in lids and pair.guide not in lids:
+                continue
+            u_c, Q_c = state.guide(pair)
+            u, Q = _xy(u_c), self.mm(Q_c)
+            if pair.guide == FRAME:
+                if frame:
+                    _guide(self.sk, Q - 22.0 * u, Q + 22.0 * u, u, 3.5)
+            elif pair.guide in lids:
+                self.line(Q - 16.0 * u, Q + 16.0 * u)
+            if pair.slider in lids:
+                n = np.array([-u[1], u[0]])
+                corners = [Q + sx * 6.0 * u + sy * 3.5 * n for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+                self.sk.polygon([tuple(p) for p in corners], "main", "white")
+                for a, b in zip(corners, corners[1:] + corners[:1]):
+                    self.labels.avoid_line(a, b)
+        written: set[str] = set()
+        for pair in mech.revolutes:
+            moving = [lk for lk in pair.links if lk != FRAME]
+            if not any(lk in lids for lk in moving):
+                continue
+            P = self.mm(state.point(moving[0], pair.point))
+            if FRAME in pair.links and frame:
+                _hatched_base(self.sk, P)
+                self.labels.avoid_line(P, P - np.array([0.0, 6.0]), 4.5)
+            self.sk.circle(P, 1.2, "main", "white")
+            self.labels.avoid_circle(P, 1.6)
+            if pair.point not in written:
+                written.add(pair.point)
+                self.later(P, _point_markup(pair.point), np.array([-0.6, 0.8]))
+        for pair in mech.sliders:
+            if pair.slider in lids and pair.slider_point not in written:
+                written.add(pair.slider_point)
+                self.later(self.mm(state.point(pair.slider, pair.slider_point)),
+                           _point_markup(pair.slider_point), np.array([0.0, 1.0]))
+        for lid in sorted(lids):  # the output point and other named points
+            for name in mech.links[lid].points:
+                if name not in written and len(mech.point_owners[name]) == 1:
+                    written.add(name)
+                    self.later(self.mm(state.point(lid, name)), _point_markup(name), np.array([0.6, 0.8]))
+
+    def loads(self, fa: ForceAnalysis, lids: Iterable[int], largest: float) -> None:
+        """G at S, F_IN shifted to K (or at S with M_IN as a couple), h, F_PR."""
+        for lid in lids:
+            ll = fa.loads.links[lid]
+            S = self.mm(ll.centre_of_mass)
+            if ll.mass:
+                self.sk.circle(S, 0.8, "main", "black")
+                self.labels.avoid_circle(S, 1.2)
+                self.later(S, f"S_{{{lid}}}", np.array([-0.8, -0.6]))
+                self.force(S, ll.weight, f"G{lid}", largest)
+            sh = ll.shifted_inertia_force
+            if sh is not None and ll.mass:
+                K = self.mm(sh.point)
+                if float(np.hypot(*(K - S))) >= 1.0:
+                    self.sk.line(S, K, "thin")
+                    self.labels.avoid_line(S, K)
+                    self.later((S + K) / 2, f"h_{{{lid}}}", None)
+                self.force(K, ll.inertia_force, f"F_in{lid}", largest)
+            elif ll.mass:
+                self.force(S, ll.inertia_force, f"F_in{lid}", largest)
+                self.moment(S, ll.inertia_moment, f"M_in{lid}")
+        for f in fa.loads.production_resistance:
+            if f.link in lids and f.acting:
+                self.force(self.mm(f.point), f.force, f.name, largest)
+
+    def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
+        self.write_labels()
+        ext = self.sk.extent()
+        y = ext.bottom - 5.0
+        for note in notes:
+            self.sk.rich_text((ext.left + _PAD, y), note, _TEXT)
+            y -= 6.0
+        self.sk.text((ext.left + _PAD, ext.top + 3.0), title, _TITLE)
+        return self.sk
+
+
+def _largest_load(fa: ForceAnalysis, lids: Iterable[int], extra: Iterable[np.ndarray] = ()) -> float:
+    sizes = [0.0]
+    for lid in lids:
+        ll = fa.loads.links[lid]
+        sizes += [float(np.hypot(*ll.weight)), float(np.hypot(*ll.inertia_force))]
+    sizes += [float(np.hypot(*f.force)) for f in fa.loads.production_resistance if f.link in set(lids)]
+    sizes += [float(np.hypot(*v)) for v in extra]
+    return max(sizes)
+
+
+# --- the drawings -----------------------------------------------------------------------
+
+def sketch_loaded_mechanism(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
+    state = fa.loads.state
+    mech = state.mech
+    d = _Drawing(look, state, mu_l)
+    with d.sk.group("force-mechanism", "mechanism"):
+        d.links(mech.links, frame=True)
+        largest = _largest_load(fa, mech.links, [fa.driving_link.balancing_vector])
+        d.loads(fa, mech.links, largest)
+        A = d.mm(state.point(mech.drive.link, mech.crank_pin))
+        d.force(A, fa.driving_link.balancing_vector, "F_bal", largest)
+        O = d.mm(state.point(mech.drive.link, mech.crank_pivot))
+        d.moment(O, state.omega1, "ω_{1}", radius=9.0)
+        label = scale_label(mu_l, "length", lang).markup()
+        sk = d.finish(_WORDS[lang]["mechanism"].format(i=fa.index),
+                      [label, _WORDS[lang]["not_to_scale"]])
+    return sk
+
+
+def _group_forces(fa: ForceAnalysis, g: Any) -> list[tuple[str, np.ndarray, np.ndarray, str]]:
+    """The reactions drawn on a group: (label, force, point, line) — the outer
+    reactions as their components (dashed) where the plan split them, and the
+    reactions of the groups attached after it; the inner reaction is internal."""
+    inner = g.reactions[2]
+    internal = {inner.name, inner.reversed().name}
+    own = {r.name: r for r in g.reactions[:2]}
+    out = []
+    for lid in g.links:
+        for f in g.free_bodies[lid]:
+            if not f.label.startswith("R") or f.label in internal:
+                continue
+            r = own.get(f.label)
+            if r is not None and len(r.components) > 1:
+                for comp in r.components:
+                    out.append((comp.label, comp.vector, r.point, "dashed"))
+            out.append((f.label, f.force, f.point, "main"))
+    return out
+
+
+def sketch_group(fa: ForceAnalysis, g: Any, mu_l: float, look: Any, lang: Language,
+                 arm_names: list[str]) -> Sketch:
+    state = fa.loads.state
+    mech = state.mech
+    d = _Drawing(look, state, mu_l)
+    gid = f"group-{g.name}"
+    with d.sk.group(gid, "assur-group"):
+        d.links(g.links, frame=False)
+        reactions = _group_forces(fa, g)
+        largest = _largest_load(fa, g.links, [f for _, f, _, _ in reactions])
+        d.loads(fa, g.links, largest)
+        for label, F, P, line in reactions:
+            d.force(d.mm(P), F, label, largest, line)
+        # the arms of ΣM_B(L1) = 0, the equation of R^t (RRR, RRP)
+        if g.kind in ("RRR", "RRP"):
+            B = d.mm(state.point(g.links[0], g.reactions[2].pair))  # the inner pin
+            L1 = g.links[0]
+            ll = fa.loads.links[L1]
+            moments = []
+            if ll.mass:
+                sh = ll.shifted_inertia_force
+                moments.append((ll.weight, ll.centre_of_mass, f"G{L1}"))
+                if sh is not None:
+                    moments.append((ll.inertia_force, sh.point, f"F_in{L1}"))
+            for label, F, P, line in reactions:
+                if line == "main" and label in {f.label for f in g.free_bodies[L1]}:
+                    if not any(r.name == label and r.components for r in g.reactions[:2]):
+                        moments.append((F, P, label))
+            for F, P, label in moments:
+                if float(np.hypot(*F)) > 0.0:
+                    name = f"h_{{{len(arm_names) + 1}}}"
+                    if d.arm(B, d.mm(P), np.asarray(F, float), name) >= 1.0:
+                        arm_names.append(label)
+        title = _WORDS[lang]["group"].format(name=g.name, kind=g.kind)
+        sk = d.finish(title, [scale_label(mu_l, "length", lang).markup()])
+    return sk
+
+
+def sketch_driving_link(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
+    state = fa.loads.state
+    dl = fa.driving_link
+    d = _Drawing(look, state, mu_l)
+    with d.sk.group("driving-link", "driving-link"):
+        d.links([dl.link], frame=False)
+        forces = [(f.label, f.force, f.point) for f in dl.free_body if f.label.startswith(("R", "F_bal"))]
+        largest = _largest_load(fa, [dl.link], [f for _, f, _ in forces])
+        d.loads(fa, [dl.link], largest)
+        for label, F, P in forces:
+            d.force(d.mm(P), F, label, largest)
+        title = _WORDS[lang]["driving"].format(link=dl.link)
+        sk = d.finish(title, [scale_label(mu_l, "length", lang).markup()])
+    return sk
+
+
+def _polygon_title(title: str, lang: Language) -> str:
+    for en, uk in _POLYGON_TITLES.get(lang, ()):
+        title = title.replace(en, uk)
+    return title
+
+
+def sketch_force_polygons(polygons: Sequence[ForcePolygon], mu_F: float, look: Any,
+                          lang: Language, gid: str, title: str) -> Sketch:
+    """The polygons of one group (or of the driving link) to μF, head to tail
+    from their origin. A polygon that starts with the sides of one already
+    drawn (a link's polygon inside its group's) adds only its new sides, as
+    the textbook closes R54 inside the polygon of group 4-5; one that shares
+    nothing is drawn beside it."""
+    sk = Sketch(look)
+    labels = Labels(sk, _TEXT)
+    drawn: dict[tuple[str, int, int], bool] = {}
+    pending: list[tuple[np.ndarray, str, np.ndarray]] = []
+    short: list[str] = []
+    offset = np.zeros(2)
+    with sk.group(gid, "force-polygon"):
+        for n, poly in enumerate(polygons):
+            keys = [(v.label, round(float(v.start[0]) / mu_F * 100), round(float(v.start[1]) / mu_F * 100))
+                    for v in poly.vectors]
+            shares = any(k in drawn for k in keys)
+            if n and not shares:
+                offset = np.array([sk.extent().right + 15.0, 0.0])
+            for key, v in zip(keys, poly.vectors):
+                if key in drawn:
+                    continue
+                drawn[key] = True
+                s = offset + np.asarray(v.start, float) / mu_F
+                e = s + np.asarray(v.vector, float) / mu_F
+                length = float(np.hypot(*(e - s)))
+                if length < 1.0:
+                    short.append(force_markup(v.label))
+                    continue
+                component = "^" in v.label
+                sk.arrow(s, e, "dashed" if component else "main", **_ARROW)  # type: ignore[arg-type]
+                labels.avoid_line(s, e)
+                u = (e - s) / length
+                pending.append(((s + e) / 2, force_markup(v.label), np.array([-u[1], u[0]])))
+            # R = R^n + R^t: the resultant of two consecutive components, main line
+            for a, b in zip(poly.vectors, poly.vectors[1:]):
+                if a.label.endswith("^n") and b.label == a.label[:-2] + "^t" or \
+                        a.label.endswith("^t") and b.label == a.label[:-2] + "^n":
+                    s = offset + np.asarray(a.start, float) / mu_F
+                    e = offset + np.asarray(b.end, float) / mu_F
+                    key = (a.label[:-2], round(s[0] * 100), round(s[1] * 100))
+                    if key in drawn or float(np.hypot(*(e - s))) < 1.0:
+                        continue
+                    drawn[key] = True
+                    sk.arrow(s, e, "main", **_ARROW)  # type: ignore[arg-type]
+                    labels.avoid_line(s, e)
+                    u = _unit(e - s)
+                    pending.append(((s + e) / 2, force_markup(a.label[:-2]), np.array([u[1], -u[0]])))
+        for anchor, markup, towards in pending:
+            labels.place(anchor, markup, towards=towards)
+        ext = sk.extent()
+        y = ext.bottom - 5.0
+        for poly in polygons:
+            sk.rich_text((ext.left + _PAD, y), _equation_markup(poly.equation), _TEXT)
+            y -= 6.0
+        if short:
+            sk.rich_text((ext.left + _PAD, y), _WORDS[lang]["short"].format(names=", ".join(short)), _TEXT)
+            y -= 6.0
+        sk.rich_text((ext.left + _PAD, y), scale_label(mu_F, "force", lang).markup(), _TEXT)
+        sk.text((ext.left + _PAD, ext.top + 3.0), _WORDS[lang]["polygon"].format(
+            title=_polygon_title(title, lang)), _TITLE)
+    return sk
+
+
+def sketch_lever(fa: ForceAnalysis, mu_V: float, look: Any, lang: Language,
+                 arms: list[tuple[str, float]]) -> Sketch:
+    """The turned velocity plan to μV, every force at the image of its point
+    and its arm about the pole p; `arms` receives (label, h mm) in order."""
+    lever = fa.lever
+    mech = fa.loads.state.mech
+    sk = Sketch(look)
+    labels = Labels(sk, _TEXT)
+    img = {n: np.asarray(v, float) / mu_V for n, v in lever.images.items()}
+    pending: list[tuple[np.ndarray, str, np.ndarray | None]] = []
+    with sk.group("zhukovsky-lever", "lever"):
+        joints = [n for n in img if not re.fullmatch(r"[SK]\d+", n)]
+        for n in joints:
+            if float(np.hypot(*img[n])) >= 0.5:
+                sk.line((0.0, 0.0), img[n], "thin")
+                labels.avoid_line((0.0, 0.0), img[n])
+        for link in mech.links.values():
+            names = [p for p in link.points if p in img]
+            for i in range(len(names)):
+                for j in range(i + 1, len(names)):
+                    sk.line(img[names[i]], img[names[j]], "main")
+                    labels.avoid_line(img[names[i]], img[names[j]])
+        for n in joints:
+            if float(np.hypot(*img[n])) >= 0.5:
+                pending.append((img[n], n.lower(), img[n]))
+        sk.circle((0.0, 0.0), 0.8, "main", "black")
+        labels.avoid_circle((0.0, 0.0), 1.2)
+        pending.append((np.zeros(2), "p", np.array([-1.0, -1.0])))
+        forces = [*lever.forces, lever.balancing]
+        feet: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
+        largest = max(float(np.hypot(*f.force)) for f in forces)
+        for f in forces:
+            size = float(np.hypot(*f.force))
+            if size <= 1e-9 * largest:
+                continue
+            at = np.asarray(f.image, float) / mu_V
+            u = np.asarray(f.force, float) / size
+            end = at + _arrow_length(size, largest) * u
+            sk.arrow(at, end, "main", **_ARROW)  # type: ignore[arg-type]
+            labels.avoid_line(at, end)
+            pending.append((end, force_markup(f.label), u))
+            if re.fullmatch(r"[SK]\d+", f.point) and f.point not in {p[1] for p in pending}:
+                sk.circle(at, 0.6, "thin", "black")
+            h = abs(f.arm) / mu_V
+            arms.append((f.label, h))
+            if h >= 1.0:
+                foot = at - float(np.dot(at, u)) * u
+                sk.line((0.0, 0.0), foot, "thin")
+                sk.line(at, foot, "thin")
+                labels.avoid_line((0.0, 0.0), foot)
+                # forces on one line of action share their arm: one label, h_{10,11}
+                key = (round(float(foot[0]) * 2), round(float(foot[1]) * 2))
+                feet.setdefault(key, (foot, []))[1].append(str(len(arms)))
+        for foot, numbers in feet.values():
+            pending.append((foot / 2, f"h_{{{','.join(numbers)}}}", None))
+        for anchor, markup, towards in pending:
+            labels.place(anchor, markup, towards=towards)
+        ext = sk.extent()
+        sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _WORDS[lang]["equation"], _TEXT)
+        sk.rich_text((ext.left + _PAD, ext.bottom - 11.0), scale_label(mu_V, "velocity", lang).markup(), _TEXT)
+        sk.text((ext.left + _PAD, ext.top + 3.0), _WORDS[lang]["lever"], _TITLE)
+    return sk
+
+
+# --- tables -----------------------------------------------------------------------------
+
+def sketch_loads_table(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
+    """G, F_IN, M_IN and the arm h of every link; h in mm of the drawing at μ_l (19)."""
+    w = _WORDS[lang]
+    rows, marks = [], []
+    for lid, ll in fa.loads.links.items():
+        sh = ll.shifted_inertia_force
+        rows.append([str(lid), _num(ll.mass), _num(float(np.hypot(*ll.weight))),
+                     _num(float(np.hypot(*ll.acceleration_cm))), _num(float(np.hypot(*ll.inertia_force))),
+                     _num(ll.J), _num(ll.eps), _num(ll.inertia_moment),
+                     "—" if sh is None else _num(sh.arm / mu_l)])
+        marks.append(str(lid))
+    header = [w["link"], "m, kg", "G, N", "a_S, m/s²", "F_in, N", "J_S, kg·m²", "ε, 1/s²",
+              "M_in, N·m", "h, mm"]
+    return _table_sketch(look, "table-loads", w["loads"].format(i=fa.index), header, rows,
+                         [12.0, 14.0, 16.0, 16.0, 16.0, 16.0, 16.0, 16.0, 14.0], marks)
+
+
+def _sketch_tables(fa: ForceAnalysis, arms: Sequence[tuple[str, float]], look: Any,
+                   lang: Language) -> dict[str, Sketch]:
+    w = _WORDS[lang]
+    out: dict[str, Sketch] = {}
+    rows, marks = [], []
+    for name, r in fa.reactions.items():
+        comps = {c.label[-1]: c.value for c in r.components}
+        rows.append([name, _num(r.magnitude), _num(float(r.force[0])), _num(float(r.force[1])),
+                     _num(abs(comps["n"])) if "n" in comps else "—",
+                     _num(abs(comps["t"])) if "t" in comps else "—"])
+        marks.append(force_markup(name))
+    out["table-reactions"] = _table_sketch(
+        look, "table-reactions", w["reactions"], [w["pair"], "|R|", "R_x", "R_y", "R^n", "R^t"],
+        rows, [16.0, 18.0, 18.0, 18.0, 18.0, 18.0], marks)
+    rows, marks = [], []
+    by_label = {f.label: f for f in (*fa.lever.forces, fa.lever.balancing)}
+    for k, (label, h) in enumerate(arms, 1):
+        f = by_label[label]
+        rows.append([label, str(k), _num(float(np.hypot(*f.force))), _num(h),
+                     _num(float(np.hypot(*f.force)) * h * math.copysign(1.0, f.moment))])
+        marks.append(force_markup(label))
+    out["table-lever"] = _table_sketch(
+        look, "table-lever", w["lever_table"], [w["force"], "h №", "F, N", "h, mm", "±F·h, N·mm"],
+        rows, [16.0, 12.0, 18.0, 16.0, 22.0], marks)
+    d = fa.discrepancy_percent
+    rows = [["", _num(fa.balancing_force_plans, 6)], ["", _num(fa.balancing_force_lever, 6)],
+            ["", "—" if math.isnan(d) else f"{d:.3g}"], ["", _num(fa.balancing_moment, 6)]]
+    out["table-balancing"] = _table_sketch(
+        look, "table-balancing", w["balancing"], [w["quantity"], w["value"]], rows, [66.0, 24.0],
+        [w["plans"], w["by_lever"], w["delta"], w["moment"]])
+    return out
+
+
+# --- composing --------------------------------------------------------------------------
+
+def _force_scale(polygons: Sequence[ForcePolygon]) -> float:
+    """μF so that the largest side of the polygons is 150 … 300 mm (seed 003 §2.6)."""
+    largest = max((p.largest for p in polygons), default=0.0)
+    return scale_for(largest, FORCE_PLAN) if largest > 0 else 1.0
+
+
+def _sketch_all(fa: ForceAnalysis, analysis: Any, look: Any, lang: Language, shrink: int,
+                cache: dict[tuple[str, float], Any]
+                ) -> tuple[dict[str, Sketch], dict[str, float], list[tuple[str, float]]]:
+    """Every drawing but the loaded mechanism at `shrink` series steps from its
+    textbook scale; `cache` keeps a drawing made at a scale for the next try."""
+
+    def memo(name: str, mu: float, make: Any) -> Any:
+        if (name, mu) not in cache:
+            cache[(name, mu)] = make()
+        return cache[(name, mu)]
+
+    def groups_at(mu_g: float) -> dict[str, Sketch]:
+        arm_names: list[str] = []  # the arms are numbered on through the groups
+        out = {f"group-{g.name}": sketch_group(fa, g, mu_g, look, lang, arm_names) for g in fa.groups}
+        out["driving-link"] = sketch_driving_link(fa, mu_g, look, lang)
+        return out
+
+    mu_g = _scale_step(float(analysis.mu_l), shrink)
+    scales: dict[str, float] = {"mu_l_groups": mu_g}
+    sketches: dict[str, Sketch] = dict(memo("groups", mu_g, lambda: groups_at(mu_g)))
+    dl = fa.driving_link
+    for name, polygons, title in [*((g.name, g.polygons, f"group {g.name}") for g in fa.groups),
+                                  (str(dl.link), (dl.polygon,), f"link {dl.link}")]:
+        mu_F = _scale_step(_force_scale(polygons), max(0, shrink))
+        scales[f"mu_F {name}"] = mu_F
+        gid = f"force-polygon-{name}"
+        sketches[gid] = memo(gid, mu_F, lambda: sketch_force_polygons(
+            polygons, mu_F, look, lang, gid, title))
+    mu_V = _scale_step(scale_for(fa.lever.pa, VELOCITY_PLAN), max(0, shrink))
+    scales["mu_V"] = mu_V
+
+    def lever() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
+        arms: list[tuple[str, float]] = []
+        sketch = sketch_lever(fa, mu_V, look, lang, arms)
+        return sketch, arms, _sketch_tables(fa, arms, look, lang)
+
+    sketches["zhukovsky-lever"], arms, tables = memo("lever", mu_V, lever)
+    sketches.update(tables)
+    return sketches, scales, arms
+
+
+def compose_sheet2(analysis: Any, backend: Backend, lang: Language = "en", *,
+                   page: Page | None = None, forces: ForceAnalysis | None = None) -> Sheet2:
+    """Draw sheet 2 of `analysis` on `backend`: the force analysis at its force
+    position (computed here unless `forces` is given)."""
+    page = page if page is not None else Page.of("A1")
+    if lang not in _WORDS:
+        raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(_WORDS)}")
+    fa = forces if forces is not None else force_analysis(analysis, mu_l=float(analysis.mu_l))
+    last: Exception | None = None
+    cache: dict[tuple[str, float], Any] = {}
+    tables = ["table-balancing", "table-reactions", "table-loads", "table-lever"]
+    drawings = ["force-mechanism", "zhukovsky-lever"]
+    for g in fa.groups:
+        drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
+    drawings += ["driving-link", f"force-polygon-{fa.driving_link.link}"]
+    # Scales from the finest that fits: every drawing `shrink` series steps
+    # from its textbook scale, the loaded mechanism up to two steps finer still.
+    for shrink in range(-2, 6):
+        sketches, scales, arms = _sketch_all(fa, analysis, backend.look, lang, shrink, cache)
+        for bigger in (2, 1, 0):
+            mu_l = _scale_step(float(analysis.mu_l), shrink - bigger)
+            if ("force-mechanism", mu_l) not in cache:
+                cache[("force-mechanism", mu_l)] = (
+                    sketch_loaded_mechanism(fa, mu_l, backend.look, lang),
+                    sketch_loads_table(fa, mu_l, backend.look, lang))
+            sketches["force-mechanism"], sketches["table-loads"] = cache[("force-mechanism", mu_l)]
+            scales["mu_l"] = mu_l
+            for gap in (8.0, 5.0):
+                layout = SheetLayout(page, gap=gap)
+                placed: dict[str, Rect] = {}
+                try:
+                    for name in tables:
+                        ext = sketches[name].extent()
+                        placed[name] = layout.place(name, ext.width, ext.height, kind="table",
+                                                    corner="top-right")
+                    for name in drawings:
+                        ext = sketches[name].extent()
+                        placed[name] = layout.place(name, ext.width, ext.height, corner="top-left")
+                except LayoutError as err:
+                    last = err
+                    continue
+                result = Sheet2(fa, layout, dict(scales), shrink=shrink, arms={"lever": arms})
+                for name in tables + drawings:
+                    ext, rect = sketches[name].extent(), placed[name]
+                    dx, dy = rect.x - ext.x, rect.y - ext.y
+                    sketches[name].replay(backend, dx, dy)
+                    result.origins[name] = (dx, dy)
+                    result.placed[name] = rect
+                fields = _title_fields(analysis)
+                fields["sheet"] = "2"
+                draw_page(backend, page, fields, lang)
+                return result
+    raise LayoutError(f"sheet 2 does not fit on {page.name or 'the page'}: {last}")
