@@ -215,6 +215,11 @@ class Analysis:
         return ((sweep.position_of(out) * wd).real, (sweep.velocity_of(out) * wd).real,
                 (sweep.acceleration_of(out) * wd).real)
 
+    def displacements(self, n: int) -> np.ndarray:
+        """s of the output at n equal crank steps from position 0 (s = 0 there), m:
+        the smooth S curve the diagram is drawn through."""
+        return self._s_at(n)
+
     def _s_at(self, n: int) -> np.ndarray:
         phi = self.phi0_deg + self.sense_sign * 360.0 * np.arange(n) / n
         s, _, _ = self.output_along(self.chain.sweep(phi))

@@ -4,25 +4,11 @@ exit code 2; anything else is a bug and keeps its traceback."""
 from __future__ import annotations
 
 import json
-import sys
-from functools import wraps
 from pathlib import Path
 
 import click
 
-
-from .errors import MmtError
-
-
-def reports_errors(fn):
-    @wraps(fn)
-    def wrapper(*args, **kwargs):
-        try:
-            return fn(*args, **kwargs)
-        except MmtError as err:
-            click.echo(f"error: {err}", err=True)
-            sys.exit(2)
-    return wrapper
+from .cli_errors import reports_errors
 
 
 @click.group()
@@ -72,3 +58,5 @@ def bench(sample_dir: Path, quick: bool) -> None:
 from .sheets.draw_cmd import draw  # noqa: E402
 
 main.add_command(draw)
+
+

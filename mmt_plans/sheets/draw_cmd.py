@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from ..cli import reports_errors
+from ..cli_errors import reports_errors
 
 
 def _formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[str, ...]:

@@ -17,6 +17,7 @@ import numpy as np
 from ..render.backend import Backend
 from ..render.recording import RecordingBackend
 from ..scales import ACCELERATION_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
+from .labels import Labels
 from .layout import LayoutError, SheetLayout
 from .page import FIELDS, Language, Page, Rect, draw_page
 from .table import Table
@@ -200,6 +201,20 @@ def _unit(v: np.ndarray) -> np.ndarray:
 # --- the mechanism -----------------------------------------------------------------
 
 
+def sense_arc(sk: Sketch, centre: Sequence[float], radius: float, sense: float,
+              start_deg: float = 20.0, end_deg: float = 250.0, line: str = "main") -> np.ndarray:
+    """An arc round `centre` with its arrowhead in the sense of `sense` (ccw
+    positive): the direction of ω, ε or a couple. Returns the arrow's tip."""
+    c = np.asarray(centre, dtype=float)
+    sk.arc(c, radius, start_deg, end_deg, line)  # type: ignore[arg-type]
+    t = math.radians(end_deg if sense > 0 else start_deg)
+    radial = np.array([math.cos(t), math.sin(t)])
+    tip = c + radius * radial
+    tangent = np.array([-radial[1], radial[0]]) * (1.0 if sense > 0 else -1.0)
+    sk.arrow(tip - 2.5 * tangent, tip, "main", head_length=2.5, head_width=1.0)
+    return tip
+
+
 def _hatched_base(sk: Sketch, p: np.ndarray, width: float = 8.0, down: float = 4.0) -> None:
     """A frame pivot: the pin, two legs and a hatched ground line."""
     x, y = p
@@ -282,7 +297,7 @@ def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> S
                 corners = [c + sx * 6.0 * u + sy * 3.5 * nrm for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
                 sk.polygon([tuple(p) for p in corners], "main" if k in main else "thin", "white" if k in main else "none")
 
-        # Joints of the main positions, the frame pivots, letters.
+        # Joints of the main positions, the frame pivots.
         for k in sorted(main):
             for name, (l0, _) in owners.items():
                 if l0 != 0 and name in pts:
@@ -290,20 +305,47 @@ def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> S
         for name, (l0, _) in owners.items():
             if l0 == 0:
                 _hatched_base(sk, at(name, 0))
+        # Lettering goes where it covers no line and no other letter.
+        labels = Labels(sk, _TEXT)
+        for c in sk.calls:
+            if c.name in ("line", "polyline", "polygon"):
+                p = c.points()
+                for a, b in zip(p, p[1:] + (p[:1] if c.name == "polygon" else [])):
+                    labels.avoid_line(a, b, 0.3)
+            elif c.name == "circle":
+                labels.avoid_circle(c["center"], c["radius"] + 0.3)
+        # ω and ε of every rotating link at the planned positions (seed 003 §1.6)
         centre = at(mech.crank_pivot, 0)
+        sw = analysis.sweep
+        w1 = abs(float(mech.drive.signed_omega))
+        for i in analysis.plan_positions:
+            k = analysis.entry(i)
+            for lid, link in mech.links.items():
+                w, e = float(sw.omega[lid][k]), float(sw.eps[lid][k])
+                names = [p for p in link.points if p in pts]
+                if lid == mech.drive.link or len(names) < 2 or abs(w) < 1e-9 * w1:
+                    continue
+                mid = (at(names[0], k) + at(names[1], k)) / 2
+                for value, radius, sym, line in ((w, 4.0, "ω", "main"), (e, 7.0, "ε", "thin")):
+                    if abs(value) < 1e-9 * w1 * w1 and sym == "ε":
+                        continue
+                    tip = sense_arc(sk, mid, radius, value, 200.0, 340.0, line)
+                    labels.avoid_circle(mid, radius + 0.3)
+                    labels.place(tip, f"{sym}_{{{lid}}}", towards=tip - mid)
+        tip = sense_arc(sk, centre, 8.0, float(mech.drive.signed_omega), 30.0, 150.0)
+        labels.avoid_circle(centre, 8.3)
+        labels.place(tip, "ω_{1}", towards=tip - centre)
         for name in owners:
             if name in pts:
                 p = at(name, 0)
                 d = _unit(p - centre) if name != mech.crank_pivot else np.array([-1.0, 0.0])
-                q = p + 3.5 * _unit(d + np.array([0.3, 0.6]))
-                sk.rich_text(q, _point_markup(name), _TEXT, valign="middle",
-                             anchor="left" if d[0] >= 0 else "right")
+                labels.place(p, _point_markup(name), towards=_unit(d + np.array([0.3, 0.6])),
+                             distance=2.0)
         # Numbered positions of the crank pin.
         for k in range(n):
             p = at(mech.crank_pin, k)
-            d = _unit(p - centre)
-            sk.text(tuple(p + 5.0 * d), str(analysis.positions[k].index), _SMALL,
-                    anchor="center", valign="middle")
+            labels.place(p, str(analysis.positions[k].index), towards=_unit(p - centre),
+                         distance=2.0)
 
         ext = sk.extent()
         label = scale_label(mu_l, "length", lang)
@@ -354,6 +396,7 @@ def sketch_plan(
     gid = f"{kind}-plan-{index}"
     pole = "p" if kind == "velocity" else "π"
     moving = _moving_points(analysis)
+    pending: list[tuple[np.ndarray, str, np.ndarray]] = []  # component labels, written last
     with sk.group(gid, "plan"):
         # Components of the vector equations, dashed.
         for g in view.groups:
@@ -369,7 +412,7 @@ def sketch_plan(
                 sk.arrow(s, e, "dashed", head_length=3.0, head_width=1.0)
                 if c.kind in ("normal", "coriolis"):
                     tag = "n" if c.kind == "normal" else "k"
-                    sk.rich_text(e + np.array([1.0, 1.0]), f"{tag}_{{{c.label.split('_', 1)[-1]}}}", _SMALL)
+                    pending.append((e, f"{tag}_{{{c.label.split('_', 1)[-1]}}}", _unit(e - s)))
         # Absolute vectors from the pole, main lines.
         labels: dict[tuple[int, int], list[str]] = {}
         for name in moving:
@@ -382,16 +425,22 @@ def sketch_plan(
                 sk.circle(v, 0.6, "thin", "black")
             key = (round(float(v[0]) * 2), round(float(v[1]) * 2))
             labels.setdefault(key, []).append(name)
+        sk.circle((0.0, 0.0), 0.8, "main", "black")
+        placer = Labels(sk, _TEXT)
+        for c in sk.calls:
+            if c.name == "line":
+                placer.avoid_line(c["start"], c["end"], 0.3)
+            elif c.name == "circle":
+                placer.avoid_circle(c["center"], c["radius"] + 0.3)
+        placer.place((0.0, 0.0), pole, towards=(-1.0, -1.0))
         for key, names in labels.items():
             v = images[names[0]]
             if float(np.hypot(*v)) < 0.5:
                 continue
-            d = _unit(v)
-            text = ", ".join(_image_markup(n) for n in names)
-            sk.rich_text(v + 2.5 * d, text, _TEXT, anchor="left" if d[0] >= 0 else "right",
-                         valign="middle")
-        sk.circle((0.0, 0.0), 0.8, "main", "black")
-        sk.text((-2.0, -2.0), pole, _TEXT, anchor="right", valign="top")
+            placer.place(v, ", ".join(_image_markup(n) for n in names), towards=_unit(v))
+        placer.size = _SMALL
+        for anchor, markup, towards in pending:
+            placer.place(anchor, markup, towards=towards)
         ext = sk.extent()
         q = "velocity" if kind == "velocity" else "acceleration"
         sk.rich_text(((ext.left + ext.right) / 2, ext.bottom - 5.0),
@@ -411,7 +460,11 @@ def _axes(sk: Sketch, x0: float, x1: float, y0: float, y1: float, ylabel: str, x
     sk.text((x1, -5.0), xlabel, _TEXT, anchor="right", valign="top")
 
 
-def sketch_diagram(construction: Any, which: str, look: Any, lang: Language) -> Sketch:
+def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
+                   s_dense: np.ndarray | None = None) -> Sketch:
+    """One of the S, V, a diagrams with its construction. `s_dense` (m, at equal
+    crank steps from position 0) draws S as the smooth curve through the
+    positions' ordinates, as a draughtsman draws it with a French curve."""
     c = construction
     sk = Sketch(look)
     L = float(c.s_points[-1][0])
@@ -419,6 +472,9 @@ def sketch_diagram(construction: Any, which: str, look: Any, lang: Language) -> 
         if which == "s":
             pts = np.asarray(c.s_points, dtype=float)
             curve = pts
+            if s_dense is not None:
+                y = np.append(s_dense, s_dense[0]) / c.mu_S
+                curve = np.column_stack([np.linspace(0.0, L, len(y)), y])
             deriv = c.velocity
             label = "S, m"
             scales = [scale_label(_tidy(c.mu_S), "displacement", lang),
@@ -644,65 +700,97 @@ def _plan_scales(analysis: Any) -> tuple[float, float]:
     return scale_for(v_a, VELOCITY_PLAN), scale_for(a_a, ACCELERATION_PLAN)
 
 
-def _sketch_all(analysis: Any, look: Any, lang: Language, shrink: int, stacked: bool = True) -> tuple[dict[str, Sketch], dict[str, float]]:
+def scale_step(mu: float, steps: int) -> float:
+    """The series value `steps` places above mu (below it for negative steps)."""
+    if steps >= 0:
+        return _next_scale(mu, steps)
+    return list(series(mu * 1e-4, mu * (1 - 1e-6)))[steps]
+
+
+def _sketch_all(analysis: Any, look: Any, lang: Language, shrink: int, stacked: bool,
+                cache: dict[tuple[str, float], Any]) -> tuple[dict[str, Sketch], dict[str, float]]:
+    """Every drawing but the mechanism, the plans `shrink` series steps from
+    their textbook scales; `cache` keeps what was drawn at a scale for the next try."""
+
+    def memo(name: str, mu: float, make: Callable[[], Any]) -> Any:
+        if (name, mu) not in cache:
+            cache[(name, mu)] = make()
+        return cache[(name, mu)]
+
     mu_v, mu_a = _plan_scales(analysis)
     mu_v, mu_a = _next_scale(mu_v, shrink), _next_scale(mu_a, shrink)
-    mu_l = _next_scale(float(analysis.mu_l), max(0, shrink - 1))
     sketches: dict[str, Sketch] = {}
-    sketches["mechanism"] = sketch_mechanism(analysis, mu_l, look, lang)
-    sketches["structural-formula"] = sketch_formula(analysis, look, lang)
+    sketches["structural-formula"] = memo("structural-formula", 0.0,
+                                          lambda: sketch_formula(analysis, look, lang))
     for i in analysis.plan_positions:
-        sketches[f"velocity-plan-{i}"], _ = sketch_plan(analysis, i, mu_v, "velocity", look, lang)
-        sketches[f"acceleration-plan-{i}"], _ = sketch_plan(analysis, i, mu_a, "acceleration", look, lang)
-    construction = analysis.diagrams[0]
-    diagrams = [sketch_diagram(construction, which, look, lang) for which in ("s", "v", "a")]
+        sketches[f"velocity-plan-{i}"] = memo(f"velocity-plan-{i}", mu_v, lambda: sketch_plan(
+            analysis, i, mu_v, "velocity", look, lang)[0])
+        sketches[f"acceleration-plan-{i}"] = memo(f"acceleration-plan-{i}", mu_a, lambda: sketch_plan(
+            analysis, i, mu_a, "acceleration", look, lang)[0])
+
+    def diagrams() -> list[Sketch]:
+        construction = analysis.diagrams[0]
+        s_dense = analysis.displacements(_DENSE - 1)
+        return [sketch_diagram(construction, which, look, lang, s_dense) for which in ("s", "v", "a")]
+
+    parts = memo("diagrams", 0.0, diagrams)
     if stacked:
-        sketches["diagrams"] = _stack(diagrams, look)
+        sketches["diagrams"] = memo("diagrams-stacked", 0.0, lambda: _stack(parts, look))
     else:
-        for which, sk in zip("sva", diagrams):
+        for which, sk in zip("sva", parts):
             sketches[f"diagram-{which}"] = sk
-    sketches.update(_sketch_tables(analysis, look, lang))
-    return sketches, {"mu_l": mu_l, "mu_V": mu_v, "mu_a": mu_a}
+    sketches.update(memo("tables", 0.0, lambda: _sketch_tables(analysis, look, lang)))
+    return sketches, {"mu_V": mu_v, "mu_a": mu_a}
 
 
 def compose_sheet1(analysis: Any, backend: Backend, lang: Language = "en", *,
                    page: Page | None = None) -> Sheet1:
-    """Draw sheet 1 of `analysis` on `backend`; returns the layout and scales used."""
+    """Draw sheet 1 of `analysis` on `backend`; returns the layout and scales used.
+
+    Scales from the textbook's (seed 003: pa, πa) raised a step at a time until
+    everything fits; the mechanism is tried up to two steps finer first, so
+    that a sheet with room draws it large.
+    """
     page = page if page is not None else Page.of("A1")
     if lang not in _WORDS:
         raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(_WORDS)}")
     last: Exception | None = None
-    attempts = [(shrink, stacked, gap) for shrink in range(5) for stacked in (True, False)
-                for gap in (8.0, 5.0)]
-    for shrink, stacked, gap in attempts:
-        if True:
-            sketches, scales = _sketch_all(analysis, backend.look, lang, shrink, stacked)
-            layout = SheetLayout(page, gap=gap)
-            placed: dict[str, Rect] = {}
-            try:
-                # Big fixed pieces first: the mechanism top left, the column of
-                # diagrams bottom left, the tables from the top right; the plans
-                # then take the free middle.
-                columns = ["diagrams"] if stacked else ["diagram-s", "diagram-v", "diagram-a"]
-                order = ["mechanism", *columns, "table-velocities", "table-accelerations",
-                         "table-omega-eps", "table-check", "structural-formula"] + [
-                    n for n in sketches if n.startswith("velocity-plan") or n.startswith("acceleration-plan")
-                ]
-                for name in order:
-                    ext = sketches[name].extent()
-                    corner = _PLACEMENT.get(name, "top-left")
-                    kind = "table" if name.startswith("table") else "drawing"
-                    placed[name] = layout.place(name, ext.width, ext.height, kind=kind, corner=corner)  # type: ignore[arg-type]
-            except LayoutError as err:
-                last = err
-                continue
-            result = Sheet1(layout, scales, shrink=shrink)
+    cache: dict[tuple[str, float], Any] = {}
+    attempts = [(shrink, stacked, bigger, gap) for shrink in range(5) for stacked in (True, False)
+                for bigger in (2, 1, 0) for gap in (8.0, 5.0)]
+    for shrink, stacked, bigger, gap in attempts:
+        sketches, scales = _sketch_all(analysis, backend.look, lang, shrink, stacked, cache)
+        mu_l = scale_step(float(analysis.mu_l), max(0, shrink - 1) - bigger)
+        if ("mechanism", mu_l) not in cache:
+            cache[("mechanism", mu_l)] = sketch_mechanism(analysis, mu_l, backend.look, lang)
+        sketches["mechanism"] = cache[("mechanism", mu_l)]
+        scales["mu_l"] = mu_l
+        layout = SheetLayout(page, gap=gap)
+        placed: dict[str, Rect] = {}
+        try:
+            # Big fixed pieces first: the mechanism top left, the column of
+            # diagrams bottom left, the tables from the top right; the plans
+            # then take the free middle.
+            columns = ["diagrams"] if stacked else ["diagram-s", "diagram-v", "diagram-a"]
+            order = ["mechanism", *columns, "table-velocities", "table-accelerations",
+                     "table-omega-eps", "table-check", "structural-formula"] + [
+                n for n in sketches if n.startswith("velocity-plan") or n.startswith("acceleration-plan")
+            ]
             for name in order:
-                ext, rect = sketches[name].extent(), placed[name]
-                dx, dy = rect.x - ext.x, rect.y - ext.y
-                sketches[name].replay(backend, dx, dy)
-                result.origins[name] = (dx, dy)
-                result.placed[name] = rect
-            draw_page(backend, page, _title_fields(analysis), lang)
-            return result
+                ext = sketches[name].extent()
+                corner = _PLACEMENT.get(name, "top-left")
+                kind = "table" if name.startswith("table") else "drawing"
+                placed[name] = layout.place(name, ext.width, ext.height, kind=kind, corner=corner)  # type: ignore[arg-type]
+        except LayoutError as err:
+            last = err
+            continue
+        result = Sheet1(layout, scales, shrink=shrink)
+        for name in order:
+            ext, rect = sketches[name].extent(), placed[name]
+            dx, dy = rect.x - ext.x, rect.y - ext.y
+            sketches[name].replay(backend, dx, dy)
+            result.origins[name] = (dx, dy)
+            result.placed[name] = rect
+        draw_page(backend, page, _title_fields(analysis), lang)
+        return result
     raise LayoutError(f"sheet 1 does not fit on {page.name or 'the page'}: {last}")

@@ -27,12 +27,12 @@ from ..forces import ForceAnalysis, ForcePolygon, force_analysis
 from ..forces.state import PositionState
 from ..model import FRAME
 from ..render.backend import Backend
-from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
+from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label
 from .labels import Labels
 from .layout import LayoutError, SheetLayout
 from .page import Language, Page, Rect, draw_page
-from .sheet1 import (Sketch, _guide, _hatched_base, _next_scale, _point_markup, _table_sketch,
-                     _title_fields, _unit)
+from .sheet1 import (Sketch, _guide, _hatched_base, _point_markup, _table_sketch, _title_fields,
+                     _unit, scale_step, sense_arc)
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "GROUPS"]
 
@@ -155,14 +155,6 @@ def _num(x: float, digits: int = 4) -> str:
     return f"{round(x, decimals):.{decimals}f}"
 
 
-def _scale_step(mu: float, steps: int) -> float:
-    """The series value `steps` places above mu (below it for negative steps)."""
-    if steps >= 0:
-        return _next_scale(mu, steps)
-    below = list(series(mu * 1e-4, mu * (1 - 1e-6)))
-    return below[steps]
-
-
 def _arrow_length(magnitude: float, largest: float) -> float:
     """Drawn length of a force shown to direction only: 8 … 26 mm by √|F|."""
     if largest <= 0.0:
@@ -211,16 +203,9 @@ class _Drawing:
         """A couple as an arc with its arrowhead in the sense of M (ccw positive)."""
         if M == 0.0:
             return
-        a0, a1 = 20.0, 250.0
-        self.sk.arc(centre, radius, a0, a1, "main")
+        tip = sense_arc(self.sk, centre, radius, M)
         self.labels.avoid_circle(centre, radius + 0.4)
-        end_deg = a1 if M > 0 else a0
-        t = math.radians(end_deg)
-        tip = centre + radius * np.array([math.cos(t), math.sin(t)])
-        tangent = np.array([-math.sin(t), math.cos(t)]) * (1.0 if M > 0 else -1.0)
-        self.sk.arrow(tip - 2.5 * tangent, tip, "main", head_length=2.5, head_width=1.0)
-        self.later(centre + (radius + 1.0) * np.array([math.cos(t), math.sin(t)]),
-                   force_markup(label), np.array([math.cos(t), math.sin(t)]))
+        self.later(tip, force_markup(label), _unit(tip - centre))
 
     def arm(self, pivot: np.ndarray, at: np.ndarray, F: np.ndarray, label: str) -> float:
         """The perpendicular from `pivot` to the force's line of action; its length, mm."""
@@ -641,18 +626,18 @@ def _sketch_all(fa: ForceAnalysis, analysis: Any, look: Any, lang: Language, shr
         out["driving-link"] = sketch_driving_link(fa, mu_g, look, lang)
         return out
 
-    mu_g = _scale_step(float(analysis.mu_l), shrink)
+    mu_g = scale_step(float(analysis.mu_l), shrink)
     scales: dict[str, float] = {"mu_l_groups": mu_g}
     sketches: dict[str, Sketch] = dict(memo("groups", mu_g, lambda: groups_at(mu_g)))
     dl = fa.driving_link
     for name, polygons, title in [*((g.name, g.polygons, f"group {g.name}") for g in fa.groups),
                                   (str(dl.link), (dl.polygon,), f"link {dl.link}")]:
-        mu_F = _scale_step(_force_scale(polygons), max(0, shrink))
+        mu_F = scale_step(_force_scale(polygons), max(0, shrink))
         scales[f"mu_F {name}"] = mu_F
         gid = f"force-polygon-{name}"
         sketches[gid] = memo(gid, mu_F, lambda: sketch_force_polygons(
             polygons, mu_F, look, lang, gid, title))
-    mu_V = _scale_step(scale_for(fa.lever.pa, VELOCITY_PLAN), max(0, shrink))
+    mu_V = scale_step(scale_for(fa.lever.pa, VELOCITY_PLAN), max(0, shrink))
     scales["mu_V"] = mu_V
 
     def lever() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
@@ -685,7 +670,7 @@ def compose_sheet2(analysis: Any, backend: Backend, lang: Language = "en", *,
     for shrink in range(-2, 6):
         sketches, scales, arms = _sketch_all(fa, analysis, backend.look, lang, shrink, cache)
         for bigger in (2, 1, 0):
-            mu_l = _scale_step(float(analysis.mu_l), shrink - bigger)
+            mu_l = scale_step(float(analysis.mu_l), shrink - bigger)
             if ("force-mechanism", mu_l) not in cache:
                 cache[("force-mechanism", mu_l)] = (
                     sketch_loaded_mechanism(fa, mu_l, backend.look, lang),

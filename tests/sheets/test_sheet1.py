@@ -13,6 +13,8 @@ from mmt_plans.render.recording import RecordingBackend
 from mmt_plans.scales import ACCELERATION_PLAN, VELOCITY_PLAN, scale_for
 from mmt_plans.sheets.sheet1 import compose_sheet1
 
+from lettering import clashes
+
 ROOT = Path(__file__).resolve().parents[2]
 SAMPLES = sorted((ROOT / "samples").glob("*.toml"))
 PRESS = ROOT / "samples" / "six_link_press.toml"
@@ -118,6 +120,42 @@ def test_no_overlaps_on_any_sample(path):
     backend.close()
     assert sheet.layout.problems() == []
     assert "title-block" in _group_ids(backend)
+    assert clashes(backend) == []  # no letter covers another
+
+
+def test_omega_and_epsilon_arcs_at_the_planned_positions(press):
+    """Seed 003 §1.6: the directions of ω and ε of every rotating link shown on
+    the mechanism; the arrowhead at the arc's end turns the way ω (ε) does."""
+    analysis, backend, _ = press
+    calls = backend.in_group("mechanism")
+    labels = " ".join(c["content"] for c in calls if c.name == "text")
+    arcs = [c for c in calls if c.name == "arc"]
+    rotating = [lid for lid in analysis.mech.links if lid != analysis.mech.drive.link
+                and abs(analysis.plan(analysis.plan_positions[0]).omega[lid]) > 1e-9]
+    assert "ω" in labels and "ε" in labels
+    # one arc per ω and ε of each rotating link per planned position, and ω1
+    assert len(arcs) == 2 * len(rotating) * len(analysis.plan_positions) + 1
+    tips = [c["end"] for c in calls if c.name == "arrow"]
+    for arc in arcs:
+        cx, cy = arc["center"]
+        r = arc["radius"]
+        ends = [(cx + r * math.cos(math.radians(a)), cy + r * math.sin(math.radians(a)))
+                for a in (arc["start_deg"], arc["end_deg"])]
+        # an arrowhead's tip lies on one end of the arc
+        assert any(min(math.dist(p, e) for e in ends) < 1e-6 for p in tips)
+
+
+def test_s_curve_is_smooth_and_passes_through_the_positions(press):
+    analysis, backend, sheet = press
+    construction = analysis.diagrams[0]
+    curves = [c for c in backend.in_group("diagram-s") if c.name == "polyline" and c["line"] == "main"]
+    assert len(curves) == 1
+    pts = np.array(curves[0]["points"])
+    assert len(pts) > 10 * len(construction.abscissae)  # denser than the positions
+    origin = pts[0] - np.asarray(construction.s_points[0])
+    for x, y in np.asarray(construction.s_points):
+        d = np.hypot(*(pts - (origin + (x, y))).T)
+        assert d.min() < 1e-9
 
 
 def test_ukrainian_sheet(press):
