@@ -228,7 +228,8 @@ class Analysis:
     @cached_property
     def diagrams(self):
         """The graphical differentiation and its 5 % check against the plans."""
-        from .diagrams import compare_with_plans, graphical_differentiation
+        from .diagrams import TIME_AXIS, compare_with_plans, graphical_differentiation
+        from .scales import scale_for
 
         n = self.mech.study.positions
         k = [self.entry(i) for i in range(n)]
@@ -238,7 +239,10 @@ class Analysis:
         s, v, a = (x[k] for x in self.output_along(self.sweep))
         s = s - s[0]
         n1 = self.mech.drive.n1_rpm
-        construction = graphical_differentiation(s, n1=n1, mu_S=self.mu_l)
+        # the time axis: the standard μ_t that draws one turn in 150 … 240 mm
+        T = 60.0 / n1
+        L = T / scale_for(T, TIME_AXIS)
+        construction = graphical_differentiation(s, n1=n1, mu_S=self.mu_l, L=L)
         check = compare_with_plans(construction.v, construction.a, v, a, n1=n1, s=s,
                                    s_of_n=self._s_at)
         return construction, check, v, a

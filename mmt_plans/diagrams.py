@@ -45,7 +45,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from mmt_plans.scales import MANTISSAS
+from mmt_plans.scales import MANTISSAS, DrawnLength
 
 __all__ = [
     "DEFAULT_TIME_AXIS_MM",
@@ -69,6 +69,9 @@ __all__ = [
 Array = NDArray[np.float64]
 
 DEFAULT_TIME_AXIS_MM = 240.0
+# one turn of the crank on the time axis of a sheet: μ_t from the standard
+# series makes it 150 … 240 mm (240 mm when T/240 is itself a series value)
+TIME_AXIS = DrawnLength("L", 150.0, DEFAULT_TIME_AXIS_MM, DEFAULT_TIME_AXIS_MM)
 POLE_DISTANCE_RANGE_MM = (30, 50)
 POSITION_CANDIDATES = (12, 24, 36, 48, 72, 120, 360)
 ERROR_LIMIT_PERCENT = 5.0

@@ -186,3 +186,21 @@ def test_draw_command(tmp_path):
     missing = runner.invoke(draw, [str(tmp_path / "nope.toml"), "-o", str(tmp_path)])
     assert missing.exit_code == 2
     assert missing.output.startswith("error:") or "error:" in (missing.stderr if hasattr(missing, "stderr") else "")
+
+
+@pytest.mark.parametrize("path", SAMPLES, ids=lambda p: p.stem)
+def test_diagram_scales_are_standard(path):
+    """μ_S and μ_t (one turn drawn 150 … 240 mm) are series values; the derived
+    μ_V = μ_S/(μ_t·OH1), μ_a = μ_V/(μ_t·OH2) with whole-millimetre poles land
+    on the series or within 30.5/30 of it (diagrams.py)."""
+    import math
+
+    from mmt_plans.scales import is_standard, series
+
+    c = mmt_plans.load(path).analyze().diagrams[0]
+    assert 150.0 - 1e-9 <= c.L <= 240.0 + 1e-9
+    assert c.mu_t * c.L == pytest.approx(60.0 / c.n1, rel=1e-12)
+    assert is_standard(c.mu_S) and is_standard(c.mu_t)
+    for mu in (c.mu_V, c.mu_a):
+        nearest = min(abs(math.log(mu / m)) for m in series(mu / 10, mu * 10))
+        assert nearest <= math.log(30.5 / 30) + 1e-12
