@@ -59,4 +59,6 @@ from .sheets.draw_cmd import draw  # noqa: E402
 
 main.add_command(draw)
 
+from .check_cmd import check  # noqa: E402
+main.add_command(check)
 
