@@ -228,8 +228,9 @@ class Analysis:
     @cached_property
     def diagrams(self):
         """The graphical differentiation and its 5 % check against the plans."""
-        from .diagrams import TIME_AXIS, compare_with_plans, graphical_differentiation
-        from .scales import scale_for
+        from .diagrams import (DIAGRAM_HEIGHT_MM, TIME_AXIS, compare_with_plans,
+                               graphical_differentiation)
+        from .scales import scale_for, series
 
         n = self.mech.study.positions
         k = [self.entry(i) for i in range(n)]
@@ -242,7 +243,12 @@ class Analysis:
         # the time axis: the standard μ_t that draws one turn in 150 … 240 mm
         T = 60.0 / n1
         L = T / scale_for(T, TIME_AXIS)
-        construction = graphical_differentiation(s, n1=n1, mu_S=self.mu_l, L=L)
+        # μ_S from μ_l up the series until no diagram is taller than the sheet
+        # can hold: the heights of V and a grow with μ_t·OH/μ_S and μ_t²·OH1·OH2/μ_S
+        for mu_S in series(self.mu_l * (1 - 1e-9), self.mu_l * 1e3):
+            construction = graphical_differentiation(s, n1=n1, mu_S=mu_S, L=L)
+            if max(construction.heights_mm) <= DIAGRAM_HEIGHT_MM:
+                break
         check = compare_with_plans(construction.v, construction.a, v, a, n1=n1, s=s,
                                    s_of_n=self._s_at)
         return construction, check, v, a

@@ -88,4 +88,9 @@ def _extra_sections() -> list[Callable]:
         sections.append(bench_sheets)
     except ImportError:
         pass
+    try:
+        from .batch import bench_batch
+        sections.append(bench_batch)
+    except ImportError:
+        pass
     return sections

@@ -62,3 +62,5 @@ main.add_command(draw)
 from .check_cmd import check  # noqa: E402
 main.add_command(check)
 
+from .batch_cmd import batch  # noqa: E402
+main.add_command(batch)

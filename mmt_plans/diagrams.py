@@ -71,6 +71,8 @@ Array = NDArray[np.float64]
 DEFAULT_TIME_AXIS_MM = 240.0
 # one turn of the crank on the time axis of a sheet: μ_t from the standard
 # series makes it 150 … 240 mm (240 mm when T/240 is itself a series value)
+# the tallest a diagram may be drawn on sheet 1 (S, V and a stand in one column)
+DIAGRAM_HEIGHT_MM = 110.0
 TIME_AXIS = DrawnLength("L", 150.0, DEFAULT_TIME_AXIS_MM, DEFAULT_TIME_AXIS_MM)
 POLE_DISTANCE_RANGE_MM = (30, 50)
 POSITION_CANDIDATES = (12, 24, 36, 48, 72, 120, 360)
@@ -211,6 +213,14 @@ class KinematicDiagrams:
     @property
     def n(self) -> int:
         return int(self.s.size)
+
+    @property
+    def heights_mm(self) -> tuple[float, float, float]:
+        """Drawn heights of the S, V and a diagrams (the curves' extent, axis included), mm."""
+        def extent(y: Array) -> float:
+            return float(max(0.0, y.max()) - min(0.0, y.min()))
+        return (extent(self.s_points[:, 1]), extent(self.velocity.curve[:, 1]),
+                extent(self.acceleration.curve[:, 1]))
 
     def values_at(self, t: ArrayLike) -> tuple[Array, Array]:
         """V and a read off the smooth curves at times t (s)."""

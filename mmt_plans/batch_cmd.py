@@ -1,0 +1,42 @@
+"""`mmt-plans batch`: sheets, results JSON and the note for many files at once."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import click
+
+from .cli_errors import reports_errors
+
+
+@click.command()
+@click.argument("inputs", nargs=-1, required=True,
+                type=click.Path(path_type=Path))
+@click.option("-o", "--out", "out_dir", required=True,
+              type=click.Path(file_okay=False, path_type=Path),
+              help="Directory for OUT/<file stem>/ and OUT/summary.csv.")
+@click.option("--jobs", type=click.IntRange(min=1), default=None,
+              help="Processes to run at once  [default: every core]")
+@click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
+@reports_errors
+def batch(inputs: tuple[Path, ...], out_dir: Path, jobs: int | None, lang: str) -> None:
+    """Answer keys for many mechanism files: each file's sheets (SVG, PDF),
+    results.json and note.pdf into OUT/<file stem>/; directories are searched
+    recursively for *.toml. Exit code 1 if some file failed."""
+    from .batch import find_files, run_batch, summary_table, write_summary_csv
+
+    files = find_files(inputs)
+    with click.progressbar(length=len(files), label=f"{len(files)} files",
+                           file=sys.stderr, show_pos=True) as bar:
+        results = run_batch(files, out_dir, jobs=jobs, lang=lang,
+                            progress=lambda result: bar.update(1))
+    for r in results:
+        if not r.ok:
+            click.echo(f"error: {r.path}: {r.message}", err=True)
+    click.echo(summary_table(results))
+    csv_path = write_summary_csv(results, out_dir / "summary.csv")
+    failed = sum(not r.ok for r in results)
+    click.echo(f"{len(results) - failed} done, {failed} failed; summary written to {csv_path}")
+    if failed:
+        sys.exit(1)

@@ -1,0 +1,915 @@
+"""The calculation note as blocks of text, in the order of seed 003 §IV.
+
+Every step is written as seed 002 writes it: formula = numbers substituted =
+result unit, with the numbers taken from the solver (`Analysis`,
+`PlanView`, `ForceAnalysis`), never re-derived here by another method. A
+segment of a plan (pb, πb, |R|) is the solver's magnitude divided by the
+plan's scale, so "segment·μ" gives back the solver's value.
+
+Lines are `Backend.rich_text` markup: `_x` / `_{xy}` a subscript, `^x` a
+superscript; `plain()` drops the braces for tests and text output.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Literal, Mapping, Sequence
+
+import numpy as np
+
+from ..errors import MmtError
+from ..scales import ACCELERATION_PLAN, FORCE_PLAN, VELOCITY_PLAN, format_scale, scale_for
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..analysis import Analysis
+    from ..forces import ForceAnalysis
+    from ..kinematics.plans import PlanView
+
+Language = Literal["en", "uk"]
+BlockKind = Literal["title", "section", "subsection", "text", "equation", "table", "problem"]
+
+__all__ = ["Block", "NoteContent", "note_content", "plain", "WORDS", "Language"]
+
+
+@dataclass(frozen=True)
+class Block:
+    """One piece of the note. `step` is seed 003's item number ("1.3") of a
+    (sub)section heading; a table has `rows` (the header first) and `widths` (mm)."""
+
+    kind: BlockKind
+    text: str = ""
+    step: str = ""
+    rows: tuple[tuple[str, ...], ...] = ()
+    widths: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True)
+class NoteContent:
+    title: str
+    lang: Language
+    blocks: tuple[Block, ...]
+
+    @property
+    def steps(self) -> list[str]:
+        """Seed 003 item numbers of the headings, in the order written."""
+        return [b.step for b in self.blocks if b.step]
+
+    def text(self) -> str:
+        """The whole note as plain text (markup braces dropped)."""
+        out = []
+        for b in self.blocks:
+            if b.kind == "table":
+                out += ["  ".join(plain(c) for c in row) for row in b.rows]
+            else:
+                out.append(plain(b.text))
+        return "\n".join(out)
+
+
+def plain(markup: str) -> str:
+    """"V_{BA} = ω_{1}·l_{OA}" → "V_BA = ω_1·l_OA"."""
+    return markup.replace("{", "").replace("}", "")
+
+
+WORDS: Mapping[str, Mapping[str, str]] = {
+    "en": {
+        "title": "Calculation and explanatory note",
+        "sheet1": "1. Sheet 1. Structural and kinematic analysis of the mechanism",
+        "1.1": "Structural analysis of the mechanism",
+        "1.2": "Determination of the mechanism's positions",
+        "1.3": "Velocity plans",
+        "1.4": "Angular velocities of the links",
+        "1.5": "Acceleration plans",
+        "1.6": "Angular accelerations of the links",
+        "1.7": "Kinematic diagrams",
+        "1.8": "Matching the results",
+        "sheet2": "2. Sheet 2. Force analysis of the mechanism",
+        "2.1": "Weight forces of the links",
+        "2.2": "Inertia forces of the links",
+        "2.3": "Moments of inertia of the links",
+        "2.4": "Moments of the inertia forces",
+        "2.5": "Reduction of the inertia moments to the inertia forces",
+        "group": "Force calculation of group {name} ({kind})",
+        "driver": "Force calculation of the driving link. Balancing force",
+        "reactions": "Values of the reactions",
+        "lever": "Balancing force by N.E. Zhukovsky's lever",
+        "match": "Matching the results",
+        "chebyshev": "Degree of mobility by Chebyshev's formula (1):",
+        "groups": "The mechanism consists of the initial mechanism I(0,{d}) and the Assur groups:",
+        "group_line": "group {label}: links {links}, class {cls}, order {order}, kind {kind}, pairs {pairs}",
+        "class": "The mechanism belongs to class {cls}. Structural formula: {formula}",
+        "mu_l": "Scale of the kinematic diagram (2), OA = {oa} mm on the drawing:",
+        "extremes": "Extreme positions of {out}: φ_1 = {lo}° (start of the working stroke) and φ_1 = {hi}° (end); the working stroke takes {span}° of the crank's turn.",
+        "positions": "{n} positions from the extreme position 0, every {step}°; plans at positions {plans}, forces at position {force}.",
+        "pos_head": ("Pos.", "φ_1, °", "Stroke", "S, mm"),
+        "working": "working",
+        "idle": "idle",
+        "omega1": "Angular velocity of the crank (3):",
+        "vplan": "Position {i} (φ_1 = {phi}°, {stroke} stroke)",
+        "VA": "Velocity of the crank pin (4) and the scale of the plan (5):",
+        "vequations": "Group {name} ({kind}): the velocity of {X} from the vector equations",
+        "coincident": "{X}({k}) is the point of link {k} under {X}.",
+        "found_v": "Velocities from the plan (6), V = segment·μ_V:",
+        "aA": "Acceleration of the crank pin (8) and the scale of the plan (9):",
+        "aequations": "Group {name} ({kind}): the acceleration of {X} from the vector equations",
+        "normal": "Normal and Coriolis components with their segments on the plan:",
+        "found_a": "Accelerations from the plan (10), a = segment·μ_a:",
+        "omega_pos": "Position {i}, by (7):",
+        "eps_pos": "Position {i}, by (11):",
+        "slides_with": "link {lid} slides along link {g} and turns with it",
+        "ccw": "counter-clockwise",
+        "cw": "clockwise",
+        "still": "",
+        "eps1": "ε_1 = 0 (the crank turns uniformly)",
+        "diagram_scales": "Displacement diagram S_{out}(t) drawn at μ_S = μ_l; time axis L = {L} mm for one turn; pole distances OH_1 = {H1} mm, OH_2 = {H2} mm:",
+        "check_head": ("Pos.", "V plan, m/s", "V diagr., m/s", "Δ_V, %", "a plan, m/s²", "a diagr., m/s²", "Δ_a, %"),
+        "check_pos": "Planned position {i}, by (12) and (13):",
+        "passed": "All errors are within 5 %: the check is passed.",
+        "failed": "The check is NOT passed: {why}",
+        "needed": "{n} positions would bring the construction's own errors under 5 %.",
+        "force_at": "Force analysis at position {i}: φ_1 = {phi}°, {stroke} stroke; g = {g} m/s².",
+        "k_default": "J_S = k·m·l² (16) with k = {k}",
+        "J_given": "J_S{lid} = {J} kg·m² (given)",
+        "no_shift": "link {lid}: F_in = 0, the inertia moment stays a couple",
+        "F_PR": "Production resistance {name} on link {link} at {at}: {F} N",
+        "F_PR_idle": "Production resistance {name} does not act in the idle stroke",
+        "vector_eq": "Vector equation of the group's force plan:",
+        "mu_F": "Scale of the force plan (20):",
+        "solve": "Solution:",
+        "found_R": "Reactions from the plan, R = |R|·μ_F:",
+        "driver_eq": "Moments about {O} of every force on link {d} (h = M/F, m):",
+        "F_bal_pl": "Balancing force from ΣM_{O} = 0 (positive in the sense of rotation):",
+        "R01": "Reaction in pair {O} from the plan of forces of link {d}:",
+        "react_head": ("Reaction", "Pair", "R_x, N", "R_y, N", "R, N"),
+        "lever_text": "The velocity plan turned by 90° ({turn}) is the lever; every force at the image of its point, arms h in mm of the plan (h = M_p/(F·μ_V)):",
+        "lever_head": ("Force", "at", "F, N", "h, mm", "F·h, N·mm"),
+        "F_bal_z": "From ΣM_p = 0:",
+        "discrepancy": "Relative error (21):",
+        "within": "≤ 5 %: the balancing forces agree.",
+        "beyond": "> 5 %: the balancing forces do NOT agree.",
+        "problem": "! {msg}",
+        "against": "against the crank's rotation",
+        "with": "with the crank's rotation",
+        "drives": "driving",
+        "hence": "hence",
+        "brakes": "braking",
+    },
+    "uk": {
+        "title": "Розрахунково-пояснювальна записка",
+        "sheet1": "1. Аркуш 1. Структурний і кінематичний аналіз механізму",
+        "1.1": "Структурний аналіз механізму",
+        "1.2": "Визначення положень механізму",
+        "1.3": "Плани швидкостей",
+        "1.4": "Кутові швидкості ланок",
+        "1.5": "Плани прискорень",
+        "1.6": "Кутові прискорення ланок",
+        "1.7": "Кінематичні діаграми",
+        "1.8": "Порівняння результатів",
+        "sheet2": "2. Аркуш 2. Силовий аналіз механізму",
+        "2.1": "Сили ваги ланок",
+        "2.2": "Сили інерції ланок",
+        "2.3": "Моменти інерції ланок",
+        "2.4": "Моменти сил інерції",
+        "2.5": "Зведення моментів сил інерції до сил інерції",
+        "group": "Силовий розрахунок групи {name} ({kind})",
+        "driver": "Силовий розрахунок ведучої ланки. Зрівноважувальна сила",
+        "reactions": "Значення реакцій",
+        "lever": "Зрівноважувальна сила за важелем М.Є. Жуковського",
+        "match": "Порівняння результатів",
+        "chebyshev": "Ступінь рухомості за формулою Чебишева (1):",
+        "groups": "Механізм складається з початкового механізму I(0,{d}) і груп Ассура:",
+        "group_line": "група {label}: ланки {links}, клас {cls}, порядок {order}, вид {kind}, пари {pairs}",
+        "class": "Механізм {cls} класу. Структурна формула: {formula}",
+        "mu_l": "Масштаб кінематичної схеми (2), OA = {oa} мм на кресленні:",
+        "extremes": "Крайні положення {out}: φ_1 = {lo}° (початок робочого ходу) і φ_1 = {hi}° (кінець); робочий хід триває {span}° оберту кривошипа.",
+        "positions": "{n} положень від крайнього положення 0, через {step}°; плани в положеннях {plans}, сили в положенні {force}.",
+        "pos_head": ("Пол.", "φ_1, °", "Хід", "S, мм"),
+        "working": "робочий",
+        "idle": "холостий",
+        "omega1": "Кутова швидкість кривошипа (3):",
+        "vplan": "Положення {i} (φ_1 = {phi}°, {stroke} хід)",
+        "VA": "Швидкість точки A кривошипа (4) і масштаб плану (5):",
+        "vequations": "Група {name} ({kind}): швидкість точки {X} з векторних рівнянь",
+        "coincident": "{X}({k}) - точка ланки {k}, що збігається з {X}.",
+        "found_v": "Швидкості з плану (6), V = відрізок·μ_V:",
+        "aA": "Прискорення точки A кривошипа (8) і масштаб плану (9):",
+        "aequations": "Група {name} ({kind}): прискорення точки {X} з векторних рівнянь",
+        "normal": "Нормальні та коріолісові складові і їх відрізки на плані:",
+        "found_a": "Прискорення з плану (10), a = відрізок·μ_a:",
+        "omega_pos": "Положення {i}, за (7):",
+        "eps_pos": "Положення {i}, за (11):",
+        "slides_with": "ланка {lid} ковзає по ланці {g} і повертається разом з нею",
+        "ccw": "проти годинникової стрілки",
+        "cw": "за годинниковою стрілкою",
+        "still": "",
+        "eps1": "ε_1 = 0 (кривошип обертається рівномірно)",
+        "diagram_scales": "Діаграма переміщень S_{out}(t) у масштабі μ_S = μ_l; вісь часу L = {L} мм на оберт; полюсні відстані OH_1 = {H1} мм, OH_2 = {H2} мм:",
+        "check_head": ("Пол.", "V план, м/с", "V діагр., м/с", "Δ_V, %", "a план, м/с²", "a діагр., м/с²", "Δ_a, %"),
+        "check_pos": "Положення {i} з планами, за (12) і (13):",
+        "passed": "Усі похибки не перевищують 5 %: перевірку виконано.",
+        "failed": "Перевірку НЕ виконано: {why}",
+        "needed": "{n} положень зменшили б похибки побудови нижче 5 %.",
+        "force_at": "Силовий аналіз у положенні {i}: φ_1 = {phi}°, {stroke} хід; g = {g} м/с².",
+        "k_default": "J_S = k·m·l² (16), k = {k}",
+        "J_given": "J_S{lid} = {J} кг·м² (задано)",
+        "no_shift": "ланка {lid}: F_in = 0, момент сил інерції лишається парою",
+        "F_PR": "Сила виробничого опору {name} на ланці {link} у точці {at}: {F} Н",
+        "F_PR_idle": "Сила виробничого опору {name} не діє на холостому ходу",
+        "vector_eq": "Векторне рівняння плану сил групи:",
+        "mu_F": "Масштаб плану сил (20):",
+        "solve": "Розв'язок:",
+        "found_R": "Реакції з плану сил, R = |R|·μ_F:",
+        "driver_eq": "Моменти відносно {O} усіх сил на ланці {d} (h = M/F, м):",
+        "F_bal_pl": "Зрівноважувальна сила з ΣM_{O} = 0 (додатна в бік обертання):",
+        "R01": "Реакція в парі {O} з плану сил ланки {d}:",
+        "react_head": ("Реакція", "Пара", "R_x, Н", "R_y, Н", "R, Н"),
+        "lever_text": "Важіль - план швидкостей, повернутий на 90° ({turn}); кожна сила в зображенні своєї точки, плечі h у мм плану (h = M_p/(F·μ_V)):",
+        "lever_head": ("Сила", "точка", "F, Н", "h, мм", "F·h, Н·мм"),
+        "F_bal_z": "З ΣM_p = 0:",
+        "discrepancy": "Відносна похибка (21):",
+        "within": "≤ 5 %: зрівноважувальні сили узгоджуються.",
+        "beyond": "> 5 %: зрівноважувальні сили НЕ узгоджуються.",
+        "problem": "! {msg}",
+        "against": "проти обертання кривошипа",
+        "with": "за обертанням кривошипа",
+        "drives": "рушійна",
+        "hence": "звідки",
+        "brakes": "гальмівна",
+    },
+}
+
+# Units, and the phrases of the force solver's step lines, per language.
+_UNITS = {
+    "en": {"m": "m", "mm": "mm", "m/s": "m/s", "m/s2": "m/s²", "rad/s": "rad/s",
+           "rad/s2": "rad/s²", "N": "N", "Nm": "N·m", "kg": "kg", "kgm2": "kg·m²",
+           "rpm": "rpm", "%": "%", "m/mm": "m/mm", "v/mm": "(m/s)/mm",
+           "a/mm": "(m/s²)/mm", "N/mm": "N/mm", "s/mm": "s/mm"},
+    "uk": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s2": "м/с²", "rad/s": "рад/с",
+           "rad/s2": "рад/с²", "N": "Н", "Nm": "Н·м", "kg": "кг", "kgm2": "кг·м²",
+           "rpm": "об/хв", "%": "%", "m/mm": "м/мм", "v/mm": "(м/с)/мм",
+           "a/mm": "(м/с²)/мм", "N/mm": "Н/мм", "s/mm": "с/мм"},
+}
+
+_STEP_PHRASES_UK = (
+    ("group polygon", "план сил групи"),
+    ("polygon", "план сил"),
+    ("(positive in the sense of rotation)", "(додатна в бік обертання)"),
+    ("normal to the guide", "перпендикулярно до напрямної"),
+    ("has no normal force; the pair carries a couple", "не має нормальної сили; пара передає момент"),
+    ("mm from", "мм від"),
+    ("along the guide", "уздовж напрямної"),
+    ("acts", "діє"),
+    ("link", "ланка"),
+    ("Sum", "Σ"),
+    (" N*m", " Н·м"),
+    (" N", " Н"),
+)
+
+
+# --- number formatting -----------------------------------------------------------------
+
+def number(x: float, lang: Language = "en", sig: int = 4) -> str:
+    """At least `sig` significant digits, no exponent, no trailing zeros; a
+    decimal comma in Ukrainian: 10.47, 2.094, 0.2, 12403; "2,094"."""
+    x = float(x)
+    if not math.isfinite(x):
+        return "-"
+    if abs(x) < 1e-12:
+        text = "0"
+    else:
+        digits = min(8, max(0, sig - 1 - int(math.floor(math.log10(abs(x))))))
+        text = f"{x:.{digits}f}"
+        if "." in text:
+            text = text.rstrip("0").rstrip(".")
+        if text in ("-0", ""):
+            text = "0"
+    return text.replace(".", ",") if lang == "uk" else text
+
+
+def _paren(text: str) -> str:
+    """A negative number substituted into a formula goes in parentheses."""
+    return f"({text})" if text.startswith("-") else text
+
+
+def _sub(name: str) -> str:
+    """A point or link name as a subscript group: "S2" → "{S2}"."""
+    return "{" + name + "}"
+
+
+def _img(name: str) -> str:
+    """The image of point "B" on a plan: "b"; of "S2": "s_{2}"; of "A3": "a_{3}"."""
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
+    if m:
+        return f"{m.group(1).lower()}_{{{m.group(2)}}}"
+    return name.lower()
+
+
+def _force_markup(label: str) -> str:
+    """Labels of the force solver as markup: "F_in2" → "F_{in2}", "R34^t" → "R^{τ}_{34}"."""
+    m = re.fullmatch(r"R(\d+)(?:_(\d+))?(?:\^(\w))?", label)
+    if m:
+        idx = m.group(1) + (f",{m.group(2)}" if m.group(2) else "")
+        sup = {"t": "τ", "n": "n"}.get(m.group(3) or "", m.group(3) or "")
+        return f"R^{{{sup}}}_{{{idx}}}" if sup else f"R_{{{idx}}}"
+    m = re.fullmatch(r"(F'?|G|M)_?([A-Za-z]*)(\d*)", label)
+    if m and (m.group(2) or m.group(3)):
+        return f"{m.group(1)}_{{{m.group(2)}{m.group(3)}}}"
+    if "_" in label:
+        head, tail = label.split("_", 1)
+        return f"{head}_{{{tail}}}"
+    return label
+
+
+def _equation_markup(eq: str) -> str:
+    return " + ".join(_force_markup(t.strip()) for t in eq.replace("= 0", "").split("+")) + " = 0"
+
+
+# --- the builder -------------------------------------------------------------------------
+
+class _Writer:
+    def __init__(self, analysis: "Analysis", lang: Language) -> None:
+        if lang not in WORDS:
+            raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(WORDS)}")
+        self.a = analysis
+        self.mech = analysis.mech
+        self.lang = lang
+        self.w = WORDS[lang]
+        self.u = _UNITS[lang]
+        self.blocks: list[Block] = []
+
+    # small helpers
+    def n(self, x: float, sig: int = 4) -> str:
+        return number(x, self.lang, sig)
+
+    def np_(self, x: float, sig: int = 4) -> str:
+        return _paren(self.n(x, sig))
+
+    def add(self, kind: BlockKind, text: str = "", step: str = "", rows=(), widths=()) -> None:
+        self.blocks.append(Block(kind, text, step, tuple(tuple(r) for r in rows), tuple(widths)))
+
+    def text(self, t: str) -> None:
+        self.add("text", t)
+
+    def eq(self, t: str) -> None:
+        self.add("equation", t)
+
+    def section(self, key: str, step: str = "") -> None:
+        self.add("subsection", f"{step}. {self.w[key]}" if step else self.w[key], step or key)
+
+    def problem(self, err: Exception) -> None:
+        self.add("problem", self.w["problem"].format(msg=str(err)))
+
+    # ---------------------------------------------------------------------------------
+    def build(self) -> NoteContent:
+        a, w = self.a, self.w
+        self.add("title", f"{w['title']}: {self.mech.title}")
+        self.add("section", w["sheet1"], "sheet1")
+        self.structure()
+        self.positions()
+        views = {}
+        for i in a.plan_positions:
+            try:
+                views[i] = a.plan(i)
+            except MmtError as err:
+                views[i] = err
+        self.velocity_plans(views)
+        self.angular_velocities(views)
+        self.acceleration_plans(views)
+        self.angular_accelerations(views)
+        self.diagrams()
+        self.add("section", w["sheet2"], "sheet2")
+        self.forces()
+        return NoteContent(self.mech.title, self.lang, tuple(self.blocks))
+
+    # --- 1.1 -----------------------------------------------------------------------------
+    def structure(self) -> None:
+        st = self.a.structure
+        self.section("1.1", "1.1")
+        self.text(self.w["chebyshev"])
+        self.eq(f"n = {st.n}, p_5 = {st.p5}, p_4 = {st.p4}")
+        self.eq(f"W = 3n - 2p_5 - p_4 = 3·{st.n} - 2·{st.p5} - {st.p4} = {st.W}")
+        self.text(self.w["groups"].format(d=st.driver))
+        for g in st.groups:
+            self.eq(self.w["group_line"].format(
+                label=g.label, links=", ".join(map(str, sorted(g.links))), cls=g.group_class,
+                order=g.order, kind=g.kind or "-", pairs=", ".join(p.name for p in g.pairs)))
+        self.text(self.w["class"].format(cls=st.mechanism_class, formula=st.formula))
+
+    # --- 1.2 -----------------------------------------------------------------------------
+    def positions(self) -> None:
+        a, w, u = self.a, self.w, self.u
+        self.section("1.2", "1.2")
+        l_oa = self.mech.crank_length
+        mu_l = float(a.mu_l)
+        oa = l_oa / mu_l
+        self.text(w["mu_l"].format(oa=self.n(oa)))
+        self.eq(f"μ_l = l_{{OA}}/OA = {self.n(l_oa)}/{self.n(oa)} = {self.n(mu_l)} {u['m/mm']}")
+        try:
+            lo, hi = a.extremes
+            self.text(w["extremes"].format(out=self.mech.study.output, lo=self.n(lo, 6),
+                                           hi=self.n(hi, 6), span=self.n(a.working_span_deg, 6)))
+        except MmtError as err:
+            self.problem(err)
+            return
+        n = self.mech.study.positions
+        self.text(w["positions"].format(n=n, step=self.n(360.0 / n), plans=", ".join(
+            map(str, a.plan_positions)), force=a.force_position))
+        s, _, _ = a.output_along(a.sweep)
+        s0 = s[a.entry(0)] if np.isfinite(s[a.entry(0)]) else 0.0
+        rows = [w["pos_head"]]
+        for k, pos in enumerate(a.positions):
+            label = str(pos.index) if pos.index is not None else "*"
+            rows.append((label, self.n(pos.phi1_deg, 5), w[pos.stroke],
+                         self.n((s[k] - s0) * 1e3) if np.isfinite(s[k]) else "-"))
+        self.add("table", rows=rows, widths=(16, 26, 28, 26))
+
+    # --- scales of the plans ------------------------------------------------------------
+    def plan_scales(self) -> tuple[float, float, float, float]:
+        """V_A, a_A (solver) and μ_V, μ_a as sheet 1 chooses them (seed 003 (5), (9))."""
+        pin = self.mech.crank_pin
+        v_a = a_a = 0.0
+        for i in self.a.plan_positions:
+            try:
+                view = self.a.plan(i)
+            except MmtError:
+                continue
+            v_a = max(v_a, float(np.hypot(*view.velocity_images[pin])))
+            a_a = max(a_a, float(np.hypot(*view.acceleration_images[pin])))
+        mu_v = scale_for(v_a, VELOCITY_PLAN) if v_a > 0 else 1.0
+        mu_a = scale_for(a_a, ACCELERATION_PLAN) if a_a > 0 else 1.0
+        return v_a, a_a, mu_v, mu_a
+
+    def moving_points(self, view: "PlanView") -> list[str]:
+        owners = self.mech.point_owners
+        names = [p for p, o in owners.items() if 0 not in o]
+        names += [p for p in view.velocity_images if p not in owners]
+        return [p for p in names if p in view.velocity_images]
+
+    def position_head(self, i: int, view) -> None:
+        k = self.a.entry(i)
+        pos = self.a.positions[k]
+        self.add("subsection", self.w["vplan"].format(i=i, phi=self.n(pos.phi1_deg, 5),
+                                                      stroke=self.w[pos.stroke]))
+
+    def distance(self, i: int, P: str, Q: str) -> float:
+        return abs(self.point(i, P) - self.point(i, Q))
+
+    def point(self, i: int, name: str) -> complex:
+        """Where point `name` is at position i (m, complex). "G7", the point
+        of link 7 under G, is where G is."""
+        locate = self.a.chain.locate
+        if name not in locate:
+            m = re.fullmatch(r"(.+?)(\d+)", name)
+            if m and m.group(1) in locate:
+                name = m.group(1)
+        return complex(self.a.sweep.position_of(name)[self.a.entry(i)])
+
+    # --- 1.3 -----------------------------------------------------------------------------
+    def velocity_plans(self, views) -> None:
+        w, u = self.w, self.u
+        self.section("1.3", "1.3")
+        d = self.mech.drive
+        n1 = d.n1_rpm
+        w1 = math.pi * n1 / 30.0
+        self.text(w["omega1"])
+        self.eq(f"ω_1 = π·n_1/30 = π·{self.n(n1)}/30 = {self.n(w1)} {u['rad/s']}")
+        l_oa = self.mech.crank_length
+        v_a, _, mu_v, _ = self.plan_scales()
+        self.text(w["VA"])
+        self.eq(f"V_A = ω_1·l_{{OA}} = {self.n(w1)}·{self.n(l_oa)} = {self.n(w1 * l_oa)} {u['m/s']};")
+        pa = v_a / mu_v
+        self.eq(f"μ_V = V_A/pa = {self.n(v_a)}/{self.n(pa)} = {self.n(mu_v)} {u['v/mm']}")
+        for i, view in views.items():
+            self.position_head(i, view)
+            if isinstance(view, Exception):
+                self.problem(view)
+                continue
+            for g in view.groups:
+                X = g.point
+                self.text(w["vequations"].format(name=g.group, kind=g.kind, X=X))
+                lines, coincident = [], []
+                for c in g.velocity:
+                    base, rel = self.leg(c.label, X, "V_")
+                    lines.append(f"V_{_sub(X)} = V_{_sub(base)} + V_{_sub(rel)}")
+                    if "(" in base:
+                        coincident.append(base)
+                self.eq("; ".join(lines))
+                for base in coincident:
+                    m = re.fullmatch(r"(.+)\((\d+)\)", base)
+                    self.text(w["coincident"].format(X=m.group(1), k=m.group(2)))
+            self.text(w["found_v"])
+            for name in self.moving_points(view):
+                v = float(np.hypot(*view.velocity_images[name]))
+                self.eq(f"V_{_sub(name)} = p{_img(name)}·μ_V = {self.n(v / mu_v)}·{self.n(mu_v)} = "
+                        f"{self.n(v)} {u['m/s']}")
+            for g in view.groups:
+                for c in g.velocity:
+                    base, rel = self.leg(c.label, g.point, "V_")
+                    seg = self.segment(c.label, g.point)
+                    self.eq(f"V_{_sub(rel)} = {seg}·μ_V = {self.n(c.magnitude / mu_v)}·"
+                            f"{self.n(mu_v)} = {self.n(c.magnitude)} {u['m/s']}")
+
+    def leg(self, label: str, X: str, prefix: str) -> tuple[str, str]:
+        """The known point of a leg and the relative part: "V_BA" → ("A", "BA");
+        "V_E/0" → ("E(0)", "E/0")."""
+        body = label.split("_", 1)[1]
+        if "/" in body:
+            k = body.split("/", 1)[1]
+            return f"{X}({k})", body
+        return body[len(X):], body
+
+    def segment(self, label: str, X: str) -> str:
+        """The segment of a relative velocity on the plan: "V_BA" → "ab"."""
+        base, rel = self.leg(label, X, "V_")
+        if "/" in rel:
+            k = rel.split("/", 1)[1]
+            return f"{_img(X)}_{{({k})}}{_img(X)}"
+        return f"{_img(base)}{_img(X)}"
+
+    # --- 1.4 -----------------------------------------------------------------------------
+    def link_pair(self, lid: int, view) -> tuple[str, str] | None:
+        """Two points of link `lid` whose relative motion gives ω and ε: the
+        textbook's (B, A) for link AB, i.e. the second point relative to the first."""
+        names = [p for p in self.mech.links[lid].points if p in view.velocity_images]
+        if len(names) < 2:
+            return None
+        return names[1], names[0]
+
+    def guide_of(self, lid: int) -> int | None:
+        for sl in self.mech.sliders:
+            if sl.slider == lid:
+                return sl.guide
+        return None
+
+    def sense(self, x: float) -> str:
+        if abs(x) < 1e-12:
+            return ""
+        return f" ({self.w['ccw'] if x > 0 else self.w['cw']})"
+
+    def angular_velocities(self, views) -> None:
+        u = self.u
+        self.section("1.4", "1.4")
+        d = self.mech.drive.link
+        for i, view in views.items():
+            if isinstance(view, Exception):
+                continue
+            self.text(self.w["omega_pos"].format(i=i))
+            self.eq(f"ω_{{{d}}} = {self.n(abs(view.omega[d]))} {u['rad/s']}{self.sense(view.omega[d])}")
+            for lid in self.mech.links:
+                if lid == d:
+                    continue
+                om = view.omega[lid]
+                pair = self.link_pair(lid, view)
+                if pair is None:
+                    g = self.guide_of(lid)
+                    gw = 0.0 if g in (None, 0) else abs(view.omega[g])
+                    self.eq(f"ω_{{{lid}}} = ω_{{{g if g is not None else 0}}} = {self.n(gw)} "
+                            f"{u['rad/s']}{self.sense(om)}  ({self.w['slides_with'].format(lid=lid, g=g)})")
+                    continue
+                P, Q = pair
+                v_pq = float(np.hypot(*(view.velocity_images[P] - view.velocity_images[Q])))
+                l_pq = self.distance(i, P, Q)
+                self.eq(f"ω_{{{lid}}} = V_{{{P}{Q}}}/l_{{{P}{Q}}} = {self.n(v_pq)}/{self.n(l_pq)} = "
+                        f"{self.n(v_pq / l_pq)} {u['rad/s']}{self.sense(om)}")
+
+    # --- 1.5 -----------------------------------------------------------------------------
+    def acceleration_plans(self, views) -> None:
+        w, u = self.w, self.u
+        self.section("1.5", "1.5")
+        d = self.mech.drive
+        w1 = abs(d.omega)
+        l_oa = self.mech.crank_length
+        _, a_a, _, mu_a = self.plan_scales()
+        self.text(w["aA"])
+        self.eq(f"a_A = a^n_A = ω_1^2·l_{{OA}} = {self.n(w1)}^2·{self.n(l_oa)} = "
+                f"{self.n(w1 * w1 * l_oa)} {u['m/s2']};")
+        pia = a_a / mu_a
+        self.eq(f"μ_a = a_A/πa = {self.n(a_a)}/{self.n(pia)} = {self.n(mu_a)} {u['a/mm']}")
+        for i, view in views.items():
+            self.position_head(i, view)
+            if isinstance(view, Exception):
+                self.problem(view)
+                continue
+            for g in view.groups:
+                X = g.point
+                self.text(w["aequations"].format(name=g.group, kind=g.kind, X=X))
+                lines = []
+                comps = list(g.acceleration)
+                for c1, c2 in zip(comps[0::2], comps[1::2]):
+                    base, rel = self.leg(c1.label, X, "a")
+                    if c1.kind == "normal":
+                        lines.append(f"a_{_sub(X)} = a_{_sub(base)} + a^n_{_sub(rel)} + a^τ_{_sub(rel)}")
+                    else:
+                        lines.append(f"a_{_sub(X)} = a_{_sub(base)} + a^k_{_sub(rel)} + a^r_{_sub(rel)}")
+                self.eq("; ".join(lines))
+                self.text(w["normal"])
+                for c in comps:
+                    base, rel = self.leg(c.label, X, "a")
+                    if c.kind == "normal":
+                        vc = self.velocity_leg(g, rel)
+                        l = self.distance(i, X, base)
+                        val = vc * vc / l if l > 0 else c.magnitude
+                        self.eq(f"a^n_{_sub(rel)} = V_{_sub(rel)}^2/l_{_sub(rel)} = "
+                                f"{self.n(vc)}^2/{self.n(l)} = {self.n(val)} {u['m/s2']}; "
+                                f"|a^n_{_sub(rel)}| = {self.n(val)}/{self.n(mu_a)} = "
+                                f"{self.n(val / mu_a)} {u['mm']}")
+                    elif c.kind == "coriolis":
+                        k = int(rel.split("/", 1)[1])
+                        om = abs(view.omega.get(k, 0.0)) if k != 0 else 0.0
+                        vr = self.velocity_leg(g, rel)
+                        val = 2.0 * om * vr
+                        self.eq(f"a^k_{_sub(rel)} = 2·ω_{{{k}}}·V_{_sub(rel)} = 2·{self.n(om)}·"
+                                f"{self.n(vr)} = {self.n(val)} {u['m/s2']}; |a^k_{_sub(rel)}| = "
+                                f"{self.n(val / mu_a)} {u['mm']}")
+            self.text(w["found_a"])
+            for name in self.moving_points(view):
+                acc = float(np.hypot(*view.acceleration_images[name]))
+                self.eq(f"a_{_sub(name)} = π{_img(name)}·μ_a = {self.n(acc / mu_a)}·{self.n(mu_a)} = "
+                        f"{self.n(acc)} {u['m/s2']}")
+            for g in view.groups:
+                for c in g.acceleration:
+                    if c.kind not in ("tangential", "slide"):
+                        continue
+                    base, rel = self.leg(c.label, g.point, "a")
+                    sym = "a^τ" if c.kind == "tangential" else "a^r"
+                    self.eq(f"{sym}_{_sub(rel)} = {self.n(c.magnitude / mu_a)}·{self.n(mu_a)} = "
+                            f"{self.n(c.magnitude)} {u['m/s2']}")
+
+    def velocity_leg(self, g, rel: str) -> float:
+        for c in g.velocity:
+            if c.label.split("_", 1)[1] == rel:
+                return c.magnitude
+        return 0.0
+
+    # --- 1.6 -----------------------------------------------------------------------------
+    def angular_accelerations(self, views) -> None:
+        u = self.u
+        self.section("1.6", "1.6")
+        d = self.mech.drive.link
+        for i, view in views.items():
+            if isinstance(view, Exception):
+                continue
+            self.text(self.w["eps_pos"].format(i=i))
+            self.eq(self.w["eps1"].replace("ε_1", f"ε_{{{d}}}"))
+            for lid in self.mech.links:
+                if lid == d:
+                    continue
+                e = view.eps[lid]
+                pair = self.link_pair(lid, view)
+                if pair is None:
+                    g = self.guide_of(lid)
+                    ge = 0.0 if g in (None, 0) else abs(view.eps[g])
+                    self.eq(f"ε_{{{lid}}} = ε_{{{g if g is not None else 0}}} = {self.n(ge)} "
+                            f"{u['rad/s2']}{self.sense(e)}")
+                    continue
+                P, Q = pair
+                rc = self.point(i, P) - self.point(i, Q)
+                r = np.array([rc.real, rc.imag])
+                om = view.omega[lid]
+                a_rel = view.acceleration_images[P] - view.acceleration_images[Q]
+                a_t = float(np.hypot(*(a_rel + om * om * r)))  # a_PQ minus its normal part −ω²·r
+                l = float(np.hypot(*r))
+                self.eq(f"ε_{{{lid}}} = a^τ_{{{P}{Q}}}/l_{{{P}{Q}}} = {self.n(a_t)}/{self.n(l)} = "
+                        f"{self.n(a_t / l)} {u['rad/s2']}{self.sense(e)}")
+
+    # --- 1.7, 1.8 ------------------------------------------------------------------------
+    def diagrams(self) -> None:
+        a, w, u = self.a, self.w, self.u
+        self.section("1.7", "1.7")
+        try:
+            construction, check, v_plan, a_plan = a.diagrams
+        except MmtError as err:
+            self.problem(err)
+            self.section("1.8", "1.8")
+            self.problem(err)
+            return
+        c = construction
+        self.text(w["diagram_scales"].format(out=a.mech.study.output, L=self.n(c.L),
+                                             H1=self.n(c.H1), H2=self.n(c.H2)))
+        self.eq(f"μ_S = μ_l = {self.n(c.mu_S)} {u['m/mm']};")
+        self.eq(f"μ_t = 60/(n_1·L) = 60/({self.n(c.n1)}·{self.n(c.L)}) = {self.n(c.mu_t)} {u['s/mm']};")
+        self.eq(f"μ_V = μ_S/(μ_t·OH_1) = {self.n(c.mu_S)}/({self.n(c.mu_t)}·{self.n(c.H1)}) = "
+                f"{self.n(c.mu_V)} {u['v/mm']};")
+        self.eq(f"μ_a = μ_V/(μ_t·OH_2) = {self.n(c.mu_V)}/({self.n(c.mu_t)}·{self.n(c.H2)}) = "
+                f"{self.n(c.mu_a)} {u['a/mm']}")
+        self.section("1.8", "1.8")
+        plans = set(a.plan_positions)
+        rows = [w["check_head"]]
+        for k in range(len(c.v)):
+            ev, ea = check.v_error_percent[k], check.a_error_percent[k]
+            rows.append((f"{k}{'*' if k in plans else ''}", self.n(v_plan[k]), self.n(c.v[k]),
+                         "-" if ev is None else self.n(ev, 3), self.n(a_plan[k]),
+                         self.n(c.a[k]), "-" if ea is None else self.n(ea, 3)))
+        self.add("table", rows=rows, widths=(13, 25, 25, 18, 27, 27, 18))
+        for i in a.plan_positions:
+            if i >= len(c.v):
+                continue
+            self.text(w["check_pos"].format(i=i))
+            for sym, plan_, diag, err in (("V", v_plan[i], c.v[i], check.v_error_percent[i]),
+                                          ("a", a_plan[i], c.a[i], check.a_error_percent[i])):
+                if err is None:
+                    self.eq(f"Δ_{sym} = ({sym}_{{plan}} - {sym}_{{diagr}})/{sym}_{{plan}}·100 % : "
+                            f"{sym}_{{plan}} = 0")
+                    continue
+                self.eq(f"Δ_{sym} = ({sym}_{{plan}} - {sym}_{{diagr}})/{sym}_{{plan}}·100 % = "
+                        f"({self.n(plan_)} - {self.np_(diag)})/{self.np_(plan_)}·100 % = "
+                        f"{self.n(err, 3)} %")
+        if check.passed:
+            self.text(w["passed"])
+        else:
+            why = "; ".join(f"{f.quantity}, {f.index}: {f.reason}" for f in check.flags)
+            self.text(w["failed"].format(why=why))
+            self.text(w["needed"].format(n=check.positions_needed))
+
+    # --- sheet 2 -------------------------------------------------------------------------
+    def forces(self) -> None:
+        from ..forces import force_analysis
+
+        a = self.a
+        try:
+            fa = force_analysis(a, mu_l=float(a.mu_l))
+        except MmtError as err:
+            self.section("2.1", "2.1")
+            self.problem(err)
+            return
+        self.loads(fa)
+        self.groups(fa)
+        self.lever(fa)
+
+    def loads(self, fa: "ForceAnalysis") -> None:
+        w, u = self.w, self.u
+        self.section("2.1", "2.1")
+        self.text(w["force_at"].format(i=fa.index, phi=self.n(fa.phi1_deg, 5),
+                                       stroke=w[fa.stroke], g=self.n(fa.loads.g)))
+        g = fa.loads.g
+        for lid, ll in fa.loads.links.items():
+            if ll.mass:
+                self.eq(f"G_{{{lid}}} = m_{{{lid}}}·g = {self.n(ll.mass)}·{self.n(g)} = "
+                        f"{self.n(ll.mass * g)} {u['N']}")
+        self.section("2.2", "2.2")
+        for lid, ll in fa.loads.links.items():
+            if ll.mass:
+                aS = float(np.hypot(*ll.acceleration_cm))
+                self.eq(f"F_{{in{lid}}} = m_{{{lid}}}·a_{{S{lid}}} = {self.n(ll.mass)}·{self.n(aS)} = "
+                        f"{self.n(ll.mass * aS)} {u['N']}")
+        for f in fa.loads.production_resistance:
+            if f.acting:
+                self.text(w["F_PR"].format(name=plain(_force_markup(f.name)), link=f.link, at=f.at,
+                                           F=self.n(float(np.hypot(*f.force)))))
+            else:
+                self.text(w["F_PR_idle"].format(name=plain(_force_markup(f.name))))
+        self.section("2.3", "2.3")
+        for lid, ll in fa.loads.links.items():
+            link = self.mech.links[lid]
+            if not ll.J:
+                continue
+            l = link.length
+            if l > 0 and math.isclose(link.J, link.k * link.mass * l * l, rel_tol=1e-9):
+                self.eq(f"J_{{S{lid}}} = k·m_{{{lid}}}·l_{{{lid}}}^2 = {self.n(link.k)}·{self.n(link.mass)}·"
+                        f"{self.n(l)}^2 = {self.n(link.J)} {u['kgm2']}")
+            else:
+                self.eq(w["J_given"].format(lid=lid, J=self.n(link.J)).replace(
+                    f"J_S{lid}", f"J_{{S{lid}}}"))
+        self.section("2.4", "2.4")
+        for lid, ll in fa.loads.links.items():
+            if ll.J and ll.eps:
+                self.eq(f"M_{{in{lid}}} = J_{{S{lid}}}·ε_{{{lid}}} = {self.n(ll.J)}·{self.n(abs(ll.eps))} = "
+                        f"{self.n(abs(ll.inertia_moment))} {u['Nm']}")
+        self.section("2.5", "2.5")
+        for lid, ll in fa.loads.links.items():
+            if not ll.inertia_moment:
+                continue
+            sh = ll.shifted_inertia_force
+            if sh is None:
+                self.text(w["no_shift"].format(lid=lid))
+                continue
+            F = float(np.hypot(*ll.inertia_force))
+            self.eq(f"h_{{{lid}}} = M_{{in{lid}}}/F_{{in{lid}}} = {self.n(abs(ll.inertia_moment))}/"
+                    f"{self.n(F)} = {self.n(sh.arm)} {u['m']}; |h_{{{lid}}}| = h_{{{lid}}}/μ_l = "
+                    f"{self.n(sh.arm)}/{self.n(float(self.a.mu_l))} = {self.n(sh.arm_mm or 0.0)} {u['mm']}")
+
+    def groups(self, fa: "ForceAnalysis") -> None:
+        w, u = self.w, self.u
+        n_groups = len(fa.groups)
+        for j, g in enumerate(fa.groups):
+            step = f"2.{6 + j}"
+            self.add("subsection", f"{step}. " + w["group"].format(name=g.name, kind=g.kind), step)
+            poly = g.polygons[0]
+            self.text(w["vector_eq"])
+            self.eq(_equation_markup(poly.equation))
+            mu_f = scale_for(poly.largest, FORCE_PLAN) if poly.largest > 0 else 1.0
+            self.text(w["mu_F"])
+            self.eq(f"μ_F = F_{{max}}/|F_{{max}}| = {self.n(poly.largest)}/{self.n(poly.largest / mu_f)} = "
+                    f"{self.n(mu_f)} {u['N/mm']}")
+            self.text(w["solve"])
+            for s in g.steps:
+                self.eq(self.step_line(s))
+            self.text(w["found_R"])
+            for r in g.reactions:
+                comps = [c for c in r.components]
+                name = _force_markup(r.name)
+                if len(comps) == 2:
+                    c1, c2 = comps
+                    # osifont has no √: the root is written as a power 1/2
+                    self.eq(f"{name} = (({_force_markup(c1.label)})^2 + ({_force_markup(c2.label)})^2)^{{1/2}} = "
+                            f"({self.np_(c1.value)}^2 + {self.np_(c2.value)}^2)^{{1/2}} = {self.n(r.magnitude)} {u['N']}")
+                self.eq(f"{name} = |{name}|·μ_F = {self.n(r.magnitude / mu_f)}·"
+                        f"{self.n(mu_f)} = {self.n(r.magnitude)} {u['N']}")
+        step = f"2.{6 + n_groups}"
+        self.add("subsection", f"{step}. {w['driver']}", step)
+        dl = fa.driving_link
+        mech = self.mech
+        O = dl.pivot
+        self.text(w["driver_eq"].format(O=O, d=dl.link))
+        Opt = next(f.point for f in dl.free_body if f.label == dl.reaction.name)
+        total = 0.0
+        for f in dl.free_body:
+            if f.label in ("F_bal", dl.reaction.name):
+                continue
+            M = f.moment_about(np.asarray(Opt))
+            total += M
+            F = float(np.hypot(*f.force))
+            if F > 0:
+                h = (M - f.couple) / F
+                self.eq(f"M_{_sub(O)}({_force_markup(f.label)}) = {self.n(F)}·{self.np_(h)} = {self.n(M)} {u['Nm']}")
+            elif f.couple:
+                self.eq(f"M_{_sub(O)}({_force_markup(f.label)}) = {self.n(f.couple)} {u['Nm']}")
+        s = 1.0 if mech.drive.sense == "ccw" else -1.0
+        OA = mech.crank_length
+        self.text(w["F_bal_pl"].replace("{O}", _sub(O)))
+        sign = "-" if s > 0 else ""
+        self.eq(f"F_{{bal.pl}} = {sign}ΣM_{_sub(O)}/l_{{OA}} = {sign}{self.np_(total)}/{self.n(OA)} = "
+                f"{self.n(dl.balancing_force)} {u['N']}; M_{{bal}} = F_{{bal.pl}}·l_{{OA}} = "
+                f"{self.n(dl.balancing_moment)} {u['Nm']}")
+        self.text(w["R01"].format(O=O, d=dl.link))
+        self.eq(f"{_force_markup(dl.reaction.name)} = {self.n(dl.reaction.magnitude)} {u['N']}")
+        step = f"2.{7 + n_groups}"
+        self.add("subsection", f"{step}. {w['reactions']}", step)
+        rows = [w["react_head"]]
+        for name, r in fa.reactions.items():
+            rows.append((_force_markup(r.name), r.pair, self.n(r.force[0]), self.n(r.force[1]),
+                         self.n(r.magnitude)))
+        self.add("table", rows=rows, widths=(24, 22, 32, 32, 32))
+        self.fa_steps = 8 + n_groups
+
+    def lever(self, fa: "ForceAnalysis") -> None:
+        w, u = self.w, self.u
+        lv = fa.lever
+        _, _, mu_v, _ = self.plan_scales()
+        step = f"2.{self.fa_steps}"
+        self.add("subsection", f"{step}. {w['lever']}", step)
+        self.text(w["lever_text"].format(turn=w["against"]))
+        rows = [w["lever_head"]]
+        total = 0.0
+        for f in lv.forces:
+            F = float(np.hypot(*f.force))
+            h_mm = f.arm / mu_v
+            Fh = f.moment / mu_v
+            total += Fh
+            rows.append((_force_markup(f.label), _img(f.point), self.n(F), self.n(h_mm),
+                         self.n(Fh)))
+        self.add("table", rows=rows, widths=(24, 16, 30, 30, 36))
+        pa = lv.pa / mu_v
+        s = 1.0 if self.mech.drive.sense == "ccw" else -1.0
+        self.eq(f"ΣM_p = ΣF_i·h_i = {self.n(total)} {u['N']}·{u['mm']}; pa = V_A/μ_V = "
+                f"{self.n(lv.pa)}/{self.n(mu_v)} = {self.n(pa)} {u['mm']}")
+        self.text(w["F_bal_z"])
+        sign = "-" if s > 0 else ""
+        self.eq(f"F_{{bal.z}} = {sign}ΣF_i·h_i/pa = {sign}{self.np_(total)}/{self.n(pa)} = "
+                f"{self.n(lv.balancing_force)} {u['N']} "
+                f"({w['drives'] if lv.balancing_force >= 0 else w['brakes']})")
+        step = f"2.{self.fa_steps + 1}"
+        self.add("subsection", f"{step}. {w['match']}", step)
+        self.text(w["discrepancy"])
+        d = fa.discrepancy_percent
+        z, pl = fa.balancing_force_lever, fa.balancing_force_plans
+        self.eq(f"Δ_F = |F_{{bal.z}} - F_{{bal.pl}}|/|F_{{bal.z}}|·100 % = |{self.n(z, 6)} - "
+                f"{self.np_(pl, 6)}|/{self.n(abs(z), 6)}·100 % = {self.n(d, 3)} % "
+                + (w["within"] if math.isfinite(d) and d <= 5.0 else w["beyond"]))
+
+    def step_line(self, s: str) -> str:
+        """A step line of the force solver as markup, in the note's language."""
+        # osifont has no ⇒ or →: the consequence is said in words
+        s = s.replace(" -> ", f" {self.w['hence']} ").replace(" * ", "·").replace("Sum M_", "ΣM_")
+        s = re.sub(r"\bR(\d)(\d)\^t\b", r"R^{τ}_{\1\2}", s)
+        s = re.sub(r"\bR(\d)(\d)\^n\b", r"R^{n}_{\1\2}", s)
+        s = re.sub(r"\bR(\d)(\d)\b", r"R_{\1\2}", s)
+        s = s.replace("F_bal", "F_{bal.pl}").replace("M_bal", "M_{bal}")
+        if self.lang == "uk":
+            for en, uk in _STEP_PHRASES_UK:
+                s = s.replace(en, uk)
+            s = re.sub(r"(\d)\.(\d)", r"\1,\2", s)
+        else:
+            s = s.replace(" N*m", " N·m")
+        return s
+
+
+def note_content(analysis: "Analysis", lang: Language = "en") -> NoteContent:
+    """The calculation note of `analysis` as blocks, in seed 003 §IV order."""
+    return _Writer(analysis, lang).build()
+
+
+def step_order() -> Sequence[str]:
+    """Seed 003 §IV items of sheet 1, in order."""
+    return ("1.1", "1.2", "1.3", "1.4", "1.5", "1.6", "1.7", "1.8")
