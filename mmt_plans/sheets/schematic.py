@@ -1,0 +1,574 @@
+"""A small kinematic scheme of a mechanism at one position, to check a task at a glance.
+
+The scheme is the mechanism at position 0 of its study (the file's φ1 where
+the study gives one, since seed 002's files set `zero = φ1`) in the
+conventional symbols: frame pivots and guides hatched, links as main lines,
+revolute joints as small circles, sliders as rectangles on their guides, the
+crank's ω1 as an arc with an arrowhead in the drive's sense, point letters,
+link numbers, and the working direction of the output. It is scaled to fit a
+box (no standard scale: it is a picture, not a drawing to measure).
+
+`write_task_schematics` lays out one scheme per task file on a contact sheet;
+`write_task_files` draws the first variant of each task on its own page.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Iterable, Mapping, Sequence
+
+import numpy as np
+import shapely
+from shapely.geometry import LineString, Point, Polygon, box
+from shapely.geometry.base import BaseGeometry
+
+from ..model import FRAME, Prismatic
+from .page import Language, Page, Rect, draw_frame
+from .sheet1 import Sketch, _guide, _hatched_base, _point_markup, _unit
+
+__all__ = [
+    "LABEL_GROUP",
+    "NUMBER_GROUP",
+    "sketch_schematic",
+    "sketch_caption",
+    "task_of",
+    "write_task_schematics",
+    "write_task_files",
+]
+
+LABEL_GROUP = "point-"  # + point name: the group of one point letter
+NUMBER_GROUP = "link-"  # + link id: the group of one link number
+
+_LETTER = 2.5  # point letters and link numbers, mm
+_CAPTION = 2.5
+_PIN = 0.9  # radius of a revolute joint, mm
+_BLOCK = (3.2, 1.9)  # half length and half height of a slider, mm
+_RAM = 1.45  # a slider that carries another one at its point is drawn this much larger
+_BASE = (6.0, 3.2)  # width and depth of a frame pivot's symbol, mm
+_GUIDE_MARGIN = 4.0  # a guide runs this far past the slider's stroke, mm
+_DENSE = 145  # crank angles of the sweep that finds the strokes along the guides
+_PAD = 2.0  # Sketch.extent's clearance
+
+_WORDS: Mapping[str, Mapping[str, str]] = {
+    "en": {
+        "task": "Task {task}, variant {variant}",
+        "heading": "{seed}: kinematic schemes of the tasks at position 0 (φ1 where the task gives it)",
+        "position": "φ1 = {phi:.0f}°",
+    },
+    "uk": {
+        "task": "Завдання {task}, варіант {variant}",
+        "heading": "{seed}: кінематичні схеми завдань у положенні 0 (φ1, де його задано)",
+        "position": "φ1 = {phi:.0f}°",
+    },
+}
+
+
+# --- the mechanism at one position -------------------------------------------------
+
+
+@dataclass(frozen=True)
+class _Guide:
+    """A prismatic pair at the drawn position: the line (m) and the slider on it."""
+
+    pair: Prismatic
+    u: np.ndarray  # unit direction, global
+    ends: tuple[np.ndarray, np.ndarray]  # the stroke of the slider point along the line, m
+    at: np.ndarray  # the slider point, m
+
+
+def _pose(analysis: Any, k: int) -> tuple[dict[str, np.ndarray], list[_Guide]]:
+    """Every named point at entry k (m) and every guide with its stroke."""
+    mech = analysis.mech
+    sw = analysis.sweep
+    problem = analysis.problem(k)
+    if problem is not None and not bool(sw.ok[k]):
+        raise problem
+    pts = {n: np.asarray(sw.points[n][k], dtype=float) for n in mech.point_owners}
+    phi0 = float(analysis.positions[k].phi1_deg)
+    dense = mech.sweep(np.linspace(phi0, phi0 + 360.0, _DENSE))
+    ok = np.asarray(dense.ok, dtype=bool)
+    guides = []
+    for pair in mech.sliders:
+        d_local = complex(*np.asarray(pair.direction, dtype=float))
+        t_local = complex(*np.asarray(pair.through, dtype=float))
+
+        def line(sweep: Any, idx: Any) -> tuple[np.ndarray, np.ndarray]:
+            if pair.guide == FRAME:
+                return np.full_like(sweep.phi1_deg[idx], t_local, dtype=complex), \
+                    np.full_like(sweep.phi1_deg[idx], d_local, dtype=complex)
+            state = sweep.links[pair.guide]
+            return state.at(t_local)[idx], state.e[idx] * d_local
+
+        g, u = line(dense, ok)
+        s = ((dense.position_of(pair.slider_point)[ok] - g) * np.conj(u)).real
+        g0, u0 = line(sw, [k])
+        g0, u0 = complex(g0[0]), complex(u0[0])
+        ends = (g0 + float(s.min()) * u0, g0 + float(s.max()) * u0)
+        guides.append(_Guide(pair, np.array([u0.real, u0.imag]),
+                             tuple(np.array([e.real, e.imag]) for e in ends),  # type: ignore[arg-type]
+                             pts[pair.slider_point]))
+    return pts, guides
+
+
+class _Placer:
+    """Labels beside what they name, where they hit neither lines nor other labels."""
+
+    def __init__(self, sk: Sketch) -> None:
+        self.sk = sk
+        geoms: list[BaseGeometry] = []
+        for c in sk.calls:
+            a = c.args
+            if c.name in ("line", "arrow"):
+                geoms.append(LineString([a["start"], a["end"]]).buffer(0.35))
+            elif c.name == "polyline":
+                geoms.append(LineString(a["points"]).buffer(0.35))
+            elif c.name == "polygon":
+                geoms.append(Polygon(a["points"]).buffer(0.2))
+            elif c.name == "circle":
+                geoms.append(Point(a["center"]).buffer(a["radius"] + 0.3))
+            elif c.name == "arc":
+                geoms.append(_arc_line(a["center"], a["radius"], a["start_deg"], a["end_deg"]).buffer(0.35))
+        self.obstacles = shapely.unary_union(geoms) if geoms else Polygon()
+        shapely.prepare(self.obstacles)
+        self.boxes: list[BaseGeometry] = []
+
+    def box_of(self, pos: np.ndarray, markup: str, anchor: str, valign: str) -> BaseGeometry:
+        probe = Sketch(self.sk.look)
+        probe.rich_text(pos, markup, _LETTER, anchor=anchor, valign=valign)  # type: ignore[arg-type]
+        return shapely.unary_union([box(*probe.text_box(c)) for c in probe.named("text")]).envelope
+
+    def cost(self, b: BaseGeometry) -> float:
+        cost = 0.0
+        grown = b.buffer(0.3)
+        for other in self.boxes:
+            if grown.intersects(other):
+                cost += 1000.0 + 1000.0 * grown.intersection(other).area
+        if self.obstacles.intersects(b):
+            cost += 40.0 * b.intersection(self.obstacles).area + 5.0
+        return cost
+
+    def place(self, group: str, markup: str, candidates: Sequence[tuple[np.ndarray, str, str, float]]) -> None:
+        """Write `markup` at the cheapest of (pos, anchor, valign, preference cost)."""
+        best = None
+        for pos, anchor, valign, pref in candidates:
+            b = self.box_of(pos, markup, anchor, valign)
+            # rounded, so that the last bits of the solution cannot flip a near tie
+            c = round(self.cost(b) + pref, 2)
+            if best is None or c < best[0] - 1e-9:
+                best = (c, pos, anchor, valign, b)
+        assert best is not None
+        _, pos, anchor, valign, b = best
+        self.boxes.append(b)
+        with self.sk.group(group, "label"):
+            self.sk.rich_text(pos, markup, _LETTER, anchor=anchor, valign=valign)  # type: ignore[arg-type]
+
+
+def _arc_line(center: Sequence[float], r: float, a0: float, a1: float) -> LineString:
+    span = (a1 - a0) % 360.0 or 360.0
+    t = np.radians(a0 + np.linspace(0.0, span, 24))
+    return LineString(np.c_[center[0] + r * np.cos(t), center[1] + r * np.sin(t)])
+
+
+def _around(p: np.ndarray, r: float, prefer: np.ndarray) -> list[tuple[np.ndarray, str, str, float]]:
+    """Places round a point at distance r (several rings), the preferred side cheapest."""
+    out = []
+    for ring, extra in ((r, 0.0), (r + 1.5, 1.5), (r + 3.5, 4.0)):
+        for deg in range(0, 360, 30):
+            d = np.array([math.cos(math.radians(deg)), math.sin(math.radians(deg))])
+            anchor = "left" if d[0] > 0.35 else "right" if d[0] < -0.35 else "center"
+            valign = "baseline" if d[1] > 0.35 else "top" if d[1] < -0.35 else "middle"
+            pos = p + ring * d + (np.array([0.0, 0.4]) if valign == "baseline" else 0.0)
+            pref = extra + 2.0 * (1.0 - float(np.dot(d, prefer)))
+            out.append((pos, anchor, valign, pref))
+    return out
+
+
+def _free_direction(directions: Iterable[np.ndarray]) -> np.ndarray:
+    """The middle of the widest gap between directions leaving a point."""
+    # in [0, 2π), rounded: a direction along an axis must not come out as +π
+    # or -π by the sign of a rounding error
+    angles = sorted({round(math.atan2(d[1], d[0]) % (2 * math.pi), 6) % round(2 * math.pi, 6)
+                     for d in directions if float(np.hypot(*d)) > 1e-9})
+    if not angles:
+        return np.array([math.cos(math.radians(45)), math.sin(math.radians(45))])
+    gaps = [((angles[(i + 1) % len(angles)] - a) % (2 * math.pi) or 2 * math.pi, a)
+            for i, a in enumerate(angles)]
+    gap, a = max(gaps)
+    mid = a + gap / 2.0
+    return np.array([math.cos(mid), math.sin(mid)])
+
+
+def _clear_of_pivots(lo: float, hi: float, at: np.ndarray, u: np.ndarray, n: np.ndarray,
+                     grow: float, pivots: Sequence[np.ndarray], hatched: bool = True) -> tuple[float, float]:
+    """Shorten a guide (lo..hi along u from the slider at `at`) that would run
+    through the symbol of a frame pivot, keeping the side the slider is on."""
+    for p in pivots:
+        across = float(np.dot(p - at, n))
+        # a frame guide lies _BLOCK[1]·grow under the path, a slot on it; the
+        # pivot's symbol reaches _BASE[1] under p
+        low = -(_BASE[1] + _BLOCK[1] * grow + 2.0) if hatched else -(_BASE[1] + 1.0)
+        if not low < across < 2.0:
+            continue
+        t = float(np.dot(p - at, u))
+        half = _BASE[0] / 2.0 + 1.5
+        if lo < t + half and t - half < hi:
+            if t < 0.0:
+                lo = max(lo, min(t + half, -_BLOCK[0] * grow - 1.0))
+            else:
+                hi = min(hi, max(t - half, _BLOCK[0] * grow + 1.0))
+    return lo, hi
+
+
+def _block(sk: Sketch, c: np.ndarray, u: np.ndarray, grow: float = 1.0) -> list[np.ndarray]:
+    n = np.array([-u[1], u[0]])
+    hl, hh = _BLOCK[0] * grow, _BLOCK[1] * grow
+    corners = [c + sx * hl * u + sy * hh * n for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    sk.polygon([tuple(p) for p in corners], "main", "white")
+    return corners
+
+
+def _draw(analysis: Any, k: int, scale: float, look: Any, pose: tuple[dict[str, np.ndarray], list[_Guide]]) -> Sketch:
+    """The scheme at `scale` mm per m, in local mm."""
+    mech = analysis.mech
+    pts_m, guides = pose
+    P = {n: p * scale for n, p in pts_m.items()}
+    owners = mech.point_owners
+    sk = Sketch(look)
+    # Sliders that carry another slider at their point (a ram with the block of
+    # a slot, a crosshead with its slot) are drawn larger, the other on top.
+    carried = {g.pair.slider_point for g in guides if g.pair.guide != FRAME}
+    lines_at: dict[str, list[np.ndarray]] = {n: [] for n in P}
+
+    with sk.group("schematic", "schematic"):
+        # Guides of the frame, hatched on the side away from the crank's pivot.
+        centre = P[mech.crank_pivot]
+        pivots = [P[n] for n, o in owners.items() if FRAME in o and len(o) > 1]
+        for g in guides:
+            u = g.u.copy()
+            n = np.array([-u[1], u[0]])
+            at = g.at * scale
+            if float(np.dot(centre - at, n)) < -1e-6:
+                u, n = -u, -n
+            a, b = g.ends[0] * scale, g.ends[1] * scale
+            lo, hi = sorted((float(np.dot(a - at, u)), float(np.dot(b - at, u))))
+            grow = _RAM if g.pair.guide == FRAME and g.pair.slider_point in carried else 1.0
+            lo -= _BLOCK[0] * grow + _GUIDE_MARGIN
+            hi += _BLOCK[0] * grow + _GUIDE_MARGIN
+            lo, hi = _clear_of_pivots(lo, hi, at, u, n, grow, pivots, hatched=g.pair.guide == FRAME)
+            lines_at[g.pair.slider_point] += [u, -u]
+            if g.pair.guide == FRAME:
+                _guide(sk, at + lo * u, at + hi * u, u, _BLOCK[1] * grow)
+            else:
+                # The slot of a moving link: a main line along it over the stroke.
+                sk.line(at + lo * u, at + hi * u, "main")
+
+        # Links: a main line between every two of their points.
+        for link in mech.links.values():
+            names = [p for p in link.points if p in P]
+            for i in range(len(names)):
+                for j in range(i + 1, len(names)):
+                    a, b = P[names[i]], P[names[j]]
+                    if float(np.hypot(*(b - a))) > 1e-6:
+                        sk.line(a, b, "main")
+                        lines_at[names[i]].append(b - a)
+                        lines_at[names[j]].append(a - b)
+
+        # Sliders: frame-guided ones first, so that a block in a slot lies on top.
+        for g in sorted(guides, key=lambda g: g.pair.guide != FRAME):
+            grow = _RAM if g.pair.guide == FRAME and g.pair.slider_point in carried else 1.0
+            _block(sk, g.at * scale, g.u, grow)
+
+        # Joints: circles where links meet, a dot at a point of one link only.
+        for name, o in owners.items():
+            if FRAME in o:
+                continue
+            if len(o) > 1:
+                sk.circle(P[name], _PIN, "main", "white")
+            else:
+                sk.circle(P[name], 0.5, "main", "black")
+        for name, o in owners.items():
+            if FRAME in o and len(o) > 1:
+                _hatched_base(sk, P[name], *_BASE)
+                lines_at[name] += [np.array([-1.0, -1.5]), np.array([1.0, -1.5]), np.array([0.0, -1.0])]
+
+        # ω1: an arc round the crank's pivot, clear of the crank and the base.
+        pin = P[mech.crank_pin]
+        crank_mm = float(np.hypot(*(pin - centre)))
+        r = min(7.0, max(4.0, 0.45 * crank_mm))
+        placer = _Placer(sk)
+        best = None
+        for mid in range(0, 360, 10):
+            arc = _arc_line(centre, r, mid - 50, mid + 50).buffer(1.2)
+            c = round(arc.intersection(placer.obstacles).area, 2)
+            if best is None or c < best[0] - 1e-9:
+                best = (c, mid)
+        assert best is not None
+        mid = float(best[1])
+        head = math.degrees(2.0 / r)  # the arrowhead takes about 2 mm of the arc
+        ccw = mech.drive.sense == "ccw"
+        a0, a1 = mid - 50.0, mid + 50.0
+        tip, tail = (a1, a1 - head) if ccw else (a0, a0 + head)
+
+        def on_arc(deg: float) -> np.ndarray:
+            return centre + r * np.array([math.cos(math.radians(deg)), math.sin(math.radians(deg))])
+
+        sk.arc(centre, r, a0 if ccw else a0 + head * 0.5, a1 - head * 0.5 if ccw else a1, "thin")
+        sk.arrow(on_arc(tail), on_arc(tip), "thin", head_length=2.0, head_width=1.2)
+        omega_dir = on_arc(mid) - centre
+        omega_at = on_arc(mid)
+
+        # The output's working direction: an arrow beside the output point.
+        out = mech.study.output
+        w = _unit(np.asarray(mech.study.working_direction, dtype=float))
+        wn = np.array([-w[1], w[0]])
+        q = P[out]
+        placer = _Placer(sk)
+        # Ahead of the block on its path if that is free, else beside it.
+        s = q + (_BLOCK[0] * _RAM + 1.5) * w
+        choices = [(s, s + 8.0 * w)]
+        for side in (1.0, -1.0):
+            s = q + side * (_BLOCK[1] * _RAM + 2.2) * wn - 3.5 * w
+            choices.append((s, s + 8.0 * w))
+        scored = [(round(LineString([a, b]).buffer(1.0).intersection(placer.obstacles).area, 2), i)
+                  for i, (a, b) in enumerate(choices)]
+        a, b = choices[min(scored)[1]]
+        sk.arrow(a, b, "main", head_length=2.5, head_width=1.4)
+
+        # Letters of the points, then the numbers of the links.
+        placer = _Placer(sk)
+        placer.place("omega-1", "ω_{1}", _around(omega_at, 1.2, _unit(omega_dir)))
+        order = sorted(P, key=lambda n: (FRAME not in owners[n], n))
+        for name in order:
+            prefer = _free_direction(lines_at[name])
+            placer.place(f"{LABEL_GROUP}{name}", _point_markup(name), _around(P[name], 2.0, prefer))
+        guide_of = {g.pair.slider: g for g in guides}
+        for lid, link in mech.links.items():
+            names = [p for p in link.points if p in P]
+            segs = [(P[names[i]], P[names[j]]) for i in range(len(names)) for j in range(i + 1, len(names))]
+            segs = [s for s in segs if float(np.hypot(*(s[1] - s[0]))) > 1e-6]
+            cands: list[tuple[np.ndarray, str, str, float]] = []
+            if segs:
+                a, b = max(segs, key=lambda s: float(np.hypot(*(s[1] - s[0]))))
+                d = _unit(b - a)
+                n = np.array([-d[1], d[0]])
+                for t, pref in ((0.5, 0.0), (0.35, 0.6), (0.65, 0.6), (0.22, 1.5), (0.78, 1.5)):
+                    for side in (1.0, -1.0):
+                        for off, extra in ((2.2, 0.0), (3.6, 1.0)):
+                            pos = a + t * (b - a) + side * off * n
+                            cands.append((pos, "center", "middle", pref + extra))
+            elif lid in guide_of:
+                g = guide_of[lid]
+                c = P[g.pair.slider_point]
+                grow = _RAM if g.pair.guide == FRAME and g.pair.slider_point in carried else 1.0
+                u, n = g.u, np.array([-g.u[1], g.u[0]])
+                for du, dn, pref in ((0, 1, 0.0), (0, -1, 0.0), (1, 1, 0.5), (-1, 1, 0.5),
+                                     (1, -1, 0.5), (-1, -1, 0.5), (1, 0, 0.8), (-1, 0, 0.8)):
+                    for extra in (0.0, 1.5):
+                        pos = c + du * (_BLOCK[0] * grow + 2.0 + extra) * u + dn * (_BLOCK[1] * grow + 2.0 + extra) * n
+                        cands.append((pos, "center", "middle", pref + extra))
+            else:
+                cands = _around(P[names[0]], 2.5, np.array([0.0, 1.0])) if names else []
+            if cands:
+                placer.place(f"{NUMBER_GROUP}{lid}", str(lid), cands)
+    return sk
+
+
+def _geometry_bounds(pose: tuple[dict[str, np.ndarray], list[_Guide]]) -> tuple[float, float, float, float]:
+    pts_m, guides = pose
+    xy = list(pts_m.values()) + [e for g in guides for e in g.ends]
+    arr = np.array(xy, dtype=float)
+    return (float(arr[:, 0].min()), float(arr[:, 1].min()), float(arr[:, 0].max()), float(arr[:, 1].max()))
+
+
+def _shifted(sk: Sketch, dx: float, dy: float) -> Sketch:
+    out = Sketch(sk.look)
+    sk.replay(out, dx, dy)
+    return out
+
+
+def sketch_schematic(
+    analysis: Any,
+    look: Any,
+    lang: Language = "en",
+    *,
+    width_mm: float = 100.0,
+    height_mm: float = 70.0,
+    position: int = 0,
+) -> Sketch:
+    """The kinematic scheme at `position`, fitted into the box (0, 0)–(width_mm, height_mm).
+
+    Every point letter is drawn in a group "point-<name>", every link number
+    in a group "link-<id>" (class "label"), so that they can be found again.
+    """
+    if lang not in _WORDS:
+        raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(_WORDS)}")
+    k = analysis.entry(position)
+    pose = _pose(analysis, k)
+    x0, y0, x1, y1 = _geometry_bounds(pose)
+    gw, gh = max(x1 - x0, 1e-6), max(y1 - y0, 1e-6)
+    scale = min((width_mm - 16.0) / gw, (height_mm - 16.0) / gh)
+    scale = max(scale, 1e-3)
+    sk = _draw(analysis, k, scale, look, pose)
+    for _ in range(6):
+        ext = sk.extent()
+        if ext.width <= width_mm + 1e-6 and ext.height <= height_mm + 1e-6:
+            break
+        # The symbols keep their size in mm; only the geometry scales.
+        over_w, over_h = ext.width - gw * scale, ext.height - gh * scale
+        fit = min((width_mm - over_w) / (gw * scale), (height_mm - over_h) / (gh * scale))
+        scale *= max(0.3, min(0.97, fit * 0.99))
+        sk = _draw(analysis, k, scale, look, pose)
+    ext = sk.extent()
+    if ext.width > width_mm + 1e-6 or ext.height > height_mm + 1e-6:
+        raise ValueError(f"{analysis.mech.path}: the scheme does not fit {width_mm:g} x {height_mm:g} mm")
+    dx = (width_mm - ext.width) / 2.0 - ext.x
+    dy = (height_mm - ext.height) / 2.0 - ext.y
+    return _shifted(sk, dx, dy)
+
+
+# --- captions, contact sheets, files of one task -------------------------------------
+
+
+def task_of(path: str | os.PathLike[str]) -> tuple[int, int] | None:
+    """(task, variant) from a file name "task03_v2" or "task3_v07"."""
+    m = re.search(r"task(\d+)_v(\d+)", Path(path).stem)
+    return (int(m.group(1)), int(m.group(2))) if m else None
+
+
+def _formula(sk: Sketch, pos: tuple[float, float], formula: str, size: float) -> float:
+    """The structural formula with drawn arrows (osifont has no arrow glyph); its width."""
+    x, y = pos
+    start = x
+    for i, part in enumerate(str(formula).split("<-")):
+        if i:
+            sk.arrow((x + 4.5, y + size * 0.35), (x + 1.0, y + size * 0.35), "thin",
+                     head_length=1.5, head_width=1.0)
+            x += 5.5
+        x += sk.rich_text((x, y), part.strip(), size)
+    return x - start
+
+
+def sketch_caption(analysis: Any, path: str | os.PathLike[str], look: Any, lang: Language,
+                   width: float, size: float = _CAPTION) -> Sketch:
+    """Two lines centred on x = 0 under y = 0: "Task 3, variant 2, φ1 = …" and the formula."""
+    words = _WORDS[lang]
+    tv = task_of(path)
+    first = words["task"].format(task=tv[0], variant=tv[1]) if tv else str(analysis.mech.title)
+    if analysis.mech.study.zero is not None:
+        first += ", " + words["position"].format(phi=float(analysis.positions[0].phi1_deg))
+    sk = Sketch(look)
+    sk.text((0.0, -size), first, size, anchor="center", max_width=width)
+    probe = Sketch(look)
+    w = _formula(probe, (0.0, 0.0), analysis.mech.structure.formula, size)
+    probe.replay(sk, -w / 2.0, -2.0 * size - 2.0)
+    return sk
+
+
+def _grid(page: Page, rows: int, cols: int, head: float, caption: float) -> tuple[Page, float, float]:
+    best = None
+    for p in (page.landscape(), page.portrait()):
+        f = p.frame.inset(4.0)
+        cw, ch = f.width / cols, (f.height - head) / rows
+        score = min(cw, ch - caption)
+        if best is None or score > best[0]:
+            best = (score, p, cw, ch)
+    assert best is not None
+    return best[1], best[2], best[3]
+
+
+def _task_files(task_dir: str | os.PathLike[str]) -> list[Path]:
+    files = sorted(Path(task_dir).glob("*.toml"), key=lambda p: (task_of(p) or (0, 0), p.name))
+    if not files:
+        raise FileNotFoundError(f"no mechanism files in {task_dir}")
+    return files
+
+
+def write_task_schematics(
+    task_dir: str | os.PathLike[str],
+    out_svg: str | os.PathLike[str],
+    lang: Language = "en",
+    *,
+    page: str = "A2",
+) -> Path:
+    """One small scheme per task file on one page: a row per task, a column per variant."""
+    from .. import load
+    from ..render.svg import SvgBackend
+
+    files = _task_files(task_dir)
+    tasks = sorted({(task_of(f) or (0, 0))[0] for f in files})
+    variants = sorted({(task_of(f) or (0, 0))[1] for f in files})
+    caption_h = 2.0 * _CAPTION + 5.0
+    head = 10.0
+    pg, cw, ch = _grid(Page.of(page), len(tasks), len(variants), head, caption_h)
+    frame = pg.frame.inset(4.0)
+    backend = SvgBackend(pg.width, pg.height, title=f"{Path(task_dir).name}: task schematics")
+    draw_frame(backend, pg)
+    look = backend.look
+    seed = Path(task_dir).name
+    with backend.group("heading", "heading"):
+        backend.text((frame.left, frame.top - 5.0), _WORDS[lang]["heading"].format(seed=seed), 3.5,
+                     valign="middle")
+    top = frame.top - head
+    for f in files:
+        tv = task_of(f) or (0, 0)
+        row, col = tasks.index(tv[0]), variants.index(tv[1])
+        cell = Rect(frame.left + col * cw, top - (row + 1) * ch, cw, ch)
+        analysis = load(f).analyze()
+        sk = sketch_schematic(analysis, look, lang, width_mm=cw - 2.0, height_mm=ch - caption_h - 1.0)
+        with backend.group(f"cell-{f.stem}", "cell"):
+            backend.rectangle((cell.x, cell.y), cell.width, cell.height, "thin")
+            sk.replay(backend, cell.x + 1.0, cell.y + caption_h)
+            cap = sketch_caption(analysis, f, look, lang, cw - 3.0)
+            cap.replay(backend, cell.x + cw / 2.0, cell.y + caption_h)
+    out = Path(out_svg)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    backend.save(out)
+    return out
+
+
+def write_task_files(
+    task_dir: str | os.PathLike[str],
+    out_dir: str | os.PathLike[str],
+    lang: Language = "en",
+    *,
+    width_mm: float = 170.0,
+    height_mm: float = 110.0,
+) -> list[Path]:
+    """task_NN.svg: the first variant of each task, drawn large with its title and formula."""
+    from .. import load
+    from ..render.look import load_look
+    from ..render.svg import SvgBackend
+
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    firsts: dict[int, Path] = {}
+    for f in _task_files(task_dir):
+        tv = task_of(f)
+        if tv is not None:
+            firsts.setdefault(tv[0], f)
+    written = []
+    for task, f in sorted(firsts.items()):
+        analysis = load(f).analyze()
+        margin, size = 8.0, 3.5
+        look = load_look()
+        title_lines = look.lettering.wrap(str(analysis.mech.title), size, width_mm)
+        cap_h = 2.0 * _CAPTION + 5.0
+        title_h = look.lettering.block_height(len(title_lines), size) + 4.0
+        height = margin + title_h + height_mm + cap_h + margin
+        backend = SvgBackend(width_mm + 2 * margin, height, title=str(analysis.mech.title))
+        y = height - margin - size
+        with backend.group("title", "heading"):
+            for line in title_lines:
+                backend.text((margin, y), line, size)
+                y -= look.lettering.line_pitch * size
+        sk = sketch_schematic(analysis, look, lang, width_mm=width_mm, height_mm=height_mm)
+        sk.replay(backend, margin, margin + cap_h)
+        sketch_caption(analysis, f, look, lang, width_mm).replay(backend, margin + width_mm / 2.0, margin + cap_h)
+        path = out_dir / f"task_{task:02d}.svg"
+        backend.save(path)
+        written.append(path)
+    return written
