@@ -11,7 +11,7 @@ the least, so a label is never dropped.
 from __future__ import annotations
 
 import math
-from typing import Sequence
+from typing import Iterable, Sequence
 
 import numpy as np
 import shapely
@@ -19,7 +19,7 @@ from shapely import STRtree
 from shapely.geometry import LineString, Point, box
 from shapely.geometry.base import BaseGeometry
 
-from ..render.recording import RecordingBackend
+from ..render.recording import Call, RecordingBackend
 
 __all__ = ["Labels"]
 
@@ -55,6 +55,17 @@ class Labels:
         self._obstacles.append(Point(tuple(centre)))
         self._clearance.append(radius)
         self._tree = None
+
+    def avoid_drawn(self, calls: Iterable[Call], clearance: float = 0.3) -> None:
+        """Keep labels off everything already recorded: lines, polylines, the
+        edges of polygons, arrows and circles."""
+        for c in calls:
+            if c.name in ("line", "arrow", "polyline", "polygon"):
+                p = c.points()
+                for a, b in zip(p, p[1:] + (p[:1] if c.name == "polygon" else [])):
+                    self.avoid_line(a, b, clearance)
+            elif c.name == "circle":
+                self.avoid_circle(c["center"], c["radius"] + clearance)
 
     def width(self, markup: str) -> float:
         probe = RecordingBackend(look=self.sketch.look)

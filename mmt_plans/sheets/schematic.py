@@ -28,7 +28,7 @@ from shapely.geometry.base import BaseGeometry
 
 from ..model import FRAME, Prismatic
 from .page import Language, Page, Rect, draw_frame
-from .sheet1 import Sketch, _guide, _hatched_base, _point_markup, _unit
+from .sheet1 import Sketch, hatched_guide, hatched_base, point_markup, unit_vector
 
 __all__ = [
     "LABEL_GROUP",
@@ -261,7 +261,7 @@ def _draw(analysis: Any, k: int, scale: float, look: Any, pose: tuple[dict[str, 
             lo, hi = _clear_of_pivots(lo, hi, at, u, n, grow, pivots, hatched=g.pair.guide == FRAME)
             lines_at[g.pair.slider_point] += [u, -u]
             if g.pair.guide == FRAME:
-                _guide(sk, at + lo * u, at + hi * u, u, _BLOCK[1] * grow)
+                hatched_guide(sk, at + lo * u, at + hi * u, u, _BLOCK[1] * grow)
             else:
                 # The slot of a moving link: a main line along it over the stroke.
                 sk.line(at + lo * u, at + hi * u, "main")
@@ -292,7 +292,7 @@ def _draw(analysis: Any, k: int, scale: float, look: Any, pose: tuple[dict[str, 
                 sk.circle(P[name], 0.5, "main", "black")
         for name, o in owners.items():
             if FRAME in o and len(o) > 1:
-                _hatched_base(sk, P[name], *_BASE)
+                hatched_base(sk, P[name], *_BASE)
                 lines_at[name] += [np.array([-1.0, -1.5]), np.array([1.0, -1.5]), np.array([0.0, -1.0])]
 
         # ω1: an arc round the crank's pivot, clear of the crank and the base.
@@ -323,7 +323,7 @@ def _draw(analysis: Any, k: int, scale: float, look: Any, pose: tuple[dict[str, 
 
         # The output's working direction: an arrow beside the output point.
         out = mech.study.output
-        w = _unit(np.asarray(mech.study.working_direction, dtype=float))
+        w = unit_vector(np.asarray(mech.study.working_direction, dtype=float))
         wn = np.array([-w[1], w[0]])
         q = P[out]
         placer = _Placer(sk)
@@ -340,11 +340,11 @@ def _draw(analysis: Any, k: int, scale: float, look: Any, pose: tuple[dict[str, 
 
         # Letters of the points, then the numbers of the links.
         placer = _Placer(sk)
-        placer.place("omega-1", "ω_{1}", _around(omega_at, 1.2, _unit(omega_dir)))
+        placer.place("omega-1", "ω_{1}", _around(omega_at, 1.2, unit_vector(omega_dir)))
         order = sorted(P, key=lambda n: (FRAME not in owners[n], n))
         for name in order:
             prefer = _free_direction(lines_at[name])
-            placer.place(f"{LABEL_GROUP}{name}", _point_markup(name), _around(P[name], 2.0, prefer))
+            placer.place(f"{LABEL_GROUP}{name}", point_markup(name), _around(P[name], 2.0, prefer))
         guide_of = {g.pair.slider: g for g in guides}
         for lid, link in mech.links.items():
             names = [p for p in link.points if p in P]
@@ -353,7 +353,7 @@ def _draw(analysis: Any, k: int, scale: float, look: Any, pose: tuple[dict[str, 
             cands: list[tuple[np.ndarray, str, str, float]] = []
             if segs:
                 a, b = max(segs, key=lambda s: float(np.hypot(*(s[1] - s[0]))))
-                d = _unit(b - a)
+                d = unit_vector(b - a)
                 n = np.array([-d[1], d[0]])
                 for t, pref in ((0.5, 0.0), (0.35, 0.6), (0.65, 0.6), (0.22, 1.5), (0.78, 1.5)):
                     for side in (1.0, -1.0):

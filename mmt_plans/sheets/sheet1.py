@@ -160,7 +160,7 @@ def _image_markup(name: str) -> str:
     return name.lower()
 
 
-def _point_markup(name: str) -> str:
+def point_markup(name: str) -> str:
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
     return f"{m.group(1)}_{{{m.group(2)}}}" if m else name
 
@@ -193,7 +193,7 @@ def _tidy(mu: float) -> float:
     return float(f"{float(mu):.9g}")
 
 
-def _unit(v: np.ndarray) -> np.ndarray:
+def unit_vector(v: np.ndarray) -> np.ndarray:
     n = float(np.hypot(*v))
     return v / n if n > 1e-12 else np.array([1.0, 0.0])
 
@@ -215,7 +215,7 @@ def sense_arc(sk: Sketch, centre: Sequence[float], radius: float, sense: float,
     return tip
 
 
-def _hatched_base(sk: Sketch, p: np.ndarray, width: float = 8.0, down: float = 4.0) -> None:
+def hatched_base(sk: Sketch, p: np.ndarray, width: float = 8.0, down: float = 4.0) -> None:
     """A frame pivot: the pin, two legs and a hatched ground line."""
     x, y = p
     sk.circle((x, y), 1.2, "main", "white")
@@ -228,7 +228,7 @@ def _hatched_base(sk: Sketch, p: np.ndarray, width: float = 8.0, down: float = 4
         sk.line((hx, gy), (hx - 2.0, gy - 2.0), "thin")
 
 
-def _guide(sk: Sketch, a: np.ndarray, b: np.ndarray, u: np.ndarray, offset: float) -> None:
+def hatched_guide(sk: Sketch, a: np.ndarray, b: np.ndarray, u: np.ndarray, offset: float) -> None:
     """A slider's guide: a main line `offset` mm under the slider's path, hatched below."""
     n = np.array([-u[1], u[0]])
     a, b = a - offset * n, b - offset * n
@@ -283,14 +283,14 @@ def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> S
 
         # Sliders as rectangles along their guides; the guides hatched.
         for slider in mech.sliders:
-            u = _unit(np.asarray(slider.direction, dtype=float))
+            u = unit_vector(np.asarray(slider.direction, dtype=float))
             name = slider.slider_point
             along = [float(np.dot(at(name, k), u)) for k in range(n)]
             base = np.asarray(slider.through, dtype=float) / mu_l
             base = base - np.dot(base, u) * u
             sk_a = base + (min(along) - 12.0) * u
             sk_b = base + (max(along) + 12.0) * u
-            _guide(sk, sk_a, sk_b, u, 3.5)
+            hatched_guide(sk, sk_a, sk_b, u, 3.5)
             nrm = np.array([-u[1], u[0]])
             for k in sorted(main):
                 c = at(name, k)
@@ -304,16 +304,10 @@ def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> S
                     sk.circle(at(name, k), 1.0, "main", "white")
         for name, (l0, _) in owners.items():
             if l0 == 0:
-                _hatched_base(sk, at(name, 0))
+                hatched_base(sk, at(name, 0))
         # Lettering goes where it covers no line and no other letter.
         labels = Labels(sk, _TEXT)
-        for c in sk.calls:
-            if c.name in ("line", "polyline", "polygon"):
-                p = c.points()
-                for a, b in zip(p, p[1:] + (p[:1] if c.name == "polygon" else [])):
-                    labels.avoid_line(a, b, 0.3)
-            elif c.name == "circle":
-                labels.avoid_circle(c["center"], c["radius"] + 0.3)
+        labels.avoid_drawn(sk.calls)
         # ω and ε of every rotating link at the planned positions (seed 003 §1.6)
         centre = at(mech.crank_pivot, 0)
         sw = analysis.sweep
@@ -338,13 +332,13 @@ def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> S
         for name in owners:
             if name in pts:
                 p = at(name, 0)
-                d = _unit(p - centre) if name != mech.crank_pivot else np.array([-1.0, 0.0])
-                labels.place(p, _point_markup(name), towards=_unit(d + np.array([0.3, 0.6])),
+                d = unit_vector(p - centre) if name != mech.crank_pivot else np.array([-1.0, 0.0])
+                labels.place(p, point_markup(name), towards=unit_vector(d + np.array([0.3, 0.6])),
                              distance=2.0)
         # Numbered positions of the crank pin.
         for k in range(n):
             p = at(mech.crank_pin, k)
-            labels.place(p, str(analysis.positions[k].index), towards=_unit(p - centre),
+            labels.place(p, str(analysis.positions[k].index), towards=unit_vector(p - centre),
                          distance=2.0)
 
         ext = sk.extent()
@@ -412,7 +406,7 @@ def sketch_plan(
                 sk.arrow(s, e, "dashed", head_length=3.0, head_width=1.0)
                 if c.kind in ("normal", "coriolis"):
                     tag = "n" if c.kind == "normal" else "k"
-                    pending.append((e, f"{tag}_{{{c.label.split('_', 1)[-1]}}}", _unit(e - s)))
+                    pending.append((e, f"{tag}_{{{c.label.split('_', 1)[-1]}}}", unit_vector(e - s)))
         # Absolute vectors from the pole, main lines.
         labels: dict[tuple[int, int], list[str]] = {}
         for name in moving:
@@ -427,17 +421,13 @@ def sketch_plan(
             labels.setdefault(key, []).append(name)
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         placer = Labels(sk, _TEXT)
-        for c in sk.calls:
-            if c.name == "line":
-                placer.avoid_line(c["start"], c["end"], 0.3)
-            elif c.name == "circle":
-                placer.avoid_circle(c["center"], c["radius"] + 0.3)
+        placer.avoid_drawn(sk.calls)
         placer.place((0.0, 0.0), pole, towards=(-1.0, -1.0))
         for key, names in labels.items():
             v = images[names[0]]
             if float(np.hypot(*v)) < 0.5:
                 continue
-            placer.place(v, ", ".join(_image_markup(n) for n in names), towards=_unit(v))
+            placer.place(v, ", ".join(_image_markup(n) for n in names), towards=unit_vector(v))
         placer.size = _SMALL
         for anchor, markup, towards in pending:
             placer.place(anchor, markup, towards=towards)
@@ -557,7 +547,7 @@ def _stack(parts: Sequence[Sketch], look: Any, gap: float = 6.0) -> Sketch:
 # --- tables ------------------------------------------------------------------------
 
 
-def _table_sketch(
+def table_sketch(
     look: Any, gid: str, title: str, header: Sequence[str], rows: Sequence[Sequence[str]],
     widths: Sequence[float], first_markup: Sequence[str],
 ) -> Sketch:
@@ -614,7 +604,7 @@ def _sketch_tables(analysis: Any, look: Any, lang: Language) -> dict[str, Sketch
             rows.append([lab, *vals])
             marks.append(_component_markup(lab))
         header = [w["quantity"], *(f"{w['position']} {i}" for i in idx)]
-        out[gid] = _table_sketch(look, gid, title, header, rows, [22.0] + [20.0] * len(idx), marks)
+        out[gid] = table_sketch(look, gid, title, header, rows, [22.0] + [20.0] * len(idx), marks)
 
     rows = []
     marks = []
@@ -628,7 +618,7 @@ def _sketch_tables(analysis: Any, look: Any, lang: Language) -> dict[str, Sketch
     header = [w["link"]]
     for i in idx:
         header += [f"ω, 1/s ({i})", f"ε, 1/s² ({i})"]
-    out["table-omega-eps"] = _table_sketch(
+    out["table-omega-eps"] = table_sketch(
         look, "table-omega-eps", w["omega_eps"], header, rows, [14.0] + [20.0] * (2 * len(idx)), marks
     )
 
@@ -649,7 +639,7 @@ def _sketch_tables(analysis: Any, look: Any, lang: Language) -> dict[str, Sketch
         marks.append(str(i))
     header = [w["position"], f"V {w['plan']}", f"V {w['diagram']}", "δV, %",
               f"a {w['plan']}", f"a {w['diagram']}", "δa, %"]
-    out["table-check"] = _table_sketch(
+    out["table-check"] = table_sketch(
         look, "table-check", w["check"], header, rows, [12.0] + [18.0] * 6, marks
     )
     return out
@@ -666,7 +656,7 @@ def _next_scale(mu: float, steps: int) -> float:
     return values[steps - 1]
 
 
-def _title_fields(analysis: Any) -> dict[str, str]:
+def title_fields(analysis: Any) -> dict[str, str]:
     mech = analysis.mech
     fields = {k: str(v) for k, v in dict(mech.sheet or {}).items() if k in FIELDS}
     fields.setdefault("title", str(mech.title))
@@ -791,6 +781,6 @@ def compose_sheet1(analysis: Any, backend: Backend, lang: Language = "en", *,
             sketches[name].replay(backend, dx, dy)
             result.origins[name] = (dx, dy)
             result.placed[name] = rect
-        draw_page(backend, page, _title_fields(analysis), lang)
+        draw_page(backend, page, title_fields(analysis), lang)
         return result
     raise LayoutError(f"sheet 1 does not fit on {page.name or 'the page'}: {last}")

@@ -31,8 +31,8 @@ from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label
 from .labels import Labels
 from .layout import LayoutError, SheetLayout
 from .page import Language, Page, Rect, draw_page
-from .sheet1 import (Sketch, _guide, _hatched_base, _point_markup, _table_sketch, _title_fields,
-                     _unit, scale_step, sense_arc)
+from .sheet1 import (Sketch, hatched_guide, hatched_base, point_markup, table_sketch, title_fields,
+                     unit_vector, scale_step, sense_arc)
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "GROUPS"]
 
@@ -205,11 +205,11 @@ class _Drawing:
             return
         tip = sense_arc(self.sk, centre, radius, M)
         self.labels.avoid_circle(centre, radius + 0.4)
-        self.later(tip, force_markup(label), _unit(tip - centre))
+        self.later(tip, force_markup(label), unit_vector(tip - centre))
 
     def arm(self, pivot: np.ndarray, at: np.ndarray, F: np.ndarray, label: str) -> float:
         """The perpendicular from `pivot` to the force's line of action; its length, mm."""
-        u = _unit(np.asarray(F, float))
+        u = unit_vector(np.asarray(F, float))
         r = at - pivot
         foot = pivot + r - float(np.dot(r, u)) * u
         h = float(np.hypot(*(foot - pivot)))
@@ -240,7 +240,7 @@ class _Drawing:
             u, Q = _xy(u_c), self.mm(Q_c)
             if pair.guide == FRAME:
                 if frame:
-                    _guide(self.sk, Q - 22.0 * u, Q + 22.0 * u, u, 3.5)
+                    hatched_guide(self.sk, Q - 22.0 * u, Q + 22.0 * u, u, 3.5)
             elif pair.guide in lids:
                 self.line(Q - 16.0 * u, Q + 16.0 * u)
             if pair.slider in lids:
@@ -256,23 +256,23 @@ class _Drawing:
                 continue
             P = self.mm(state.point(moving[0], pair.point))
             if FRAME in pair.links and frame:
-                _hatched_base(self.sk, P)
+                hatched_base(self.sk, P)
                 self.labels.avoid_line(P, P - np.array([0.0, 6.0]), 4.5)
             self.sk.circle(P, 1.2, "main", "white")
             self.labels.avoid_circle(P, 1.6)
             if pair.point not in written:
                 written.add(pair.point)
-                self.later(P, _point_markup(pair.point), np.array([-0.6, 0.8]))
+                self.later(P, point_markup(pair.point), np.array([-0.6, 0.8]))
         for pair in mech.sliders:
             if pair.slider in lids and pair.slider_point not in written:
                 written.add(pair.slider_point)
                 self.later(self.mm(state.point(pair.slider, pair.slider_point)),
-                           _point_markup(pair.slider_point), np.array([0.0, 1.0]))
+                           point_markup(pair.slider_point), np.array([0.0, 1.0]))
         for lid in sorted(lids):  # the output point and other named points
             for name in mech.links[lid].points:
                 if name not in written and len(mech.point_owners[name]) == 1:
                     written.add(name)
-                    self.later(self.mm(state.point(lid, name)), _point_markup(name), np.array([0.6, 0.8]))
+                    self.later(self.mm(state.point(lid, name)), point_markup(name), np.array([0.6, 0.8]))
 
     def loads(self, fa: ForceAnalysis, lids: Iterable[int], largest: float) -> None:
         """G at S, F_IN shifted to K (or at S with M_IN as a couple), h, F_PR."""
@@ -467,7 +467,7 @@ def sketch_force_polygons(polygons: Sequence[ForcePolygon], mu_F: float, look: A
                     drawn[key] = True
                     sk.arrow(s, e, "main", **_ARROW)  # type: ignore[arg-type]
                     labels.avoid_line(s, e)
-                    u = _unit(e - s)
+                    u = unit_vector(e - s)
                     pending.append(((s + e) / 2, force_markup(a.label[:-2]), np.array([u[1], -u[0]])))
         for anchor, markup, towards in pending:
             labels.place(anchor, markup, towards=towards)
@@ -564,7 +564,7 @@ def sketch_loads_table(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language
         marks.append(str(lid))
     header = [w["link"], "m, kg", "G, N", "a_S, m/s²", "F_in, N", "J_S, kg·m²", "ε, 1/s²",
               "M_in, N·m", "h, mm"]
-    return _table_sketch(look, "table-loads", w["loads"].format(i=fa.index), header, rows,
+    return table_sketch(look, "table-loads", w["loads"].format(i=fa.index), header, rows,
                          [12.0, 14.0, 16.0, 16.0, 16.0, 16.0, 16.0, 16.0, 14.0], marks)
 
 
@@ -579,7 +579,7 @@ def _sketch_tables(fa: ForceAnalysis, arms: Sequence[tuple[str, float]], look: A
                      _num(abs(comps["n"])) if "n" in comps else "—",
                      _num(abs(comps["t"])) if "t" in comps else "—"])
         marks.append(force_markup(name))
-    out["table-reactions"] = _table_sketch(
+    out["table-reactions"] = table_sketch(
         look, "table-reactions", w["reactions"], [w["pair"], "|R|", "R_x", "R_y", "R^n", "R^t"],
         rows, [16.0, 18.0, 18.0, 18.0, 18.0, 18.0], marks)
     rows, marks = [], []
@@ -589,13 +589,13 @@ def _sketch_tables(fa: ForceAnalysis, arms: Sequence[tuple[str, float]], look: A
         rows.append([label, str(k), _num(float(np.hypot(*f.force))), _num(h),
                      _num(float(np.hypot(*f.force)) * h * math.copysign(1.0, f.moment))])
         marks.append(force_markup(label))
-    out["table-lever"] = _table_sketch(
+    out["table-lever"] = table_sketch(
         look, "table-lever", w["lever_table"], [w["force"], "h №", "F, N", "h, mm", "±F·h, N·mm"],
         rows, [16.0, 12.0, 18.0, 16.0, 22.0], marks)
     d = fa.discrepancy_percent
     rows = [["", _num(fa.balancing_force_plans, 6)], ["", _num(fa.balancing_force_lever, 6)],
             ["", "—" if math.isnan(d) else f"{d:.3g}"], ["", _num(fa.balancing_moment, 6)]]
-    out["table-balancing"] = _table_sketch(
+    out["table-balancing"] = table_sketch(
         look, "table-balancing", w["balancing"], [w["quantity"], w["value"]], rows, [66.0, 24.0],
         [w["plans"], w["by_lever"], w["delta"], w["moment"]])
     return out
@@ -698,7 +698,7 @@ def compose_sheet2(analysis: Any, backend: Backend, lang: Language = "en", *,
                     sketches[name].replay(backend, dx, dy)
                     result.origins[name] = (dx, dy)
                     result.placed[name] = rect
-                fields = _title_fields(analysis)
+                fields = title_fields(analysis)
                 fields["sheet"] = "2"
                 draw_page(backend, page, fields, lang)
                 return result
