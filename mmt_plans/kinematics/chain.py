@@ -18,6 +18,8 @@ from .dyads import SOLVERS, DyadSolver, GroupPlan, Motion
 # reported as singular rather than solved (see tests/kinematics/test_hard_cases.py)
 SINGULAR_SIN = 1e-12
 BRANCH_GRID = 720
+# a long sweep is solved this many angles at a time (working arrays of 256 KB)
+CHUNK = 16384
 
 
 @dataclass(frozen=True)
@@ -30,6 +32,9 @@ class LinkState:
     v: np.ndarray
     eps: np.ndarray
     a: np.ndarray
+    # iω·e and (iε - ω²)·e: velocity and acceleration per unit of local coordinate
+    spin: np.ndarray = field(repr=False, default=None)  # type: ignore[assignment]
+    spin_acc: np.ndarray = field(repr=False, default=None)  # type: ignore[assignment]
 
     @property
     def angle_deg(self) -> np.ndarray:
@@ -54,12 +59,78 @@ def _xy(z: np.ndarray) -> np.ndarray:
 
 
 def _full(x, n: int, dtype) -> np.ndarray:
-    """x as a read-only (n,) array, copying only a scalar that must be spread out."""
-    x = np.asarray(x)
-    if x.shape != (n,) or x.dtype != dtype:
-        x = np.full(n, x, dtype=dtype) if x.ndim == 0 else x.astype(dtype)
+    """x as a read-only (n,) array; a number (the frame's, a constant ω) is
+    spread out without a copy."""
+    if not isinstance(x, np.ndarray):
+        x = np.ndarray((n,), dtype=dtype, buffer=np.array([x], dtype=dtype), strides=(0,))
+    elif x.dtype != dtype:
+        x = x.astype(dtype)
     x.setflags(write=False)
     return x
+
+
+def _still(z: complex, n: int) -> np.ndarray:
+    """A frame point's [x, y] at every angle (one pair, not copied)."""
+    return np.broadcast_to(np.array([z.real, z.imag]), (n, 2))
+
+
+_STATE = (("e", "e", complex), ("o", "o", complex), ("omega", "w", float), ("v", "v", complex),
+          ("eps", "eps", float), ("a", "a", complex), ("spin", "spin", complex),
+          ("spin_acc", "spin_acc", complex))
+
+
+_ATTR = {name: attr for name, attr, _ in _STATE}
+
+
+def _state(mo: Motion, n: int) -> LinkState:
+    return LinkState(**{name: _full(getattr(mo, attr), n, dtype) for name, attr, dtype in _STATE})
+
+
+class _Arena:
+    """One block of memory for everything a long sweep keeps: the arrays of
+    every link's motion, the failure masks, and room for the points' fields.
+    A quantity that is a plain number in the first chunk (the frame's, the
+    crank's ω) stays one."""
+
+    def __init__(self, chain: "Chain", m: dict, failed: dict, n: int) -> None:
+        self.chain, self.n = chain, n
+        wanted = [(lid, name, dtype) for lid, mo in m.items() if lid != FRAME
+                  for name, attr, dtype in _STATE if np.ndim(getattr(mo, attr))]
+        sizes = [n * np.dtype(dtype).itemsize for _, _, dtype in wanted]
+        masks = 2 * len(failed) * n
+        fields = 3 * sum(1 for lid, _ in chain.locate.values() if lid != FRAME) * n * 16
+        memory = np.empty(sum(sizes) + fields + masks, dtype=np.uint8)
+        self.arrays: dict[tuple[int, str], np.ndarray] = {}
+        at = 0
+        for (lid, name, dtype), size in zip(wanted, sizes):
+            self.arrays[lid, name] = memory[at:at + size].view(dtype)
+            at += size
+        self.fields = memory[at:at + fields].view(complex)
+        at += fields
+        self.failed = {g: memory[at + 2 * k * n:at + (2 * k + 1) * n].view(bool)
+                       for k, g in enumerate(failed)}
+        self.singular = {g: memory[at + (2 * k + 1) * n:at + (2 * k + 2) * n].view(bool)
+                         for k, g in enumerate(failed)}
+        self.numbers = {lid: mo for lid, mo in m.items()}  # the first chunk's plain numbers
+
+    def put(self, part: slice, m: dict, failed: dict, singular: dict) -> None:
+        for (lid, name), arr in self.arrays.items():
+            arr[part] = getattr(m[lid], _ATTR[name])
+        for g in failed:
+            self.failed[g][part] = failed[g]
+            self.singular[g][part] = singular[g]
+
+    def sweep(self, phi1_deg: np.ndarray) -> "Sweep":
+        states = {}
+        for lid, mo in self.numbers.items():
+            parts = {}
+            for name, attr, dtype in _STATE:
+                arr = self.arrays.get((lid, name))
+                parts[name] = _ro(arr) if arr is not None else _full(getattr(mo, attr), self.n, dtype)
+            states[lid] = LinkState(**parts)
+        return Sweep(self.chain, _ro(phi1_deg.copy()), states,
+                     {g: _ro(x) for g, x in self.failed.items()},
+                     {g: _ro(x) for g, x in self.singular.items()}, room=self.fields)
 
 
 def _ro(a) -> np.ndarray:
@@ -81,10 +152,11 @@ class Sweep:
     chain: "Chain"
     phi1_deg: np.ndarray
     links: dict[int, LinkState]
-    plans: tuple[GroupPlan, ...]
     failed: dict[str, np.ndarray]  # group name -> mask of angles where it cannot assemble
     singular: dict[str, np.ndarray]  # group name -> mask of singular plans
     where: dict[str, int] = field(repr=False, default_factory=dict)
+    room: np.ndarray | None = field(repr=False, default=None)  # memory set aside for the fields
+    solved_plans: tuple[GroupPlan, ...] | None = field(repr=False, default=None)
 
     def position_of(self, name: str) -> np.ndarray:
         link, local = self.chain.locate[name]
@@ -101,22 +173,44 @@ class Sweep:
         return state.acc(state.at(local))
 
     @cached_property
-    def _positions(self) -> dict[str, np.ndarray]:
-        return {name: self.position_of(name) for name in self.chain.locate}
+    def _fields(self) -> tuple[dict[str, np.ndarray], ...]:
+        """o + e·p, v + iω·e·p and a + (iε - ω²)·e·p for every point p of
+        every link, as [x, y] pairs. The products share one block of memory
+        (one allocation instead of three per point); a point at a link's origin
+        is the link's own array, a frame point one pair seen at every angle."""
+        n = len(self.phi1_deg)
+        kinds = (("o", "e"), ("v", "spin"), ("a", "spin_acc"))
+        todo = [(name, lid, p) for name, (lid, p) in self.chain.locate.items() if lid != FRAME]
+        shape = (len(kinds), len(todo), n)
+        block = (np.empty(shape, dtype=complex) if self.room is None
+                 else self.room.reshape(shape))
+        fields = []
+        for (base, per_unit), rows in zip(kinds, block):
+            field = {}
+            for row, (name, lid, p) in zip(rows, todo):
+                state = self.links[lid]
+                origin = getattr(state, base)
+                if not p and origin.strides[0]:
+                    field[name] = _xy(origin)
+                    continue
+                np.multiply(getattr(state, per_unit), p, out=row)
+                row += origin
+                field[name] = _xy(row)
+            fields.append({name: field[name] if lid != FRAME else _still(p if base == "o" else 0j, n)
+                           for name, (lid, p) in self.chain.locate.items()})
+        return tuple(fields)
 
-    @cached_property
+    @property
     def points(self) -> dict[str, np.ndarray]:
-        return {name: _xy(P) for name, P in self._positions.items()}
+        return self._fields[0]
 
-    @cached_property
+    @property
     def v(self) -> dict[str, np.ndarray]:
-        return {name: _xy(self.links[self.chain.locate[name][0]].vel(P))
-                for name, P in self._positions.items()}
+        return self._fields[1]
 
-    @cached_property
+    @property
     def a(self) -> dict[str, np.ndarray]:
-        return {name: _xy(self.links[self.chain.locate[name][0]].acc(P))
-                for name, P in self._positions.items()}
+        return self._fields[2]
 
     @property
     def omega(self) -> dict[int, np.ndarray]:
@@ -125,6 +219,16 @@ class Sweep:
     @property
     def eps(self) -> dict[int, np.ndarray]:
         return {lid: s.eps for lid, s in self.links.items() if lid != FRAME}
+
+    @cached_property
+    def plans(self) -> tuple[GroupPlan, ...]:
+        """The velocity and acceleration plan of every group. A long sweep keeps
+        only the links' motion; its plans are solved again from it when asked
+        for (the same equations on the same numbers)."""
+        if self.solved_plans is not None:
+            return self.solved_plans
+        m = {lid: Motion.of(state) for lid, state in self.links.items()}
+        return tuple(solver.plan(m, place=False) for solver in self.chain.solvers)
 
     @property
     def ok(self) -> np.ndarray:
@@ -199,16 +303,20 @@ class Chain:
     # --- one pass over the angles ----------------------------------------------------
     def crank(self, phi_rad: np.ndarray) -> Motion:
         w = self.mech.drive.signed_omega
-        e = np.exp(1j * (phi_rad - self.crank_local_angle))
-        o = self.O - e * self.O_local
-        r = o - self.O
-        return Motion(e, o, w, 1j * w * r, 0.0, -w * w * r)
+        turn = phi_rad - self.crank_local_angle
+        e = np.empty(turn.shape, dtype=complex)  # e^{i·turn}
+        np.cos(turn, out=e.real)
+        np.sin(turn, out=e.imag)
+        if not self.O_local:  # the crank's local origin is its pivot
+            return Motion(e, self.O, w, 0j, 0.0, 0j)
+        r = -e * self.O_local
+        return Motion(e, self.O + r, w, 1j * w * r, 0.0, -w * w * r)
 
-    def frame(self, n: int) -> Motion:
-        return Motion(np.ones(n, dtype=complex), np.zeros(n, dtype=complex), 0.0, 0j, 0.0, 0j)
+    def frame(self) -> Motion:
+        return Motion(1 + 0j, 0j)
 
     def place_all(self, phi_rad: np.ndarray, branches: dict[str, int]) -> dict[int, Motion]:
-        m = {FRAME: self.frame(len(phi_rad)), self.mech.drive.link: self.crank(phi_rad)}
+        m = {FRAME: self.frame(), self.mech.drive.link: self.crank(phi_rad)}
         for solver in self.solvers:
             solver.positions(m, branches.get(solver.group.name, 1))
         return m
@@ -216,7 +324,28 @@ class Chain:
     def sweep(self, phi1_deg: np.ndarray) -> Sweep:
         phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
         n = len(phi1_deg)
-        m = self.place_all(np.radians(phi1_deg), self.branches)
+        if n <= CHUNK:
+            m, failed, singular, plans = self._solve(np.radians(phi1_deg))
+            states = {lid: _state(mo, n) for lid, mo in m.items()}
+            return Sweep(self, _ro(phi1_deg.copy()), states, failed, singular,
+                         solved_plans=plans)
+        # Many angles: solve CHUNK at a time, so the working arrays stay small
+        # (in cache, and the same memory again for every chunk), and write the
+        # results into one block of memory for the whole sweep.
+        first = None
+        for start in range(0, n, CHUNK):
+            part = slice(start, min(start + CHUNK, n))
+            m, failed, singular, _ = self._solve(np.radians(phi1_deg[part]))
+            if first is None:
+                first = _Arena(self, m, failed, n)
+            first.put(part, m, failed, singular)
+        assert first is not None
+        return first.sweep(phi1_deg)
+
+    def _solve(self, phi_rad: np.ndarray):
+        """Positions, then the plans group by group: the links' motion, and
+        where each group fails to assemble or its plan is singular."""
+        m = self.place_all(phi_rad, self.branches)
         failed, singular, plans = {}, {}, []
         for solver in self.solvers:
             name = solver.group.name
@@ -226,11 +355,7 @@ class Chain:
             plan = solver.plan(m)
             singular[name] = _ro(~failed[name] & ~(plan.sin_angle > SINGULAR_SIN))
             plans.append(plan)
-        states = {lid: LinkState(e=_full(mo.e, n, complex), o=_full(mo.o, n, complex),
-                                 omega=_full(mo.w, n, float), v=_full(mo.v, n, complex),
-                                 eps=_full(mo.eps, n, float), a=_full(mo.a, n, complex))
-                  for lid, mo in m.items()}
-        return Sweep(self, _ro(phi1_deg.copy()), states, tuple(plans), failed, singular)
+        return m, failed, singular, tuple(plans)
 
     def reason(self, solver: DyadSolver, phi1_deg: float) -> str:
         m = self.place_all(np.radians(np.array([phi1_deg])), self.branches)

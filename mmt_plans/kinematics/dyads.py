@@ -19,6 +19,7 @@ the velocity plan, so one 2×2 determinant serves both.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Literal
 
 import numpy as np
@@ -32,28 +33,67 @@ LegKind = Literal["rotation", "slide"]
 
 class Motion:
     """Working state of one link over N crank angles: pose e^{iθ}, origin o,
-    ω, velocity and acceleration of the origin, ε."""
+    ω, velocity and acceleration of the origin, ε.
 
-    __slots__ = ("e", "o", "w", "v", "eps", "a")
+    A point with local coordinates p sits at o + e·p and moves with
+    V = v + iω·e·p, a = a + (iε - ω²)·e·p (the textbook's V_P = V_O + ω × OP,
+    a_P = a_O + ε × OP - ω²·OP). The factors iω·e and (iε - ω²)·e are kept,
+    so each further point costs one product and one sum. The frame's entries
+    are plain numbers, not arrays.
+    """
+
+    __slots__ = ("e", "o", "w", "v", "eps", "a", "spin", "spin_acc")
 
     def __init__(self, e, o, w=0.0, v=0j, eps=0.0, a=0j) -> None:
-        self.e, self.o, self.w, self.v, self.eps, self.a = e, o, w, v, eps, a
+        self.e, self.o = e, o
+        self._set(w, v, eps, a)
+
+    @classmethod
+    def of(cls, state) -> "Motion":
+        """The working state again from a solved one (a `chain.LinkState`)."""
+        m = cls.__new__(cls)
+        for name in cls.__slots__:
+            setattr(m, name, getattr(state, "omega" if name == "w" else name))
+        return m
+
+    def _set(self, w, v, eps, a) -> None:
+        self.w, self.v, self.eps, self.a = w, v, eps, a
+        self.spin = self.e * (1j * w) if _given(w) else 0j  # iω·e
+        self.spin_acc = self.e * (1j * eps - w * w) if _given(w) or _given(eps) else 0j
 
     def at(self, p_local: complex):
-        return self.o + self.e * p_local
+        return self.o + self.e * p_local if p_local else self.o
+
+    def vel_at(self, p_local: complex):
+        return self.v + self.spin * p_local if p_local else self.v
+
+    def acc_at(self, p_local: complex):
+        return self.a + self.spin_acc * p_local if p_local else self.a
 
     def vel(self, P):
-        return self.v + 1j * self.w * (P - self.o)
+        """Velocity of the link's point that is at P now."""
+        return self.v + 1j * self.w * (P - self.o) if _given(self.w) else self.v
 
     def acc(self, P):
+        if not (_given(self.w) or _given(self.eps)):
+            return self.a
         return self.a + (1j * self.eps - self.w * self.w) * (P - self.o)
 
-    def move_with(self, P, V_P, a_P, w, eps) -> None:
-        """Give the link ω, ε and the motion of one of its points P."""
-        r = self.o - P
-        self.w, self.eps = w, eps
-        self.v = V_P + 1j * w * r
-        self.a = a_P + (1j * eps - w * w) * r
+    def move_with(self, p_local, V_P, a_P, w, eps) -> None:
+        """Give the link ω, ε and the motion of its point p (local coordinates)."""
+        self._set(w, V_P, eps, a_P)
+        if _given(p_local):
+            self.v = V_P - self.spin * p_local
+            self.a = a_P - self.spin_acc * p_local
+
+    def local(self, P):
+        """Local coordinates of the link's point that is at P now."""
+        return (P - self.o) * np.conj(self.e)
+
+
+def _given(x) -> bool:
+    """An array, or a number that is not zero (the frame's ω, a point at the origin)."""
+    return isinstance(x, np.ndarray) or bool(x)
 
 
 @dataclass
@@ -70,6 +110,12 @@ class Leg:
     n: np.ndarray | None = None  # normal (rotation) or Coriolis (slide) component
     y: np.ndarray | None = None
 
+    def normal(self, m: dict) -> np.ndarray:
+        """-ω²·(X - P) of a rotation (d = i·(X - P)), 2·ω_K·x·i·u of a slide."""
+        if self.kind == "rotation":
+            return self.d * (1j * (self.x * self.x))
+        return self.d * (2j * m[self.link].w * self.x)
+
 
 @dataclass
 class GroupPlan:
@@ -80,18 +126,33 @@ class GroupPlan:
     X: np.ndarray  # the point whose two equations are solved
     legs: tuple[Leg, Leg]
     sin_angle: np.ndarray  # sine of the angle between the two direction lines
-    V_X: np.ndarray
-    a_X: np.ndarray
+
+    @cached_property
+    def V_X(self) -> np.ndarray:
+        leg = self.legs[0]
+        return leg.V0 + leg.d * leg.x
+
+    @cached_property
+    def a_X(self) -> np.ndarray:
+        leg = self.legs[0]
+        return leg.a0 + leg.n + leg.d * leg.y
 
 
 def solve_two_lines(d1, b1, d2, b2):
     """x1, x2 of b1 + d1·x1 = b2 + d2·x2: a 2×2 system by Cramer's rule."""
-    det = cross(d2, d1)
-    rhs = b2 - b1
+    return _cramer(cross(d2, d1), d1, d2, b2 - b1)
+
+
+def _cramer(det, d1, d2, rhs):
+    """Cramer's rule with the determinant cross(d2, d1) given (the velocity and
+    the acceleration plan share it); NaN, not ±inf, where the lines are parallel."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x1 = cross(d2, rhs) / det
+        x2 = cross(d1, rhs) / det
     singular = det == 0
-    safe = np.where(singular, 1.0, det)
-    x1 = np.where(singular, np.nan, cross(d2, rhs) / safe)
-    x2 = np.where(singular, np.nan, cross(d1, rhs) / safe)
+    if np.any(singular):
+        x1 = np.where(singular, np.nan, x1)
+        x2 = np.where(singular, np.nan, x2)
     return x1, x2
 
 
@@ -145,32 +206,35 @@ class DyadSolver:
         raise NotImplementedError
 
     # --- the plans ---------------------------------------------------------------
-    def plan(self, m: dict) -> GroupPlan:
+    def plan(self, m: dict, place: bool = True) -> GroupPlan:
+        """Solve the group's velocity and acceleration plan, then (`place`) give
+        its links their ω, ε and the motion of their origins."""
         X_name, X, leg1, leg2 = self.legs(m)
-        leg1.x, leg2.x = solve_two_lines(leg1.d, leg1.V0, leg2.d, leg2.V0)
+        det = cross(leg2.d, leg1.d)
+        leg1.x, leg2.x = _cramer(det, leg1.d, leg2.d, leg2.V0 - leg1.V0)
         self.after_velocities(m, leg1, leg2)
-        for leg in (leg1, leg2):
-            if leg.kind == "rotation":
-                r = X - leg.P
-                leg.n = -(leg.x * leg.x) * r
-            else:
-                leg.n = 2.0 * m[leg.link].w * leg.x * 1j * leg.d
-        leg1.y, leg2.y = solve_two_lines(leg1.d, leg1.a0 + leg1.n, leg2.d, leg2.a0 + leg2.n)
-        V_X = leg1.V0 + leg1.d * leg1.x
-        a_X = leg1.a0 + leg1.n + leg1.d * leg1.y
-        norm = np.abs(leg1.d) * np.abs(leg2.d)
+        leg1.n, leg2.n = leg1.normal(m), leg2.normal(m)
+        leg1.y, leg2.y = _cramer(det, leg1.d, leg2.d, (leg2.a0 + leg2.n) - (leg1.a0 + leg1.n))
         with np.errstate(invalid="ignore", divide="ignore"):
-            sin_angle = np.abs(cross(leg2.d, leg1.d)) / norm
-        plan = GroupPlan(self.group, X_name, X, (leg1, leg2), sin_angle, V_X, a_X)
-        self.place(m, plan)
+            sin_angle = np.abs(det) / (np.abs(leg1.d) * np.abs(leg2.d))
+        plan = GroupPlan(self.group, X_name, X, (leg1, leg2), sin_angle)
+        if place:
+            self.place(m, plan)
         return plan
 
-    def rotation(self, link: int, P_name: str, P, X, K: "Motion") -> Leg:
-        return Leg("rotation", P_name.lower(), f"ω{link}", 1j * (X - P), K.vel(P), K.acc(P),
-                   link, P=P)
+    def rotation(self, link: int, P_name: str, X, K: int, m: dict) -> Leg:
+        """Link `link` turning about its pair P with the known link K."""
+        p = self.loc(K, P_name)
+        P = m[K].at(p)
+        return Leg("rotation", P_name.lower(), f"ω{link}", 1j * (X - P), m[K].vel_at(p),
+                   m[K].acc_at(p), link, P=P)
 
     def slide(self, link: int, on: int, X, u, K: "Motion", start: str) -> Leg:
         return Leg("slide", start, f"V{link}/{on}", u, K.vel(X), K.acc(X), on)
+
+    def turn_about(self, m: dict, leg: Leg, P_name: str) -> None:
+        """Place the link of a rotation leg: its pivot moves as the leg's start."""
+        m[leg.link].move_with(self.loc(leg.link, P_name), leg.V0, leg.a0, leg.x, leg.y)
 
 
 class RRR(DyadSolver):
@@ -190,21 +254,18 @@ class RRR(DyadSolver):
 
     def legs(self, m):
         a, b, c = self.outer1.point, self.inner.point, self.outer2.point
-        K1, K2 = m[self.K1], m[self.K2]
-        A = K1.at(self.loc(self.K1, a))
-        C = K2.at(self.loc(self.K2, c))
         B = m[self.L1].at(self.loc(self.L1, b))
-        return b, B, self.rotation(self.L1, a, A, B, K1), self.rotation(self.L2, c, C, B, K2)
+        return b, B, self.rotation(self.L1, a, B, self.K1, m), self.rotation(self.L2, c, B, self.K2, m)
 
     def place(self, m, plan):
         l1, l2 = plan.legs
-        m[self.L1].move_with(plan.X, plan.V_X, plan.a_X, l1.x, l1.y)
-        m[self.L2].move_with(plan.X, plan.V_X, plan.a_X, l2.x, l2.y)
+        self.turn_about(m, l1, self.outer1.point)
+        self.turn_about(m, l2, self.outer2.point)
 
     def failure(self, m, i, phi):
         a, b, c = self.outer1.point, self.inner.point, self.outer2.point
-        A = m[self.K1].at(self.loc(self.K1, a))[i]
-        C = m[self.K2].at(self.loc(self.K2, c))[i]
+        A = _entry(m[self.K1].at(self.loc(self.K1, a)), i)
+        C = _entry(m[self.K2].at(self.loc(self.K2, c)), i)
         l1 = abs(self.loc(self.L1, b) - self.loc(self.L1, a))
         l2 = abs(self.loc(self.L2, b) - self.loc(self.L2, c))
         d = abs(C - A)
@@ -232,26 +293,24 @@ class RRP(DyadSolver):
 
     def legs(self, m):
         a, b = self.outer1.point, self.inner.point
-        K1, K2 = m[self.K1], m[self.K2]
-        A = K1.at(self.loc(self.K1, a))
+        K2 = m[self.K2]
         B = m[self.L1].at(self.loc(self.L1, b))
         u = m[self.L2].e * complex(*self.outer2.direction)
-        return b, B, self.rotation(self.L1, a, A, B, K1), self.slide(
+        return b, B, self.rotation(self.L1, a, B, self.K1, m), self.slide(
             self.L2, self.K2, B, u, K2, f"{b}{self.K2}")
 
     def place(self, m, plan):
         l1, _ = plan.legs
         K2 = m[self.K2]
-        m[self.L1].move_with(plan.X, plan.V_X, plan.a_X, l1.x, l1.y)
-        m[self.L2].move_with(plan.X, plan.V_X, plan.a_X, K2.w, K2.eps)
+        self.turn_about(m, l1, self.outer1.point)
+        m[self.L2].move_with(self.loc(self.L2, self.inner.point), plan.V_X, plan.a_X, K2.w, K2.eps)
 
     def failure(self, m, i, phi):
         a, b = self.outer1.point, self.inner.point
-        A = m[self.K1].at(self.loc(self.K1, a))[i]
+        A = _entry(m[self.K1].at(self.loc(self.K1, a)), i)
         l1 = abs(self.loc(self.L1, b) - self.loc(self.L1, a))
-        e2 = m[self.K2].e * np.ones(len(np.atleast_1d(m[self.K1].o)) or 1)
-        P0, u = self.prism_line(self.outer2, m, self.L2, self.loc(self.L2, b), e2)
-        P0, u = np.atleast_1d(P0)[i], np.atleast_1d(u)[i]
+        P0, u = self.prism_line(self.outer2, m, self.L2, self.loc(self.L2, b), m[self.K2].e)
+        P0, u = _entry(P0, i), _entry(u, i)
         dist = abs(cross(u, A - P0))
         return (f"link {self.L1} (l = {l1:.6g} m) cannot reach the guide of link {self.L2}: "
                 f"{b}'s line is {dist:.6g} m from {a}")
@@ -288,14 +347,13 @@ class RPR(DyadSolver):
 
     def legs(self, m):
         a, c = self.outer1.point, self.outer2.point
-        K1, K2 = m[self.K1], m[self.K2]
-        A = K1.at(self.loc(self.K1, a))
-        C = K2.at(self.loc(self.K2, c))
+        K1, p = m[self.K1], self.loc(self.K1, a)
+        A = K1.at(p)
         u = m[self.inner.guide].e * complex(*self.inner.direction)
         # X is the point of L2 that coincides with A (the textbook's A3)
-        slide = Leg("slide", a.lower(), f"V{a}{self.L2}{a}{self.L1}", u, K1.vel(A), K1.acc(A),
+        slide = Leg("slide", a.lower(), f"V{a}{self.L2}{a}{self.L1}", u, K1.vel_at(p), K1.acc_at(p),
                     self.L1)
-        return f"{a}{self.L2}", A, slide, self.rotation(self.L2, c, C, A, K2)
+        return f"{a}{self.L2}", A, slide, self.rotation(self.L2, c, A, self.K2, m)
 
     def after_velocities(self, m, leg1, leg2):
         # the slide's Coriolis term needs ω of L1, which is ω of L2, found by
@@ -304,12 +362,12 @@ class RPR(DyadSolver):
 
     def place(self, m, plan):
         slide, rot = plan.legs
-        m[self.L2].move_with(plan.X, plan.V_X, plan.a_X, rot.x, rot.y)
-        m[self.L1].move_with(plan.X, slide.V0, slide.a0, rot.x, rot.y)
+        self.turn_about(m, rot, self.outer2.point)
+        m[self.L1].move_with(self.loc(self.L1, self.outer1.point), slide.V0, slide.a0, rot.x, rot.y)
 
     def failure(self, m, i, phi):
         s, g, Ps, Pg, ps, pg, d, offset = self._parts(m)
-        w = abs(np.atleast_1d(Ps - Pg)[i])
+        w = abs(_entry(Ps - Pg, i))
         return (f"the guide of link {g} passes {abs(offset):.6g} m from link {s}'s point, "
                 f"but the pivots are only {w:.6g} m apart")
 
@@ -336,8 +394,9 @@ class PRP(DyadSolver):
             self.L2, self.K2, B, u2, K2, f"{b}{self.K2}")
 
     def place(self, m, plan):
+        b = self.inner.point
         for L, K in ((self.L1, self.K1), (self.L2, self.K2)):
-            m[L].move_with(plan.X, plan.V_X, plan.a_X, m[K].w, m[K].eps)
+            m[L].move_with(self.loc(L, b), plan.V_X, plan.a_X, m[K].w, m[K].eps)
 
     def failure(self, m, i, phi):
         return f"the guides of links {self.L1} and {self.L2} are parallel"
@@ -358,21 +417,27 @@ class RPP(DyadSolver):
         K1, K2 = m[self.K1], m[self.K2]
         A = K1.at(self.loc(self.K1, a))
         L1 = m[self.L1]
-        L1.move_with(A, K1.vel(A), K1.acc(A), K2.w, K2.eps)
+        p = self.loc(self.K1, a)
+        L1.move_with(self.loc(self.L1, a), K1.vel_at(p), K1.acc_at(p), K2.w, K2.eps)
         u1 = m[self.inner.guide].e * complex(*self.inner.direction)
         u2 = m[self.L2].e * complex(*self.outer2.direction)
         return f"{a}{self.L2}", A, self.slide(self.L2, self.L1, A, u1, L1, a.lower()), self.slide(
             self.L2, self.K2, A, u2, K2, f"{a}{self.K2}")
 
     def place(self, m, plan):
-        K2 = m[self.K2]
-        m[self.L2].move_with(plan.X, plan.V_X, plan.a_X, K2.w, K2.eps)
+        K2, L2 = m[self.K2], m[self.L2]
+        L2.move_with(L2.local(plan.X), plan.V_X, plan.a_X, K2.w, K2.eps)
 
     def failure(self, m, i, phi):
         return f"the guides of link {self.L2} are parallel"
 
 
 SOLVERS: dict[str, type[DyadSolver]] = {"RRR": RRR, "RRP": RRP, "RPR": RPR, "PRP": PRP, "RPP": RPP}
+
+
+def _entry(x, i: int):
+    """Entry i of an array over the angles, or the number a frame point is."""
+    return x[i] if isinstance(x, np.ndarray) else x
 
 
 def _other(pair: Revolute | Prismatic, link: int) -> int:

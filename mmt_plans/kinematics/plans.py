@@ -63,14 +63,19 @@ def _v(z: complex) -> np.ndarray:
     return arr
 
 
+def _entry(x, k: int):
+    return x[k] if isinstance(x, np.ndarray) else x
+
+
 def plan_view(sweep: "Sweep", k: int, index: int | None = None) -> PlanView:
     """The plan at entry k of a sweep (position `index`)."""
     groups = []
     for plan in sweep.plans:
         vel, acc = [], []
         for leg in plan.legs:
-            V0, x, d = complex(leg.V0[k]), float(leg.x[k]), complex(leg.d[k])
-            a0, n, y = complex(leg.a0[k]), complex(leg.n[k]), float(leg.y[k])
+            # a leg starting on the frame has V0 = a0 = 0 as plain numbers
+            V0, x, d = complex(_entry(leg.V0, k)), float(leg.x[k]), complex(leg.d[k])
+            a0, n, y = complex(_entry(leg.a0, k)), complex(leg.n[k]), float(leg.y[k])
             rel = plan.X_name
             if leg.kind == "rotation":
                 centre = leg.start.upper()
