@@ -40,6 +40,7 @@ _TEXT = 3.5
 _TITLE = 5.0
 _PAD = 2.0
 _ARROW = dict(head_length=3.5, head_width=1.2)
+_FAR_MM = 40.0  # a reaction applied farther than this from its group's points moves to them
 
 GROUPS = ("force-mechanism", "driving-link", "force-polygon-1", "zhukovsky-lever",
           "table-loads", "table-reactions", "table-lever", "table-balancing")
@@ -68,6 +69,9 @@ _WORDS: Mapping[str, Mapping[str, str]] = {
         "delta": "Discrepancy Δ, %",
         "moment": "M_{bal}, N·m",
         "equation": "F_{bal}·pa = Σ F_{i}·h_{i}",
+        "loads_header": ("m, kg", "G, N", "aS, m/s²", "Fin, N", "JS, kg·m²", "ε, 1/s²",
+                         "Min, N·m", "h, mm"),
+        "lever_header": ("h No.", "F, N", "h, mm", "±F·h, N·mm"),
     },
     "uk": {
         "mechanism": "Механізм у положенні {i} з навантаженнями",
@@ -92,6 +96,9 @@ _WORDS: Mapping[str, Mapping[str, str]] = {
         "delta": "Розбіжність Δ, %",
         "moment": "M_{зр}, Н·м",
         "equation": "F_{зр}·pa = Σ F_{i}·h_{i}",
+        "loads_header": ("m, кг", "G, Н", "aS, м/с²", "Fin, Н", "JS, кг·м²", "ε, 1/с²",
+                         "Min, Н·м", "h, мм"),
+        "lever_header": ("h №", "F, Н", "h, мм", "±F·h, Н·мм"),
     },
 }
 
@@ -242,7 +249,10 @@ class _Drawing:
                 if frame:
                     hatched_guide(self.sk, Q - 22.0 * u, Q + 22.0 * u, u, 3.5)
             elif pair.guide in lids:
-                self.line(Q - 16.0 * u, Q + 16.0 * u)
+                # the slot runs from the block along the guide link, as far as its points reach
+                ts = [float(np.dot(self.mm(state.point(pair.guide, n)) - Q, u))
+                      for n in mech.links[pair.guide].points]
+                self.line(Q + min(-16.0, *ts) * u, Q + max(16.0, *ts) * u)
             if pair.slider in lids:
                 n = np.array([-u[1], u[0]])
                 corners = [Q + sx * 6.0 * u + sy * 3.5 * n for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
@@ -371,8 +381,19 @@ def sketch_group(fa: ForceAnalysis, g: Any, mu_l: float, look: Any, lang: Langua
         reactions = _group_forces(fa, g)
         largest = _largest_load(fa, g.links, [f for _, f, _, _ in reactions])
         d.loads(fa, g.links, largest)
+        near = [d.mm(state.point(lid, n)) for lid in g.links for n in mech.links[lid].points]
         for label, F, P, line in reactions:
-            d.force(d.mm(P), F, label, largest, line)
+            at = d.mm(P)
+            gap = [float(np.hypot(*(at - q))) for q in near]
+            if min(gap) > _FAR_MM:
+                # A guide's normal force whose line of action lies far off the
+                # block: drawn at the block with the couple that carries it there.
+                q = near[int(np.argmin(gap))]
+                arm = (at - q) * mu_l
+                if line == "main":
+                    d.moment(q, float(arm[0] * F[1] - arm[1] * F[0]), "M" + label[1:], radius=8.0)
+                at = q
+            d.force(at, F, label, largest, line)
         # the arms of ΣM_B(L1) = 0, the equation of R^t (RRR, RRP)
         if g.kind in ("RRR", "RRP"):
             B = d.mm(state.point(g.links[0], g.reactions[2].pair))  # the inner pin
@@ -390,7 +411,7 @@ def sketch_group(fa: ForceAnalysis, g: Any, mu_l: float, look: Any, lang: Langua
                         moments.append((F, P, label))
             for F, P, label in moments:
                 if float(np.hypot(*F)) > 0.0:
-                    name = f"h_{{{len(arm_names) + 1}}}"
+                    name = f"h'_{{{len(arm_names) + 1}}}"  # h_i is the shift of F_in.i
                     if d.arm(B, d.mm(P), np.asarray(F, float), name) >= 1.0:
                         arm_names.append(label)
         title = _WORDS[lang]["group"].format(name=g.name, kind=g.kind)
@@ -439,7 +460,9 @@ def sketch_force_polygons(polygons: Sequence[ForcePolygon], mu_F: float, look: A
                     for v in poly.vectors]
             shares = any(k in drawn for k in keys)
             if n and not shares:
-                offset = np.array([sk.extent().right + 15.0, 0.0])
+                # beside what is drawn, clear of it whichever way its sides run
+                xs = [float(x) / mu_F for v in poly.vectors for x in (v.start[0], v.end[0])]
+                offset = np.array([sk.extent().right + 15.0 - min(xs), 0.0])
             for key, v in zip(keys, poly.vectors):
                 if key in drawn:
                     continue
@@ -562,10 +585,9 @@ def sketch_loads_table(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language
                      _num(ll.J), _num(ll.eps), _num(ll.inertia_moment),
                      "—" if sh is None else _num(sh.arm / mu_l)])
         marks.append(str(lid))
-    header = [w["link"], "m, kg", "G, N", "a_S, m/s²", "F_in, N", "J_S, kg·m²", "ε, 1/s²",
-              "M_in, N·m", "h, mm"]
+    header = [w["link"], *w["loads_header"]]
     return table_sketch(look, "table-loads", w["loads"].format(i=fa.index), header, rows,
-                         [12.0, 14.0, 16.0, 16.0, 16.0, 16.0, 16.0, 16.0, 14.0], marks)
+                        [12.0, 14.0, 16.0, 16.0, 16.0, 16.0, 16.0, 16.0, 14.0], marks, lang)
 
 
 def _sketch_tables(fa: ForceAnalysis, arms: Sequence[tuple[str, float]], look: Any,
@@ -580,8 +602,8 @@ def _sketch_tables(fa: ForceAnalysis, arms: Sequence[tuple[str, float]], look: A
                      _num(abs(comps["t"])) if "t" in comps else "—"])
         marks.append(force_markup(name))
     out["table-reactions"] = table_sketch(
-        look, "table-reactions", w["reactions"], [w["pair"], "|R|", "R_x", "R_y", "R^n", "R^t"],
-        rows, [16.0, 18.0, 18.0, 18.0, 18.0, 18.0], marks)
+        look, "table-reactions", w["reactions"], [w["pair"], "|R|", "Rx", "Ry", "|Rn|", "|Rt|"],
+        rows, [16.0, 18.0, 18.0, 18.0, 18.0, 18.0], marks, lang)
     rows, marks = [], []
     by_label = {f.label: f for f in (*fa.lever.forces, fa.lever.balancing)}
     for k, (label, h) in enumerate(arms, 1):
@@ -590,14 +612,14 @@ def _sketch_tables(fa: ForceAnalysis, arms: Sequence[tuple[str, float]], look: A
                      _num(float(np.hypot(*f.force)) * h * math.copysign(1.0, f.moment))])
         marks.append(force_markup(label))
     out["table-lever"] = table_sketch(
-        look, "table-lever", w["lever_table"], [w["force"], "h №", "F, N", "h, mm", "±F·h, N·mm"],
-        rows, [16.0, 12.0, 18.0, 16.0, 22.0], marks)
+        look, "table-lever", w["lever_table"], [w["force"], *w["lever_header"]],
+        rows, [16.0, 12.0, 18.0, 16.0, 22.0], marks, lang)
     d = fa.discrepancy_percent
     rows = [["", _num(fa.balancing_force_plans, 6)], ["", _num(fa.balancing_force_lever, 6)],
-            ["", "—" if math.isnan(d) else f"{d:.3g}"], ["", _num(fa.balancing_moment, 6)]]
+            ["", "—" if math.isnan(d) else f"{d:.2f}"], ["", _num(fa.balancing_moment, 6)]]
     out["table-balancing"] = table_sketch(
         look, "table-balancing", w["balancing"], [w["quantity"], w["value"]], rows, [66.0, 24.0],
-        [w["plans"], w["by_lever"], w["delta"], w["moment"]])
+        [w["plans"], w["by_lever"], w["delta"], w["moment"]], lang)
     return out
 
 
@@ -607,6 +629,20 @@ def _force_scale(polygons: Sequence[ForcePolygon]) -> float:
     """μF so that the largest side of the polygons is 150 … 300 mm (seed 003 §2.6)."""
     largest = max((p.largest for p in polygons), default=0.0)
     return scale_for(largest, FORCE_PLAN) if largest > 0 else 1.0
+
+
+_RUNS = {"uk": {"bal": "зр"}}  # indices of the textbook's symbols that differ by language
+
+
+def _translated(sketch: Sketch, lang: Language) -> Sketch:
+    """The sketch with its lettering runs in `lang`: F_bal is F_зр on a Ukrainian sheet."""
+    runs = _RUNS.get(lang)
+    if not runs:
+        return sketch
+    for i, c in enumerate(sketch.calls):
+        if c.name == "text" and c.args["content"] in runs:
+            sketch.calls[i] = type(c)(c.name, {**c.args, "content": runs[c.args["content"]]}, c.groups)
+    return sketch
 
 
 def _sketch_all(fa: ForceAnalysis, analysis: Any, look: Any, lang: Language, shrink: int,
@@ -695,7 +731,7 @@ def compose_sheet2(analysis: Any, backend: Backend, lang: Language = "en", *,
                 for name in tables + drawings:
                     ext, rect = sketches[name].extent(), placed[name]
                     dx, dy = rect.x - ext.x, rect.y - ext.y
-                    sketches[name].replay(backend, dx, dy)
+                    _translated(sketches[name], lang).replay(backend, dx, dy)
                     result.origins[name] = (dx, dy)
                     result.placed[name] = rect
                 fields = title_fields(analysis)
