@@ -442,6 +442,16 @@ def sketch_plan(
                 if c.kind in ("normal", "coriolis"):
                     tag = "n" if c.kind == "normal" else "k"
                     pending.append((e, f"{tag}_{{{c.label.split('_', 1)[-1]}}}", unit_vector(e - s)))
+        # The image of each link: its joints' images joined by thin lines (the
+        # relative vectors ab, de, and the similarity triangles of three-point links).
+        owners = analysis.mech.point_owners
+        for link in analysis.mech.links.values():
+            joints = [p for p in link.points if p in images and len(owners.get(p, ())) > 1]
+            for i in range(len(joints)):
+                for j in range(i + 1, len(joints)):
+                    a, b = images[joints[i]], images[joints[j]]
+                    if float(np.hypot(*(b - a))) >= 0.5:
+                        sk.line(a, b, "thin")
         # Absolute vectors from the pole, main lines.
         labels: dict[tuple[int, int], list[str]] = {}
         for name in moving:
@@ -514,7 +524,7 @@ def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
             deriv = c.acceleration
             pts = np.asarray(deriv.mid_points, dtype=float)
             curve = np.asarray(deriv.curve, dtype=float)
-            label = "a, m/s^{2}"
+            label = "a, m/s²"
             scales = [scale_label(_tidy(c.mu_a), "acceleration", lang)]
         ymin = min(0.0, float(curve[:, 1].min()))
         ymax = max(0.0, float(curve[:, 1].max()))

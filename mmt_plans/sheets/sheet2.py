@@ -178,6 +178,7 @@ class _Drawing:
         self.state = state
         self.mu_l = mu_l
         self._pending: list[tuple[np.ndarray, str, np.ndarray | None]] = []
+        self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, direction) drawn
 
     def mm(self, P: Any) -> np.ndarray:
         return _xy(_c(P)) / self.mu_l
@@ -201,6 +202,11 @@ class _Drawing:
         if size <= 1e-9 * max(largest, 1e-300):
             return
         u = np.asarray(F, float) / size
+        # forces at one point along one line (F_PR and F_in on a slider) side by side
+        for start, v in self._arrows:
+            if float(np.hypot(*(start - at))) < 1.0 and abs(float(v[0] * u[1] - v[1] * u[0])) < 0.05:
+                at = at + 2.5 * np.array([-u[1], u[0]])
+        self._arrows.append((at, u))
         end = at + _arrow_length(size, largest) * u
         self.sk.arrow(at, end, line, **_ARROW)  # type: ignore[arg-type]
         self.labels.avoid_line(at, end)
