@@ -15,7 +15,6 @@ from __future__ import annotations
 import difflib
 import math
 import re
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
@@ -24,6 +23,7 @@ import numpy as np
 
 from .errors import MmtError, SpecError
 from .scales import format_number, series
+from .spec import parse_toml, read_text
 
 if TYPE_CHECKING:  # pragma: no cover
     from .analysis import Analysis
@@ -215,21 +215,11 @@ def _num(x: float) -> str:
 
 def load_answers(path: str | Path, analysis: "Analysis") -> Answers:
     """Read an answers file and check every name in it against the mechanism."""
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as err:
-        raise SpecError(str(path), "file", f"cannot be read ({err.strerror})",
-                        "check the path") from None
-    return loads_answers(text, analysis, str(path))
+    return loads_answers(read_text(path), analysis, str(path))
 
 
 def loads_answers(text: str, analysis: "Analysis", path: str = "<string>") -> Answers:
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as err:
-        raise SpecError(path, "TOML", str(err), "fix the TOML syntax at that line") from None
-    return _Reader(path, analysis).answers(data)
+    return _Reader(path, analysis).answers(parse_toml(text, path))
 
 
 class _Reader:

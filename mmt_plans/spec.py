@@ -37,21 +37,28 @@ KEYS: dict[str, tuple[str, ...]] = {
 
 def load(path: str | Path) -> Mechanism:
     """Read and check a mechanism file."""
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as err:
-        raise SpecError(str(path), "file", f"cannot be read ({err.strerror})",
-                        "check the path") from None
-    return loads(text, str(path))
+    return loads(read_text(path), str(path))
 
 
 def loads(text: str, path: str = "<string>") -> Mechanism:
+    return _Reader(path).mechanism(parse_toml(text, path))
+
+
+def read_text(path: str | Path) -> str:
+    """The text of an input file (a mechanism, answers), or a SpecError naming it."""
     try:
-        data = tomllib.loads(text)
+        return Path(path).read_text(encoding="utf-8")
+    except OSError as err:
+        raise SpecError(str(path), "file", f"cannot be read ({err.strerror})",
+                        "check the path") from None
+
+
+def parse_toml(text: str, path: str) -> dict[str, Any]:
+    """The tables of an input file's TOML, or a SpecError at the line that is wrong."""
+    try:
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as err:
         raise SpecError(path, "TOML", str(err), "fix the TOML syntax at that line") from None
-    return _Reader(path).mechanism(data)
 
 
 class _Reader:

@@ -15,12 +15,13 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Literal, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, Iterator, Literal, Mapping, Sequence
 
 import numpy as np
 
 from ..errors import MmtError
 from ..scales import ACCELERATION_PLAN, FORCE_PLAN, VELOCITY_PLAN, format_scale, scale_for
+from ..sheets.sheet1 import _image_markup  # images on a plan are lettered as on sheet 1
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..analysis import Analysis
@@ -297,14 +298,6 @@ def _sub(name: str) -> str:
     return "{" + name + "}"
 
 
-def _img(name: str) -> str:
-    """The image of point "B" on a plan: "b"; of "S2": "s_{2}"; of "A3": "a_{3}"."""
-    m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
-    if m:
-        return f"{m.group(1).lower()}_{{{m.group(2)}}}"
-    return name.lower()
-
-
 def _force_markup(label: str) -> str:
     """Labels of the force solver as markup: "F_in2" → "F_{in2}", "R34^t" → "R^{τ}_{34}"."""
     m = re.fullmatch(r"R(\d+)(?:_(\d+))?(?:\^(\w))?", label)
@@ -446,11 +439,17 @@ class _Writer:
         names += [p for p in view.velocity_images if p not in owners]
         return [p for p in names if p in view.velocity_images]
 
-    def position_head(self, i: int, view) -> None:
-        k = self.a.entry(i)
-        pos = self.a.positions[k]
-        self.add("subsection", self.w["vplan"].format(i=i, phi=self.n(pos.phi1_deg, 5),
-                                                      stroke=self.w[pos.stroke]))
+    def plan_positions(self, views) -> Iterator[tuple[int, Any]]:
+        """Each plan position under its heading: a solved one yielded, a failed
+        one's problem written."""
+        for i, view in views.items():
+            pos = self.a.positions[self.a.entry(i)]
+            self.add("subsection", self.w["vplan"].format(i=i, phi=self.n(pos.phi1_deg, 5),
+                                                          stroke=self.w[pos.stroke]))
+            if isinstance(view, Exception):
+                self.problem(view)
+                continue
+            yield i, view
 
     def distance(self, i: int, P: str, Q: str) -> float:
         return abs(self.point(i, P) - self.point(i, Q))
@@ -480,11 +479,7 @@ class _Writer:
         self.eq(f"V_A = ω_1·l_{{OA}} = {self.n(w1)}·{self.n(l_oa)} = {self.n(w1 * l_oa)} {u['m/s']};")
         pa = v_a / mu_v
         self.eq(f"μ_V = V_A/pa = {self.n(v_a)}/{self.n(pa)} = {self.n(mu_v)} {u['v/mm']}")
-        for i, view in views.items():
-            self.position_head(i, view)
-            if isinstance(view, Exception):
-                self.problem(view)
-                continue
+        for i, view in self.plan_positions(views):
             for g in view.groups:
                 X = g.point
                 self.text(w["vequations"].format(name=g.group, kind=g.kind, X=X))
@@ -501,8 +496,8 @@ class _Writer:
             self.text(w["found_v"])
             for name in self.moving_points(view):
                 v = float(np.hypot(*view.velocity_images[name]))
-                self.eq(f"V_{_sub(name)} = p{_img(name)}·μ_V = {self.n(v / mu_v)}·{self.n(mu_v)} = "
-                        f"{self.n(v)} {u['m/s']}")
+                self.eq(f"V_{_sub(name)} = p{_image_markup(name)}·μ_V = {self.n(v / mu_v)}·"
+                        f"{self.n(mu_v)} = {self.n(v)} {u['m/s']}")
             for g in view.groups:
                 for c in g.velocity:
                     base, rel = self.leg(c.label, g.point, "V_")
@@ -524,8 +519,8 @@ class _Writer:
         base, rel = self.leg(label, X, "V_")
         if "/" in rel:
             k = rel.split("/", 1)[1]
-            return f"{_img(X)}_{{({k})}}{_img(X)}"
-        return f"{_img(base)}{_img(X)}"
+            return f"{_image_markup(X)}_{{({k})}}{_image_markup(X)}"
+        return f"{_image_markup(base)}{_image_markup(X)}"
 
     # --- 1.4 -----------------------------------------------------------------------------
     def link_pair(self, lid: int, view) -> tuple[str, str] | None:
@@ -547,31 +542,46 @@ class _Writer:
             return ""
         return f" ({self.w['ccw'] if x > 0 else self.w['cw']})"
 
-    def angular_velocities(self, views) -> None:
-        u = self.u
-        self.section("1.4", "1.4")
+    def link_rates(self, views, rate: Literal["omega", "eps"]
+                   ) -> Iterator[tuple[int, Any, int, tuple[str, str]]]:
+        """Per plan position, the lines of ω (rate "omega") or ε ("eps") of every
+        link: the drive's and those of links that slide along their guide (they
+        turn with it) are written here; for each other link yields (i, view,
+        link, its pair of points) for the caller to write."""
+        omega = rate == "omega"
+        symbol, unit = ("ω", self.u["rad/s"]) if omega else ("ε", self.u["rad/s2"])
         d = self.mech.drive.link
         for i, view in views.items():
             if isinstance(view, Exception):
                 continue
-            self.text(self.w["omega_pos"].format(i=i))
-            self.eq(f"ω_{{{d}}} = {self.n(abs(view.omega[d]))} {u['rad/s']}{self.sense(view.omega[d])}")
+            rates = view.omega if omega else view.eps
+            self.text(self.w["omega_pos" if omega else "eps_pos"].format(i=i))
+            if omega:
+                self.eq(f"ω_{{{d}}} = {self.n(abs(rates[d]))} {unit}{self.sense(rates[d])}")
+            else:
+                self.eq(self.w["eps1"].replace("ε_1", f"ε_{{{d}}}"))
             for lid in self.mech.links:
                 if lid == d:
                     continue
-                om = view.omega[lid]
                 pair = self.link_pair(lid, view)
                 if pair is None:
                     g = self.guide_of(lid)
-                    gw = 0.0 if g in (None, 0) else abs(view.omega[g])
-                    self.eq(f"ω_{{{lid}}} = ω_{{{g if g is not None else 0}}} = {self.n(gw)} "
-                            f"{u['rad/s']}{self.sense(om)}  ({self.w['slides_with'].format(lid=lid, g=g)})")
+                    of_guide = 0.0 if g in (None, 0) else abs(rates[g])
+                    note = f"  ({self.w['slides_with'].format(lid=lid, g=g)})" if omega else ""
+                    self.eq(f"{symbol}_{{{lid}}} = {symbol}_{{{g if g is not None else 0}}} = "
+                            f"{self.n(of_guide)} {unit}{self.sense(rates[lid])}{note}")
                     continue
-                P, Q = pair
-                v_pq = float(np.hypot(*(view.velocity_images[P] - view.velocity_images[Q])))
-                l_pq = self.distance(i, P, Q)
-                self.eq(f"ω_{{{lid}}} = V_{{{P}{Q}}}/l_{{{P}{Q}}} = {self.n(v_pq)}/{self.n(l_pq)} = "
-                        f"{self.n(v_pq / l_pq)} {u['rad/s']}{self.sense(om)}")
+                yield i, view, lid, pair
+
+    def angular_velocities(self, views) -> None:
+        u = self.u
+        self.section("1.4", "1.4")
+        for i, view, lid, (P, Q) in self.link_rates(views, "omega"):
+            om = view.omega[lid]
+            v_pq = float(np.hypot(*(view.velocity_images[P] - view.velocity_images[Q])))
+            l_pq = self.distance(i, P, Q)
+            self.eq(f"ω_{{{lid}}} = V_{{{P}{Q}}}/l_{{{P}{Q}}} = {self.n(v_pq)}/{self.n(l_pq)} = "
+                    f"{self.n(v_pq / l_pq)} {u['rad/s']}{self.sense(om)}")
 
     # --- 1.5 -----------------------------------------------------------------------------
     def acceleration_plans(self, views) -> None:
@@ -586,11 +596,7 @@ class _Writer:
                 f"{self.n(w1 * w1 * l_oa)} {u['m/s2']};")
         pia = a_a / mu_a
         self.eq(f"μ_a = a_A/πa = {self.n(a_a)}/{self.n(pia)} = {self.n(mu_a)} {u['a/mm']}")
-        for i, view in views.items():
-            self.position_head(i, view)
-            if isinstance(view, Exception):
-                self.problem(view)
-                continue
+        for i, view in self.plan_positions(views):
             for g in view.groups:
                 X = g.point
                 self.text(w["aequations"].format(name=g.group, kind=g.kind, X=X))
@@ -625,8 +631,8 @@ class _Writer:
             self.text(w["found_a"])
             for name in self.moving_points(view):
                 acc = float(np.hypot(*view.acceleration_images[name]))
-                self.eq(f"a_{_sub(name)} = π{_img(name)}·μ_a = {self.n(acc / mu_a)}·{self.n(mu_a)} = "
-                        f"{self.n(acc)} {u['m/s2']}")
+                self.eq(f"a_{_sub(name)} = π{_image_markup(name)}·μ_a = {self.n(acc / mu_a)}·"
+                        f"{self.n(mu_a)} = {self.n(acc)} {u['m/s2']}")
             for g in view.groups:
                 for c in g.acceleration:
                     if c.kind not in ("tangential", "slide"):
@@ -646,32 +652,16 @@ class _Writer:
     def angular_accelerations(self, views) -> None:
         u = self.u
         self.section("1.6", "1.6")
-        d = self.mech.drive.link
-        for i, view in views.items():
-            if isinstance(view, Exception):
-                continue
-            self.text(self.w["eps_pos"].format(i=i))
-            self.eq(self.w["eps1"].replace("ε_1", f"ε_{{{d}}}"))
-            for lid in self.mech.links:
-                if lid == d:
-                    continue
-                e = view.eps[lid]
-                pair = self.link_pair(lid, view)
-                if pair is None:
-                    g = self.guide_of(lid)
-                    ge = 0.0 if g in (None, 0) else abs(view.eps[g])
-                    self.eq(f"ε_{{{lid}}} = ε_{{{g if g is not None else 0}}} = {self.n(ge)} "
-                            f"{u['rad/s2']}{self.sense(e)}")
-                    continue
-                P, Q = pair
-                rc = self.point(i, P) - self.point(i, Q)
-                r = np.array([rc.real, rc.imag])
-                om = view.omega[lid]
-                a_rel = view.acceleration_images[P] - view.acceleration_images[Q]
-                a_t = float(np.hypot(*(a_rel + om * om * r)))  # a_PQ minus its normal part −ω²·r
-                l = float(np.hypot(*r))
-                self.eq(f"ε_{{{lid}}} = a^τ_{{{P}{Q}}}/l_{{{P}{Q}}} = {self.n(a_t)}/{self.n(l)} = "
-                        f"{self.n(a_t / l)} {u['rad/s2']}{self.sense(e)}")
+        for i, view, lid, (P, Q) in self.link_rates(views, "eps"):
+            e = view.eps[lid]
+            rc = self.point(i, P) - self.point(i, Q)
+            r = np.array([rc.real, rc.imag])
+            om = view.omega[lid]
+            a_rel = view.acceleration_images[P] - view.acceleration_images[Q]
+            a_t = float(np.hypot(*(a_rel + om * om * r)))  # a_PQ minus its normal part −ω²·r
+            l = float(np.hypot(*r))
+            self.eq(f"ε_{{{lid}}} = a^τ_{{{P}{Q}}}/l_{{{P}{Q}}} = {self.n(a_t)}/{self.n(l)} = "
+                    f"{self.n(a_t / l)} {u['rad/s2']}{self.sense(e)}")
 
     # --- 1.7, 1.8 ------------------------------------------------------------------------
     def diagrams(self) -> None:
@@ -867,7 +857,7 @@ class _Writer:
             h_mm = f.arm / mu_v
             Fh = f.moment / mu_v
             total += Fh
-            rows.append((_force_markup(f.label), _img(f.point), self.n(F), self.n(h_mm),
+            rows.append((_force_markup(f.label), _image_markup(f.point), self.n(F), self.n(h_mm),
                          self.n(Fh)))
         self.add("table", rows=rows, widths=(24, 16, 30, 30, 36))
         pa = lv.pa / mu_v

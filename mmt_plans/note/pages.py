@@ -66,17 +66,7 @@ def markup_width(let: Lettering, text: str, size: float) -> float:
 
 
 def _wrap(let: Lettering, text: str, size: float, width: float) -> list[str]:
-    lines: list[str] = []
-    current = ""
-    for word in text.split(" "):
-        trial = f"{current} {word}" if current else word
-        if current and markup_width(let, trial, size) > width:
-            lines.append(current)
-            current = word
-        else:
-            current = trial
-    lines.append(current)
-    return lines
+    return let.wrap(text, size, width, measure=lambda line, at: markup_width(let, line, at))
 
 
 def _equation_lines(let: Lettering, text: str, size: float, width: float) -> list[tuple[str, float]]:

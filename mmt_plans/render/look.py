@@ -16,7 +16,7 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
-from typing import Any, Literal, Mapping, get_args
+from typing import Any, Callable, Literal, Mapping, get_args
 
 __all__ = [
     "LineType",
@@ -127,17 +127,21 @@ class Lettering:
         """Height from the top of the first line's capitals to the last baseline."""
         return size + max(lines - 1, 0) * self.line_pitch * size
 
-    def wrap(self, text: str, size: float, max_width: float) -> list[str]:
-        """Break `text` at spaces (and at given newlines) into lines no wider than max_width.
+    def wrap(self, text: str, size: float, max_width: float, *,
+             measure: Callable[[str, float], float] | None = None) -> list[str]:
+        """Break `text` at spaces (and at given newlines) into lines no wider than max_width,
+        as `measure(line, size)` gives widths (plain text's by default).
 
-        A single word wider than max_width stays on its own line.
+        A single word wider than max_width stays on its own line. Spaces inside
+        a line are kept as written (an equation's "  (" stays two).
         """
+        measure = measure or self.width
         lines: list[str] = []
         for paragraph in text.split("\n"):
             current = ""
-            for word in paragraph.split():
+            for word in paragraph.split(" "):
                 trial = f"{current} {word}" if current else word
-                if current and self.width(trial, size) > max_width:
+                if current and measure(trial, size) > max_width:
                     lines.append(current)
                     current = word
                 else:

@@ -11,17 +11,18 @@ the least, so a label is never dropped.
 from __future__ import annotations
 
 import math
+from contextlib import nullcontext
 from typing import Iterable, Sequence
 
 import numpy as np
 import shapely
 from shapely import STRtree
-from shapely.geometry import LineString, Point, box
+from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
 from ..render.recording import Call, RecordingBackend
 
-__all__ = ["Labels"]
+__all__ = ["Labels", "arc_line"]
 
 # the directions tried round an anchor, preferred first: the given side, then
 # round the compass
@@ -29,54 +30,80 @@ _COMPASS = tuple(np.exp(1j * math.radians(a)) for a in
                  (45, 135, -45, -135, 90, -90, 0, 180, 22.5, 67.5, 112.5, 157.5, -22.5, -67.5,
                   -112.5, -157.5))
 _RINGS = (0.0, 2.5, 5.0, 9.0, 14.0)  # mm further out, tried in turn
+_ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
 
 class Labels:
     """Places rich-text labels on a recording sketch without collisions."""
 
-    def __init__(self, sketch: RecordingBackend, size: float) -> None:
+    def __init__(self, sketch: RecordingBackend, size: float, *,
+                 rings: Sequence[float] = _RINGS) -> None:
         self.sketch = sketch
         self.size = size
+        # how much further out than `distance` a label may go, tried in turn; past
+        # the last ring it is written where it covers least
+        self.rings = np.array(rings, dtype=float)
         self.boxes: list[BaseGeometry] = []
-        self._obstacles: list[BaseGeometry] = []  # lines and points, kept `_clearance` mm off
+        self._obstacles: list[BaseGeometry] = []  # shapes, each kept its `_clearance` mm off
         self._clearance: list[float] = []
         self._tree: STRtree | None = None
+        self._grown: BaseGeometry | None = None
+
+    def avoid(self, shape: BaseGeometry, clearance: float) -> None:
+        """Keep labels `clearance` mm off any shape (a filled polygon is avoided whole)."""
+        self._obstacles.append(shape)
+        self._clearance.append(clearance)
+        self._tree = None
+        self._grown = None
 
     def avoid_line(self, start: Sequence[float], end: Sequence[float], clearance: float = 0.4) -> None:
         """Keep labels `clearance` mm off a drawn segment."""
         if math.dist(start, end) > 1e-9:
-            self._obstacles.append(LineString([tuple(start), tuple(end)]))
+            self.avoid(LineString([tuple(start), tuple(end)]), clearance)
         else:
-            self._obstacles.append(Point(tuple(start)))
-        self._clearance.append(clearance)
-        self._tree = None
+            self.avoid(Point(tuple(start)), clearance)
 
     def avoid_circle(self, centre: Sequence[float], radius: float) -> None:
-        self._obstacles.append(Point(tuple(centre)))
-        self._clearance.append(radius)
-        self._tree = None
+        self.avoid(Point(tuple(centre)), radius)
 
-    def avoid_drawn(self, calls: Iterable[Call], clearance: float = 0.3) -> None:
+    def avoid_drawn(self, calls: Iterable[Call], clearance: float = 0.3, *,
+                    solid: bool = False) -> None:
         """Keep labels off everything already recorded: lines, polylines, the
-        edges of polygons, arrows and circles."""
+        edges of polygons, arrows and circles; with `solid`, also the inside
+        of polygons and the length of arcs."""
         for c in calls:
-            if c.name in ("line", "arrow", "polyline", "polygon"):
+            if solid and c.name == "polygon":
+                self.avoid(Polygon(c["points"]), clearance)
+            elif solid and c.name == "arc":
+                arc = arc_line(c["center"], c["radius"], c["start_deg"], c["end_deg"])
+                self.avoid(arc, clearance)
+            elif c.name in ("line", "arrow", "polyline", "polygon"):
                 p = c.points()
                 for a, b in zip(p, p[1:] + (p[:1] if c.name == "polygon" else [])):
                     self.avoid_line(a, b, clearance)
             elif c.name == "circle":
                 self.avoid_circle(c["center"], c["radius"] + clearance)
 
+    def covered(self, shape: BaseGeometry) -> float:
+        """The area of `shape` (mm²) within the clearance of what labels avoid:
+        how much a symbol drawn there would cover."""
+        if not self._obstacles:
+            return 0.0
+        if self._grown is None:
+            shapes = np.asarray(self._obstacles, dtype=object)
+            self._grown = shapely.unary_union(shapely.buffer(shapes, np.array(self._clearance)))
+            shapely.prepare(self._grown)
+        return float(shape.intersection(self._grown).area) if self._grown.intersects(shape) else 0.0
+
     def width(self, markup: str) -> float:
         probe = RecordingBackend(look=self.sketch.look)
         return probe.rich_text((0.0, 0.0), markup, self.size)
 
     def place(self, anchor: Sequence[float], markup: str, *, towards: Sequence[float] | None = None,
-              distance: float = 1.5) -> BaseGeometry:
-        """Write `markup` beside `anchor`, first trying the side `towards` points to."""
-        w, h = self.width(markup) + 0.4, self.size + 0.4
-        # an index drops 0.3 of the letter height under the line
-        drop = 0.3 * self.size if "_{" in markup else 0.0
+              distance: float = 1.5, group: str | None = None) -> BaseGeometry:
+        """Write `markup` beside `anchor`, first trying the side `towards` points to;
+        inside a group `group` (class "label") if one is named."""
+        w, h, drop = self._extent(markup)
         x, y = float(anchor[0]), float(anchor[1])
         dirs = np.array(_COMPASS)
         if towards is not None and math.hypot(*towards) > 1e-12:
@@ -84,9 +111,37 @@ class Labels:
             dirs = dirs[np.argsort(-(dirs.real * t.real + dirs.imag * t.imag), kind="stable")]
         # every candidate at once, nearest ring first: the box's nearest corner
         # (or edge middle) `ring` mm from the anchor
-        ring = (distance + np.array(_RINGS))[:, None]
+        ring = (distance + self.rings)[:, None]
         cx = (x + dirs.real * (ring + w / 2 * np.sqrt(np.abs(dirs.real)))).ravel()
         cy = (y + dirs.imag * (ring + h / 2 * np.sqrt(np.abs(dirs.imag)))).ravel()
+        return self._write_first_free(cx, cy, w, h, drop, markup, group)
+
+    def place_along(self, start: Sequence[float], end: Sequence[float], markup: str, *,
+                    distance: float = 1.0, group: str | None = None) -> BaseGeometry:
+        """Write `markup` `distance` mm beside the segment start–end (a link's
+        number): at its middle if that is free, else further along, either side."""
+        w, h, drop = self._extent(markup)
+        a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+        d = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
+        sides = np.array([complex(-d[1], d[0]), complex(d[1], -d[0])])
+        # how far the box reaches back towards the segment from its centre (an index hangs below)
+        reach = (w / 2 * np.abs(sides.real)
+                 + np.where(sides.imag > 0, h / 2 + drop, h / 2) * np.abs(sides.imag))
+        anchors = a + np.array(_ALONG)[:, None] * (b - a)
+        # nearest ring first, then along the segment, then the side
+        ring = (distance + self.rings)[:, None, None]
+        cx = (anchors[:, 0][:, None] + sides.real * (ring + reach)).ravel()
+        cy = (anchors[:, 1][:, None] + sides.imag * (ring + reach)).ravel()
+        return self._write_first_free(cx, cy, w, h, drop, markup, group)
+
+    def _extent(self, markup: str) -> tuple[float, float, float]:
+        """Width and height of the box a label keeps free, and how far its index drops."""
+        # an index drops 0.3 of the letter height under the line
+        return self.width(markup) + 0.4, self.size + 0.4, 0.3 * self.size if "_{" in markup else 0.0
+
+    def _write_first_free(self, cx: np.ndarray, cy: np.ndarray, w: float, h: float, drop: float,
+                          markup: str, group: str | None) -> BaseGeometry:
+        """Write `markup` centred at the first free candidate, else at the one that covers least."""
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = np.zeros(cx.size)
         if self.boxes:
@@ -106,11 +161,18 @@ class Labels:
                 cost += 0.25 * np.bincount(hit, minlength=cx.size)
         free = np.flatnonzero(cost <= 1e-9)
         k = int(free[0]) if free.size else int(np.argmin(cost))
-        return self._write(float(cx[k]), float(cy[k]), markup,
-                           box(x0[k], y0[k], x1[k], y1[k]))
-
-    def _write(self, cx: float, cy: float, markup: str, footprint: BaseGeometry) -> BaseGeometry:
-        self.sketch.rich_text((cx, cy), markup, self.size, anchor="center", valign="middle")
+        footprint = box(x0[k], y0[k], x1[k], y1[k])
+        with self.sketch.group(group, "label") if group is not None else nullcontext():
+            self.sketch.rich_text((float(cx[k]), float(cy[k])), markup, self.size, anchor="center",
+                                  valign="middle")
         self.boxes.append(footprint)
         return footprint
+
+
+def arc_line(centre: Sequence[float], radius: float, start_deg: float,
+             end_deg: float) -> LineString:
+    """An arc drawn counter-clockwise from start_deg to end_deg, as a polyline."""
+    span = (end_deg - start_deg) % 360.0 or 360.0
+    t = np.radians(start_deg + np.linspace(0.0, span, 24))
+    return LineString(np.c_[centre[0] + radius * np.cos(t), centre[1] + radius * np.sin(t)])
 

@@ -22,11 +22,10 @@ from pathlib import Path
 from typing import Any, Iterable, Mapping, Sequence
 
 import numpy as np
-import shapely
-from shapely.geometry import LineString, Point, Polygon, box
-from shapely.geometry.base import BaseGeometry
+from shapely.geometry import LineString
 
 from ..model import FRAME, Prismatic
+from .labels import Labels, arc_line
 from .page import Language, Page, Rect, draw_frame
 from .sheet1 import Sketch, hatched_guide, hatched_base, point_markup, unit_vector
 
@@ -46,6 +45,12 @@ NUMBER_GROUP = "link-"  # + link id: the group of one link number
 _LETTER = 2.5  # point letters and link numbers, mm
 _CAPTION = 2.5
 _PIN = 0.9  # radius of a revolute joint, mm
+_CLEAR = 0.35  # letters and the ω1 arc keep this far off drawn lines, mm
+_POINT_GAP = 1.5  # a point's letter this far from the point, mm
+# a letter crowded out of the places beside what it names goes at most this much
+# further (mm), and else where it covers least: a scheme is small, and a letter
+# far off names nothing
+_RINGS = (0.0, 1.0, 2.0, 3.5, 5.0)
 _BLOCK = (3.2, 1.9)  # half length and half height of a slider, mm
 _RAM = 1.45  # a slider that carries another one at its point is drawn this much larger
 _BASE = (6.0, 3.2)  # width and depth of a frame pivot's symbol, mm
@@ -112,79 +117,6 @@ def _pose(analysis: Any, k: int) -> tuple[dict[str, np.ndarray], list[_Guide]]:
                              tuple(np.array([e.real, e.imag]) for e in ends),  # type: ignore[arg-type]
                              pts[pair.slider_point]))
     return pts, guides
-
-
-class _Placer:
-    """Labels beside what they name, where they hit neither lines nor other labels."""
-
-    def __init__(self, sk: Sketch) -> None:
-        self.sk = sk
-        geoms: list[BaseGeometry] = []
-        for c in sk.calls:
-            a = c.args
-            if c.name in ("line", "arrow"):
-                geoms.append(LineString([a["start"], a["end"]]).buffer(0.35))
-            elif c.name == "polyline":
-                geoms.append(LineString(a["points"]).buffer(0.35))
-            elif c.name == "polygon":
-                geoms.append(Polygon(a["points"]).buffer(0.2))
-            elif c.name == "circle":
-                geoms.append(Point(a["center"]).buffer(a["radius"] + 0.3))
-            elif c.name == "arc":
-                geoms.append(_arc_line(a["center"], a["radius"], a["start_deg"], a["end_deg"]).buffer(0.35))
-        self.obstacles = shapely.unary_union(geoms) if geoms else Polygon()
-        shapely.prepare(self.obstacles)
-        self.boxes: list[BaseGeometry] = []
-
-    def box_of(self, pos: np.ndarray, markup: str, anchor: str, valign: str) -> BaseGeometry:
-        probe = Sketch(self.sk.look)
-        probe.rich_text(pos, markup, _LETTER, anchor=anchor, valign=valign)  # type: ignore[arg-type]
-        return shapely.unary_union([box(*probe.text_box(c)) for c in probe.named("text")]).envelope
-
-    def cost(self, b: BaseGeometry) -> float:
-        cost = 0.0
-        grown = b.buffer(0.3)
-        for other in self.boxes:
-            if grown.intersects(other):
-                cost += 1000.0 + 1000.0 * grown.intersection(other).area
-        if self.obstacles.intersects(b):
-            cost += 40.0 * b.intersection(self.obstacles).area + 5.0
-        return cost
-
-    def place(self, group: str, markup: str, candidates: Sequence[tuple[np.ndarray, str, str, float]]) -> None:
-        """Write `markup` at the cheapest of (pos, anchor, valign, preference cost)."""
-        best = None
-        for pos, anchor, valign, pref in candidates:
-            b = self.box_of(pos, markup, anchor, valign)
-            # rounded, so that the last bits of the solution cannot flip a near tie
-            c = round(self.cost(b) + pref, 2)
-            if best is None or c < best[0] - 1e-9:
-                best = (c, pos, anchor, valign, b)
-        assert best is not None
-        _, pos, anchor, valign, b = best
-        self.boxes.append(b)
-        with self.sk.group(group, "label"):
-            self.sk.rich_text(pos, markup, _LETTER, anchor=anchor, valign=valign)  # type: ignore[arg-type]
-
-
-def _arc_line(center: Sequence[float], r: float, a0: float, a1: float) -> LineString:
-    span = (a1 - a0) % 360.0 or 360.0
-    t = np.radians(a0 + np.linspace(0.0, span, 24))
-    return LineString(np.c_[center[0] + r * np.cos(t), center[1] + r * np.sin(t)])
-
-
-def _around(p: np.ndarray, r: float, prefer: np.ndarray) -> list[tuple[np.ndarray, str, str, float]]:
-    """Places round a point at distance r (several rings), the preferred side cheapest."""
-    out = []
-    for ring, extra in ((r, 0.0), (r + 1.5, 1.5), (r + 3.5, 4.0)):
-        for deg in range(0, 360, 30):
-            d = np.array([math.cos(math.radians(deg)), math.sin(math.radians(deg))])
-            anchor = "left" if d[0] > 0.35 else "right" if d[0] < -0.35 else "center"
-            valign = "baseline" if d[1] > 0.35 else "top" if d[1] < -0.35 else "middle"
-            pos = p + ring * d + (np.array([0.0, 0.4]) if valign == "baseline" else 0.0)
-            pref = extra + 2.0 * (1.0 - float(np.dot(d, prefer)))
-            out.append((pos, anchor, valign, pref))
-    return out
 
 
 def _free_direction(directions: Iterable[np.ndarray]) -> np.ndarray:
@@ -295,19 +227,17 @@ def _draw(analysis: Any, k: int, scale: float, look: Any, pose: tuple[dict[str, 
                 hatched_base(sk, P[name], *_BASE)
                 lines_at[name] += [np.array([-1.0, -1.5]), np.array([1.0, -1.5]), np.array([0.0, -1.0])]
 
+        # What the ω1 arc, the output's arrow and the lettering keep clear of.
+        labels = Labels(sk, _LETTER, rings=_RINGS)
+        labels.avoid_drawn(sk.calls, _CLEAR, solid=True)
+
         # ω1: an arc round the crank's pivot, clear of the crank and the base.
         pin = P[mech.crank_pin]
         crank_mm = float(np.hypot(*(pin - centre)))
         r = min(7.0, max(4.0, 0.45 * crank_mm))
-        placer = _Placer(sk)
-        best = None
-        for mid in range(0, 360, 10):
-            arc = _arc_line(centre, r, mid - 50, mid + 50).buffer(1.2)
-            c = round(arc.intersection(placer.obstacles).area, 2)
-            if best is None or c < best[0] - 1e-9:
-                best = (c, mid)
-        assert best is not None
-        mid = float(best[1])
+        # rounded, so that the last bits of the solution cannot flip a near tie
+        mid = float(min(range(0, 360, 10), key=lambda m: round(
+            labels.covered(arc_line(centre, r, m - 50, m + 50).buffer(1.2)), 2)))
         head = math.degrees(2.0 / r)  # the arrowhead takes about 2 mm of the arc
         ccw = mech.drive.sense == "ccw"
         a0, a1 = mid - 50.0, mid + 50.0
@@ -316,8 +246,10 @@ def _draw(analysis: Any, k: int, scale: float, look: Any, pose: tuple[dict[str, 
         def on_arc(deg: float) -> np.ndarray:
             return centre + r * np.array([math.cos(math.radians(deg)), math.sin(math.radians(deg))])
 
+        drawn = len(sk.calls)
         sk.arc(centre, r, a0 if ccw else a0 + head * 0.5, a1 - head * 0.5 if ccw else a1, "thin")
         sk.arrow(on_arc(tail), on_arc(tip), "thin", head_length=2.0, head_width=1.2)
+        labels.avoid_drawn(sk.calls[drawn:], _CLEAR, solid=True)
         omega_dir = on_arc(mid) - centre
         omega_at = on_arc(mid)
 
@@ -326,54 +258,48 @@ def _draw(analysis: Any, k: int, scale: float, look: Any, pose: tuple[dict[str, 
         w = unit_vector(np.asarray(mech.study.working_direction, dtype=float))
         wn = np.array([-w[1], w[0]])
         q = P[out]
-        placer = _Placer(sk)
         # Ahead of the block on its path if that is free, else beside it.
         s = q + (_BLOCK[0] * _RAM + 1.5) * w
         choices = [(s, s + 8.0 * w)]
         for side in (1.0, -1.0):
             s = q + side * (_BLOCK[1] * _RAM + 2.2) * wn - 3.5 * w
             choices.append((s, s + 8.0 * w))
-        scored = [(round(LineString([a, b]).buffer(1.0).intersection(placer.obstacles).area, 2), i)
-                  for i, (a, b) in enumerate(choices)]
-        a, b = choices[min(scored)[1]]
+        a, b = min(choices, key=lambda ab: round(labels.covered(LineString(ab).buffer(1.0)), 2))
+        drawn = len(sk.calls)
         sk.arrow(a, b, "main", head_length=2.5, head_width=1.4)
+        labels.avoid_drawn(sk.calls[drawn:], _CLEAR, solid=True)
 
         # Letters of the points, then the numbers of the links.
-        placer = _Placer(sk)
-        placer.place("omega-1", "ω_{1}", _around(omega_at, 1.2, unit_vector(omega_dir)))
-        order = sorted(P, key=lambda n: (FRAME not in owners[n], n))
-        for name in order:
-            prefer = _free_direction(lines_at[name])
-            placer.place(f"{LABEL_GROUP}{name}", point_markup(name), _around(P[name], 2.0, prefer))
+        labels.place(omega_at, "ω_{1}", towards=unit_vector(omega_dir), distance=1.0,
+                     group="omega-1")
+        # the letter of a slider's point goes outside its block
+        gap = {name: _POINT_GAP for name in P}
+        for g in guides:
+            grow = _RAM if g.pair.guide == FRAME and g.pair.slider_point in carried else 1.0
+            gap[g.pair.slider_point] = max(gap[g.pair.slider_point], _BLOCK[1] * grow + 0.5)
+        for name in sorted(P, key=lambda n: (FRAME not in owners[n], n)):
+            labels.place(P[name], point_markup(name), towards=_free_direction(lines_at[name]),
+                         distance=gap[name], group=f"{LABEL_GROUP}{name}")
         guide_of = {g.pair.slider: g for g in guides}
         for lid, link in mech.links.items():
+            group = f"{NUMBER_GROUP}{lid}"
             names = [p for p in link.points if p in P]
             segs = [(P[names[i]], P[names[j]]) for i in range(len(names)) for j in range(i + 1, len(names))]
             segs = [s for s in segs if float(np.hypot(*(s[1] - s[0]))) > 1e-6]
-            cands: list[tuple[np.ndarray, str, str, float]] = []
             if segs:
+                # beside the link's longest line, at its middle if that is free
                 a, b = max(segs, key=lambda s: float(np.hypot(*(s[1] - s[0]))))
-                d = unit_vector(b - a)
-                n = np.array([-d[1], d[0]])
-                for t, pref in ((0.5, 0.0), (0.35, 0.6), (0.65, 0.6), (0.22, 1.5), (0.78, 1.5)):
-                    for side in (1.0, -1.0):
-                        for off, extra in ((2.2, 0.0), (3.6, 1.0)):
-                            pos = a + t * (b - a) + side * off * n
-                            cands.append((pos, "center", "middle", pref + extra))
+                labels.place_along(a, b, str(lid), distance=0.8, group=group)
             elif lid in guide_of:
+                # beside the slider's block
                 g = guide_of[lid]
-                c = P[g.pair.slider_point]
                 grow = _RAM if g.pair.guide == FRAME and g.pair.slider_point in carried else 1.0
-                u, n = g.u, np.array([-g.u[1], g.u[0]])
-                for du, dn, pref in ((0, 1, 0.0), (0, -1, 0.0), (1, 1, 0.5), (-1, 1, 0.5),
-                                     (1, -1, 0.5), (-1, -1, 0.5), (1, 0, 0.8), (-1, 0, 0.8)):
-                    for extra in (0.0, 1.5):
-                        pos = c + du * (_BLOCK[0] * grow + 2.0 + extra) * u + dn * (_BLOCK[1] * grow + 2.0 + extra) * n
-                        cands.append((pos, "center", "middle", pref + extra))
-            else:
-                cands = _around(P[names[0]], 2.5, np.array([0.0, 1.0])) if names else []
-            if cands:
-                placer.place(f"{NUMBER_GROUP}{lid}", str(lid), cands)
+                c, half = P[g.pair.slider_point], (_BLOCK[0] * grow + 1.0) * g.u
+                labels.place_along(c - half, c + half, str(lid), distance=_BLOCK[1] * grow + 0.4,
+                                   group=group)
+            elif names:
+                labels.place(P[names[0]], str(lid), towards=np.array([0.0, 1.0]),
+                             distance=_POINT_GAP, group=group)
     return sk
 
 
