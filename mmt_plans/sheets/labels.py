@@ -139,6 +139,23 @@ class Labels:
         # an index drops 0.3 of the letter height under the line
         return self.width(markup) + 0.4, self.size + 0.4, 0.3 * self.size if "_{" in markup else 0.0
 
+    def _obstacle_cost(self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray,
+                       y1: np.ndarray) -> np.ndarray:
+        """0.25 for each avoided thing a candidate box comes within its clearance of."""
+        cost = np.zeros(x0.size)
+        if not self._obstacles:
+            return cost
+        if self._tree is None:
+            self._tree = STRtree(self._obstacles)
+            self._reach = np.array(self._clearance)
+        boxes = shapely.box(x0, y0, x1, y1)
+        near = self._tree.query(boxes, predicate="dwithin", distance=float(self._reach.max()))
+        if near.shape[1]:
+            gap = shapely.distance(boxes[near[0]], np.asarray(self._obstacles, dtype=object)[near[1]])
+            hit = near[0][gap < self._reach[near[1]]]
+            cost += 0.25 * np.bincount(hit, minlength=x0.size)
+        return cost
+
     def _write_first_free(self, cx: np.ndarray, cy: np.ndarray, w: float, h: float, drop: float,
                           markup: str, group: str | None) -> BaseGeometry:
         """Write `markup` centred at the first free candidate, else at the one that covers least."""
@@ -149,18 +166,20 @@ class Labels:
             dx = np.minimum(x1[:, None], b[:, 2]) - np.maximum(x0[:, None], b[:, 0])
             dy = np.minimum(y1[:, None], b[:, 3]) - np.maximum(y0[:, None], b[:, 1])
             cost += (np.clip(dx, 0, None) * np.clip(dy, 0, None)).sum(axis=1)
-        if self._obstacles:
-            if self._tree is None:
-                self._tree = STRtree(self._obstacles)
-                self._reach = np.array(self._clearance)
-            boxes = shapely.box(x0, y0, x1, y1)
-            near = self._tree.query(boxes, predicate="dwithin", distance=float(self._reach.max()))
-            if near.shape[1]:
-                gap = shapely.distance(boxes[near[0]], np.asarray(self._obstacles, dtype=object)[near[1]])
-                hit = near[0][gap < self._reach[near[1]]]
-                cost += 0.25 * np.bincount(hit, minlength=cx.size)
-        free = np.flatnonzero(cost <= 1e-9)
-        k = int(free[0]) if free.size else int(np.argmin(cost))
+        # The obstacles are asked about one ring of candidates at a time, nearest
+        # first: most labels find room in the first ring (the same pick as asking
+        # about all of them, since the candidates are in order of preference).
+        per_ring = max(1, cx.size // len(self.rings))
+        k = -1
+        for r0 in range(0, cx.size, per_ring):
+            ring = slice(r0, min(cx.size, r0 + per_ring))
+            cost[ring] += self._obstacle_cost(x0[ring], y0[ring], x1[ring], y1[ring])
+            free = np.flatnonzero(cost[ring] <= 1e-9)
+            if free.size:
+                k = r0 + int(free[0])
+                break
+        if k < 0:
+            k = int(np.argmin(cost))
         footprint = box(x0[k], y0[k], x1[k], y1[k])
         with self.sketch.group(group, "label") if group is not None else nullcontext():
             self.sketch.rich_text((float(cx[k]), float(cy[k])), markup, self.size, anchor="center",
