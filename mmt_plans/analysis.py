@@ -66,24 +66,33 @@ class Analysis:
                 f"{self.mech.path}: output {self.mech.study.output} does not move along the "
                 "working direction: set study.working_direction or study.zero")
         idx = np.flatnonzero(ok)
-        return (self._refine(grid[idx[np.argmin(s[ok])]], grid[1] - grid[0]),
-                self._refine(grid[idx[np.argmax(s[ok])]], grid[1] - grid[0]))
+        start = np.array([grid[idx[np.argmin(s[ok])]], grid[idx[np.argmax(s[ok])]]])
+        lo, hi = self._refine(start, grid[1] - grid[0])
+        return float(lo), float(hi)
 
-    def _refine(self, phi0: float, step: float) -> float:
+    def _refine(self, phi0: np.ndarray, step: float) -> np.ndarray:
+        """Newton on ds/dφ = 0 from each of phi0 at once (one sweep per step for
+        all of them), each kept within ±step of its start; a root that leaves
+        its bracket falls back to the bracket's middle."""
         lo, hi = phi0 - step, phi0 + step
-        phi = phi0
+        phi = phi0.astype(float).copy()
+        active = np.ones(phi.size, dtype=bool)
         for _ in range(60):
-            _, ds, d2s = self._along(self.chain.sweep(np.array([phi])))
-            if not (np.isfinite(ds[0]) and np.isfinite(d2s[0])) or d2s[0] == 0:
+            if not active.any():
                 break
-            new = phi - math.degrees(ds[0] / d2s[0])
-            if not lo <= new <= hi:
-                new = 0.5 * (lo + hi) if not lo <= phi <= hi else phi
-                break
-            if abs(new - phi) <= 1e-15 * max(1.0, abs(phi)):
-                phi = new
-                break
-            phi = new
+            k = np.flatnonzero(active)
+            _, ds, d2s = self._along(self.chain.sweep(phi[k]))
+            bad = ~(np.isfinite(ds) & np.isfinite(d2s)) | (d2s == 0)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                new = phi[k] - np.degrees(ds / d2s)
+            outside = ~bad & ~((lo[k] <= new) & (new <= hi[k]))
+            inside_now = (lo[k] <= phi[k]) & (phi[k] <= hi[k])
+            done = ~bad & ~outside & (np.abs(new - phi[k]) <= 1e-15 * np.maximum(1.0, np.abs(phi[k])))
+            step_ok = ~bad & ~outside
+            phi[k[step_ok]] = new[step_ok]
+            reset = outside & ~inside_now
+            phi[k[reset]] = 0.5 * (lo[k[reset]] + hi[k[reset]])
+            active[k[bad | outside | done]] = False
         return phi % 360.0
 
     @cached_property
