@@ -16,14 +16,15 @@ as data a sheet can draw:
 
 Scales: μ_t = 60/(n1·L), μ_V = μ_S/(μ_t·OH1), μ_a = μ_V/(μ_t·OH2).
 
-Pole distances when not given: OH is a whole number of millimetres in
-30…50 whose scale ``μ_source/(μ_t·OH)`` is nearest, as a ratio, to the
-standard series (1, 1.25, 2, 2.5, 4, 5, 8)·10^k (seed 000: 1, 2, 4, 5, 8, 25,
-125 times a power of ten); of equally near ones the longest pole wins, since
-a longer pole draws a taller diagram that is read more accurately. Because
-the series never skips more than a factor 1.6 < 50/30, some standard value
-always lies within the range, and with whole millimetres the scale lands on
-it or within 0.5 mm's worth of it (at most 30.5/30, 1.7 %).
+Pole distances when not given: the scale ``μ_source/(μ_t·OH)`` is a value of
+the standard series (1, 1.25, 2, 2.5, 4, 5, 8)·10^k (seed 000: 1, 2, 4, 5, 8,
+25, 125 times a power of ten), as every scale on the sheet is. OH is a whole
+number of millimetres in 30…50 when one lands exactly on the series; of equal
+ones the longest pole wins, since a longer pole draws a taller diagram that
+is read more accurately. Otherwise OH is the longest exact length in 30…50
+that makes the scale a series value (the series never skips more than a
+factor 1.6 < 50/30, so there is always one); it is drawn to that length and
+labelled to 0.01 mm.
 
 Values in SI do not depend on L, μ_S, OH1 or OH2: the scales cancel, and V at
 the middle of an interval is exactly the chord's slope Δs/Δt.
@@ -45,7 +46,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from mmt_plans.scales import MANTISSAS, DrawnLength
+from mmt_plans.scales import MANTISSAS, DrawnLength, series
 
 __all__ = [
     "DEFAULT_TIME_AXIS_MM",
@@ -118,17 +119,17 @@ def _distance_to_standard(mu: float) -> float:
 
 
 def pole_distance(mu_source: float, mu_t: float) -> float:
-    """OH (mm): whole millimetres in 30…50 making μ_source/(μ_t·OH) nearest a standard scale.
-
-    Ties (within 1e-9 in the log) go to the longer pole. See the module docstring.
-    """
+    """OH (mm) in 30…50 making μ_source/(μ_t·OH) a standard scale exactly:
+    whole millimetres where one does (the longest), else the longest exact
+    length that does. See the module docstring."""
     lo, hi = POLE_DISTANCE_RANGE_MM
-    best_H, best_d = float(hi), math.inf
     for H in range(hi, lo - 1, -1):  # longest first, so a tie keeps the longer pole
-        d = _distance_to_standard(derived_scale(mu_source, mu_t, H))
-        if d < best_d - 1e-9:
-            best_H, best_d = float(H), d
-    return best_H
+        if _distance_to_standard(derived_scale(mu_source, mu_t, H)) <= 1e-9:
+            return float(H)
+    # the series values reachable with a pole in [lo, hi], longest pole first
+    ratio = mu_source / mu_t
+    reachable = sorted(series(ratio / hi, ratio / lo))
+    return ratio / reachable[0]
 
 
 # --------------------------------------------------------------------------- the smooth curve

@@ -127,13 +127,14 @@ def test_pole_distance_tie_goes_to_the_longer_pole():
     assert d.mu_a == pytest.approx(0.2, rel=1e-14)
 
 
-def test_pole_distance_nearest_when_none_is_exact():
+def test_pole_distance_exact_when_no_whole_millimetre_is():
     # n1 = 111.3, L = 200: μ_t = 60/22260; μ_S = 0.001 → μ_V(OH) = 0.371/OH.
-    # Standard values reachable in 30…50 mm: 0.01 at OH = 37.1 → OH = 37 gives
-    # 0.010027 (+0.27 %); 0.008 at OH = 46.4 → OH = 46 gives 0.0080652 (+0.81 %);
-    # 0.0125 needs OH = 29.7 → OH = 30 gives 0.012367 (−1.07 %). So OH = 37.
+    # No whole OH in 30…50 gives a series value (0.01 needs 37.1, 0.008 needs
+    # 46.375, 0.0125 needs 29.68 < 30): the longest exact pole, 46.375 mm → 0.008.
     mu_t = time_scale(111.3, 200)
-    assert pole_distance(0.001, mu_t) == 37.0
+    H = pole_distance(0.001, mu_t)
+    assert H == pytest.approx(0.001 / mu_t / 0.008, rel=1e-12)
+    assert derived_scale(0.001, mu_t, H) == pytest.approx(0.008, rel=1e-12)
 
 
 STANDARD = [m * 10.0**k for k in range(-8, 6) for m in (1, 1.25, 2, 2.5, 4, 5, 8)]
@@ -141,15 +142,13 @@ STANDARD = [m * 10.0**k for k in range(-8, 6) for m in (1, 1.25, 2, 2.5, 4, 5, 8
 
 @settings(max_examples=200, deadline=None)
 @given(mu_S=st.floats(1e-5, 1e-1), mu_t=st.floats(1e-4, 1e-1))
-def test_default_pole_lands_within_half_a_millimetre_of_a_standard_scale(mu_S, mu_t):
+def test_default_pole_makes_the_scale_standard(mu_S, mu_t):
     # The series never skips more than ×1.6 < 50/30, so some standard μ has its
-    # exact OH in [30, 50]; the nearest whole millimetre is within 0.5 mm of it,
-    # a ratio of at most 30.5/30.
+    # exact OH in [30, 50]: the derived scale is always a series value.
     H = pole_distance(mu_S, mu_t)
-    assert H == int(H) and 30 <= H <= 50
+    assert 30 - 1e-9 <= H <= 50 + 1e-9
     mu = mu_S / (mu_t * H)
-    nearest = min(abs(math.log(mu / m)) for m in STANDARD)
-    assert nearest <= math.log(30.5 / 30) + 1e-12
+    assert min(abs(math.log(mu / m)) for m in STANDARD) <= 1e-9
 
 
 # --------------------------------------------------------------------------- the construction

@@ -564,7 +564,7 @@ def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
         for lab in scales:
             x += sk.rich_text((x, y), lab.markup(), _TEXT) + 8.0
         if which != "s":
-            sk.rich_text((x, y), f"H = {float(-deriv.pole[0]):g} mm", _TEXT)
+            sk.rich_text((x, y), f"H = {float(-deriv.pole[0]):.2f}".rstrip("0").rstrip(".") + " mm", _TEXT)
         sk.text((ext.x + _PAD, ext.top + 3.0), _WORDS[lang][f"diagram_{which}"], _TEXT)
     return sk
 
