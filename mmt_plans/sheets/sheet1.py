@@ -726,9 +726,20 @@ def _next_scale(mu: float, steps: int) -> float:
     return values[steps - 1]
 
 
-def title_fields(analysis: Any) -> dict[str, str]:
+def drawing_scale(mu_l: float) -> str:
+    """μ_l (m/mm) as the scale of the title block: 0.004 → "1:4", 0.0005 → "2:1"."""
+    k = float(mu_l) * 1000.0  # mm of the machine per mm of paper
+    text = f"{k:.6g}" if k >= 1 else f"{1 / k:.6g}"
+    return f"1:{text}" if k >= 1 else f"{text}:1"
+
+
+def title_fields(analysis: Any, mu_l: float | None = None) -> dict[str, str]:
+    """The title block's fields: the file's [sheet] entries, its title, the sheet
+    numbers, and the scale of the mechanism's drawing (μ_l) unless the file gives one."""
     mech = analysis.mech
     fields = {k: str(v) for k, v in dict(mech.sheet or {}).items() if k in FIELDS}
+    if mu_l is not None:
+        fields.setdefault("scale", drawing_scale(mu_l))
     fields.setdefault("title", str(mech.title))
     fields.setdefault("sheet", "1")
     fields.setdefault("sheets", "2")
@@ -851,6 +862,6 @@ def compose_sheet1(analysis: Any, backend: Backend, lang: Language = "en", *,
             sketches[name].replay(backend, dx, dy)
             result.origins[name] = (dx, dy)
             result.placed[name] = rect
-        draw_page(backend, page, title_fields(analysis), lang)
+        draw_page(backend, page, title_fields(analysis, mu_l), lang)
         return result
     raise LayoutError(f"sheet 1 does not fit on {page.name or 'the page'}: {last}")

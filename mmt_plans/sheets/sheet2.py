@@ -740,7 +740,7 @@ def compose_sheet2(analysis: Any, backend: Backend, lang: Language = "en", *,
                     _translated(sketches[name], lang).replay(backend, dx, dy)
                     result.origins[name] = (dx, dy)
                     result.placed[name] = rect
-                fields = title_fields(analysis)
+                fields = title_fields(analysis, mu_l)
                 fields["sheet"] = "2"
                 draw_page(backend, page, fields, lang)
                 return result

@@ -199,3 +199,12 @@ def test_diagram_scales_are_standard(path):
     assert c.mu_t * c.L == pytest.approx(60.0 / c.n1, rel=1e-12)
     for name in ("mu_S", "mu_t", "mu_V", "mu_a"):
         assert is_standard(getattr(c, name)), (name, getattr(c, name))
+
+
+def test_title_block_scale_is_the_mechanism_drawing_scale(press):
+    from mmt_plans.sheets.sheet1 import drawing_scale
+
+    assert (drawing_scale(0.004), drawing_scale(0.00125), drawing_scale(0.0005)) == ("1:4", "1:1.25", "2:1")
+    _, backend, sheet = press
+    texts = [c["content"] for c in backend.in_group("title-block") if c.name == "text"]
+    assert drawing_scale(sheet.scales["mu_l"]) in texts
