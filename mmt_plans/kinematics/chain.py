@@ -18,7 +18,7 @@ from .dyads import SOLVERS, DyadSolver, GroupPlan, Motion
 # reported as singular rather than solved (see tests/kinematics/test_hard_cases.py)
 SINGULAR_SIN = 1e-12
 BRANCH_GRID = 720
-# a long sweep is solved this many angles at a time (working arrays of 256 KB)
+# a long sweep is solved at most this many angles at a time (working arrays of 256 KB)
 CHUNK = 16384
 
 
@@ -80,6 +80,10 @@ _STATE = (("e", "e", complex), ("o", "o", complex), ("omega", "w", float), ("v",
 
 
 _ATTR = {name: attr for name, attr, _ in _STATE}
+# what a long sweep keeps of each link: not the products iω·e and (iε - ω²)·e,
+# which served the points' fields (worked out chunk by chunk) and are cheaply
+# made again from the rest (`Motion.of`)
+_KEPT = _STATE[:6]
 
 
 def _state(mo: Motion, n: int) -> LinkState:
@@ -88,14 +92,14 @@ def _state(mo: Motion, n: int) -> LinkState:
 
 class _Arena:
     """One block of memory for everything a long sweep keeps: the arrays of
-    every link's motion, the failure masks, and room for the points' fields.
+    every link's motion, the failure masks and the points' fields.
     A quantity that is a plain number in the first chunk (the frame's, the
     crank's ω) stays one."""
 
     def __init__(self, chain: "Chain", m: dict, failed: dict, n: int) -> None:
         self.chain, self.n = chain, n
         wanted = [(lid, name, dtype) for lid, mo in m.items() if lid != FRAME
-                  for name, attr, dtype in _STATE if np.ndim(getattr(mo, attr))]
+                  for name, attr, dtype in _KEPT if np.ndim(getattr(mo, attr))]
         sizes = [n * np.dtype(dtype).itemsize for _, _, dtype in wanted]
         masks = 2 * len(failed) * n
         fields = 3 * sum(1 for lid, _ in chain.locate.values() if lid != FRAME) * n * 16
@@ -114,23 +118,53 @@ class _Arena:
         self.numbers = {lid: mo for lid, mo in m.items()}  # the first chunk's plain numbers
 
     def put(self, part: slice, m: dict, failed: dict, singular: dict) -> None:
+        """Keep one chunk: its links' motion, its masks, and the fields of its
+        points, worked out while the chunk is still in the cache."""
         for (lid, name), arr in self.arrays.items():
             arr[part] = getattr(m[lid], _ATTR[name])
         for g in failed:
             self.failed[g][part] = failed[g]
             self.singular[g][part] = singular[g]
+        _work_out_fields(self.fields.reshape(3, -1, self.n)[:, :, part], m, _moving_points(self.chain))
 
     def sweep(self, phi1_deg: np.ndarray) -> "Sweep":
         states = {}
         for lid, mo in self.numbers.items():
             parts = {}
-            for name, attr, dtype in _STATE:
+            for name, attr, dtype in _KEPT:
                 arr = self.arrays.get((lid, name))
                 parts[name] = _ro(arr) if arr is not None else _full(getattr(mo, attr), self.n, dtype)
             states[lid] = LinkState(**parts)
         return Sweep(self.chain, _ro(phi1_deg.copy()), states,
                      {g: _ro(x) for g, x in self.failed.items()},
-                     {g: _ro(x) for g, x in self.singular.items()}, room=self.fields)
+                     {g: _ro(x) for g, x in self.singular.items()}, worked_out=self.fields)
+
+
+# a point's position, velocity and acceleration: the link's origin quantity
+# plus its quantity per unit of local coordinate times p
+_FIELD_PARTS = (("o", "e"), ("v", "spin"), ("a", "spin_acc"))
+
+
+def _moving_points(chain: "Chain") -> list[tuple[str, int, complex]]:
+    return [(name, lid, p) for name, (lid, p) in chain.locate.items() if lid != FRAME]
+
+
+def _is_origin(p: complex, origin) -> bool:
+    """A point at its link's origin, when that moves: its field is the link's own array."""
+    return not p and isinstance(origin, np.ndarray) and bool(origin.strides[0])
+
+
+def _work_out_fields(block: np.ndarray, links: dict, points: list) -> None:
+    """o + e·p, v + iω·e·p and a + (iε - ω²)·e·p of every point into its row
+    of block (one row per point and quantity), from the links' motion (`Motion`
+    or `LinkState`)."""
+    for (base, per_unit), rows in zip(_FIELD_PARTS, block):
+        for row, (name, lid, p) in zip(rows, points):
+            link = links[lid]
+            origin = getattr(link, base)
+            if not _is_origin(p, origin):
+                # the product in warm scratch memory, then one pass over the row
+                np.add(origin, getattr(link, per_unit) * p, out=row)
 
 
 def _ro(a) -> np.ndarray:
@@ -155,7 +189,7 @@ class Sweep:
     failed: dict[str, np.ndarray]  # group name -> mask of angles where it cannot assemble
     singular: dict[str, np.ndarray]  # group name -> mask of singular plans
     where: dict[str, int] = field(repr=False, default_factory=dict)
-    room: np.ndarray | None = field(repr=False, default=None)  # memory set aside for the fields
+    worked_out: np.ndarray | None = field(repr=False, default=None)  # the fields, if already
     solved_plans: tuple[GroupPlan, ...] | None = field(repr=False, default=None)
 
     def position_of(self, name: str) -> np.ndarray:
@@ -176,26 +210,23 @@ class Sweep:
     def _fields(self) -> tuple[dict[str, np.ndarray], ...]:
         """o + e·p, v + iω·e·p and a + (iε - ω²)·e·p for every point p of
         every link, as [x, y] pairs. The products share one block of memory
-        (one allocation instead of three per point); a point at a link's origin
-        is the link's own array, a frame point one pair seen at every angle."""
+        (one allocation instead of three per point; a long sweep filled it
+        chunk by chunk); a point at a link's origin is the link's own array, a
+        frame point one pair seen at every angle."""
         n = len(self.phi1_deg)
-        kinds = (("o", "e"), ("v", "spin"), ("a", "spin_acc"))
-        todo = [(name, lid, p) for name, (lid, p) in self.chain.locate.items() if lid != FRAME]
-        shape = (len(kinds), len(todo), n)
-        block = (np.empty(shape, dtype=complex) if self.room is None
-                 else self.room.reshape(shape))
+        points = _moving_points(self.chain)
+        shape = (len(_FIELD_PARTS), len(points), n)
+        if self.worked_out is not None:
+            block = self.worked_out.reshape(shape)
+        else:
+            block = np.empty(shape, dtype=complex)
+            _work_out_fields(block, self.links, points)
         fields = []
-        for (base, per_unit), rows in zip(kinds, block):
+        for (base, _), rows in zip(_FIELD_PARTS, block):
             field = {}
-            for row, (name, lid, p) in zip(rows, todo):
-                state = self.links[lid]
-                origin = getattr(state, base)
-                if not p and origin.strides[0]:
-                    field[name] = _xy(origin)
-                    continue
-                np.multiply(getattr(state, per_unit), p, out=row)
-                row += origin
-                field[name] = _xy(row)
+            for row, (name, lid, p) in zip(rows, points):
+                origin = getattr(self.links[lid], base)
+                field[name] = _xy(origin if _is_origin(p, origin) else row)
             fields.append({name: field[name] if lid != FRAME else _still(p if base == "o" else 0j, n)
                            for name, (lid, p) in self.chain.locate.items()})
         return tuple(fields)
@@ -350,8 +381,8 @@ class Chain:
         for solver in self.solvers:
             name = solver.group.name
             L1, L2 = m[solver.L1], m[solver.L2]
-            failed[name] = _ro(~(np.isfinite(L1.o) & np.isfinite(L2.o) & np.isfinite(L1.e)
-                                 & np.isfinite(L2.e)))
+            # one sum is finite exactly where all four are (NaN and ±inf carry)
+            failed[name] = _ro(~np.isfinite(L1.o + L2.o + L1.e + L2.e))
             plan = solver.plan(m)
             singular[name] = _ro(~failed[name] & ~(plan.sin_angle > SINGULAR_SIN))
             plans.append(plan)

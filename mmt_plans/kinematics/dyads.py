@@ -50,7 +50,11 @@ class Motion:
 
     @classmethod
     def of(cls, state) -> "Motion":
-        """The working state again from a solved one (a `chain.LinkState`)."""
+        """The working state again from a solved one (a `chain.LinkState`;
+        a long sweep's does not keep iω·e and (iε - ω²)·e: made again here,
+        by the same operations on the same numbers)."""
+        if state.spin is None:
+            return cls(state.e, state.o, state.omega, state.v, state.eps, state.a)
         m = cls.__new__(cls)
         for name in cls.__slots__:
             setattr(m, name, getattr(state, "omega" if name == "w" else name))
@@ -58,8 +62,13 @@ class Motion:
 
     def _set(self, w, v, eps, a) -> None:
         self.w, self.v, self.eps, self.a = w, v, eps, a
-        self.spin = self.e * (1j * w) if _given(w) else 0j  # iω·e
-        self.spin_acc = self.e * (1j * eps - w * w) if _given(w) or _given(eps) else 0j
+        # iω·e and (iε - ω²)·e; over arrays, i·e (exact) times ω and the factor
+        # iε - ω² filled in part by part take fewer passes than complex products
+        if isinstance(w, np.ndarray):
+            self.spin = (self.e * 1j) * w
+        else:
+            self.spin = self.e * (1j * w) if w else 0j
+        self.spin_acc = self.e * _complex(-(w * w), eps) if _given(w) or _given(eps) else 0j
 
     def at(self, p_local: complex):
         return self.o + self.e * p_local if p_local else self.o
@@ -72,7 +81,7 @@ class Motion:
 
     def vel(self, P):
         """Velocity of the link's point that is at P now."""
-        return self.v + 1j * self.w * (P - self.o) if _given(self.w) else self.v
+        return self.v + ((P - self.o) * 1j) * self.w if _given(self.w) else self.v
 
     def acc(self, P):
         if not (_given(self.w) or _given(self.eps)):
@@ -89,6 +98,15 @@ class Motion:
     def local(self, P):
         """Local coordinates of the link's point that is at P now."""
         return (P - self.o) * np.conj(self.e)
+
+
+def _complex(re, im):
+    """re + i·im without complex arithmetic (arrays or numbers)."""
+    if not (isinstance(re, np.ndarray) or isinstance(im, np.ndarray)):
+        return complex(re, im)
+    z = np.empty(np.broadcast_shapes(np.shape(re), np.shape(im)), dtype=complex)
+    z.real, z.imag = re, im
+    return z
 
 
 def _given(x) -> bool:
@@ -113,8 +131,11 @@ class Leg:
     def normal(self, m: dict) -> np.ndarray:
         """-ω²·(X - P) of a rotation (d = i·(X - P)), 2·ω_K·x·i·u of a slide."""
         if self.kind == "rotation":
-            return self.d * (1j * (self.x * self.x))
-        return self.d * (2j * m[self.link].w * self.x)
+            return (self.d * 1j) * (self.x * self.x)
+        w = m[self.link].w
+        if not _given(w):
+            return 0j  # no Coriolis component on a guide that does not turn
+        return self.d * (2j * w * self.x)
 
 
 @dataclass
@@ -284,7 +305,7 @@ class RRP(DyadSolver):
         A = m[self.K1].at(self.loc(self.K1, a))
         A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
         B2 = self.loc(self.L2, b)
-        e2 = m[self.K2].e * np.ones_like(A)  # the slider keeps the guide's angle
+        e2 = m[self.K2].e  # the slider keeps the guide's angle (a number on the frame)
         P0, u = self.prism_line(self.outer2, m, self.L2, B2, e2)
         B = circle_line(A, abs(B1 - A1), P0, u, sign)
         e1 = turn_between(A1, B1, A, B)

@@ -8,6 +8,8 @@ a construction does not exist; it never leaves the solver (see `chain.Sweep`).
 
 from __future__ import annotations
 
+from typing import Callable
+
 import numpy as np
 
 # relative size of rounding noise accepted as "exactly at the limit position"
@@ -27,19 +29,29 @@ def as_complex(p) -> complex:
     return complex(p[0], p[1])
 
 
+def _at_limit(h2: np.ndarray, scale: Callable[[], np.ndarray]) -> np.ndarray:
+    """h² with rounding noise below zero taken as zero.
+
+    At a toggle (|AC| = r1 + r2 exactly) rounding may leave h² a few ulps
+    below zero: that is the limit position itself, not a failure to assemble.
+    Mostly nothing is below zero, and one reduction says so; only then is
+    `scale()`, the size of the terms h² is the difference of, computed.
+    """
+    if not np.fmin.reduce(h2, axis=None, initial=np.inf) < 0:
+        return h2
+    return np.where((h2 < 0) & (h2 > -ROUNDING * scale()), 0.0, h2)
+
+
 def circle_circle(A: np.ndarray, r1: float, C: np.ndarray, r2: float, sign: int) -> np.ndarray:
     """The point B with |AB| = r1, |CB| = r2; sign +1 puts B left of A→C."""
     d = C - A
     L2 = d.real**2 + d.imag**2
     L = np.sqrt(L2)
     along = (r1 * r1 - r2 * r2 + L2) / (2 * L)
-    h2 = r1 * r1 - along * along
-    # at a toggle (|AC| = r1 + r2 exactly) rounding may leave h² a few ulps below zero:
-    # that is the limit position itself, not a failure to assemble
-    h2 = np.where((h2 < 0) & (h2 > -ROUNDING * (r1 * r1 + L2)), 0.0, h2)
+    h2 = _at_limit(r1 * r1 - along * along, lambda: r1 * r1 + L2)
     with np.errstate(invalid="ignore"):
         h = np.sqrt(h2)
-    return A + (d / L) * (along + 1j * sign * h)
+    return A + (d * (1 / L)) * (along + 1j * sign * h)  # d / L to the last bit, see turn_between
 
 
 def circle_line(A: np.ndarray, r: float, P0: np.ndarray, u: np.ndarray, sign: int) -> np.ndarray:
@@ -47,8 +59,7 @@ def circle_line(A: np.ndarray, r: float, P0: np.ndarray, u: np.ndarray, sign: in
     w = P0 - A
     b = dot(w, u)
     foot = w - b * u  # from A to the nearest point of the line
-    half2 = r * r - (foot.real**2 + foot.imag**2)
-    half2 = np.where((half2 < 0) & (half2 > -ROUNDING * (r * r + dot(w, w))), 0.0, half2)
+    half2 = _at_limit(r * r - (foot.real**2 + foot.imag**2), lambda: r * r + dot(w, w))
     with np.errstate(invalid="ignore"):
         half = np.sqrt(half2)
     return A + foot + sign * half * u
@@ -63,7 +74,17 @@ def line_line(P1: np.ndarray, u1: np.ndarray, P2: np.ndarray, u2: np.ndarray) ->
 
 
 def turn_between(p_local: complex, q_local: complex, P: np.ndarray, Q: np.ndarray) -> np.ndarray:
-    """e^{iθ} of a link whose local points p, q sit at global P, Q."""
-    q = (Q - P) / (q_local - p_local)
-    with np.errstate(invalid="ignore"):
-        return q / np.abs(q)
+    """e^{iθ} of a link whose local points p, q sit at global P, Q: the
+    direction of (Q - P)/(q - p).
+
+    Dividing by a real number is a product with its reciprocal, to the last
+    bit (numpy's complex division does just that when the imaginary part is
+    zero), and much cheaper: so for the length, and for q - p along the
+    link's local x axis, the usual case."""
+    c = q_local - p_local
+    q = (Q - P) * (1.0 / c.real) if c.imag == 0 and c.real else (Q - P) / c
+    with np.errstate(invalid="ignore", divide="ignore"):
+        size = np.abs(q)
+        np.divide(1.0, size, out=size)
+        q *= size
+    return q

@@ -73,9 +73,10 @@ def plan_view(sweep: "Sweep", k: int, index: int | None = None) -> PlanView:
     for plan in sweep.plans:
         vel, acc = [], []
         for leg in plan.legs:
-            # a leg starting on the frame has V0 = a0 = 0 as plain numbers
-            V0, x, d = complex(_entry(leg.V0, k)), float(leg.x[k]), complex(leg.d[k])
-            a0, n, y = complex(_entry(leg.a0, k)), complex(leg.n[k]), float(leg.y[k])
+            # a leg starting on the frame has V0 = a0 = 0 as plain numbers, a slide
+            # along a guide on the frame its direction d and Coriolis component n
+            V0, x, d = complex(_entry(leg.V0, k)), float(leg.x[k]), complex(_entry(leg.d, k))
+            a0, n, y = complex(_entry(leg.a0, k)), complex(_entry(leg.n, k)), float(leg.y[k])
             rel = plan.X_name
             if leg.kind == "rotation":
                 centre = leg.start.upper()
