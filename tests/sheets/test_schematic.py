@@ -136,3 +136,11 @@ def test_shipped_schematics_are_up_to_date(seed):
     tasks = {task_of(p)[0] for p in (TASKS / seed).glob("*.toml")}
     assert {p.name for p in shipped.glob("task_*.svg")} == {f"task_{t:02d}.svg" for t in tasks}
     assert make.stale(TASKS / seed, shipped) == [], "rerun samples/tasks/make_schematics.py"
+
+
+def test_up_to_date_check_forgives_only_the_last_rounding():
+    make = _make_schematics()
+    assert make.same_drawing('<line x1="1.234" y1="5"/>', '<line x1="1.235" y1="5"/>')
+    assert not make.same_drawing('<line x1="1.234" y1="5"/>', '<line x1="1.334" y1="5"/>')
+    assert not make.same_drawing('<text>A</text>', '<text>B</text>')
+    assert not make.same_drawing("<svg/>", None)
