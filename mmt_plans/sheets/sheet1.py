@@ -651,6 +651,8 @@ def _sketch_tables(analysis: Any, look: Any, lang: Language) -> dict[str, Sketch
             for v in views:
                 found = [c for g in v.groups for c in (g.velocity if kind == "velocity" else g.acceleration) if c.label == lab]
                 vals.append(_fmt(float(np.hypot(*found[0].vector))) if found else "—")
+            if all(x in ("0", "—") for x in vals):
+                continue  # a component that vanishes at every planned position (Coriolis on a still guide)
             rows.append([lab, *vals])
             marks.append(_component_markup(lab))
         header = [w["quantity"], *(f"{w['position']} {i}" for i in idx)]
