@@ -115,7 +115,10 @@ class _Arena:
                        for k, g in enumerate(failed)}
         self.singular = {g: memory[at + (2 * k + 1) * n:at + (2 * k + 2) * n].view(bool)
                          for k, g in enumerate(failed)}
-        self.numbers = {lid: mo for lid, mo in m.items()}  # the first chunk's plain numbers
+        # the first chunk's plain numbers (not its arrays, whose memory the next chunk reuses)
+        self.numbers = {lid: {attr: getattr(mo, attr) for _, attr, _ in _KEPT
+                              if not np.ndim(getattr(mo, attr))}
+                        for lid, mo in m.items()}
 
     def put(self, part: slice, m: dict, failed: dict, singular: dict) -> None:
         """Keep one chunk: its links' motion, its masks, and the fields of its
@@ -125,15 +128,17 @@ class _Arena:
         for g in failed:
             self.failed[g][part] = failed[g]
             self.singular[g][part] = singular[g]
-        _work_out_fields(self.fields.reshape(3, -1, self.n)[:, :, part], m, _moving_points(self.chain))
+        block = self.fields.reshape(3, -1, self.n)[:, :, part]
+        points = _moving_points(self.chain)
+        _work_out_fields(block, m, points, _all_known(m, self.chain.carried, points))
 
     def sweep(self, phi1_deg: np.ndarray) -> "Sweep":
         states = {}
-        for lid, mo in self.numbers.items():
+        for lid, numbers in self.numbers.items():
             parts = {}
             for name, attr, dtype in _KEPT:
                 arr = self.arrays.get((lid, name))
-                parts[name] = _ro(arr) if arr is not None else _full(getattr(mo, attr), self.n, dtype)
+                parts[name] = _ro(arr) if arr is not None else _full(numbers[attr], self.n, dtype)
             states[lid] = LinkState(**parts)
         return Sweep(self.chain, _ro(phi1_deg.copy()), states,
                      {g: _ro(x) for g, x in self.failed.items()},
@@ -154,17 +159,35 @@ def _is_origin(p: complex, origin) -> bool:
     return not p and isinstance(origin, np.ndarray) and bool(origin.strides[0])
 
 
-def _work_out_fields(block: np.ndarray, links: dict, points: list) -> None:
+def _known(links: dict, carried: dict, base: str, name: str, lid: int, p: complex):
+    """The array a point's row would repeat, if there is one: the origin
+    quantity of its link (a point at the origin), or the velocity or
+    acceleration of a link whose origin sits on the point (`DyadSolver.carried`)."""
+    origin = getattr(links[lid], base)
+    if _is_origin(p, origin):
+        return origin
+    if base != "o" and name in carried:
+        same = getattr(links[carried[name]], base)
+        if _is_origin(0j, same):
+            return same
+    return None
+
+
+def _all_known(links: dict, carried: dict, points: list) -> list[list]:
+    """`_known` for every quantity and point."""
+    return [[_known(links, carried, base, name, lid, p) for name, lid, p in points]
+            for base, _ in _FIELD_PARTS]
+
+
+def _work_out_fields(block: np.ndarray, links: dict, points: list, known: list) -> None:
     """o + e·p, v + iω·e·p and a + (iε - ω²)·e·p of every point into its row
     of block (one row per point and quantity), from the links' motion (`Motion`
-    or `LinkState`)."""
-    for (base, per_unit), rows in zip(_FIELD_PARTS, block):
-        for row, (name, lid, p) in zip(rows, points):
-            link = links[lid]
-            origin = getattr(link, base)
-            if not _is_origin(p, origin):
+    or `LinkState`); a row some link already holds (`_all_known`) is left alone."""
+    for (base, per_unit), rows, held in zip(_FIELD_PARTS, block, known):
+        for row, (name, lid, p), same in zip(rows, points, held):
+            if same is None:
                 # the product in warm scratch memory, then one pass over the row
-                np.add(origin, getattr(link, per_unit) * p, out=row)
+                np.add(getattr(links[lid], base), getattr(links[lid], per_unit) * p, out=row)
 
 
 def _ro(a) -> np.ndarray:
@@ -216,17 +239,17 @@ class Sweep:
         n = len(self.phi1_deg)
         points = _moving_points(self.chain)
         shape = (len(_FIELD_PARTS), len(points), n)
+        known = _all_known(self.links, self.chain.carried, points)
         if self.worked_out is not None:
             block = self.worked_out.reshape(shape)
         else:
             block = np.empty(shape, dtype=complex)
-            _work_out_fields(block, self.links, points)
+            _work_out_fields(block, self.links, points, known)
         fields = []
-        for (base, _), rows in zip(_FIELD_PARTS, block):
+        for (base, _), rows, held in zip(_FIELD_PARTS, block, known):
             field = {}
-            for row, (name, lid, p) in zip(rows, points):
-                origin = getattr(self.links[lid], base)
-                field[name] = _xy(origin if _is_origin(p, origin) else row)
+            for row, (name, lid, p), same in zip(rows, points, held):
+                field[name] = _xy(row if same is None else same)
             fields.append({name: field[name] if lid != FRAME else _still(p if base == "o" else 0j, n)
                            for name, (lid, p) in self.chain.locate.items()})
         return tuple(fields)
@@ -311,6 +334,12 @@ class Chain:
                 self.locate.setdefault(name, (link.id, complex(*p)))
         for link in mech.links.values():
             self.locate[link.cm_name] = (link.id, complex(*link.cm))
+        # point -> a link whose origin sits on it and so moves as it does
+        self.carried: dict[str, int] = {}
+        for solver in solvers:
+            for L, K, name in solver.carried():
+                if self.locate[name][0] == K != FRAME:
+                    self.carried.setdefault(name, L)
 
     @classmethod
     def build(cls, mech: Mechanism) -> "Chain":
@@ -360,18 +389,24 @@ class Chain:
             states = {lid: _state(mo, n) for lid, mo in m.items()}
             return Sweep(self, _ro(phi1_deg.copy()), states, failed, singular,
                          solved_plans=plans)
-        # Many angles: solve CHUNK at a time, so the working arrays stay small
-        # (in cache, and the same memory again for every chunk), and write the
-        # results into one block of memory for the whole sweep.
-        first = None
-        for start in range(0, n, CHUNK):
-            part = slice(start, min(start + CHUNK, n))
-            m, failed, singular, _ = self._solve(np.radians(phi1_deg[part]))
-            if first is None:
-                first = _Arena(self, m, failed, n)
-            first.put(part, m, failed, singular)
-        assert first is not None
-        return first.sweep(phi1_deg)
+        # Many angles: solve about CHUNK at a time, so the working arrays stay
+        # small (in cache, and the same memory again for every chunk), and write
+        # the results into one block of memory for the whole sweep. The angles
+        # are shared out evenly, in as many chunks as CHUNK goes into them
+        # (rounded): a short last chunk would pay the per-chunk overhead in full.
+        size = -(-n // max(1, round(n / CHUNK)))
+        arena = None
+        for start in range(0, n, size):
+            part = slice(start, min(start + size, n))
+            m, failed, singular, plans = self._solve(np.radians(phi1_deg[part]))
+            if arena is None:
+                arena = _Arena(self, m, failed, n)
+            arena.put(part, m, failed, singular)
+            # let the chunk go before the next is solved, which then reuses its
+            # memory, still in the cache
+            del m, failed, singular, plans
+        assert arena is not None
+        return arena.sweep(phi1_deg)
 
     def _solve(self, phi_rad: np.ndarray):
         """Positions, then the plans group by group: the links' motion, and

@@ -214,6 +214,16 @@ class DyadSolver:
     def after_velocities(self, m: dict, leg1: Leg, leg2: Leg) -> None:
         """Hook between the velocity and the acceleration plan."""
 
+    def carried(self) -> list[tuple[int, int, str]]:
+        """(L, K, P) for each link L of the group whose origin is its pair P with
+        the known link K: placing L hands it the velocity and acceleration of
+        K's point P as they are (`move_with` at the origin), so L's v and a are
+        P's, to the last bit."""
+        return []
+
+    def _at_origin(self, *joins: tuple[int, int, str]) -> list[tuple[int, int, str]]:
+        return [(L, K, P) for L, K, P in joins if not self.loc(L, P)]
+
     def positions(self, m: dict, sign: int) -> None:  # pragma: no cover - abstract
         raise NotImplementedError
 
@@ -270,8 +280,12 @@ class RRR(DyadSolver):
         B = circle_circle(A, abs(B1 - A1), C, abs(B2 - C2), sign)
         e1 = turn_between(A1, B1, A, B)
         e2 = turn_between(C2, B2, C, B)
-        m[self.L1] = Motion(e1, A - e1 * A1)
-        m[self.L2] = Motion(e2, C - e2 * C2)
+        m[self.L1] = Motion(e1, _origin(A, e1, A1))
+        m[self.L2] = Motion(e2, _origin(C, e2, C2))
+
+    def carried(self):
+        return self._at_origin((self.L1, self.K1, self.outer1.point),
+                               (self.L2, self.K2, self.outer2.point))
 
     def legs(self, m):
         a, b, c = self.outer1.point, self.inner.point, self.outer2.point
@@ -309,8 +323,11 @@ class RRP(DyadSolver):
         P0, u = self.prism_line(self.outer2, m, self.L2, B2, e2)
         B = circle_line(A, abs(B1 - A1), P0, u, sign)
         e1 = turn_between(A1, B1, A, B)
-        m[self.L1] = Motion(e1, A - e1 * A1)
+        m[self.L1] = Motion(e1, _origin(A, e1, A1))
         m[self.L2] = Motion(e2, B - e2 * B2)
+
+    def carried(self):
+        return self._at_origin((self.L1, self.K1, self.outer1.point))
 
     def legs(self, m):
         a, b = self.outer1.point, self.inner.point
@@ -375,6 +392,10 @@ class RPR(DyadSolver):
         slide = Leg("slide", a.lower(), f"V{a}{self.L2}{a}{self.L1}", u, K1.vel_at(p), K1.acc_at(p),
                     self.L1)
         return f"{a}{self.L2}", A, slide, self.rotation(self.L2, c, A, self.K2, m)
+
+    def carried(self):
+        return self._at_origin((self.L1, self.K1, self.outer1.point),
+                               (self.L2, self.K2, self.outer2.point))
 
     def after_velocities(self, m, leg1, leg2):
         # the slide's Coriolis term needs ω of L1, which is ω of L2, found by
@@ -454,6 +475,14 @@ class RPP(DyadSolver):
 
 
 SOLVERS: dict[str, type[DyadSolver]] = {"RRR": RRR, "RRP": RRP, "RPR": RPR, "PRP": PRP, "RPP": RPP}
+
+
+def _origin(P, e, p_local: complex):
+    """Origin P - e·p of a link whose local point p sits at P. A link whose
+    origin is its pivot on the frame keeps that pivot, one number."""
+    if not p_local and not isinstance(P, np.ndarray):
+        return P
+    return P - e * p_local
 
 
 def _entry(x, i: int):
