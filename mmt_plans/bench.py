@@ -6,12 +6,13 @@ of the machine), reported per position or per crank angle.
 
 from __future__ import annotations
 
+import subprocess
+import sys
 import time
 from dataclasses import replace
 from pathlib import Path
 from typing import Callable
 
-import numpy as np
 
 from . import load
 from .report import table
@@ -38,6 +39,24 @@ def sweep_everything(mech, phi):
     return sw.points, sw.v, sw.a, sw.omega, sw.eps
 
 
+_SWEEP = """
+import sys, numpy as np
+from mmt_plans import load
+from mmt_plans.bench import best_time, sweep_everything
+mech = load(sys.argv[1]); mech.chain  # built once, as a script sweeping many times would
+phi = np.linspace(0.0, 360.0, int(sys.argv[2]), endpoint=False)
+print(best_time(lambda: sweep_everything(mech, phi), int(sys.argv[3])))
+"""
+
+
+def sweep_time(path: Path, count: int, repeat: int) -> float:
+    """Best time of one sweep of `count` angles of the file at `path`, measured
+    in a fresh Python process."""
+    done = subprocess.run([sys.executable, "-c", _SWEEP, str(path), str(count), str(repeat)],
+                          capture_output=True, text=True, check=True)
+    return float(done.stdout.strip().splitlines()[-1])
+
+
 def run_benchmarks(sample_dir: Path, quick: bool = False, echo=print) -> None:
     repeat = 3 if quick else 7
     files = sorted(Path(sample_dir).glob("*.toml"))
@@ -56,13 +75,11 @@ def run_benchmarks(sample_dir: Path, quick: bool = False, echo=print) -> None:
 
     rows = []
     for path in files:
-        mech = load(path)
-        mech.chain  # built once, as a script sweeping many times would
         for count in (360, 36_000):
-            phi = np.linspace(0.0, 360.0, count, endpoint=False)
-            t = best_time(lambda: sweep_everything(mech, phi), repeat)
+            t = sweep_time(path, count, repeat)
             rows.append([path.stem, str(count), f"{t * 1e3:.2f}", f"{t / count * 1e6:.3f}"])
     echo("Vectorised sweep: positions, velocities, accelerations of every point, omega and eps")
+    echo("(each sample in a fresh process, so that no other sample's memory shapes its figure)")
     echo(table(["sample", "angles", "total ms", "per angle us"], rows))
     echo("")
 
