@@ -11,31 +11,13 @@ import numpy as np
 import pytest
 
 import mmt_plans
+from mechanisms import four_bar_toml, slider_crank_toml
 
 mp.mp.dps = 50
 
 
 def slider_crank(r_mm, l_mm, rpm=100.0, e_mm=0.0):
-    return mmt_plans.loads(f"""
-[drive]
-rpm = {rpm}
-[study]
-output = "B"
-[frame]
-O = [0, 0]
-[[link]]
-id = 1
-points = {{ O = [0, 0], A = [{r_mm}, 0] }}
-[[link]]
-id = 2
-points = {{ A = [0, 0], B = [{l_mm}, 0] }}
-[[link]]
-id = 3
-points = {{ B = [0, 0] }}
-[[slider]]
-link = 3
-through = [0, {e_mm}]
-""")
+    return mmt_plans.loads(slider_crank_toml(r_mm, l_mm, e_mm, drive=f"rpm = {rpm}"))
 
 
 def slider_crank_reference(r, l, w, phi_deg, e=0.0):
@@ -76,24 +58,7 @@ def test_dead_centre_of_a_slider_crank(ratio, delta):
 
 def toggle_four_bar():
     # |AC| reaches l2 + l3 = 400 mm exactly at phi1 = 180: the coupler and rocker in line
-    return mmt_plans.loads("""
-[drive]
-rpm = 60
-[study]
-output = "B"
-[frame]
-O = [0, 0]
-C = [300, 0]
-[[link]]
-id = 1
-points = { O = [0, 0], A = [100, 0] }
-[[link]]
-id = 2
-points = { A = [0, 0], B = [250, 0] }
-[[link]]
-id = 3
-points = { C = [0, 0], B = [150, 0] }
-""")
+    return mmt_plans.loads(four_bar_toml(100, 300, 250, 150, rpm=60))
 
 
 def four_bar_reference(phi_deg, w, sign=1):
@@ -207,24 +172,7 @@ def test_lengths_at_micrometre_resolution_keep_their_value():
 def test_rocker_rocker_says_which_crank_angles_work():
     # r = 200, d = 300, l = 150, c = 240: |AC| ≤ l + c = 390 needs
     # cos φ ≥ (200² + 300² - 390²) / (2·200·300) = -0.18416…, i.e. |φ| ≤ 100.6116…°
-    mech = mmt_plans.loads("""
-[drive]
-rpm = 30
-[study]
-output = "B"
-[frame]
-O = [0, 0]
-C = [300, 0]
-[[link]]
-id = 1
-points = { O = [0, 0], A = [200, 0] }
-[[link]]
-id = 2
-points = { A = [0, 0], B = [150, 0] }
-[[link]]
-id = 3
-points = { C = [0, 0], B = [240, 0] }
-""")
+    mech = mmt_plans.loads(four_bar_toml(200, 300, 150, 240, rpm=30))
     analysis = mech.analyze()
     edge = math.degrees(math.acos((200**2 + 300**2 - 390**2) / (2 * 200 * 300)))
     (start, end), = analysis.assembly_ranges

@@ -6,6 +6,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import mmt_plans
+from mechanisms import four_bar_toml, slider_crank_toml
 from mmt_plans.kinematics.geometry import cross
 
 TURN = np.linspace(0.0, 360.0, 1441)  # 0.25° steps, both ends
@@ -14,25 +15,7 @@ MM = 1e-3
 
 def four_bar(r, d, l, c, sign):
     b_sketch = "" if sign is None else f"[sketch]\nA = [{r}, 0]\nB = [{d / 2}, {sign * 10 * l}]\n"
-    return f"""
-title = "random four-bar"
-[drive]
-rpm = 100
-[study]
-output = "B"
-[frame]
-O = [0, 0]
-C = [{d}, 0]
-[[link]]
-id = 1
-points = {{ O = [0, 0], A = [{r}, 0] }}
-[[link]]
-id = 2
-points = {{ A = [0, 0], B = [{l}, 0] }}
-[[link]]
-id = 3
-points = {{ C = [0, 0], B = [{c}, 0] }}
-{b_sketch}"""
+    return 'title = "random four-bar"\n' + four_bar_toml(r, d, l, c, extra=b_sketch)
 
 
 @st.composite
@@ -70,26 +53,7 @@ def test_four_bar_closes_and_never_jumps(dims, sign):
 def test_slider_crank_closes_and_never_jumps(r, ratio, offset):
     l = r * ratio
     e = offset * (l - r)  # |e| < l - r: the crank turns fully
-    mech = mmt_plans.loads(f"""
-[drive]
-omega = 20
-[study]
-output = "B"
-[frame]
-O = [0, 0]
-[[link]]
-id = 1
-points = {{ O = [0, 0], A = [{r}, 0] }}
-[[link]]
-id = 2
-points = {{ A = [0, 0], B = [{l}, 0] }}
-[[link]]
-id = 3
-points = {{ B = [0, 0] }}
-[[slider]]
-link = 3
-through = [0, {e}]
-""")
+    mech = mmt_plans.loads(slider_crank_toml(r, l, e, drive="omega = 20"))
     sw = mech.sweep(TURN).check()
     A, B = sw.position_of("A"), sw.position_of("B")
     assert np.abs(np.abs(B - A) - l * MM).max() < 1e-9 * MM
