@@ -48,6 +48,7 @@ class Labels:
         self._clearance: list[float] = []
         self._tree: STRtree | None = None
         self._grown: BaseGeometry | None = None
+        self._later: list[tuple[np.ndarray, str, Sequence[float] | None]] = []
 
     def avoid(self, shape: BaseGeometry, clearance: float) -> None:
         """Keep labels `clearance` mm off any shape (a filled polygon is avoided whole)."""
@@ -98,6 +99,17 @@ class Labels:
     def width(self, markup: str) -> float:
         probe = RecordingBackend(look=self.sketch.look)
         return probe.rich_text((0.0, 0.0), markup, self.size)
+
+    def later(self, anchor: Sequence[float], markup: str,
+              towards: Sequence[float] | None = None) -> None:
+        """A label to write with `write_later`, once every line is drawn and avoided."""
+        self._later.append((np.asarray(anchor, dtype=float), markup, towards))
+
+    def write_later(self) -> None:
+        """Write the labels kept by `later`, in the order they came."""
+        for anchor, markup, towards in self._later:
+            self.place(anchor, markup, towards=towards)
+        self._later.clear()
 
     def place(self, anchor: Sequence[float], markup: str, *, towards: Sequence[float] | None = None,
               distance: float = 1.5, group: str | None = None) -> BaseGeometry:

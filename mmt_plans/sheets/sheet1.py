@@ -425,7 +425,7 @@ def sketch_plan(
     gid = f"{kind}-plan-{index}"
     pole = "p" if kind == "velocity" else "π"
     moving = _moving_points(analysis)
-    pending: list[tuple[np.ndarray, str, np.ndarray]] = []  # component labels, written last
+    placer = Labels(sk, _TEXT)  # the components' labels are written last, at _SMALL
     with sk.group(gid, "plan"):
         # Components of the vector equations, dashed.
         for g in view.groups:
@@ -441,7 +441,7 @@ def sketch_plan(
                 sk.arrow(s, e, "dashed", head_length=3.0, head_width=1.0)
                 if c.kind in ("normal", "coriolis"):
                     tag = "n" if c.kind == "normal" else "k"
-                    pending.append((e, f"{tag}_{{{c.label.split('_', 1)[-1]}}}", unit_vector(e - s)))
+                    placer.later(e, f"{tag}_{{{c.label.split('_', 1)[-1]}}}", unit_vector(e - s))
         # The image of each link: its joints' images joined by thin lines (the
         # relative vectors ab, de, and the similarity triangles of three-point links).
         owners = analysis.mech.point_owners
@@ -465,7 +465,6 @@ def sketch_plan(
             key = (round(float(v[0]) * 2), round(float(v[1]) * 2))
             labels.setdefault(key, []).append(name)
         sk.circle((0.0, 0.0), 0.8, "main", "black")
-        placer = Labels(sk, _TEXT)
         placer.avoid_drawn(sk.calls)
         placer.place((0.0, 0.0), pole, towards=(-1.0, -1.0))
         for key, names in labels.items():
@@ -474,8 +473,7 @@ def sketch_plan(
                 continue
             placer.place(v, ", ".join(_image_markup(n) for n in names), towards=unit_vector(v))
         placer.size = _SMALL
-        for anchor, markup, towards in pending:
-            placer.place(anchor, markup, towards=towards)
+        placer.write_later()
         ext = sk.extent()
         q = "velocity" if kind == "velocity" else "acceleration"
         sk.rich_text(((ext.left + ext.right) / 2, ext.bottom - 5.0),

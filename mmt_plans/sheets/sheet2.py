@@ -177,7 +177,6 @@ class _Drawing:
         self.labels = Labels(self.sk, _TEXT)
         self.state = state
         self.mu_l = mu_l
-        self._pending: list[tuple[np.ndarray, str, np.ndarray | None]] = []
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, direction) drawn
 
     def mm(self, P: Any) -> np.ndarray:
@@ -189,12 +188,7 @@ class _Drawing:
 
     def later(self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None) -> None:
         """A label written after every line, so that it can avoid them all."""
-        self._pending.append((np.asarray(anchor, float), markup, towards))
-
-    def write_labels(self) -> None:
-        for anchor, markup, towards in self._pending:
-            self.labels.place(anchor, markup, towards=towards)
-        self._pending.clear()
+        self.labels.later(anchor, markup, towards)
 
     def force(self, at: np.ndarray, F: np.ndarray, label: str, largest: float,
               line: str = "main") -> None:
@@ -316,7 +310,7 @@ class _Drawing:
                 self.force(self.mm(f.point), f.force, f.name, largest)
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
-        self.write_labels()
+        self.labels.write_later()
         ext = self.sk.extent()
         y = ext.bottom - 5.0
         for note in notes:
@@ -457,7 +451,6 @@ def sketch_force_polygons(polygons: Sequence[ForcePolygon], mu_F: float, look: A
     sk = Sketch(look)
     labels = Labels(sk, _TEXT)
     drawn: dict[tuple[str, int, int], bool] = {}
-    pending: list[tuple[np.ndarray, str, np.ndarray]] = []
     short: list[str] = []
     offset = np.zeros(2)
     with sk.group(gid, "force-polygon"):
@@ -483,7 +476,7 @@ def sketch_force_polygons(polygons: Sequence[ForcePolygon], mu_F: float, look: A
                 sk.arrow(s, e, "dashed" if component else "main", **_ARROW)  # type: ignore[arg-type]
                 labels.avoid_line(s, e)
                 u = (e - s) / length
-                pending.append(((s + e) / 2, force_markup(v.label), np.array([-u[1], u[0]])))
+                labels.later((s + e) / 2, force_markup(v.label), np.array([-u[1], u[0]]))
             # R = R^n + R^t: the resultant of two consecutive components, main line
             for a, b in zip(poly.vectors, poly.vectors[1:]):
                 if a.label.endswith("^n") and b.label == a.label[:-2] + "^t" or \
@@ -497,9 +490,8 @@ def sketch_force_polygons(polygons: Sequence[ForcePolygon], mu_F: float, look: A
                     sk.arrow(s, e, "main", **_ARROW)  # type: ignore[arg-type]
                     labels.avoid_line(s, e)
                     u = unit_vector(e - s)
-                    pending.append(((s + e) / 2, force_markup(a.label[:-2]), np.array([u[1], -u[0]])))
-        for anchor, markup, towards in pending:
-            labels.place(anchor, markup, towards=towards)
+                    labels.later((s + e) / 2, force_markup(a.label[:-2]), np.array([u[1], -u[0]]))
+        labels.write_later()
         ext = sk.extent()
         y = ext.bottom - 5.0
         for poly in polygons:
@@ -523,7 +515,7 @@ def sketch_lever(fa: ForceAnalysis, mu_V: float, look: Any, lang: Language,
     sk = Sketch(look)
     labels = Labels(sk, _TEXT)
     img = {n: np.asarray(v, float) / mu_V for n, v in lever.images.items()}
-    pending: list[tuple[np.ndarray, str, np.ndarray | None]] = []
+    dotted: set[str] = set()  # images of S_i and K_i marked with a dot
     with sk.group("zhukovsky-lever", "lever"):
         joints = [n for n in img if not re.fullmatch(r"[SK]\d+", n)]
         for n in joints:
@@ -538,10 +530,10 @@ def sketch_lever(fa: ForceAnalysis, mu_V: float, look: Any, lang: Language,
                     labels.avoid_line(img[names[i]], img[names[j]])
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
-                pending.append((img[n], n.lower(), img[n]))
+                labels.later(img[n], n.lower(), img[n])
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         labels.avoid_circle((0.0, 0.0), 1.2)
-        pending.append((np.zeros(2), "p", np.array([-1.0, -1.0])))
+        labels.later(np.zeros(2), "p", np.array([-1.0, -1.0]))
         forces = [*lever.forces, lever.balancing]
         feet: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
         largest = max(float(np.hypot(*f.force)) for f in forces)
@@ -554,8 +546,9 @@ def sketch_lever(fa: ForceAnalysis, mu_V: float, look: Any, lang: Language,
             end = at + _arrow_length(size, largest) * u
             sk.arrow(at, end, "main", **_ARROW)  # type: ignore[arg-type]
             labels.avoid_line(at, end)
-            pending.append((end, force_markup(f.label), u))
-            if re.fullmatch(r"[SK]\d+", f.point) and f.point not in {p[1] for p in pending}:
+            labels.later(end, force_markup(f.label), u)
+            if re.fullmatch(r"[SK]\d+", f.point) and f.point not in dotted:
+                dotted.add(f.point)
                 sk.circle(at, 0.6, "thin", "black")
             h = abs(f.arm) / mu_V
             arms.append((f.label, h))
@@ -568,9 +561,8 @@ def sketch_lever(fa: ForceAnalysis, mu_V: float, look: Any, lang: Language,
                 key = (round(float(foot[0]) * 2), round(float(foot[1]) * 2))
                 feet.setdefault(key, (foot, []))[1].append(str(len(arms)))
         for foot, numbers in feet.values():
-            pending.append((foot / 2, f"h_{{{','.join(numbers)}}}", None))
-        for anchor, markup, towards in pending:
-            labels.place(anchor, markup, towards=towards)
+            labels.later(foot / 2, f"h_{{{','.join(numbers)}}}")
+        labels.write_later()
         ext = sk.extent()
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _WORDS[lang]["equation"], _TEXT)
         sk.rich_text((ext.left + _PAD, ext.bottom - 11.0), scale_label(mu_V, "velocity", lang).markup(), _TEXT)
