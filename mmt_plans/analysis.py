@@ -226,10 +226,7 @@ class Analysis:
 
     def displacements(self, n: int) -> np.ndarray:
         """s of the output at n equal crank steps from position 0 (s = 0 there), m:
-        the smooth S curve the diagram is drawn through."""
-        return self._s_at(n)
-
-    def _s_at(self, n: int) -> np.ndarray:
+        the smooth S curve of the diagram, and the trials of the 5 % check."""
         phi = self.phi0_deg + self.sense_sign * 360.0 * np.arange(n) / n
         s, _, _ = self.output_along(self.chain.sweep(phi))
         return s - s[0]
@@ -259,7 +256,7 @@ class Analysis:
             if max(construction.heights_mm) <= DIAGRAM_HEIGHT_MM:
                 break
         check = compare_with_plans(construction.v, construction.a, v, a, n1=n1, s=s,
-                                   s_of_n=self._s_at)
+                                   s_of_n=self.displacements)
         return construction, check, v, a
 
     def diagrams_json(self) -> dict[str, Any]:

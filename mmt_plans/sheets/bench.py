@@ -30,14 +30,13 @@ def bench_sheets(files: Sequence[Path], repeat: int, echo: Callable[[str], None]
         for path in chosen:
             mech = load(path)
             for fmt in ("svg", "pdf"):
-                for n in [*sheets, tuple(sheets)]:
-                    numbers = n if isinstance(n, tuple) else (n,)
+                for numbers in [*((n,) for n in sheets), tuple(sheets)]:
 
                     def write() -> None:
                         write_sheets(replace(mech).analyze(), out, (fmt,), "en", numbers)
 
                     t = best_time(write, max(1, repeat // 2))
-                    what = "both" if isinstance(n, tuple) else f"sheet {n}"
+                    what = f"sheet {numbers[0]}" if len(numbers) == 1 else "both"
                     rows.append([path.stem, what, fmt, f"{t:.3f}"])
     echo("Writing the A1 sheets (analysis on demand + compose + write; PDF through Cairo):")
     echo(table(["sample", "sheets", "format", "seconds"], rows))

@@ -130,6 +130,11 @@ class Sketch(RecordingBackend):
             return Rect(0.0, 0.0, 1.0, 1.0)
         return Rect.from_bounds(min(xs) - _PAD, min(ys) - _PAD, max(xs) + _PAD, max(ys) + _PAD)
 
+    def add_to_last_group(self, other: "Sketch", group_id: str) -> None:
+        """Splice `other`'s calls into this sketch's last group `group_id`, before its end."""
+        end = max(i for i, c in enumerate(self.calls) if c.name == "end_group")
+        self.calls[end:end] = [type(c)(c.name, c.args, (group_id,)) for c in other.calls]
+
     def replay(self, backend: Backend, dx: float, dy: float) -> None:
         def t(p: Sequence[float]) -> tuple[float, float]:
             return (p[0] + dx, p[1] + dy)
@@ -612,9 +617,7 @@ def table_sketch(
     for r, text in enumerate(first_markup):
         extra.rich_text((widths[0] / 2, top - (r + 0.5) * row_h), text, _TEXT,
                         anchor="center", valign="middle")
-    # Splice the overlay calls before the table group's end.
-    end = max(i for i, c in enumerate(sk.calls) if c.name == "end_group")
-    sk.calls[end:end] = [type(c)(c.name, c.args, (gid,)) for c in extra.calls]
+    sk.add_to_last_group(extra, gid)
     return sk
 
 
@@ -704,13 +707,12 @@ def _sketch_tables(analysis: Any, look: Any, lang: Language) -> dict[str, Sketch
                                       how=w[check.positions_needed_how]))
     else:
         notes.append(w["all_within"].format(lim=check.limit_percent))
-    end = max(i for i, c in enumerate(sk.calls) if c.name == "end_group")
     extra = Sketch(look)
     y = sk.extent().bottom - 2.0
     for note in notes:
         extra.text((0.0, y), note, _SMALL, valign="top")
         y -= _SMALL + 1.5
-    sk.calls[end:end] = [type(c)(c.name, c.args, ("table-check",)) for c in extra.calls]
+    sk.add_to_last_group(extra, "table-check")
     out["table-check"] = sk
     return out
 
