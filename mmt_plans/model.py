@@ -144,6 +144,7 @@ class Study:
     plans: tuple[int, ...] | None = None
     force_position: int | None = None
     angles: tuple[float, ...] = ()
+    partial_turn: bool = False  # analyse only where the mechanism assembles (opt-in)
 
 
 @dataclass(frozen=True)
@@ -162,6 +163,11 @@ class Mechanism:
     higher_pairs: tuple[tuple[int, int], ...] = ()
     g: float = 9.81
     sheet: Mapping[str, str] = field(default_factory=dict)
+    titles: Mapping[str, str] = field(default_factory=dict)  # by language; "en" is `title`
+
+    def title_in(self, lang: str) -> str:
+        """The title in `lang` where the file gives one (title_uk), else `title`."""
+        return self.titles.get(lang, self.title)
 
     def with_changes(self, **kw: Any) -> "Mechanism":
         """A copy with some fields replaced (caches are not carried over)."""

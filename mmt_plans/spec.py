@@ -20,11 +20,11 @@ from .model import FRAME, Drive, Force, Link, Mechanism, Prismatic, Study, froze
 MM = 1e-3
 
 KEYS: dict[str, tuple[str, ...]] = {
-    "": ("title", "drive", "study", "frame", "link", "slider", "sketch", "force", "gears",
+    "": ("title", "title_uk", "drive", "study", "frame", "link", "slider", "sketch", "force", "gears",
          "env", "higher_pair", "sheet"),
     "drive": ("link", "rpm", "omega", "sense"),
     "study": ("positions", "output", "working_direction", "zero", "plans", "force_position",
-              "angles"),
+              "angles", "partial_turn"),
     "link": ("id", "points", "mass", "cm", "J", "k"),
     "slider": ("link", "on", "through", "angle"),
     "force": ("name", "link", "at", "magnitude", "acts", "direction"),
@@ -125,6 +125,11 @@ class _Reader:
         title = data.get("title", Path(self.path).stem)
         if not isinstance(title, str):
             raise self.fail("title", "must be a string", 'write title = "..."')
+        titles = {"en": title}
+        if "title_uk" in data:
+            if not isinstance(data["title_uk"], str):
+                raise self.fail("title_uk", "must be a string", 'write title_uk = "..."')
+            titles["uk"] = data["title_uk"]
 
         frame = self.frame(data.get("frame", {}))
         links = self.links(data.get("link"), frame)
@@ -138,7 +143,7 @@ class _Reader:
         g = self.env(data.get("env", {}))
         sheet = self.sheet(data.get("sheet", {}))
 
-        mech = Mechanism(title=title, path=self.path, frame=frame, links=links,
+        mech = Mechanism(title=title, titles=titles, path=self.path, frame=frame, links=links,
                          sliders=sliders, forces=forces, drive=drive, study=study,
                          sketch=sketch, higher_pairs=higher, g=g, sheet=sheet)
         self.check_connections(mech)
@@ -302,9 +307,15 @@ class _Reader:
                 isinstance(a, (int, float)) and not isinstance(a, bool) for a in angles):
             raise self.fail("study.angles", "must be a list of crank angles in degrees",
                             "write angles = [210]")
+        partial = table.get("partial_turn", False)
+        if not isinstance(partial, bool):
+            raise self.fail("study.partial_turn", f"must be true or false, not {partial!r}",
+                            "write partial_turn = true to analyse only the crank angles where "
+                            "the mechanism assembles")
         return Study(output=output, positions=n,
                      working_direction=frozen_array(wd / np.linalg.norm(wd)), zero=zero,
-                     plans=plans, force_position=fp, angles=tuple(float(a) for a in angles))
+                     plans=plans, force_position=fp, angles=tuple(float(a) for a in angles),
+                     partial_turn=partial)
 
     def forces(self, entries: Any, links: dict[int, Link]) -> tuple[Force, ...]:
         if not isinstance(entries, list):
@@ -330,6 +341,11 @@ class _Reader:
                     raise self.fail(f"{entry}.direction", "must not be [0, 0]",
                                     "give the force's direction, e.g. [-1, 0]")
                 direction = frozen_array(d / np.linalg.norm(d))
+            if direction is not None and table.get("acts") == "always":
+                raise self.fail(f"{entry}.acts",
+                                'acts = "always" (against the motion) contradicts a fixed direction',
+                                'drop acts to keep the direction in every position, write '
+                                'acts = "working" for the working stroke only, or drop direction')
             # a fixed direction acts in every position unless acts = "working" is written
             acts = table.get("acts", "always" if direction is not None else "working")
             if acts not in ("working", "always"):
