@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import AssemblyError, MmtError, StructureError
+from .errors import AssemblyError, MmtError, StructureError, partial_turn_error
 from .kinematics.chain import Sweep
 from .kinematics.plans import PlanView, plan_view
 from .model import Mechanism, Stroke
@@ -50,84 +50,109 @@ class Analysis:
         s, v, a = self.output_along(sweep)
         return s, v / w, a / (w * w)
 
+    # --- the turn: whole, or the range where the mechanism assembles -----------------
     @cached_property
-    def extremes(self) -> tuple[float, float]:
+    def branches(self):
+        """The assembly branches (kinematics/branches.py); a crank that cannot
+        make a whole turn is refused unless the file opts in (partial_turn)."""
+        choice = self.chain.choice
+        if not choice.whole_turn and not self.mech.study.partial_turn:
+            raise partial_turn_error(self.mech, choice)
+        return choice
+
+    @property
+    def partial(self) -> bool:
+        return not self.branches.whole_turn
+
+    @property
+    def assembly_ranges(self) -> tuple[tuple[float, float], ...]:
+        """Crank-angle intervals (deg, counter-clockwise from start to end) where
+        every group assembles; ((0, 360),) for a mechanism that turns fully."""
+        return self.chain.choice.ranges
+
+    @cached_property
+    def limits(self) -> tuple[float, float] | None:
+        """The limits of assembly of the range analysed (the longest), in the
+        drive's sense: (first, last); None for a whole turn."""
+        if not self.partial:
+            return None
+        lo, hi = max(self.assembly_ranges, key=lambda r: (r[1] - r[0]) % 360.0)
+        return (lo, hi) if self.sense_sign > 0 else (hi, lo)
+
+    @property
+    def span_deg(self) -> float:
+        """Crank angle the positions are spread over: 360, or the range analysed."""
+        if self.limits is None:
+            return 360.0
+        a, b = self.limits
+        return ((b - a) * self.sense_sign) % 360.0
+
+    # --- extreme positions and strokes ---------------------------------------------
+    def _along(self, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """s, ds/dφ and d²s/dφ² of the output along the working direction (ε1 = 0)."""
+        w = self.mech.drive.signed_omega
+        s, v, a = self.output_along(sweep)
+        return s, v / w, a / (w * w)
+
+    @cached_property
+    def extremes(self) -> tuple[float, float] | None:
         """Crank angles (deg) of the output's least and greatest position along
-        the working direction, to machine precision: Newton on ds/dφ = 0 with
-        the exact d²s/dφ² from the acceleration plan, started from a grid."""
-        grid = np.linspace(0.0, 360.0, GRID, endpoint=False)
+        the working direction: zeros of ds/dφ to machine precision (Newton with
+        the exact d²s/dφ² of the acceleration plan, kept in a bracket where ds/dφ
+        changes sign). In a partial turn only zeros inside the range count (the
+        limits of assembly are not extreme positions); None when there are none."""
+        if self.limits is None:
+            grid = np.linspace(0.0, 360.0, GRID, endpoint=False)
+        else:
+            a = self.limits[0]
+            grid = a + self.sense_sign * self.span_deg * (np.arange(1, GRID) / GRID)
         sw = self.chain.sweep(grid)
-        s, _, _ = self._along(sw)
-        ok = sw.ok & np.isfinite(s)
+        s, ds, _ = self._along(sw)
+        ok = sw.ok & np.isfinite(s) & np.isfinite(ds)
         if not ok.any():
             raise sw.problem(0) or StructureError("the mechanism assembles at no crank angle")
-        if np.ptp(s[ok]) < 1e-12:
+        if np.ptp(s[ok]) < 1e-12 * max(1.0, float(np.max(np.abs(s[ok])))):
             raise StructureError(
                 f"{self.mech.path}: output {self.mech.study.output} does not move along the "
                 "working direction: set study.working_direction or study.zero")
-        idx = np.flatnonzero(ok)
-        start = np.array([grid[idx[np.argmin(s[ok])]], grid[idx[np.argmax(s[ok])]]])
-        lo, hi = self._refine(start, grid[1] - grid[0])
-        return float(lo), float(hi)
+        # brackets [φ_i, φ_i+1] of the grid where ds/dφ changes sign
+        nxt = np.roll(np.arange(grid.size), -1)
+        if self.limits is not None:
+            nxt[-1] = grid.size - 1
+        change = ok & ok[nxt] & (np.sign(ds) != np.sign(ds[nxt])) & (nxt != np.arange(grid.size))
+        idx = np.flatnonzero(change)
+        if not idx.size:
+            return None
+        step = 360.0 / GRID if self.limits is None else self.span_deg / GRID
+        lo_b = grid[idx]
+        hi_b = lo_b + (step if self.limits is None else self.sense_sign * step)
+        roots = self._root(np.minimum(lo_b, hi_b), np.maximum(lo_b, hi_b))
+        s_roots, _, _ = self._along(self.chain.sweep(roots))
+        return float(roots[int(np.argmin(s_roots))] % 360.0), float(roots[int(np.argmax(s_roots))] % 360.0)
 
-    def _refine(self, phi0: np.ndarray, step: float) -> np.ndarray:
-        """Newton on ds/dφ = 0 from each of phi0 at once (one sweep per step for
-        all of them), each kept within ±step of its start; a root that leaves
-        its bracket falls back to the bracket's middle."""
-        lo, hi = phi0 - step, phi0 + step
-        phi = phi0.astype(float).copy()
-        active = np.ones(phi.size, dtype=bool)
-        for _ in range(60):
-            if not active.any():
-                break
-            k = np.flatnonzero(active)
-            _, ds, d2s = self._along(self.chain.sweep(phi[k]))
-            bad = ~(np.isfinite(ds) & np.isfinite(d2s)) | (d2s == 0)
+    def _root(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        """Zeros of ds/dφ in the brackets [a, b] (deg, ds/dφ changes sign in
+        each): Newton's steps where they stay in the bracket, bisection where
+        they would leave it (rtsafe), all brackets at once."""
+        _, fa, _ = self._along(self.chain.sweep(a))
+        a, b = a.astype(float).copy(), b.astype(float).copy()
+        phi = 0.5 * (a + b)
+        for _ in range(200):
+            _, f, df = self._along(self.chain.sweep(phi))
+            # keep the sign-change bracket
+            same = np.sign(f) == np.sign(fa)
+            a = np.where(same, phi, a)
+            fa = np.where(same, f, fa)
+            b = np.where(same, b, phi)
             with np.errstate(divide="ignore", invalid="ignore"):
-                new = phi[k] - np.degrees(ds / d2s)
-            outside = ~bad & ~((lo[k] <= new) & (new <= hi[k]))
-            inside_now = (lo[k] <= phi[k]) & (phi[k] <= hi[k])
-            done = ~bad & ~outside & (np.abs(new - phi[k]) <= 1e-15 * np.maximum(1.0, np.abs(phi[k])))
-            step_ok = ~bad & ~outside
-            phi[k[step_ok]] = new[step_ok]
-            reset = outside & ~inside_now
-            phi[k[reset]] = 0.5 * (lo[k[reset]] + hi[k[reset]])
-            active[k[bad | outside | done]] = False
-        return phi % 360.0
-
-    @cached_property
-    def assembly_ranges(self) -> tuple[tuple[float, float], ...]:
-        """Crank-angle intervals (deg, counter-clockwise from start to end) where
-        every group assembles; ((0, 360),) for a mechanism that turns fully.
-        The ends are found to 1e-9° by bisection between grid angles."""
-        grid = np.linspace(0.0, 360.0, GRID, endpoint=False)
-        ok = self.chain.sweep(grid).ok
-        if ok.all():
-            return ((0.0, 360.0),)
-        if not ok.any():
-            return ()
-        step = grid[1] - grid[0]
-        starts = [i for i in range(GRID) if ok[i] and not ok[i - 1]]
-        ranges = []
-        for i in starts:
-            j = i
-            while ok[(j + 1) % GRID]:
-                j += 1
-            lo = self._edge(grid[i] - step, grid[i])
-            hi = self._edge(grid[j % GRID] + step, grid[j % GRID])
-            ranges.append((lo % 360.0, hi % 360.0))
-        return tuple(ranges)
-
-    def _edge(self, bad: float, good: float) -> float:
-        for _ in range(60):
-            mid = 0.5 * (bad + good)
-            if abs(good - bad) < 1e-10:
+                newton = phi - np.degrees(f / df)
+            inside = np.isfinite(newton) & (newton > a) & (newton < b)
+            new = np.where(inside, newton, 0.5 * (a + b))
+            done = (f == 0) | (np.abs(new - phi) <= 4 * np.finfo(float).eps * np.maximum(1.0, np.abs(phi)))
+            phi = np.where(f == 0, phi, new)
+            if done.all():
                 break
-            if self.chain.sweep(np.array([mid])).ok[0]:
-                good = mid
-            else:
-                bad = mid
-        return good
+        return phi
 
     @property
     def sense_sign(self) -> int:
@@ -135,10 +160,16 @@ class Analysis:
 
     @cached_property
     def working_span_deg(self) -> float:
+        if self.extremes is None:
+            return float("nan")
         lo, hi = self.extremes
         return ((hi - lo) * self.sense_sign) % 360.0
 
     def stroke_of(self, phi1_deg: float) -> Stroke:
+        if self.limits is not None or self.extremes is None:
+            # a partial turn: working where the output moves along the working direction
+            _, ds, _ = self._along(self.chain.sweep(np.array([phi1_deg])))
+            return "working" if float(ds[0]) * self.sense_sign > 0 else "idle"
         lo, _ = self.extremes
         ahead = ((phi1_deg - lo) * self.sense_sign) % 360.0
         if ahead <= self.working_span_deg + EXTREME_TOL_DEG or ahead >= 360.0 - EXTREME_TOL_DEG:
@@ -148,15 +179,24 @@ class Analysis:
     # --- positions ------------------------------------------------------------------
     @cached_property
     def phi0_deg(self) -> float:
+        if self.limits is not None:  # half a step in from the first limit of assembly
+            return (self.limits[0] + self.sense_sign * self.span_deg / (2 * self.mech.study.positions)) % 360.0
         zero = self.mech.study.zero
-        return self.extremes[0] if zero is None else zero % 360.0
+        if zero is None:
+            if self.extremes is None:
+                raise StructureError(
+                    f"{self.mech.path}: output {self.mech.study.output} has no extreme position "
+                    "along the working direction: set study.zero or study.working_direction")
+            return self.extremes[0]
+        return zero % 360.0
 
     @cached_property
     def positions(self) -> tuple[Position, ...]:
+        self.branches  # refuse a partial turn before anything is computed
         n = self.mech.study.positions
         out = []
         for i in range(n):
-            phi = (self.phi0_deg + self.sense_sign * 360.0 * i / n) % 360.0
+            phi = (self.phi0_deg + self.sense_sign * self.span_deg * i / n) % 360.0
             out.append(Position(i, phi, self.stroke_of(phi)))
         for phi in self.mech.study.angles:
             out.append(Position(None, phi % 360.0, self.stroke_of(phi % 360.0)))
@@ -165,9 +205,13 @@ class Analysis:
     @cached_property
     def plan_positions(self) -> tuple[int, ...]:
         """`study.plans`, or the positions nearest the middle of the working
-        and of the idle stroke (SPEC_FORMAT's default)."""
+        and of the idle stroke (SPEC_FORMAT's default); in a partial turn the
+        positions at a quarter and at three quarters of the range."""
         if self.mech.study.plans is not None:
             return self.mech.study.plans
+        n = self.mech.study.positions
+        if self.limits is not None or self.extremes is None:
+            return (n // 4, (3 * n) // 4)
         lo, hi = self.extremes
         span = self.working_span_deg
         mids = [lo + self.sense_sign * span / 2, hi + self.sense_sign * (360.0 - span) / 2]
@@ -238,6 +282,9 @@ class Analysis:
                                graphical_differentiation)
         from .scales import scale_for, series
 
+        if self.limits is not None:
+            raise MmtError("no kinematic diagrams: the crank does not make a whole turn "
+                           "(partial_turn), and the diagrams of 1.7 cover one turn")
         n = self.mech.study.positions
         k = [self.entry(i) for i in range(n)]
         if not self.sweep.ok[k].all():
@@ -320,8 +367,10 @@ class Analysis:
             "drive": {"link": drive.link, "omega": drive.signed_omega, "sense": drive.sense,
                       "gear_ratio": None if drive.gear_train is None else drive.gear_train.ratio,
                       "n1_rpm": drive.n1_rpm},
-            "branches": self.chain.branch_note,
-            "extremes_deg": {"working_start": self.extremes[0], "working_end": self.extremes[1]},
+            "branches": self.branches.to_json(),
+            "extremes_deg": None if self.extremes is None else
+            {"working_start": self.extremes[0], "working_end": self.extremes[1]},
+            "limits_of_assembly_deg": None if self.limits is None else list(self.limits),
             "plans": list(self.plan_positions),
             "positions": positions,
             "kinematics": kinematics,

@@ -22,13 +22,18 @@ def main() -> None:
 @click.option("--json", "json_out", type=click.Path(dir_okay=False, path_type=Path),
               help="Write the results JSON here.")
 @click.option("--quiet", is_flag=True, help="Print nothing but errors.")
+@click.option("--partial-turn", is_flag=True,
+              help="A crank that cannot make a whole turn: analyse the range where the "
+                   "mechanism assembles (as [study] partial_turn = true).")
 @reports_errors
-def analyze(file: Path, json_out: Path | None, quiet: bool) -> None:
+def analyze(file: Path, json_out: Path | None, quiet: bool, partial_turn: bool) -> None:
     """Structural, kinematic (and force) analysis of FILE."""
     from . import load
     from .report import text_report
 
     mech = load(file)
+    if partial_turn:
+        mech = mech.with_partial_turn()
     analysis = mech.analyze()
     results = analysis.to_json()
     if not quiet:

@@ -47,3 +47,39 @@ class SingularPlanError(MmtError, ArithmeticError):
 
 class UnsupportedError(MmtError, NotImplementedError):
     """Something the file describes correctly that mmt_plans does not solve."""
+
+
+class PartialTurnError(SpecError):
+    """The driving link cannot make a whole turn: some group cannot assemble
+    for part of it. The message names the group, the crank-angle ranges where
+    the mechanism assembles and the fix."""
+
+    def __init__(self, path: str, entry: str, problem: str, fix: str,
+                 ranges: tuple[tuple[float, float], ...]) -> None:
+        self.ranges = ranges
+        super().__init__(path, entry, problem, fix)
+
+
+def degrees_range(lo: float, hi: float) -> str:
+    """"12.5°…171.3°": a crank-angle interval, counter-clockwise from lo to hi."""
+    return f"{lo:.6g}°…{hi:.6g}°"
+
+
+def partial_turn_error(mech, choice) -> PartialTurnError:
+    """The refusal of a mechanism whose chosen branches do not turn fully
+    (`kinematics.branches.Branches`)."""
+    spans = ", ".join(degrees_range(lo, hi) for lo, hi in choice.ranges) or "no crank angle"
+    problem = (f"the crank cannot make a whole turn: {choice.failing_reason}; the mechanism "
+               f"assembles for phi1 in {spans} (counter-clockwise)")
+    fixes = []
+    if choice.rule == "sketch" and choice.full_turn:
+        combos = "; ".join(", ".join(f"group {g} {s:+d}" for g, s in c.items())
+                           for c in choice.full_turn)
+        problem += f"; the sketched branches do not turn fully, these do: {combos}"
+        fixes.append("sketch one of the combinations that turn fully")
+    if choice.cure:
+        fixes.append(choice.cure)
+    fixes.append("or opt in with [study] partial_turn = true (or --partial-turn) to analyse "
+                 "only the range where it assembles")
+    entry = f"group {choice.failing_group}" if choice.failing_group else "link"
+    return PartialTurnError(mech.path, entry, problem, "; ".join(fixes), choice.ranges)

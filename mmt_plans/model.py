@@ -173,6 +173,10 @@ class Mechanism:
         """A copy with some fields replaced (caches are not carried over)."""
         return replace(self, **kw)
 
+    def with_partial_turn(self) -> "Mechanism":
+        """The same mechanism opted in to analysing a partial turn (--partial-turn)."""
+        return replace(self, study=replace(self.study, partial_turn=True))
+
     # --- derived, computed once -------------------------------------------------
     @cached_property
     def revolutes(self) -> tuple[Revolute, ...]:

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .errors import degrees_range
+
 from .analysis import Analysis
 
 
@@ -36,15 +38,22 @@ def text_report(analysis: Analysis) -> str:
     out.append(f"Drive: link {d.link}, omega1 = {d.signed_omega:.6g} rad/s "
                f"({d.n1_rpm:.6g} rpm, {d.sense})"
                + (f", gear ratio u = {d.gear_train.ratio:.6g}" if d.gear_train else ""))
-    out.append(f"Assembly: {mech.chain.branch_note or 'one configuration'}")
-    ranges = analysis.assembly_ranges
-    if ranges != ((0.0, 360.0),):
-        spans = ", ".join(f"{a:.9g} -> {b:.9g} deg" for a, b in ranges) or "no crank angle"
-        out.append(f"The mechanism assembles only for phi1 in: {spans} (counter-clockwise)")
-    lo, hi = analysis.extremes
-    out.append(f"Working stroke: phi1 = {lo:.9g} deg -> {hi:.9g} deg "
-               f"({analysis.working_span_deg:.6g} deg of crank turn); "
-               f"plans at positions {list(analysis.plan_positions)}, "
+    out.append(f"Assembly: {analysis.branches.note}")
+    if analysis.limits is not None:
+        spans = ", ".join(degrees_range(a, b) for a, b in analysis.assembly_ranges)
+        first, last = analysis.limits
+        out.append(f"The crank does not make a whole turn: the mechanism assembles for phi1 in "
+                   f"{spans} (counter-clockwise); analysed (partial_turn): "
+                   f"{degrees_range(first, last)} in the drive's sense, whose ends are limits "
+                   "of assembly, not extreme positions")
+    if analysis.extremes is not None:
+        lo, hi = analysis.extremes
+        out.append(f"Extreme positions of {mech.study.output}: phi1 = {lo:.9g} deg (start of the "
+                   f"working stroke) and {hi:.9g} deg; working stroke "
+                   f"{analysis.working_span_deg:.6g} deg of crank turn")
+    else:
+        out.append(f"Output {mech.study.output} has no extreme position in the range analysed")
+    out.append(f"Plans at positions {list(analysis.plan_positions)}, "
                f"forces at {analysis.force_position}")
     out.append("")
     sw = analysis.sweep

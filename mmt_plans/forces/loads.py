@@ -98,6 +98,7 @@ class ExternalForce:
     magnitude: float  # N, as given
     rule: ForceRule  # "working": only in the working stroke; "always": against V_at; "fixed"
     acting: bool  # False in the idle stroke of a force that acts in the working stroke only
+    at_rest: bool = False  # "always" at an instant where its point is at rest: zero there
 
 
 @dataclass(frozen=True)
@@ -203,28 +204,20 @@ def external_force(f: Force, state: PositionState) -> ExternalForce:
     else:
         rule = "always"
         direction = _against_motion(f, state, P)
-        acting = True
+        acting = direction != 0
     force = f.magnitude * direction if acting else 0j
-    return ExternalForce(f.name, f.link, f.at, xy(P), xy(force), f.magnitude, rule, acting)
+    return ExternalForce(f.name, f.link, f.at, xy(P), xy(force), f.magnitude, rule, acting,
+                         at_rest=rule == "always" and not acting)
 
 
 def _against_motion(f: Force, state: PositionState, P: complex) -> complex:
-    """The unit vector opposing the motion of `at`. At an instant of rest (an
-    extreme position) it opposes the motion about to start, whose direction
-    is that of the acceleration: V(t + dt) = a·dt."""
+    """The unit vector opposing the velocity of `at`; zero at an instant when
+    `at` is at rest (SPEC_FORMAT: a resistance opposing the motion vanishes
+    when its point stops)."""
     mech = state.mech
     d = mech.drive.link
     A = state.point(d, mech.crank_pin)
-    pose = state.links[f.link]
-    V = pose.vel(P)
+    V = state.links[f.link].vel(P)
     if abs(V) > REST * abs(state.links[d].vel(A)):
         return -V / abs(V)
-    a = pose.acc(P)
-    if abs(a) > REST * abs(state.links[d].acc(A)):
-        return -a / abs(a)
-    raise ForceError(
-        f'force {f.name} acts "always" against the motion of {f.at}, but {f.at} is at rest '
-        f"here with no acceleration, so its direction is undefined",
-        f"choose another study.force_position, or give force {f.name} a direction",
-        phi1_deg=state.phi1_deg)
-
+    return 0j

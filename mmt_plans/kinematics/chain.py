@@ -376,9 +376,18 @@ class Chain:
         return Motion(1 + 0j, 0j)
 
     def place_all(self, phi_rad: np.ndarray, branches: dict[str, int]) -> dict[int, Motion]:
+        return self.place(phi_rad, branches)
+
+    def place(self, phi_rad: np.ndarray, branches: dict[str, int], upto: int | None = None,
+              margins: list | None = None) -> dict[int, Motion]:
+        """Positions of the first `upto` groups (all by default) with their
+        branches; `margins` receives each group's `margin` before it is placed."""
         m = {FRAME: self.frame(), self.mech.drive.link: self.crank(phi_rad)}
-        for solver in self.solvers:
-            solver.positions(m, branches.get(solver.group.name, 1))
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            for solver in self.solvers[:upto]:
+                if margins is not None:
+                    margins.append(solver.margin(m))
+                solver.positions(m, branches.get(solver.group.name, 1))
         return m
 
     def sweep(self, phi1_deg: np.ndarray) -> Sweep:
@@ -429,67 +438,10 @@ class Chain:
 
     # --- assembly branches ------------------------------------------------------------
     def choose_branches(self) -> None:
-        """Sketch first (least squares at the sketch's crank angle), else the
-        documented rule: for each group in order, +1 then -1, the first branch
-        that assembles over the whole turn; failing that, the one that
-        assembles at more angles."""
-        mech = self.mech
-        notes = []
-        sketch_phi = None
-        if mech.crank_pin in mech.sketch:
-            A = complex(*mech.sketch[mech.crank_pin])
-            sketch_phi = np.array([math.atan2((A - self.O).imag, (A - self.O).real)])
-        grid = np.linspace(0, 2 * np.pi, BRANCH_GRID, endpoint=False)
-        for solver in self.solvers:
-            name = solver.group.name
-            if not solver.has_branches:
-                continue
-            choice = None
-            if sketch_phi is not None:
-                choice = self._branch_by_sketch(solver, sketch_phi)
-                if choice is not None:
-                    notes.append(f"group {name}: branch {choice:+d} (nearest to the sketch)")
-            if choice is None:
-                counts = {}
-                for sign in (1, -1):
-                    trial = dict(self.branches, **{name: sign})
-                    m = self.place_all(grid, trial)
-                    counts[sign] = int(np.sum(np.isfinite(m[solver.L1].o) & np.isfinite(m[solver.L2].o)))
-                    if counts[sign] == len(grid):
-                        break
-                choice = max(counts, key=lambda s: (counts[s], s))
-                whole = "assembles over the whole turn" if counts[choice] == len(grid) else (
-                    f"assembles at {counts[choice]} of {len(grid)} angles")
-                notes.append(f"group {name}: branch {choice:+d} ({_branch_meaning(solver, choice)}; "
-                             f"{whole})")
-            self.branches[name] = choice
-        self.branch_note = "; ".join(notes)
+        """The branch of every group (kinematics/branches.py: the sketch, else a
+        combination that assembles over the whole turn, by a documented rule)."""
+        from .branches import choose
 
-    def _branch_by_sketch(self, solver: DyadSolver, phi: np.ndarray) -> int | None:
-        mech = self.mech
-        names = [p for lid in (solver.L1, solver.L2)
-                 for p in mech.links[lid].points if p in mech.sketch]
-        if not names:
-            return None
-        best = None
-        for sign in (1, -1):
-            m = self.place_all(phi, dict(self.branches, **{solver.group.name: sign}))
-            err = 0.0
-            for p in names:
-                lid = solver.L1 if p in mech.links[solver.L1].points else solver.L2
-                local = complex(*mech.links[lid].points[p])
-                err += abs(m[lid].at(local)[0] - complex(*mech.sketch[p])) ** 2
-            if np.isfinite(err) and (best is None or err < best[0]):
-                best = (err, sign)
-        return None if best is None else best[1]
-
-
-def _branch_meaning(solver: DyadSolver, sign: int) -> str:
-    side = "left" if sign > 0 else "right"
-    if solver.kind == "RRR":
-        a, b, c = solver.outer1.point, solver.inner.point, solver.outer2.point
-        return f"{b} to the {side} of {a}->{c}"
-    if solver.kind == "RRP":
-        b = solver.inner.point
-        return f"{b} at the {'far' if sign > 0 else 'near'} intersection along the guide"
-    return f"guide of link {solver.inner.guide} turned {'+' if sign > 0 else '-'}"
+        self.choice = choose(self)
+        self.branches = dict(self.choice.signs)
+        self.branch_note = self.choice.note

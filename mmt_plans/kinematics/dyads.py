@@ -236,6 +236,21 @@ class DyadSolver:
     def failure(self, m: dict, i: int, phi: float) -> str:  # pragma: no cover
         raise NotImplementedError
 
+    def margin(self, m: dict):  # pragma: no cover - abstract
+        """How far the group is from failing to assemble, over the angles:
+        positive where it assembles, zero at a limit position (a toggle),
+        negative where it cannot (a length in m, or the sine of the angle
+        between two guides)."""
+        raise NotImplementedError
+
+    def cure(self, m: dict, bad) -> str:
+        """What to change so that the group assembles at the angles `bad`
+        (a mask over the angles of `m`)."""
+        return "change the lengths of the group's links"
+
+    def branch_meaning(self, sign: int) -> str:
+        return "one configuration"
+
     # --- the plans ---------------------------------------------------------------
     def plan(self, m: dict, place: bool = True) -> GroupPlan:
         """Solve the group's velocity and acceleration plan, then (`place`) give
@@ -310,6 +325,36 @@ class RRR(DyadSolver):
         return (f"links {self.L1} and {self.L2} cannot close: |{a}{c}| = {d:.6g} m < "
                 f"|l{self.L1} - l{self.L2}| = {abs(l1 - l2):.6g} m")
 
+    def _reach(self, m):
+        a, b, c = self.outer1.point, self.inner.point, self.outer2.point
+        A = m[self.K1].at(self.loc(self.K1, a))
+        C = m[self.K2].at(self.loc(self.K2, c))
+        l1 = abs(self.loc(self.L1, b) - self.loc(self.L1, a))
+        l2 = abs(self.loc(self.L2, b) - self.loc(self.L2, c))
+        return np.abs(C - A), l1, l2
+
+    def margin(self, m):
+        d, l1, l2 = self._reach(m)
+        return np.minimum(l1 + l2 - d, d - abs(l1 - l2))
+
+    def cure(self, m, bad):
+        d, l1, l2 = self._reach(m)
+        d = np.broadcast_to(d, np.shape(bad))[bad]
+        a, c = self.outer1.point, self.outer2.point
+        L1, L2 = self.L1, self.L2
+        cures = []
+        if d.size and float(np.nanmax(d)) > l1 + l2:
+            cures.append(f"make l{L1} + l{L2} at least max |{a}{c}| = {float(np.nanmax(d)):.6g} m "
+                         f"(now {l1 + l2:.6g} m)")
+        if d.size and float(np.nanmin(d)) < abs(l1 - l2):
+            cures.append(f"make |l{L1} - l{L2}| at most min |{a}{c}| = {float(np.nanmin(d)):.6g} m "
+                         f"(now {abs(l1 - l2):.6g} m)")
+        return " and ".join(cures) or super().cure(m, bad)
+
+    def branch_meaning(self, sign):
+        a, b, c = self.outer1.point, self.inner.point, self.outer2.point
+        return f"{b} to the {'left' if sign > 0 else 'right'} of {a}->{c}"
+
 
 class RRP(DyadSolver):
     has_branches = True
@@ -352,6 +397,30 @@ class RRP(DyadSolver):
         dist = abs(cross(u, A - P0))
         return (f"link {self.L1} (l = {l1:.6g} m) cannot reach the guide of link {self.L2}: "
                 f"{b}'s line is {dist:.6g} m from {a}")
+
+    def _reach(self, m):
+        a, b = self.outer1.point, self.inner.point
+        A = m[self.K1].at(self.loc(self.K1, a))
+        l1 = abs(self.loc(self.L1, b) - self.loc(self.L1, a))
+        P0, u = self.prism_line(self.outer2, m, self.L2, self.loc(self.L2, b), m[self.K2].e)
+        return np.abs(cross(u, A - P0)), l1
+
+    def margin(self, m):
+        dist, l1 = self._reach(m)
+        return l1 - dist
+
+    def cure(self, m, bad):
+        dist, l1 = self._reach(m)
+        dist = np.broadcast_to(dist, np.shape(bad))[bad]
+        if dist.size:
+            return (f"make l{self.L1} at least the greatest distance of {self.outer1.point} from "
+                    f"{self.inner.point}'s line, {float(np.nanmax(dist)):.6g} m (now {l1:.6g} m), "
+                    "or move the guide closer")
+        return super().cure(m, bad)
+
+    def branch_meaning(self, sign):
+        return (f"{self.inner.point} at the {'far' if sign > 0 else 'near'} intersection "
+                "along the guide")
 
 
 class RPR(DyadSolver):
@@ -413,6 +482,21 @@ class RPR(DyadSolver):
         return (f"the guide of link {g} passes {abs(offset):.6g} m from link {s}'s point, "
                 f"but the pivots are only {w:.6g} m apart")
 
+    def margin(self, m):
+        s, g, Ps, Pg, ps, pg, d, offset = self._parts(m)
+        return np.abs(Ps - Pg) - abs(offset)
+
+    def cure(self, m, bad):
+        s, g, Ps, Pg, ps, pg, d, offset = self._parts(m)
+        w = np.broadcast_to(np.abs(Ps - Pg), np.shape(bad))[bad]
+        if w.size:
+            return (f"make the offset of link {g}'s guide at most the least distance of the "
+                    f"pivots, {float(np.nanmin(w)):.6g} m (now {abs(offset):.6g} m)")
+        return super().cure(m, bad)
+
+    def branch_meaning(self, sign):
+        return f"guide of link {self.inner.guide} turned {'+' if sign > 0 else '-'}arcsin"
+
 
 class PRP(DyadSolver):
     def positions(self, m, sign):
@@ -443,6 +527,14 @@ class PRP(DyadSolver):
     def failure(self, m, i, phi):
         return f"the guides of links {self.L1} and {self.L2} are parallel"
 
+    def margin(self, m):
+        u1 = m[self.K1].e * complex(*self.outer1.direction)
+        u2 = m[self.K2].e * complex(*self.outer2.direction)
+        return np.abs(cross(u1, u2))
+
+    def cure(self, m, bad):
+        return f"turn the guides of links {self.L1} and {self.L2} so that they never run parallel"
+
 
 class RPP(DyadSolver):
     def positions(self, m, sign):
@@ -472,6 +564,13 @@ class RPP(DyadSolver):
 
     def failure(self, m, i, phi):
         return f"the guides of link {self.L2} are parallel"
+
+    def margin(self, m):
+        e = m[self.K2].e
+        return np.abs(cross(e * complex(*self.inner.direction), e * complex(*self.outer2.direction)))
+
+    def cure(self, m, bad):
+        return f"turn the guides of link {self.L2} so that they are not parallel"
 
 
 SOLVERS: dict[str, type[DyadSolver]] = {"RRR": RRR, "RRP": RRP, "RPR": RPR, "PRP": PRP, "RPP": RPP}

@@ -399,6 +399,8 @@ class _Writer:
         self.text(w["mu_l"].format(oa=self.n(oa)))
         self.eq(f"μ_l = l_{{OA}}/OA = {self.n(l_oa)}/{self.n(oa)} = {self.n(mu_l)} {u['m/mm']}")
         try:
+            if a.extremes is None:
+                raise MmtError("the output has no extreme position in the range analysed")
             lo, hi = a.extremes
             self.text(w["extremes"].format(out=self.mech.study.output, lo=self.n(lo, 6),
                                            hi=self.n(hi, 6), span=self.n(a.working_span_deg, 6)))

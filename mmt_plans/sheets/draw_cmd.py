@@ -27,13 +27,17 @@ def _formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[st
               help="Comma-separated: svg, pdf, png.")
 @click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
 @click.option("--sheet", type=click.Choice(["1", "2", "all"]), default="all", show_default=True)
+@click.option("--partial-turn", is_flag=True,
+              help="A crank that cannot make a whole turn: draw the range where it assembles.")
 @reports_errors
-def draw(file: Path, out_dir: Path, formats: tuple[str, ...], lang: str, sheet: str) -> None:
+def draw(file: Path, out_dir: Path, formats: tuple[str, ...], lang: str, sheet: str,
+         partial_turn: bool) -> None:
     """Draw the A1 sheets of FILE."""
     from .. import load
     from .compose import available_sheets, write_sheets
 
-    analysis = load(file).analyze()
+    mech = load(file)
+    analysis = (mech.with_partial_turn() if partial_turn else mech).analyze()
     numbers = sorted(available_sheets()) if sheet == "all" else [int(sheet)]
     for path in write_sheets(analysis, out_dir, formats, lang, numbers):  # type: ignore[arg-type]
         click.echo(f"written {path}")

@@ -308,6 +308,9 @@ class _Drawing:
         for f in fa.loads.production_resistance:
             if f.link in lids and f.acting:
                 self.force(self.mm(f.point), f.force, f.name, largest)
+            elif f.link in lids and f.at_rest:
+                # acts = "always" on a point at rest: the resistance is zero here
+                self.later(self.mm(f.point), f"{force_markup(f.name)} = 0", np.array([0.0, 1.0]))
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
         self.labels.write_later()

@@ -54,9 +54,8 @@ def own_loads(mech, sweep, k: int, stroke: str) -> dict[int, list[Load]]:
             d, acting = -wd, stroke == "working"
         elif abs(V) > 1e-12 * abs(c(sweep.v[mech.crank_pin][k])):
             d, acting = -V / abs(V), True
-        else:  # at rest: against the motion about to start, along the acceleration
-            a = complex(state.acc(state.at(local))[k])
-            d, acting = -a / abs(a), True
+        else:  # at rest: a resistance opposing the motion is zero (SPEC_FORMAT)
+            d, acting = 0j, False
         out[f.link].append(Load(f.magnitude * d if acting else 0j, P, 0.0, f.link))
     return out
 

@@ -100,13 +100,14 @@ def test_always_opposes_the_velocity():
     for pos in a.positions:
         k = a.entry(pos.index)
         (f,) = loads_at(a, k).production_resistance
-        V, acc = c(a.sweep.v["B"][k]), c(a.sweep.a["B"][k])
+        V = c(a.sweep.v["B"][k])
         F = c(f.force)
-        assert f.acting and abs(F) == pytest.approx(150.0)
         if abs(V) > 1e-9:
+            assert f.acting and not f.at_rest and abs(F) == pytest.approx(150.0)
             assert abs(F + 150.0 * V / abs(V)) < 1e-9
-        else:  # an extreme position of the rocker: against the motion about to start
-            assert abs(F + 150.0 * acc / abs(acc)) < 1e-9
+        else:  # an extreme position of the rocker: B stops, the resistance is zero (SPEC_FORMAT)
+            assert pos.index == 0
+            assert not f.acting and f.at_rest and F == 0
 
 
 FIXED = """
@@ -148,8 +149,14 @@ direction = [0, -1]
 """
 
 
-@pytest.mark.parametrize("acts, idle_acts", [("", True), ('acts = "always"', True),
-                                             ('acts = "working"', False)])
+def test_fixed_direction_against_the_motion_is_refused():
+    # SPEC_FORMAT: `direction` together with acts = "always" is an error
+    with pytest.raises(mmt_plans.SpecError) as err:
+        mmt_plans.loads(FIXED % 'acts = "always"')
+    assert "force[1].acts" in str(err.value) and "fix:" in str(err.value)
+
+
+@pytest.mark.parametrize("acts, idle_acts", [("", True), ('acts = "working"', False)])
 def test_fixed_direction(acts, idle_acts):
     a = mmt_plans.loads(FIXED % acts).analyze()
     for pos in a.positions:
@@ -210,18 +217,20 @@ def test_errors_are_clear(press):
     at_rest = PRESS.read_text().replace('at = "E"', 'at = "E"\ndirection = [1, 0]')
     assert force_analysis(mmt_plans.loads(at_rest).analyze()).loads.production_resistance[0].rule \
         == "fixed"
-    # a force against the motion of the crank's pivot, which never moves
+    # a force against the motion of the crank's pivot, which never moves: always at rest, zero
     pivot = FOUR_BAR.read_text().replace('link = 3\nat = "B"', 'link = 1\nat = "O"')
     assert 'at = "O"' in pivot
-    with pytest.raises(ForceError, match="F_PR") as err:
-        force_analysis(mmt_plans.loads(pivot).analyze())
-    assert "fix:" in str(err.value) and "phi1" in str(err.value)
+    (f,) = force_analysis(mmt_plans.loads(pivot).analyze()).loads.production_resistance
+    assert f.at_rest and not f.acting and not f.force.any()
 
 
 def test_a_position_that_does_not_assemble():
     """A crank too long for the four-bar cannot turn: at an angle where the
     group does not assemble, the kinematics' own error comes through."""
-    mech = mmt_plans.loads(FOUR_BAR.read_text().replace("A = [80, 0]", "A = [200, 0]"))
+    text = FOUR_BAR.read_text().replace("A = [80, 0]", "A = [200, 0]")
+    with pytest.raises(MmtError, match="cannot make a whole turn"):
+        mmt_plans.loads(text).analyze().positions
+    mech = mmt_plans.loads(text.replace("[study]", "[study]\npartial_turn = true"))
     an = mech.analyze()
     bad = next(phi for phi in np.arange(0.0, 360.0, 5.0)
                if an.chain.sweep(np.array([phi])).problem(0) is not None)

@@ -169,19 +169,42 @@ def test_lengths_at_micrometre_resolution_keep_their_value():
     assert abs(B.imag - 0.012345) < 1e-17
 
 
-def test_rocker_rocker_says_which_crank_angles_work():
+def test_rocker_rocker_is_refused_with_the_crank_angles_that_work():
     # r = 200, d = 300, l = 150, c = 240: |AC| ≤ l + c = 390 needs
-    # cos φ ≥ (200² + 300² - 390²) / (2·200·300) = -0.18416…, i.e. |φ| ≤ 100.6116…°
+    # cos φ ≥ (200² + 300² - 390²) / (2·200·300) = -0.18416…, i.e. |φ| ≤ 100.6126…°
     mech = mmt_plans.loads(four_bar_toml(200, 300, 150, 240, rpm=30))
-    analysis = mech.analyze()
     edge = math.degrees(math.acos((200**2 + 300**2 - 390**2) / (2 * 200 * 300)))
-    (start, end), = analysis.assembly_ranges
+    with pytest.raises(mmt_plans.errors.PartialTurnError) as err:
+        mech.analyze().positions
+    (start, end), = err.value.ranges
     assert start == pytest.approx(360 - edge, abs=1e-8)
     assert end == pytest.approx(edge, abs=1e-8)
+    text = str(err.value)
+    assert f"{360 - edge:.6g}°…{edge:.6g}°" in text
+    assert "group 2-3" in text and "cannot reach" in text and "partial_turn = true" in text
+
+
+def test_rocker_rocker_opted_in_analyses_the_range_without_fake_extremes():
+    mech = mmt_plans.loads(four_bar_toml(200, 300, 150, 240, rpm=30,
+                                         extra="").replace("[study]", "[study]\npartial_turn = true"))
+    analysis = mech.analyze()
+    edge = math.degrees(math.acos((200**2 + 300**2 - 390**2) / (2 * 200 * 300)))
+    first, last = analysis.limits  # counter-clockwise crank: from 360 - edge to edge
+    assert first == pytest.approx(360 - edge, abs=1e-8) and last == pytest.approx(edge, abs=1e-8)
+    phis = [p.phi1_deg for p in analysis.positions]
+    ahead = [(phi - first) % 360.0 for phi in phis]
+    span = (last - first) % 360.0
+    # every position strictly inside the range, none at a limit of assembly
+    assert all(0.0 < a < span for a in ahead)
     results = analysis.to_json()
     json.dumps(results, allow_nan=False)  # never inf or NaN
-    bad = [p for p in results["kinematics"] if "problem" in p]
-    good = [p for p in results["kinematics"] if "problem" not in p]
-    assert bad and good
-    assert all("cannot reach" in p["problem"] for p in bad)
+    assert all("problem" not in p for p in results["kinematics"])
+    assert results["limits_of_assembly_deg"] == [pytest.approx(first), pytest.approx(last)]
     assert "problem" in results["diagrams"]
+    # an extreme position, if any is named, is a zero of the output's velocity, not a limit
+    if analysis.extremes is not None:
+        for phi in analysis.extremes:
+            assert abs((phi - first) % 360.0) > 1e-6 and abs((phi - last) % 360.0) > 1e-6
+            sw = mech.sweep([phi]).check()
+            v = sw.v["B"][0] @ np.asarray(mech.study.working_direction)
+            assert abs(v) <= 1e-12 * np.abs(analysis.sweep.v["B"]).max()

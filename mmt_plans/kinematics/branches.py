@@ -1,0 +1,364 @@
+"""Assembly branches: which of its two closed-form solutions each group takes.
+
+A dyad of kind RRR, RRP or RPR closes in two ways (B left or right of A→C,
+the far or the near intersection with the guide, the slot turned by +arcsin
+or −arcsin); its branch is a sign kept for the whole turn. A combination of
+signs, one per group, assembles over the whole turn when every group's
+margin (`DyadSolver.margin`: positive where it closes, zero at a toggle) stays
+non-negative at every crank angle.
+
+The search (SPEC_FORMAT, "Assembly branch"): depth first over the groups in
+the order they are solved, +1 before −1, a branch pruned as soon as its group
+fails at some angle of a 720-angle grid or at a local minimum of its margin
+refined between the grid angles (so that a toggle passed between two grid
+angles is not missed). Every combination that assembles over the whole turn
+is found; one is chosen by
+
+- the sketch, when the file gives one (least squares at the sketch's crank
+  angle, group by group);
+- otherwise, when the file's link coordinates are drawn in place (every
+  pivot written with the frame's coordinates), the combination whose points
+  at the crank angle of the drawing lie nearest to those coordinates;
+- otherwise the first in branch order (+1 before −1, group by group).
+
+When no combination turns fully, the one that assembles over the most of the
+turn is kept (the sketched one, when there is a sketch), with its crank-angle
+ranges; the caller refuses it or, when the file opts in, analyses one range.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Literal, Mapping
+
+import numpy as np
+
+from ..model import FRAME
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .chain import Chain
+
+GRID = 720
+# a margin this far below zero (relative to the mechanism's size) is rounding
+# at a toggle, not a failure to assemble
+TOLERANCE = 1e-11
+EDGE_DEG = 1e-10  # crank angles of the ends of an assembly range, to this
+
+Rule = Literal["sketch", "as drawn", "branch order", "only one", "no branches"]
+Signs = tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class Branches:
+    """The branch of every group and how it was chosen."""
+
+    signs: Mapping[str, int]  # group name -> +1 / -1 (+1 for a group without branches)
+    rule: Rule
+    full_turn: tuple[Mapping[str, int], ...]  # every combination that turns fully
+    ranges: tuple[tuple[float, float], ...]  # where the chosen combination assembles (deg, ccw)
+    meanings: Mapping[str, str] = field(default_factory=dict)  # group -> what its sign means
+    failing_group: str | None = None  # the group that stops a partial turn
+    failing_reason: str = ""  # why, at an angle where it fails
+    cure: str = ""  # what to change
+    sketch_turns: bool | None = None  # with a sketch: does the sketched combination turn?
+
+    @property
+    def whole_turn(self) -> bool:
+        return self.ranges == ((0.0, 360.0),)
+
+    @property
+    def note(self) -> str:
+        """One line for the text output."""
+        groups = "; ".join(f"group {g}: {s:+d} ({self.meanings.get(g, '')})"
+                           for g, s in self.signs.items() if g in self.meanings)
+        count = len(self.full_turn)
+        rule = {"sketch": "nearest to the sketch",
+                "as drawn": "nearest to the file's coordinates as drawn",
+                "branch order": "the first in branch order (+1 before -1, group by group)",
+                "only one": "the only one",
+                "no branches": "no group has branches"}[self.rule]
+        turns = (f"{count} combination{'s' if count != 1 else ''} of branches assemble"
+                 f"{'s' if count == 1 else ''} over the whole turn")
+        out = f"{groups + '; ' if groups else ''}chosen: {rule}; {turns}"
+        if self.rule == "sketch" and self.sketch_turns is False:
+            out += "; the sketched combination does not turn fully"
+        return out
+
+    def to_json(self) -> dict:
+        return {
+            "groups": dict(self.signs),
+            "meaning": dict(self.meanings),
+            "rule": self.rule,
+            "full_turn_combinations": len(self.full_turn),
+            "full_turn": [dict(c) for c in self.full_turn],
+            "whole_turn": self.whole_turn,
+            "assembly_ranges_deg": [list(r) for r in self.ranges],
+            "note": self.note,
+        }
+
+
+def choose(chain: "Chain") -> Branches:
+    """Search the combinations of branches and choose one (module docstring)."""
+    search = _Search(chain)
+    names = [s.group.name for s in chain.solvers]
+    branchy = [s.group.name for s in chain.solvers if s.has_branches]
+    full = search.full_turn()
+    sketched = search.by_sketch()
+    if sketched is not None:
+        signs, rule = sketched, "sketch"
+        turns = signs in full
+    elif not branchy:
+        signs, rule, turns = full[0] if full else (1,) * len(names), "no branches", bool(full)
+    elif len(full) == 1:
+        signs, rule, turns = full[0], "only one", True
+    elif full and search.drawn_in_place():
+        signs, rule, turns = search.nearest_drawing(full), "as drawn", True
+    elif full:
+        signs, rule, turns = full[0], "branch order", True
+    else:
+        signs, rule, turns = search.most_assembled(), "branch order", False
+    ranges = ((0.0, 360.0),) if turns else search.ranges(signs)
+    failing, reason, cure = (None, "", "") if turns else search.failure(signs)
+    meanings = {s.group.name: s.branch_meaning(sign)
+                for s, sign in zip(chain.solvers, signs) if s.has_branches}
+    return Branches(
+        signs=dict(zip(names, signs)), rule=rule,  # type: ignore[arg-type]
+        full_turn=tuple(dict(zip(names, c)) for c in full), ranges=ranges, meanings=meanings,
+        failing_group=failing, failing_reason=reason, cure=cure,
+        sketch_turns=turns if rule == "sketch" else None)
+
+
+class _Search:
+    def __init__(self, chain: "Chain") -> None:
+        self.chain = chain
+        self.solvers = chain.solvers
+        self.names = [s.group.name for s in chain.solvers]
+        self.grid = np.linspace(0.0, 2 * np.pi, GRID, endpoint=False)
+        mech = chain.mech
+        sizes = [float(np.hypot(*p)) for link in mech.links.values() for p in link.points.values()]
+        sizes += [float(np.hypot(*p)) for p in mech.frame.values()]
+        self.tol = TOLERANCE * max(sizes + [1e-3])
+
+    # --- margins -------------------------------------------------------------------
+    def margins(self, phi: np.ndarray, signs: Signs) -> list[np.ndarray]:
+        """Each group's margin at the angles `phi` (rad) with the branches `signs`
+        (the first len(signs) groups), NaN where an earlier group failed."""
+        margins: list[np.ndarray] = []
+        self.chain.place(phi, dict(zip(self.names, signs)), upto=len(signs), margins=margins)
+        return [np.broadcast_to(np.asarray(g, dtype=float), phi.shape) for g in margins]
+
+    def _refined_minima(self, k: int, signs: Signs, grid_margin: np.ndarray
+                        ) -> tuple[np.ndarray, np.ndarray]:
+        """The angles (rad) and margins of group k's local minima between grid
+        angles, found by golden-section search on each bracket [φ_i−1, φ_i+1]."""
+        g = grid_margin
+        if not np.all(np.isfinite(g)) or float(np.ptp(g)) <= self.tol:
+            return np.empty(0), np.empty(0)
+        prev, nxt = np.roll(g, 1), np.roll(g, -1)
+        # A smooth margin dips below its lowest grid value by about a quarter
+        # of its second difference there: only minima that could reach zero
+        # are refined.
+        dip = np.abs(prev - 2 * g + nxt)
+        idx = np.flatnonzero((g <= prev) & (g <= nxt) & ((g < prev) | (g < nxt))
+                             & (g <= 2.0 * dip + self.tol))
+        if not idx.size:
+            return np.empty(0), np.empty(0)
+        step = self.grid[1] - self.grid[0]
+        a, b = self.grid[idx] - step, self.grid[idx] + step
+        r = (math.sqrt(5.0) - 1.0) / 2.0
+        c, d = b - r * (b - a), a + r * (b - a)
+        fc, fd = self.margins(c, signs)[k], self.margins(d, signs)[k]
+        for _ in range(48):  # the bracket shrinks to 0.618^48 of 1° (1e-10°)
+            if np.any(np.minimum(fc, fd) < -self.tol):
+                break  # it fails: how far below zero does not matter
+            left = ~(fc > fd)  # NaN (fails) at c counts as the lower value
+            b = np.where(left, d, b)
+            a = np.where(left, a, c)
+            c, d = b - r * (b - a), a + r * (b - a)
+            fc, fd = self.margins(c, signs)[k], self.margins(d, signs)[k]
+        best = np.where(np.isnan(fc) | (fc <= fd), c, d)
+        return best, self.margins(best, signs)[k]
+
+    def group_turns(self, k: int, signs: Signs) -> bool:
+        g = self.margins(self.grid, signs)[k]
+        if not np.all(g >= -self.tol):  # NaN fails as well
+            return False
+        _, m = self._refined_minima(k, signs, g)
+        return bool(np.all(m >= -self.tol))
+
+    # --- the search ----------------------------------------------------------------
+    def full_turn(self) -> list[Signs]:
+        found: list[Signs] = []
+
+        def deeper(signs: Signs) -> None:
+            k = len(signs)
+            if k == len(self.solvers):
+                found.append(signs)
+                return
+            for sign in ((1, -1) if self.solvers[k].has_branches else (1,)):
+                trial = signs + (sign,)
+                if self.group_turns(k, trial):
+                    deeper(trial)
+
+        deeper(())
+        return found
+
+    def all_combinations(self) -> list[Signs]:
+        options = [(1, -1) if s.has_branches else (1,) for s in self.solvers]
+        return list(itertools.product(*options))
+
+    def most_assembled(self) -> Signs:
+        """The combination that assembles at the most grid angles (the first on a tie)."""
+        best: tuple[int, Signs] | None = None
+        for signs in self.all_combinations():
+            count = int(np.sum(self.ok(self.grid, signs)))
+            if best is None or count > best[0]:
+                best = (count, signs)
+        assert best is not None
+        return best[1]
+
+    def ok(self, phi: np.ndarray, signs: Signs) -> np.ndarray:
+        ok = np.ones(phi.shape, dtype=bool)
+        for g in self.margins(phi, signs):
+            ok &= g >= -self.tol
+        return ok
+
+    # --- choosing --------------------------------------------------------------------
+    def by_sketch(self) -> Signs | None:
+        """Group by group, the branch nearest to the sketch at its crank angle
+        (None without a sketch of the crank pin)."""
+        mech = self.chain.mech
+        if mech.crank_pin not in mech.sketch:
+            return None
+        A = complex(*mech.sketch[mech.crank_pin])
+        O = self.chain.O
+        phi = np.array([math.atan2((A - O).imag, (A - O).real)])
+        signs: Signs = ()
+        for solver in self.solvers:
+            names = [p for lid in (solver.L1, solver.L2)
+                     for p in mech.links[lid].points if p in mech.sketch]
+            choice = 1
+            if solver.has_branches and names:
+                best = None
+                for sign in (1, -1):
+                    err = self._distance(phi, signs + (sign,), names, mech.sketch)
+                    if math.isfinite(err) and (best is None or err < best[0]):
+                        best = (err, sign)
+                choice = 1 if best is None else best[1]
+            signs += (choice,)
+        return signs
+
+    def _distance(self, phi: np.ndarray, signs: Signs, names: list[str],
+                  target: Mapping[str, np.ndarray]) -> float:
+        m = self.chain.place(phi, dict(zip(self.names, signs)), upto=len(signs))
+        err = 0.0
+        for p in names:
+            lid, local = self.chain.locate[p]
+            if lid not in m:
+                continue
+            err += abs(complex(np.ravel(m[lid].at(local))[0]) - complex(*target[p])) ** 2
+        return err
+
+    def drawn_in_place(self) -> bool:
+        """Every point is written with the same coordinates in every link that
+        has it and in [frame]: the links are drawn as they stand in one
+        position, and their coordinates are a drawing of the mechanism."""
+        mech = self.chain.mech
+        seen: dict[str, np.ndarray] = dict(mech.frame)
+        shared = 0
+        for link in mech.links.values():
+            for p, xy in link.points.items():
+                if p in seen:
+                    shared += 1
+                    if float(np.hypot(*(xy - seen[p]))) > 1e-9:
+                        return False
+                else:
+                    seen[p] = xy
+        return shared > 0
+
+    def nearest_drawing(self, candidates: list[Signs]) -> Signs:
+        """The combination whose points, at the crank angle of the drawing, lie
+        nearest (least squares) to the links' own coordinates."""
+        mech = self.chain.mech
+        crank = mech.links[mech.drive.link]
+        d = crank.points[mech.crank_pin] - crank.points[mech.crank_pivot]
+        phi = np.array([math.atan2(d[1], d[0])])
+        drawn = {p: xy for link in mech.links.values() for p, xy in link.points.items()
+                 if self.chain.locate[p][0] != FRAME}
+        names = sorted(drawn)
+        scored = [(self._distance(phi, c, names, drawn), i, c) for i, c in enumerate(candidates)]
+        scale = min(s for s, _, _ in scored) if scored else 0.0
+        # equal within rounding: the branch order decides
+        return min(scored, key=lambda t: (round(t[0] / max(scale, 1e-300), 9)
+                                          if math.isfinite(t[0]) else math.inf, t[1]))[2]
+
+    # --- a partial turn --------------------------------------------------------------
+    def ranges(self, signs: Signs) -> tuple[tuple[float, float], ...]:
+        """Crank-angle intervals (deg, counter-clockwise from start to end) where
+        every group assembles with `signs`, ends to EDGE_DEG by bisection."""
+        margins = self.margins(self.grid, signs)
+        phi = list(self.grid)
+        ok = list(self.ok(self.grid, signs))
+        for k, g in enumerate(margins):  # failures hidden between grid angles
+            at, m = self._refined_minima(k, signs, np.where(np.isfinite(g), g, np.inf))
+            for x, v in zip(at, m):
+                if not v >= -self.tol:
+                    phi.append(float(x) % (2 * np.pi))
+                    ok.append(False)
+        order = np.argsort(phi, kind="stable")
+        phi_s = np.degrees(np.asarray(phi)[order])
+        ok_s = np.asarray(ok)[order]
+        if ok_s.all():
+            return ((0.0, 360.0),)
+        if not ok_s.any():
+            return ()
+        n = len(phi_s)
+        out = []
+        for i in range(n):
+            if ok_s[i] and not ok_s[i - 1]:
+                j = i
+                while ok_s[(j + 1) % n]:
+                    j += 1
+                start = self._edge(phi_s[i - 1] - (360.0 if i == 0 else 0.0), phi_s[i], signs)
+                jj = j % n
+                after = phi_s[(jj + 1) % n] + (360.0 if jj + 1 >= n else 0.0)
+                end = self._edge(after, phi_s[jj], signs)
+                out.append((float(start % 360.0), float(end % 360.0)))
+        return tuple(out)
+
+    def _edge(self, bad: float, good: float, signs: Signs) -> float:
+        for _ in range(80):
+            if abs(good - bad) < EDGE_DEG:
+                break
+            mid = 0.5 * (bad + good)
+            if self.ok(np.radians(np.array([mid])), signs)[0]:
+                good = mid
+            else:
+                bad = mid
+        return good
+
+    def failure(self, signs: Signs) -> tuple[str, str, str]:
+        """The first group that fails somewhere on the grid, why, and the cure."""
+        margins = self.margins(self.grid, signs)
+        for k, g in enumerate(margins):
+            bad = ~(g >= -self.tol)
+            prior_ok = np.ones(bad.shape, dtype=bool)
+            for h in margins[:k]:
+                prior_ok &= h >= -self.tol
+            bad &= prior_ok
+            if bad.any():
+                solver = self.solvers[k]
+                m = self.chain.place(self.grid, dict(zip(self.names, signs)), upto=k)
+                i = int(np.flatnonzero(bad)[0])
+                phi = float(np.degrees(self.grid[i]))
+                return solver.group.name, solver.failure(m, i, phi), solver.cure(m, bad)
+        # only between grid angles: name the group whose refined minimum fails
+        for k in range(len(self.solvers)):
+            _, m_min = self._refined_minima(k, signs, margins[k])
+            if np.any(m_min < -self.tol):
+                solver = self.solvers[k]
+                return (solver.group.name, "it reaches a limit position between grid angles",
+                        "change the lengths of the group's links")
+        return "", "", ""
