@@ -3,14 +3,17 @@ Mechanisms course project, exact and drawn.
 
     >>> import mmt_plans
     >>> mech = mmt_plans.load("samples/six_link_press.toml")
-    >>> mech.structure.formula
+    >>> solution = mmt_plans.solve(mech)
+    >>> solution.structure.formula
     'I(0,1) <- II(2,3) <- II(4,5)'
 """
 
-from .errors import AssemblyError, MmtError, SingularPlanError, SpecError, StructureError
+from .errors import (AssemblyError, MmtError, PartialTurnError, SingularPlanError, SpecError,
+                     StructureError)
 from .model import Mechanism
+from .solution import Solution, solve, sweep
 from .spec import load, loads
 
-__all__ = ["load", "loads", "Mechanism", "MmtError", "SpecError", "StructureError",
-           "AssemblyError", "SingularPlanError"]
+__all__ = ["load", "loads", "solve", "sweep", "Mechanism", "Solution", "MmtError", "SpecError",
+           "StructureError", "AssemblyError", "SingularPlanError", "PartialTurnError"]
 __version__ = "0.1.0"

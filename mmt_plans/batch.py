@@ -22,8 +22,7 @@ from .errors import MmtError
 from .report import table
 
 __all__ = ["BatchError", "FileResult", "find_files", "plan_outputs", "process_file",
-           "run_batch", "summary_rows", "summary_table", "write_summary_csv", "bench_batch",
-           "SUMMARY_HEADERS"]
+           "run_batch", "summary_rows", "summary_table", "write_summary_csv", "SUMMARY_HEADERS"]
 
 SUMMARY_HEADERS = ["file", "status", "W", "class", "F_bal plans N", "F_bal lever N",
                    "discrepancy %", "5 % check", "time s"]
@@ -98,9 +97,11 @@ def process_file(path: str | os.PathLike[str], out_dir: str | os.PathLike[str],
 
     Never raises: an `MmtError` becomes the result's message; anything else
     (a bug) too, named by its type, so one file cannot stop the batch."""
-    from . import load
     from .note import write_note
+    from .results_json import results as results_json
     from .sheets.compose import available_sheets, write_sheets
+    from .solution import solve
+    from .spec import load
 
     t0 = time.perf_counter()
     stages: dict[str, float] = {}
@@ -121,14 +122,14 @@ def process_file(path: str | os.PathLike[str], out_dir: str | os.PathLike[str],
             stages[name] = stages.get(name, 0.0) + time.perf_counter() - t
         return None
 
-    analysis = stage("analysis", lambda: load(path).analyze())
+    analysis = stage("analysis", lambda: solve(load(path)))
     if analysis is None:
         return FileResult(str(path), str(out), False, problems[0],
                           seconds=time.perf_counter() - t0, stages=stages)
     out.mkdir(parents=True, exist_ok=True)
 
     def results() -> None:
-        data = analysis.to_json()
+        data = results_json(analysis)
         target = out / "results.json"
         target.write_text(json.dumps(data, indent=1, allow_nan=False) + "\n", encoding="utf-8")
         written.append(str(target))
@@ -233,46 +234,3 @@ def write_summary_csv(results: Sequence[FileResult], target: str | os.PathLike[s
 
 def failures(results: Sequence[FileResult]) -> Iterator[FileResult]:
     return (r for r in results if not r.ok)
-
-
-# --- benchmark ---------------------------------------------------------------------------
-
-def bench_batch(files: Sequence[Path], repeat: int, echo: Callable[[str], None] = print) -> None:
-    """`mmt-plans bench` section: the batch over samples/tasks/seed003 (sheets,
-    JSON and notes included) on every core, total and per file, and where the
-    time of one file goes. Run once: it takes about a minute."""
-    import tempfile
-
-    base = Path(files[0]).parent if files else Path("samples")
-    tasks_dir = base / "tasks" / "seed003"
-    if not tasks_dir.is_dir():
-        echo(f"Batch: {tasks_dir} not found, skipped")
-        return
-    batch_files = find_files([tasks_dir])
-    jobs = os.cpu_count() or 1
-    with tempfile.TemporaryDirectory() as tmp:
-        t0 = time.perf_counter()
-        results = run_batch(batch_files, tmp, jobs=jobs)
-        total = time.perf_counter() - t0
-    done = sum(r.ok for r in results)
-    worker = [r.seconds for r in results]
-    echo(f"Batch over {tasks_dir} ({len(batch_files)} files, {jobs} processes; sheets "
-         f"{'+'.join(map(str, _sheets()))} SVG+PDF, results.json, note.pdf): {done} done")
-    stage_names = ["analysis", "results", "sheets", "note"]
-    sums = {s: sum(r.stages.get(s, 0.0) for r in results) for s in stage_names}
-    busy = sum(worker)
-    rows = [["total (wall)", f"{total:.2f}", f"{total / len(results) * 1e3:.0f}", ""],
-            ["worker time", f"{busy:.2f}", f"{busy / len(results) * 1e3:.0f}",
-             f"{busy / total:.2f} cores busy"],
-            ["slowest file", f"{max(worker):.2f}", "", Path(max(results, key=lambda r: r.seconds).path).stem]]
-    for s in stage_names:
-        rows.append([f"  {s}", f"{sums[s]:.2f}", f"{sums[s] / len(results) * 1e3:.0f}",
-                     f"{sums[s] / busy * 100:.0f} % of worker time" if busy else ""])
-    echo(table(["batch", "s", "per file ms", "note"], rows))
-    echo("")
-
-
-def _sheets() -> list[int]:
-    from .sheets.compose import available_sheets
-
-    return sorted(available_sheets())

@@ -26,9 +26,9 @@ from .scales import format_number, series
 from .spec import parse_toml, read_text
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .analysis import Analysis
     from .forces import ForceAnalysis
     from .kinematics.plans import PlanView
+    from .solution import Solution
 
 DEFAULT_TOLERANCE_PERCENT = 5.0
 
@@ -213,17 +213,17 @@ def _num(x: float) -> str:
 
 # --- reading the answers file -------------------------------------------------------
 
-def load_answers(path: str | Path, analysis: "Analysis") -> Answers:
+def load_answers(path: str | Path, analysis: "Solution") -> Answers:
     """Read an answers file and check every name in it against the mechanism."""
     return loads_answers(read_text(path), analysis, str(path))
 
 
-def loads_answers(text: str, analysis: "Analysis", path: str = "<string>") -> Answers:
+def loads_answers(text: str, analysis: "Solution", path: str = "<string>") -> Answers:
     return _Reader(path, analysis).answers(parse_toml(text, path))
 
 
 class _Reader:
-    def __init__(self, path: str, analysis: "Analysis") -> None:
+    def __init__(self, path: str, analysis: "Solution") -> None:
         self.path = path
         self.analysis = analysis
         self.exact = Exact(analysis)
@@ -258,7 +258,7 @@ class _Reader:
         return float(value)
 
     def index(self, table: dict, entry: str, default: int | None = None) -> int:
-        n = self.analysis.mech.study.positions
+        n = self.analysis.mechanism.study.positions
         if "index" not in table:
             if default is None:
                 raise self.fail(f"{entry}.index", "is required",
@@ -464,7 +464,7 @@ def _suggest(name: str, allowed: list[str] | tuple[str, ...], what: str) -> str:
 class Exact:
     """The exact value of anything a student may give, from the analysis."""
 
-    def __init__(self, analysis: "Analysis") -> None:
+    def __init__(self, analysis: "Solution") -> None:
         self.analysis = analysis
         self._plans: dict[int, PlanView] = {}
         self._forces: dict[int, ForceAnalysis] = {}
@@ -475,10 +475,8 @@ class Exact:
         return self._plans[index]
 
     def forces(self, index: int) -> "ForceAnalysis":
-        from .forces import force_analysis
-
         if index not in self._forces:
-            self._forces[index] = force_analysis(self.analysis, index=index)
+            self._forces[index] = self.analysis.forces_at(index)
         return self._forces[index]
 
     def value(self, kind: Kind, index: int, name: str, *, signed: bool = False,
@@ -528,7 +526,7 @@ class Exact:
 
 # --- comparing and diagnosing -------------------------------------------------------
 
-def check(analysis: "Analysis", answers: Answers, tolerance_percent: float | None = None,
+def check(analysis: "Solution", answers: Answers, tolerance_percent: float | None = None,
           *, mechanism: str | None = None) -> CheckResult:
     """Every answer against the exact value. The tolerance is `tolerance_percent`,
     else the answers file's, else 5 %."""
@@ -549,15 +547,16 @@ def check(analysis: "Analysis", answers: Answers, tolerance_percent: float | Non
         passed = abs(deviation) <= tol
         causes = () if passed else _diagnose(a, x, tol / 100.0, exact, drawn)
         out.append(CheckedValue(a, x, deviation, passed, causes))
-    return CheckResult(mechanism or str(analysis.mech.path), answers.path, tol, tuple(out))
+    return CheckResult(mechanism or str(analysis.mechanism.path), answers.path, tol, tuple(out))
 
 
 def check_file(mechanism_path: str | Path, answers_path: str | Path,
                tolerance_percent: float | None = None) -> CheckResult:
     """`mmt-plans check FILE ANSWERS` as a function."""
+    from .solution import solve
     from .spec import load
 
-    analysis = load(mechanism_path).analyze()
+    analysis = solve(load(mechanism_path))
     answers = load_answers(answers_path, analysis)
     return check(analysis, answers, tolerance_percent, mechanism=str(mechanism_path))
 

@@ -28,14 +28,13 @@ def main() -> None:
 @reports_errors
 def analyze(file: Path, json_out: Path | None, quiet: bool, partial_turn: bool) -> None:
     """Structural, kinematic (and force) analysis of FILE."""
-    from . import load
     from .report import text_report
+    from .results_json import results as results_json
+    from .solution import solve
+    from .spec import load
 
-    mech = load(file)
-    if partial_turn:
-        mech = mech.with_partial_turn()
-    analysis = mech.analyze()
-    results = analysis.to_json()
+    analysis = solve(load(file), partial_turn=partial_turn)
+    results = results_json(analysis)
     if not quiet:
         click.echo(text_report(analysis))
     if json_out is not None:

@@ -45,6 +45,23 @@ class SingularPlanError(MmtError, ArithmeticError):
         super().__init__(f"at phi1 = {phi1_deg:.10g} deg, the plan of group {group} is singular: {reason}")
 
 
+class ForceError(MmtError, ValueError):
+    """The force analysis cannot be done as asked; the message says why and what to change."""
+
+    def __init__(self, problem: str, fix: str = "", *, phi1_deg: float | None = None,
+                 group: str | None = None) -> None:
+        self.problem, self.fix, self.phi1_deg, self.group = problem, fix, phi1_deg, group
+        where = []
+        if phi1_deg is not None:
+            where.append(f"at phi1 = {phi1_deg:.6g} deg")
+        if group is not None:
+            where.append(f"group {group}")
+        text = (", ".join(where) + ": " if where else "") + problem
+        if fix:
+            text += f"\n  fix: {fix}"
+        super().__init__(text)
+
+
 class UnsupportedError(MmtError, NotImplementedError):
     """Something the file describes correctly that mmt_plans does not solve."""
 

@@ -9,14 +9,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 from functools import cached_property
-from typing import TYPE_CHECKING, Any, Literal, Mapping
+from typing import Any, Literal, Mapping
 
 import numpy as np
-
-if TYPE_CHECKING:  # pragma: no cover
-    from .analysis import Analysis
-    from .kinematics.chain import Sweep
-    from .structure import Structure
 
 Sense = Literal["ccw", "cw"]
 Acts = Literal["working", "always"]
@@ -229,28 +224,3 @@ class Mechanism:
     def crank_length(self) -> float:
         link = self.links[self.drive.link]
         return float(np.linalg.norm(link.points[self.crank_pin] - link.points[self.crank_pivot]))
-
-    @cached_property
-    def structure(self) -> "Structure":
-        from .structure import analyse_structure
-
-        return analyse_structure(self)
-
-    @cached_property
-    def chain(self):  # -> kinematics.chain.Chain
-        """The kinematic chain: crank, then the Assur groups with their branches."""
-        from .kinematics.chain import Chain
-
-        return Chain.build(self)
-
-    def sweep(self, phi1_deg: Any) -> "Sweep":
-        """Positions, velocities and accelerations of every point, ω and ε of
-        every link, over many crank angles at once (numpy arrays, NaN where a
-        group cannot assemble; see `Sweep.check()`)."""
-        return self.chain.sweep(np.asarray(phi1_deg, dtype=float))
-
-    def analyze(self) -> "Analysis":
-        """The full analysis the CLI prints and writes as JSON."""
-        from .analysis import Analysis
-
-        return Analysis(self)

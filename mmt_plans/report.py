@@ -2,11 +2,15 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from .errors import degrees_range
+from .results_json import diagrams_json
 
-from .analysis import Analysis
+from .forces import ForceAnalysis
+from .solution import Solution
 
 
 def table(headers: list[str], rows: list[list[str]]) -> str:
@@ -22,8 +26,8 @@ def num(x: float, digits: int = 6) -> str:
     return f"{x:.{digits}g}"
 
 
-def text_report(analysis: Analysis) -> str:
-    mech = analysis.mech
+def text_report(analysis: Solution) -> str:
+    mech = analysis.mechanism
     st = analysis.structure
     out = [f"{mech.title}", "=" * len(mech.title), "",
            "Structural analysis",
@@ -57,7 +61,7 @@ def text_report(analysis: Analysis) -> str:
                f"forces at {analysis.force_position}")
     out.append("")
     sw = analysis.sweep
-    names = [n for n in mech.chain.locate]
+    names = [n for n in analysis.chain.locate]
     for k, pos in enumerate(analysis.positions):
         label = f"Position {pos.index}" if pos.index is not None else "Extra angle"
         out.append(f"{label}: phi1 = {pos.phi1_deg:.6f} deg, {pos.stroke} stroke")
@@ -83,8 +87,8 @@ def text_report(analysis: Analysis) -> str:
     return "\n".join(out)
 
 
-def diagrams_report(analysis: Analysis) -> list[str]:
-    d = analysis.diagrams_json()
+def diagrams_report(analysis: Solution) -> list[str]:
+    d = diagrams_json(analysis)
     out = [f"Kinematic diagrams of {d['output']} (graphical differentiation) against the plans"]
     if "problem" in d:
         return out + [f"  ! {d['problem']}", ""]
@@ -112,15 +116,57 @@ def diagrams_report(analysis: Analysis) -> list[str]:
     return out
 
 
-def _forces(analysis: Analysis) -> str:
-    """The force analysis at the force position (mmt_plans.forces.text)."""
-    from .errors import MmtError
-    from .forces import force_analysis, text
+def _forces(analysis: Solution) -> str:
+    """The force analysis at the force position."""
+    if analysis.forces is None:
+        return f"Force analysis at position {analysis.force_position}: ! {analysis.forces_problem}"
+    return force_text(analysis.forces)
 
-    try:
-        return text(force_analysis(analysis))
-    except MmtError as err:
-        return f"Force analysis at position {analysis.force_position}: ! {err}"
+
+def force_text(fa: ForceAnalysis) -> str:
+    """Readable tables: loads, reactions per pair, the balancing force by both
+    methods and the discrepancy (what `mmt-plans analyze` prints)."""
+    head = (f"Force analysis at position {fa.index}" if fa.index is not None
+            else "Force analysis")
+    out = [f"{head}: phi1 = {fa.phi1_deg:.6f} deg, {fa.stroke} stroke"]
+    rows = []
+    for lid, ll in fa.loads.links.items():
+        F = ll.inertia_force
+        sh = ll.shifted_inertia_force
+        rows.append([str(lid), _n(ll.mass), _n(ll.J), _n(-ll.weight[1]), _n(F[0]), _n(F[1]),
+                     _n(math.hypot(*F)), _n(ll.inertia_moment),
+                     "-" if sh is None else _n(sh.arm * 1e3),
+                     "-" if sh is None or sh.arm_mm is None else _n(sh.arm_mm)])
+    out.append(_indent(table(["link", "m kg", "J kg*m2", "G N", "F_in x N", "F_in y N",
+                               "|F_in| N", "M_in N*m", "h mm", "h drawn mm"], rows)))
+    if fa.loads.production_resistance:
+        rows = [[f.name, str(f.link), f.at, _n(f.force[0]), _n(f.force[1]),
+                 _n(math.hypot(*f.force)), "yes" if f.acting else "no (idle stroke)"]
+                for f in fa.loads.production_resistance]
+        out.append(_indent(table(["force", "link", "at", "Fx N", "Fy N", "|F| N", "acts"], rows)))
+    for g in fa.groups:
+        out.append(f"  group {g.name} ({g.kind}):")
+        out += [f"    {s}" for s in g.steps]
+    out.append(f"  driving link {fa.driving_link.link}:")
+    out += [f"    {s}" for s in fa.driving_link.steps]
+    rows = []
+    for name, r in fa.reactions.items():
+        rows.append([name, r.pair, _n(r.force[0]), _n(r.force[1]), _n(r.magnitude),
+                     _n(r.point[0] * 1e3), _n(r.point[1] * 1e3),
+                     _n(r.couple) if r.couple else "-"])
+    out.append(_indent(table(["reaction", "pair", "Rx N", "Ry N", "|R| N", "at x mm", "at y mm",
+                               "couple N*m"], rows)))
+    d = fa.discrepancy_percent
+    out.append(f"  balancing force: plans F_bal = {fa.balancing_force_plans:.6g} N, "
+               f"Zhukovsky's lever F_bal = {fa.balancing_force_lever:.6g} N, "
+               f"discrepancy = {'-' if math.isnan(d) else f'{d:.3g}'} % "
+               f"({'driving' if fa.balancing_force_plans >= 0 else 'braking'})")
+    out.append(f"  balancing moment M_bal = {fa.balancing_moment:.6g} N*m")
+    return "\n".join(out)
+
+
+def _n(x: float, digits: int = 6) -> str:
+    return f"{float(x) + 0.0:.{digits}g}"  # + 0.0: no "-0"
 
 
 def _indent(text: str) -> str:

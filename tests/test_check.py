@@ -15,7 +15,7 @@ from click.testing import CliRunner
 import mmt_plans
 from mmt_plans.check import check, load_answers, loads_answers
 from mmt_plans.cli import main
-from mmt_plans.forces import force_analysis
+
 
 ROOT = Path(__file__).resolve().parents[1]
 PRESS = ROOT / "samples" / "six_link_press.toml"
@@ -25,7 +25,7 @@ MU_V, MU_A = 0.02, 0.125  # the scales the "student" states for their plans
 
 @pytest.fixture(scope="module")
 def analysis():
-    return mmt_plans.load(PRESS).analyze()
+    return mmt_plans.solve(mmt_plans.load(PRESS))
 
 
 def size(v) -> float:
@@ -48,7 +48,7 @@ def exact_answers(analysis) -> dict:
             "acceleration_plan_mm": {"pib": size(a["B"]) / MU_A,
                                      "ab": size(a["B"] - a["A"]) / MU_A},
         })
-    fa = force_analysis(analysis, index=2)
+    fa = analysis.forces_at(2)
     forces = {"index": 2, "balancing_force_plans": fa.balancing_force_plans,
               "balancing_force_lever": fa.balancing_force_lever,
               "balancing_moment": fa.balancing_moment,
@@ -220,13 +220,13 @@ def test_another_points_image(analysis):
 
 
 def test_another_pairs_reaction(analysis):
-    r05 = force_analysis(analysis, index=2).reaction(0, 5).magnitude
+    r05 = analysis.forces_at(2).reaction(0, 5).magnitude
     bad = only_failure(spoil(analysis, "forces", "reactions", "R12", lambda r: r05), "R12")
     assert "another pair's reaction: R05" in bad.cause
 
 
 def test_reaction_named_either_way_round(analysis):
-    r = force_analysis(analysis, index=2).reaction(1, 2).magnitude
+    r = analysis.forces_at(2).reaction(1, 2).magnitude
     res = checked(analysis, {"forces": {"reactions": {"R21": r, "R12": r}}})
     assert res.passed and [v.exact for v in res.values] == pytest.approx([r, r])
 

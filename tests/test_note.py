@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import mmt_plans
-from mmt_plans.forces import force_analysis
+
 from mmt_plans.note import draw_note, layout_note, note_content, number, write_note
 from mmt_plans.note.pages import note_page
 from mmt_plans.render.recording import RecordingBackend
@@ -26,7 +26,7 @@ SEED003_ORDER = ["sheet1", "1.1", "1.2", "1.3", "1.4", "1.5", "1.6", "1.7", "1.8
 
 @pytest.fixture(scope="module")
 def press():
-    analysis = mmt_plans.load(PRESS).analyze()
+    analysis = mmt_plans.solve(mmt_plans.load(PRESS))
     return analysis, note_content(analysis, "en")
 
 
@@ -55,7 +55,7 @@ def test_crank_velocity_is_omega_times_length(press):
     text = note.text()
     w1 = math.pi * 100 / 30
     l_oa = 0.2
-    assert analysis.mech.crank_length == pytest.approx(l_oa)
+    assert analysis.mechanism.crank_length == pytest.approx(l_oa)
     assert f"ω_1 = π·n_1/30 = π·100/30 = {number(w1)} rad/s" in text
     assert f"V_A = ω_1·l_OA = {number(w1)}·{number(l_oa)} = {number(w1 * l_oa)} m/s" in text
     assert "2.094 m/s" in text
@@ -77,7 +77,7 @@ def test_plan_numbers_are_the_solvers(press):
 
 def test_balancing_force_by_both_methods(press):
     analysis, note = press
-    fa = force_analysis(analysis)
+    fa = analysis.forces_at()
     text = note.text()
     assert f"= {number(fa.balancing_force_plans)} N" in text
     assert re.search(rf"F_bal\.pl = .* = {re.escape(number(fa.balancing_force_plans))} N", text)
@@ -128,7 +128,7 @@ def _pdf_pages(path: Path) -> int:
 
 
 def test_one_multi_page_pdf(tmp_path):
-    analysis = mmt_plans.load(SMALL).analyze()
+    analysis = mmt_plans.solve(mmt_plans.load(SMALL))
     pages = len(layout_note(note_content(analysis, "uk")))
     target = write_note(analysis, tmp_path / "sub" / "note.pdf", lang="uk")
     assert target.read_bytes().startswith(b"%PDF")
@@ -137,7 +137,7 @@ def test_one_multi_page_pdf(tmp_path):
 
 @pytest.mark.parametrize("path", SAMPLES, ids=lambda p: p.stem)
 def test_every_sample_has_a_note(path):
-    analysis = mmt_plans.load(path).analyze()
+    analysis = mmt_plans.solve(mmt_plans.load(path))
     for lang in ("en", "uk"):
         note = note_content(analysis, lang)  # type: ignore[arg-type]
         assert note.steps[:9] == SEED003_ORDER[:9]

@@ -77,7 +77,7 @@ def test_position_that_cannot_assemble_is_named(tmp_path):
     path = tmp_path / "short.toml"
     path.write_text(text)
     mech = mmt_plans.load(path)
-    sw = mech.sweep([0.0, 90.0, 180.0, 270.0])
+    sw = mmt_plans.sweep(mech, [0.0, 90.0, 180.0, 270.0])
     bad = [k for k in range(4) if not sw.ok[k]]
     assert bad, "the shortened rocker should fail somewhere"
     err = sw.problem(bad[0])

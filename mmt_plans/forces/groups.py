@@ -180,7 +180,7 @@ def solve_groups(loads: Loads) -> tuple[tuple[GroupForces, ...], DrivingLinkForc
     mech = state.mech
     passed: dict[int, list[AppliedForce]] = {}
     results = []
-    for group in reversed(mech.structure.groups):
+    for group in reversed(state.groups):
         if not group.is_dyad or group.kind not in _KINDS:
             raise ForceError(f"group {group.label} of links {group.name} is not a class II group",
                              "only dyads have force plans here", phi1_deg=state.phi1_deg,

@@ -14,16 +14,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Literal, Mapping
+from typing import Literal, Mapping
 
 import numpy as np
 
 from ..model import Force, Stroke
 from .errors import ForceError
-from .state import PositionState, state_at, xy
-
-if TYPE_CHECKING:  # pragma: no cover
-    from ..analysis import Analysis
+from .state import PositionState, xy
 
 ForceRule = Literal["working", "always", "fixed"]
 
@@ -139,12 +136,6 @@ class Loads:
 
     def inertia_moment(self, link: int) -> float:
         return self.links[link].inertia_moment
-
-
-def loads_at(analysis: "Analysis", entry: int | None = None, *, phi1_deg: float | None = None,
-             mu_l: float | None = None) -> Loads:
-    """Loads at entry `entry` of the analysis' positions, or at any crank angle."""
-    return link_loads(state_at(analysis, entry, phi1_deg=phi1_deg), mu_l=mu_l)
 
 
 def link_loads(state: PositionState, mu_l: float | None = None) -> Loads:

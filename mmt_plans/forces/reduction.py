@@ -16,14 +16,13 @@ the crank's own m_1·V_S1² + J_S1·ω1² included.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Mapping, Sequence
+from typing import TYPE_CHECKING, Mapping
 
 import numpy as np
 
-from ..model import Force, Stroke, frozen_array
+from ..model import Force, Mechanism, Stroke, frozen_array
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..analysis import Analysis
     from ..kinematics.chain import Sweep
 
 
@@ -39,33 +38,8 @@ class Reduction:
     reduced_moment_of: Mapping[str, np.ndarray]  # per force
     reduced_inertia: np.ndarray  # J_red, kg·m²
 
-    def to_json(self) -> dict:
-        return {
-            "phi1_deg": _list(self.phi1_deg),
-            "index": list(self.index),
-            "stroke": list(self.stroke),
-            "reduced_moment": _list(self.reduced_moment),
-            "reduced_moment_of": {k: _list(v) for k, v in self.reduced_moment_of.items()},
-            "reduced_inertia": _list(self.reduced_inertia),
-        }
 
-
-def reduction(analysis: "Analysis", phi1_deg: Sequence[float] | np.ndarray | None = None
-              ) -> Reduction:
-    """At the analysis' positions (and extra angles), or at any crank angles."""
-    if phi1_deg is None:
-        sweep = analysis.sweep
-        index = tuple(p.index for p in analysis.positions)
-        stroke = tuple(p.stroke for p in analysis.positions)
-    else:
-        phi = np.atleast_1d(np.asarray(phi1_deg, dtype=float)) % 360.0
-        sweep = analysis.chain.sweep(phi)
-        index = (None,) * len(phi)
-        stroke = tuple(analysis.stroke_of(float(x)) for x in phi)
-    return reduce_sweep(analysis.mech, sweep, index, stroke)
-
-
-def reduce_sweep(mech, sweep: "Sweep", index: tuple[int | None, ...],
+def reduce_sweep(mech: Mechanism, sweep: "Sweep", index: tuple[int | None, ...],
                  stroke: tuple[Stroke, ...]) -> Reduction:
     w1 = mech.drive.omega
     working = np.array([s == "working" for s in stroke], dtype=bool)
@@ -88,7 +62,7 @@ def reduce_sweep(mech, sweep: "Sweep", index: tuple[int | None, ...],
                      per_force, frozen_array(J_red))
 
 
-def production_power(mech, sweep: "Sweep", f: Force, working: np.ndarray) -> np.ndarray:
+def production_power(mech: Mechanism, sweep: "Sweep", f: Force, working: np.ndarray) -> np.ndarray:
     """F·V of a `[[force]]` at every angle (SPEC_FORMAT's acts rules)."""
     state = sweep.links[f.link]
     p = mech.links[f.link].points[f.at]
@@ -104,7 +78,3 @@ def production_power(mech, sweep: "Sweep", f: Force, working: np.ndarray) -> np.
         acting = working
     power = f.magnitude * (d.real * V.real + d.imag * V.imag)
     return np.where(acting, power, 0.0)
-
-
-def _list(a: np.ndarray) -> list[float | None]:
-    return [float(x) if np.isfinite(x) else None for x in a]

@@ -12,10 +12,9 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..model import FRAME, Mechanism, Prismatic, Stroke, frozen_array
-from .errors import ForceError
+from ..structure import AssurGroup
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..analysis import Analysis
     from ..kinematics.chain import Sweep
 
 
@@ -59,6 +58,7 @@ class PositionState:
     phi1_deg: float
     stroke: Stroke
     links: dict[int, LinkPose]
+    groups: tuple[AssurGroup, ...] = ()  # the Assur groups in the order they are attached
 
     def local(self, link: int, name: str) -> complex:
         pts = self.mech.frame if link == FRAME else self.mech.links[link].points
@@ -84,34 +84,15 @@ class PositionState:
         return self.links[self.mech.drive.link].omega
 
 
-def state_at(analysis: "Analysis", entry: int | None = None, *,
-             phi1_deg: float | None = None) -> PositionState:
-    """The state at entry `entry` of `analysis.positions` (its sweep), or at any
-    crank angle `phi1_deg` (solved on the spot). A position whose kinematics
-    failed raises the kinematics' own error."""
-    if (entry is None) == (phi1_deg is None):
-        raise ForceError("give either an entry of the analysis or a crank angle, not both",
-                         "call with entry=k or phi1_deg=angle")
-    if phi1_deg is not None:
-        phi = float(phi1_deg) % 360.0
-        sweep = analysis.chain.sweep(np.array([phi]))
-        k, index, stroke = 0, None, analysis.stroke_of(phi)
-    else:
-        if not 0 <= entry < len(analysis.positions):
-            raise ForceError(f"entry {entry} does not exist",
-                             f"use 0..{len(analysis.positions) - 1}")
-        sweep, k = analysis.sweep, entry
-        pos = analysis.positions[entry]
-        index, stroke = pos.index, pos.stroke
-    return from_sweep(analysis.mech, sweep, k, index, stroke)
-
-
 def from_sweep(mech: Mechanism, sweep: "Sweep", k: int, index: int | None,
                stroke: Stroke) -> PositionState:
+    """The state at entry k of a sweep; a position whose kinematics failed
+    raises the kinematics' own error."""
     problem = sweep.problem(k)
     if problem is not None:
         raise problem
     links = {lid: LinkPose(complex(s.e[k]), complex(s.o[k]), float(s.omega[k]), complex(s.v[k]),
                            float(s.eps[k]), complex(s.a[k]))
              for lid, s in sweep.links.items()}
-    return PositionState(mech, index, float(sweep.phi1_deg[k]), stroke, links)
+    groups = tuple(solver.group for solver in sweep.chain.solvers)
+    return PositionState(mech, index, float(sweep.phi1_deg[k]), stroke, links, groups)

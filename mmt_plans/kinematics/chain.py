@@ -12,6 +12,7 @@ import numpy as np
 
 from ..errors import AssemblyError, SingularPlanError, UnsupportedError
 from ..model import FRAME, Mechanism
+from ..structure import Structure, analyse_structure
 from .dyads import SOLVERS, DyadSolver, GroupPlan, Motion
 
 # a plan whose direction lines meet at an angle with a sine below this is
@@ -342,8 +343,8 @@ class Chain:
                     self.carried.setdefault(name, L)
 
     @classmethod
-    def build(cls, mech: Mechanism) -> "Chain":
-        structure = mech.structure
+    def build(cls, mech: Mechanism, structure: Structure | None = None) -> "Chain":
+        structure = structure if structure is not None else analyse_structure(mech)
         if mech.higher_pairs:
             raise UnsupportedError(
                 f"{mech.path}: the mechanism has higher pairs; their kinematics is not solved: "
@@ -445,3 +446,8 @@ class Chain:
         self.choice = choose(self)
         self.branches = dict(self.choice.signs)
         self.branch_note = self.choice.note
+
+
+def build_chain(mech: Mechanism, structure: Structure | None = None) -> Chain:
+    """The kinematic chain of `mech` on its assembly branches (kinematics/branches.py)."""
+    return Chain.build(mech, structure)

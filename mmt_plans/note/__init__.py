@@ -3,7 +3,7 @@ writing each step: formula = numbers = result).
 
     >>> import mmt_plans
     >>> from mmt_plans.note import note_content, write_note
-    >>> a = mmt_plans.load("samples/six_link_press.toml").analyze()
+    >>> a = mmt_plans.solve(mmt_plans.load("samples/six_link_press.toml"))
     >>> note_content(a).steps[:3]
     ['sheet1', '1.1', '1.2']
     >>> write_note(a, "out/note.pdf", lang="uk")          # doctest: +SKIP
@@ -22,13 +22,13 @@ from .content import Block, Language, NoteContent, WORDS, note_content, number, 
 from .pages import NotePage, draw_note_page, layout_note, note_page
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..analysis import Analysis
+    from ..solution import Solution
 
 __all__ = ["Block", "NoteContent", "NotePage", "WORDS", "draw_note", "layout_note",
            "note_content", "note_svgs", "number", "plain", "write_note"]
 
 
-def draw_note(analysis: "Analysis", backend_factory: Any, lang: Language = "en") -> list[Any]:
+def draw_note(analysis: "Solution", backend_factory: Any, lang: Language = "en") -> list[Any]:
     """Draw every page of the note on a new backend from `backend_factory(width,
     height, title)`; returns the backends (SvgBackend, RecordingBackend ...)."""
     content = note_content(analysis, lang)
@@ -41,14 +41,14 @@ def draw_note(analysis: "Analysis", backend_factory: Any, lang: Language = "en")
         if pages is None:
             look = backend.look
             pages = layout_note(content, look, page)
-        draw_note_page(backend, pages[i], len(pages), content, analysis.mech, page)
+        draw_note_page(backend, pages[i], len(pages), content, analysis.mechanism, page)
         backends.append(backend)
         if i + 1 == len(pages):
             break
     return backends
 
 
-def note_svgs(analysis: "Analysis", lang: Language = "en") -> list[str]:
+def note_svgs(analysis: "Solution", lang: Language = "en") -> list[str]:
     """The pages of the note as SVG documents."""
     from ..render.svg import SvgBackend
 
@@ -58,7 +58,7 @@ def note_svgs(analysis: "Analysis", lang: Language = "en") -> list[str]:
     return [b.to_string() for b in draw_note(analysis, factory, lang)]
 
 
-def write_note(analysis: "Analysis", target: str | os.PathLike[str],
+def write_note(analysis: "Solution", target: str | os.PathLike[str],
                lang: Language = "en") -> Path:
     """Write the note as one multi-page A4 PDF at `target`."""
     from .pdf import svgs_to_pdf

@@ -24,9 +24,9 @@ from ..scales import ACCELERATION_PLAN, FORCE_PLAN, VELOCITY_PLAN, format_scale,
 from ..sheets.sheet1 import _image_markup  # images on a plan are lettered as on sheet 1
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..analysis import Analysis
     from ..forces import ForceAnalysis
     from ..kinematics.plans import PlanView
+    from ..solution import Solution
 
 Language = Literal["en", "uk"]
 BlockKind = Literal["title", "section", "subsection", "text", "equation", "table", "problem"]
@@ -321,11 +321,11 @@ def _equation_markup(eq: str) -> str:
 # --- the builder -------------------------------------------------------------------------
 
 class _Writer:
-    def __init__(self, analysis: "Analysis", lang: Language) -> None:
+    def __init__(self, analysis: "Solution", lang: Language) -> None:
         if lang not in WORDS:
             raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(WORDS)}")
         self.a = analysis
-        self.mech = analysis.mech
+        self.mech = analysis.mechanism
         self.lang = lang
         self.w = WORDS[lang]
         self.u = _UNITS[lang]
@@ -669,15 +669,16 @@ class _Writer:
     def diagrams(self) -> None:
         a, w, u = self.a, self.w, self.u
         self.section("1.7", "1.7")
-        try:
-            construction, check, v_plan, a_plan = a.diagrams
-        except MmtError as err:
+        if a.diagrams is None:
+            err = MmtError(a.diagrams_problem or "no kinematic diagrams")
             self.problem(err)
             self.section("1.8", "1.8")
             self.problem(err)
             return
+        construction, check = a.diagrams.construction, a.diagrams.check
+        v_plan, a_plan = a.diagrams.v_plan, a.diagrams.a_plan
         c = construction
-        self.text(w["diagram_scales"].format(out=a.mech.study.output, L=self.n(c.L),
+        self.text(w["diagram_scales"].format(out=a.mechanism.study.output, L=self.n(c.L),
                                              H1=self.n(c.H1), H2=self.n(c.H2)))
         self.eq(f"μ_S = μ_l = {self.n(c.mu_S)} {u['m/mm']};")
         self.eq(f"μ_t = 60/(n_1·L) = 60/({self.n(c.n1)}·{self.n(c.L)}) = {self.n(c.mu_t)} {u['s/mm']};")
@@ -716,15 +717,12 @@ class _Writer:
 
     # --- sheet 2 -------------------------------------------------------------------------
     def forces(self) -> None:
-        from ..forces import force_analysis
-
         a = self.a
-        try:
-            fa = force_analysis(a, mu_l=float(a.mu_l))
-        except MmtError as err:
+        if a.forces is None:
             self.section("2.1", "2.1")
-            self.problem(err)
+            self.problem(MmtError(a.forces_problem or "no force analysis"))
             return
+        fa = a.forces
         self.loads(fa)
         self.groups(fa)
         self.lever(fa)
@@ -897,7 +895,7 @@ class _Writer:
         return s
 
 
-def note_content(analysis: "Analysis", lang: Language = "en") -> NoteContent:
+def note_content(analysis: "Solution", lang: Language = "en") -> NoteContent:
     """The calculation note of `analysis` as blocks, in seed 003 §IV order."""
     return _Writer(analysis, lang).build()
 

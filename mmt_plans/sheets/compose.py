@@ -1,4 +1,4 @@
-"""Writing the A1 sheets of an analysis to files: SVG, and PDF/PNG through Cairo."""
+"""Writing the A1 sheets of an solution to files: SVG, and PDF/PNG through Cairo."""
 
 from __future__ import annotations
 
@@ -9,6 +9,7 @@ from typing import Any, Callable, Iterable, Sequence
 from ..errors import MmtError
 from ..render.svg import SvgBackend
 from .page import Language, Page
+from ..solution import Solution
 
 __all__ = ["FORMATS", "SheetNotAvailable", "available_sheets", "write_sheets"]
 
@@ -34,7 +35,7 @@ def available_sheets() -> dict[int, Callable[..., Any]]:
 
 
 def write_sheets(
-    analysis: Any,
+    solution: Solution,
     out_dir: str | os.PathLike[str],
     formats: Sequence[str] = FORMATS,
     lang: Language = "en",
@@ -58,8 +59,8 @@ def write_sheets(
     written: list[Path] = []
     page = Page.of("A1")
     for n in wanted:
-        backend = SvgBackend(page.width, page.height, title=f"{analysis.mech.title}, sheet {n}")
-        composers[n](analysis, backend, lang)
+        backend = SvgBackend(page.width, page.height, title=f"{solution.mechanism.title}, sheet {n}")
+        composers[n](solution, backend, lang)
         svg = backend.to_string()
         if "svg" in formats:
             path = out / f"sheet{n}.svg"

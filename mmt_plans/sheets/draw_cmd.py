@@ -33,11 +33,11 @@ def _formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[st
 def draw(file: Path, out_dir: Path, formats: tuple[str, ...], lang: str, sheet: str,
          partial_turn: bool) -> None:
     """Draw the A1 sheets of FILE."""
-    from .. import load
+    from ..solution import solve
+    from ..spec import load
     from .compose import available_sheets, write_sheets
 
-    mech = load(file)
-    analysis = (mech.with_partial_turn() if partial_turn else mech).analyze()
     numbers = sorted(available_sheets()) if sheet == "all" else [int(sheet)]
-    for path in write_sheets(analysis, out_dir, formats, lang, numbers):  # type: ignore[arg-type]
+    solution = solve(load(file), partial_turn=partial_turn, forces=2 in numbers)
+    for path in write_sheets(solution, out_dir, formats, lang, numbers):  # type: ignore[arg-type]
         click.echo(f"written {path}")

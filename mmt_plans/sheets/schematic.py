@@ -25,6 +25,7 @@ import numpy as np
 from shapely.geometry import LineString
 
 from ..model import FRAME, Prismatic
+from ..solution import Solution
 from .labels import Labels, arc_line
 from .page import Language, Page, Rect, draw_frame
 from .sheet1 import Sketch, hatched_guide, hatched_base, point_markup, unit_vector
@@ -85,16 +86,15 @@ class _Guide:
     at: np.ndarray  # the slider point, m
 
 
-def _pose(analysis: Any, k: int) -> tuple[dict[str, np.ndarray], list[_Guide]]:
+def _pose(solution: Solution, k: int) -> tuple[dict[str, np.ndarray], list[_Guide]]:
     """Every named point at entry k (m) and every guide with its stroke."""
-    mech = analysis.mech
-    sw = analysis.sweep
-    problem = analysis.problem(k)
+    mech = solution.mechanism
+    sw = solution.sweep
+    problem = solution.problem(k)
     if problem is not None and not bool(sw.ok[k]):
         raise problem
     pts = {n: np.asarray(sw.points[n][k], dtype=float) for n in mech.point_owners}
-    phi0 = float(analysis.positions[k].phi1_deg)
-    dense = mech.sweep(np.linspace(phi0, phi0 + 360.0, _DENSE))
+    dense = solution.dense  # the turn from position 0
     ok = np.asarray(dense.ok, dtype=bool)
     guides = []
     for pair in mech.sliders:
@@ -163,9 +163,9 @@ def _block(sk: Sketch, c: np.ndarray, u: np.ndarray, grow: float = 1.0) -> list[
     return corners
 
 
-def _draw(analysis: Any, k: int, scale: float, look: Any, pose: tuple[dict[str, np.ndarray], list[_Guide]]) -> Sketch:
+def _draw(solution: Solution, k: int, scale: float, look: Any, pose: tuple[dict[str, np.ndarray], list[_Guide]]) -> Sketch:
     """The scheme at `scale` mm per m, in local mm."""
-    mech = analysis.mech
+    mech = solution.mechanism
     pts_m, guides = pose
     P = {n: p * scale for n, p in pts_m.items()}
     owners = mech.point_owners
@@ -317,7 +317,7 @@ def _shifted(sk: Sketch, dx: float, dy: float) -> Sketch:
 
 
 def sketch_schematic(
-    analysis: Any,
+    solution: Solution,
     look: Any,
     lang: Language = "en",
     *,
@@ -332,13 +332,13 @@ def sketch_schematic(
     """
     if lang not in _WORDS:
         raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(_WORDS)}")
-    k = analysis.entry(position)
-    pose = _pose(analysis, k)
+    k = solution.entry(position)
+    pose = _pose(solution, k)
     x0, y0, x1, y1 = _geometry_bounds(pose)
     gw, gh = max(x1 - x0, 1e-6), max(y1 - y0, 1e-6)
     scale = min((width_mm - 16.0) / gw, (height_mm - 16.0) / gh)
     scale = max(scale, 1e-3)
-    sk = _draw(analysis, k, scale, look, pose)
+    sk = _draw(solution, k, scale, look, pose)
     for _ in range(6):
         ext = sk.extent()
         if ext.width <= width_mm + 1e-6 and ext.height <= height_mm + 1e-6:
@@ -347,10 +347,10 @@ def sketch_schematic(
         over_w, over_h = ext.width - gw * scale, ext.height - gh * scale
         fit = min((width_mm - over_w) / (gw * scale), (height_mm - over_h) / (gh * scale))
         scale *= max(0.3, min(0.97, fit * 0.99))
-        sk = _draw(analysis, k, scale, look, pose)
+        sk = _draw(solution, k, scale, look, pose)
     ext = sk.extent()
     if ext.width > width_mm + 1e-6 or ext.height > height_mm + 1e-6:
-        raise ValueError(f"{analysis.mech.path}: the scheme does not fit {width_mm:g} x {height_mm:g} mm")
+        raise ValueError(f"{solution.mechanism.path}: the scheme does not fit {width_mm:g} x {height_mm:g} mm")
     dx = (width_mm - ext.width) / 2.0 - ext.x
     dy = (height_mm - ext.height) / 2.0 - ext.y
     return _shifted(sk, dx, dy)
@@ -378,18 +378,18 @@ def _formula(sk: Sketch, pos: tuple[float, float], formula: str, size: float) ->
     return x - start
 
 
-def sketch_caption(analysis: Any, path: str | os.PathLike[str], look: Any, lang: Language,
+def sketch_caption(solution: Solution, path: str | os.PathLike[str], look: Any, lang: Language,
                    width: float, size: float = _CAPTION) -> Sketch:
     """Two lines centred on x = 0 under y = 0: "Task 3, variant 2, φ1 = …" and the formula."""
     words = _WORDS[lang]
     tv = task_of(path)
-    first = words["task"].format(task=tv[0], variant=tv[1]) if tv else str(analysis.mech.title)
-    if analysis.mech.study.zero is not None:
-        first += ", " + words["position"].format(phi=float(analysis.positions[0].phi1_deg))
+    first = words["task"].format(task=tv[0], variant=tv[1]) if tv else str(solution.mechanism.title)
+    if solution.mechanism.study.zero is not None:
+        first += ", " + words["position"].format(phi=float(solution.positions[0].phi1_deg))
     sk = Sketch(look)
     sk.text((0.0, -size), first, size, anchor="center", max_width=width)
     probe = Sketch(look)
-    w = _formula(probe, (0.0, 0.0), analysis.mech.structure.formula, size)
+    w = _formula(probe, (0.0, 0.0), solution.structure.formula, size)
     probe.replay(sk, -w / 2.0, -2.0 * size - 2.0)
     return sk
 
@@ -421,7 +421,8 @@ def write_task_schematics(
     page: str = "A2",
 ) -> Path:
     """One small scheme per task file on one page: a row per task, a column per variant."""
-    from .. import load
+    from ..solution import solve
+    from ..spec import load
     from ..render.svg import SvgBackend
 
     files = _task_files(task_dir)
@@ -443,12 +444,12 @@ def write_task_schematics(
         tv = task_of(f) or (0, 0)
         row, col = tasks.index(tv[0]), variants.index(tv[1])
         cell = Rect(frame.left + col * cw, top - (row + 1) * ch, cw, ch)
-        analysis = load(f).analyze()
-        sk = sketch_schematic(analysis, look, lang, width_mm=cw - 2.0, height_mm=ch - caption_h - 1.0)
+        solution = solve(load(f))
+        sk = sketch_schematic(solution, look, lang, width_mm=cw - 2.0, height_mm=ch - caption_h - 1.0)
         with backend.group(f"cell-{f.stem}", "cell"):
             backend.rectangle((cell.x, cell.y), cell.width, cell.height, "thin")
             sk.replay(backend, cell.x + 1.0, cell.y + caption_h)
-            cap = sketch_caption(analysis, f, look, lang, cw - 3.0)
+            cap = sketch_caption(solution, f, look, lang, cw - 3.0)
             cap.replay(backend, cell.x + cw / 2.0, cell.y + caption_h)
     out = Path(out_svg)
     out.parent.mkdir(parents=True, exist_ok=True)
@@ -465,7 +466,8 @@ def write_task_files(
     height_mm: float = 110.0,
 ) -> list[Path]:
     """task_NN.svg: the first variant of each task, drawn large with its title and formula."""
-    from .. import load
+    from ..solution import solve
+    from ..spec import load
     from ..render.look import load_look
     from ..render.svg import SvgBackend
 
@@ -478,22 +480,22 @@ def write_task_files(
             firsts.setdefault(tv[0], f)
     written = []
     for task, f in sorted(firsts.items()):
-        analysis = load(f).analyze()
+        solution = solve(load(f))
         margin, size = 8.0, 3.5
         look = load_look()
-        title_lines = look.lettering.wrap(str(analysis.mech.title), size, width_mm)
+        title_lines = look.lettering.wrap(str(solution.mechanism.title), size, width_mm)
         cap_h = 2.0 * _CAPTION + 5.0
         title_h = look.lettering.block_height(len(title_lines), size) + 4.0
         height = margin + title_h + height_mm + cap_h + margin
-        backend = SvgBackend(width_mm + 2 * margin, height, title=str(analysis.mech.title))
+        backend = SvgBackend(width_mm + 2 * margin, height, title=str(solution.mechanism.title))
         y = height - margin - size
         with backend.group("title", "heading"):
             for line in title_lines:
                 backend.text((margin, y), line, size)
                 y -= look.lettering.line_pitch * size
-        sk = sketch_schematic(analysis, look, lang, width_mm=width_mm, height_mm=height_mm)
+        sk = sketch_schematic(solution, look, lang, width_mm=width_mm, height_mm=height_mm)
         sk.replay(backend, margin, margin + cap_h)
-        sketch_caption(analysis, f, look, lang, width_mm).replay(backend, margin + width_mm / 2.0, margin + cap_h)
+        sketch_caption(solution, f, look, lang, width_mm).replay(backend, margin + width_mm / 2.0, margin + cap_h)
         path = out_dir / f"task_{task:02d}.svg"
         backend.save(path)
         written.append(path)

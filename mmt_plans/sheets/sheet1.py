@@ -1,4 +1,4 @@
-"""Sheet 1: structural and kinematic analysis (seed 003, Sheet 1, Appendix A).
+"""Sheet 1: structural and kinematic solution (seed 003, Sheet 1, Appendix A).
 
 Each drawing is first sketched in its own millimetre coordinates into a
 recording, so that its footprint is known before it is placed; the layout
@@ -15,6 +15,7 @@ from typing import Any, Callable, Mapping, Sequence
 import numpy as np
 
 from ..render.backend import Backend
+from ..solution import Solution
 from ..render.recording import RecordingBackend
 from ..scales import ACCELERATION_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from .labels import Labels
@@ -268,12 +269,12 @@ def hatched_guide(sk: Sketch, a: np.ndarray, b: np.ndarray, u: np.ndarray, offse
         sk.line(q, q - 2.0 * (u + n), "thin")
 
 
-def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> Sketch:
-    mech = analysis.mech
-    pts = analysis.sweep.points
+def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language) -> Sketch:
+    mech = solution.mechanism
+    pts = solution.sweep.points
     owners = {p: (0 if 0 in o else o[0], o) for p, o in mech.point_owners.items()}
-    n = len(analysis.positions)
-    main = {0, *(analysis.entry(i) for i in analysis.plan_positions)}
+    n = len(solution.positions)
+    main = {0, *(solution.entry(i) for i in solution.plan_positions)}
     sk = Sketch(look)
 
     def at(name: str, k: int) -> np.ndarray:
@@ -281,9 +282,8 @@ def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> S
 
     with sk.group("mechanism", "mechanism"):
         # Trajectories from a dense sweep: thin polylines.
-        phi0 = float(analysis.positions[0].phi1_deg)
-        dense = mech.sweep(np.linspace(phi0, phi0 + 360.0, _DENSE))
-        ok = np.asarray(getattr(dense, "ok", np.ones(_DENSE, bool)), dtype=bool)
+        dense = solution.dense
+        ok = np.asarray(dense.ok, dtype=bool)
         frame_links = {lid for lid, link in mech.links.items() if any(owners.get(p, (None,))[0] == 0 for p in link.points)}
         traced = [p for p, (l0, _) in owners.items() if l0 != 0]
         for lid, link in mech.links.items():
@@ -315,7 +315,7 @@ def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> S
             name = slider.slider_point
             if slider.guide != 0:
                 for k in sorted(main):
-                    d = complex(analysis.sweep.links[slider.guide].e[k]) * complex(*slider.direction)
+                    d = complex(solution.sweep.links[slider.guide].e[k]) * complex(*slider.direction)
                     u = unit_vector(np.array([d.real, d.imag]))
                     c = at(name, k)
                     ts = [float(np.dot(at(p, k) - c, u)) for p in mech.links[slider.guide].points if p in pts]
@@ -350,10 +350,10 @@ def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> S
         labels.avoid_drawn(sk.calls)
         # ω and ε of every rotating link at the planned positions (seed 003 §1.6)
         centre = at(mech.crank_pivot, 0)
-        sw = analysis.sweep
+        sw = solution.sweep
         w1 = abs(float(mech.drive.signed_omega))
-        for i in analysis.plan_positions:
-            k = analysis.entry(i)
+        for i in solution.plan_positions:
+            k = solution.entry(i)
             for lid, link in mech.links.items():
                 w, e = float(sw.omega[lid][k]), float(sw.eps[lid][k])
                 names = [p for p in link.points if p in pts]
@@ -378,7 +378,7 @@ def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> S
         # Numbered positions of the crank pin.
         for k in range(n):
             p = at(mech.crank_pin, k)
-            labels.place(p, str(analysis.positions[k].index), towards=unit_vector(p - centre),
+            labels.place(p, str(solution.positions[k].index), towards=unit_vector(p - centre),
                          distance=2.0)
 
         ext = sk.extent()
@@ -388,8 +388,8 @@ def sketch_mechanism(analysis: Any, mu_l: float, look: Any, lang: Language) -> S
     return sk
 
 
-def sketch_formula(analysis: Any, look: Any, lang: Language) -> Sketch:
-    st = analysis.mech.structure
+def sketch_formula(solution: Solution, look: Any, lang: Language) -> Sketch:
+    st = solution.structure
     sk = Sketch(look)
     with sk.group("structural-formula", "structural-formula"):
         sk.text((0.0, 14.0), _WORDS[lang]["structure"], _TITLE)
@@ -409,27 +409,27 @@ def sketch_formula(analysis: Any, look: Any, lang: Language) -> Sketch:
 # --- plans -------------------------------------------------------------------------
 
 
-def _moving_points(analysis: Any) -> list[str]:
-    owners = analysis.mech.point_owners
+def _moving_points(solution: Solution) -> list[str]:
+    owners = solution.mechanism.point_owners
     names = [p for p, o in owners.items() if 0 not in o]
-    names += [p for p in analysis.sweep.points if p not in owners]
+    names += [p for p in solution.sweep.points if p not in owners]
     return names
 
 
 def sketch_plan(
-    analysis: Any, index: int, mu: float, kind: str, look: Any, lang: Language
+    solution: Solution, index: int, mu: float, kind: str, look: Any, lang: Language
 ) -> tuple[Sketch, dict[str, np.ndarray]]:
     """A velocity ("velocity") or acceleration ("acceleration") plan at `index`.
 
     The pole is at the local origin; returns the sketch and the images in mm.
     """
-    view = analysis.plan(index)
+    view = solution.plan(index)
     images_si = view.velocity_images if kind == "velocity" else view.acceleration_images
     images = {n: np.asarray(v, dtype=float) / mu for n, v in images_si.items()}
     sk = Sketch(look)
     gid = f"{kind}-plan-{index}"
     pole = "p" if kind == "velocity" else "π"
-    moving = _moving_points(analysis)
+    moving = _moving_points(solution)
     placer = Labels(sk, _TEXT)  # the components' labels are written last, at _SMALL
     with sk.group(gid, "plan"):
         # Components of the vector equations, dashed.
@@ -449,8 +449,8 @@ def sketch_plan(
                     placer.later(e, f"{tag}_{{{c.label.split('_', 1)[-1]}}}", unit_vector(e - s))
         # The image of each link: its joints' images joined by thin lines (the
         # relative vectors ab, de, and the similarity triangles of three-point links).
-        owners = analysis.mech.point_owners
-        for link in analysis.mech.links.values():
+        owners = solution.mechanism.point_owners
+        for link in solution.mechanism.links.values():
             joints = [p for p in link.points if p in images and len(owners.get(p, ())) > 1]
             for i in range(len(joints)):
                 for j in range(i + 1, len(joints)):
@@ -621,11 +621,11 @@ def table_sketch(
     return sk
 
 
-def _sketch_tables(analysis: Any, look: Any, lang: Language) -> dict[str, Sketch]:
+def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, Sketch]:
     w = _WORDS[lang]
-    idx = list(analysis.plan_positions)
-    views = [analysis.plan(i) for i in idx]
-    moving = _moving_points(analysis)
+    idx = list(solution.plan_positions)
+    views = [solution.plan(i) for i in idx]
+    moving = _moving_points(solution)
     out: dict[str, Sketch] = {}
 
     for kind, gid, title, sym in (
@@ -676,12 +676,12 @@ def _sketch_tables(analysis: Any, look: Any, lang: Language) -> dict[str, Sketch
         look, "table-omega-eps", w["omega_eps"], header, rows, [14.0] + [20.0] * (2 * len(idx)), marks,
         lang)
 
-    _, check, v_plan, a_plan = analysis.diagrams
-    construction = analysis.diagrams[0]
+    dg = solution.require_diagrams()
+    check, v_plan, a_plan, construction = dg.check, dg.v_plan, dg.a_plan, dg.construction
     rows = []
     marks = []
     for i in idx:
-        k = analysis.entry(i)
+        k = solution.entry(i)
         ev, ea = check.v_error_percent[k], check.a_error_percent[k]
         rows.append([
             str(i),
@@ -697,7 +697,7 @@ def _sketch_tables(analysis: Any, look: Any, lang: Language) -> dict[str, Sketch
                       lang)
     # Seed 003 1.8: the error must not exceed 5 %. Where it does at a planned
     # position, the sheet says so, why, and how many positions would cure it.
-    planned = {analysis.entry(i): i for i in idx}
+    planned = {solution.entry(i): i for i in idx}
     notes = [w["over"].format(q=f.quantity.upper() if f.quantity == "v" else "a", i=planned[f.index],
                               e=abs(f.error_percent), lim=check.limit_percent,
                               why=w[f.kind].format(q=f.quantity.upper() if f.quantity == "v" else "a"))
@@ -735,10 +735,10 @@ def drawing_scale(mu_l: float) -> str:
     return f"1:{text}" if k >= 1 else f"{text}:1"
 
 
-def title_fields(analysis: Any, mu_l: float | None = None) -> dict[str, str]:
+def title_fields(solution: Solution, mu_l: float | None = None) -> dict[str, str]:
     """The title block's fields: the file's [sheet] entries, its title, the sheet
     numbers, and the scale of the mechanism's drawing (μ_l) unless the file gives one."""
-    mech = analysis.mech
+    mech = solution.mechanism
     fields = {k: str(v) for k, v in dict(mech.sheet or {}).items() if k in FIELDS}
     if mu_l is not None:
         fields.setdefault("scale", drawing_scale(mu_l))
@@ -762,12 +762,12 @@ _PLACEMENT: Mapping[str, str] = {
 }
 
 
-def _plan_scales(analysis: Any) -> tuple[float, float]:
+def _plan_scales(solution: Solution) -> tuple[float, float]:
     """μV and μa from V_A and a_A at the first planned position (seed 003, eqs. 5, 9)."""
-    pin = analysis.mech.crank_pin
+    pin = solution.mechanism.crank_pin
     v_a = a_a = 0.0
-    for i in analysis.plan_positions:
-        view = analysis.plan(i)
+    for i in solution.plan_positions:
+        view = solution.plan(i)
         v_a = max(v_a, float(np.hypot(*view.velocity_images[pin])))
         a_a = max(a_a, float(np.hypot(*view.acceleration_images[pin])))
     return scale_for(v_a, VELOCITY_PLAN), scale_for(a_a, ACCELERATION_PLAN)
@@ -780,7 +780,7 @@ def scale_step(mu: float, steps: int) -> float:
     return list(series(mu * 1e-4, mu * (1 - 1e-6)))[steps]
 
 
-def _sketch_all(analysis: Any, look: Any, lang: Language, shrink: int, stacked: bool,
+def _sketch_all(solution: Solution, look: Any, lang: Language, shrink: int, stacked: bool,
                 cache: dict[tuple[str, float], Any]) -> tuple[dict[str, Sketch], dict[str, float]]:
     """Every drawing but the mechanism, the plans `shrink` series steps from
     their textbook scales; `cache` keeps what was drawn at a scale for the next try."""
@@ -790,20 +790,20 @@ def _sketch_all(analysis: Any, look: Any, lang: Language, shrink: int, stacked: 
             cache[(name, mu)] = make()
         return cache[(name, mu)]
 
-    mu_v, mu_a = _plan_scales(analysis)
+    mu_v, mu_a = _plan_scales(solution)
     mu_v, mu_a = _next_scale(mu_v, shrink), _next_scale(mu_a, shrink)
     sketches: dict[str, Sketch] = {}
     sketches["structural-formula"] = memo("structural-formula", 0.0,
-                                          lambda: sketch_formula(analysis, look, lang))
-    for i in analysis.plan_positions:
+                                          lambda: sketch_formula(solution, look, lang))
+    for i in solution.plan_positions:
         sketches[f"velocity-plan-{i}"] = memo(f"velocity-plan-{i}", mu_v, lambda: sketch_plan(
-            analysis, i, mu_v, "velocity", look, lang)[0])
+            solution, i, mu_v, "velocity", look, lang)[0])
         sketches[f"acceleration-plan-{i}"] = memo(f"acceleration-plan-{i}", mu_a, lambda: sketch_plan(
-            analysis, i, mu_a, "acceleration", look, lang)[0])
+            solution, i, mu_a, "acceleration", look, lang)[0])
 
     def diagrams() -> list[Sketch]:
-        construction = analysis.diagrams[0]
-        s_dense = analysis.displacements(_DENSE - 1)
+        construction = solution.require_diagrams().construction
+        s_dense = solution.s_dense
         return [sketch_diagram(construction, which, look, lang, s_dense) for which in ("s", "v", "a")]
 
     parts = memo("diagrams", 0.0, diagrams)
@@ -812,13 +812,13 @@ def _sketch_all(analysis: Any, look: Any, lang: Language, shrink: int, stacked: 
     else:
         for which, sk in zip("sva", parts):
             sketches[f"diagram-{which}"] = sk
-    sketches.update(memo("tables", 0.0, lambda: _sketch_tables(analysis, look, lang)))
+    sketches.update(memo("tables", 0.0, lambda: _sketch_tables(solution, look, lang)))
     return sketches, {"mu_V": mu_v, "mu_a": mu_a}
 
 
-def compose_sheet1(analysis: Any, backend: Backend, lang: Language = "en", *,
+def compose_sheet1(solution: Solution, backend: Backend, lang: Language = "en", *,
                    page: Page | None = None) -> Sheet1:
-    """Draw sheet 1 of `analysis` on `backend`; returns the layout and scales used.
+    """Draw sheet 1 of `solution` on `backend`; returns the layout and scales used.
 
     Scales from the textbook's (seed 003: pa, πa) raised a step at a time until
     everything fits; the mechanism is tried up to two steps finer first, so
@@ -832,10 +832,10 @@ def compose_sheet1(analysis: Any, backend: Backend, lang: Language = "en", *,
     attempts = [(shrink, stacked, bigger, gap) for shrink in range(5) for stacked in (True, False)
                 for bigger in (2, 1, 0) for gap in (8.0, 5.0)]
     for shrink, stacked, bigger, gap in attempts:
-        sketches, scales = _sketch_all(analysis, backend.look, lang, shrink, stacked, cache)
-        mu_l = scale_step(float(analysis.mu_l), max(0, shrink - 1) - bigger)
+        sketches, scales = _sketch_all(solution, backend.look, lang, shrink, stacked, cache)
+        mu_l = scale_step(float(solution.mu_l), max(0, shrink - 1) - bigger)
         if ("mechanism", mu_l) not in cache:
-            cache[("mechanism", mu_l)] = sketch_mechanism(analysis, mu_l, backend.look, lang)
+            cache[("mechanism", mu_l)] = sketch_mechanism(solution, mu_l, backend.look, lang)
         sketches["mechanism"] = cache[("mechanism", mu_l)]
         scales["mu_l"] = mu_l
         layout = SheetLayout(page, gap=gap)
@@ -864,6 +864,6 @@ def compose_sheet1(analysis: Any, backend: Backend, lang: Language = "en", *,
             sketches[name].replay(backend, dx, dy)
             result.origins[name] = (dx, dy)
             result.placed[name] = rect
-        draw_page(backend, page, title_fields(analysis, mu_l), lang)
+        draw_page(backend, page, title_fields(solution, mu_l), lang)
         return result
     raise LayoutError(f"sheet 1 does not fit on {page.name or 'the page'}: {last}")

@@ -1,4 +1,4 @@
-"""Sheet 2: force (kinetostatic) analysis (seed 003, Sheet 2 §2.1–2.10, Appendix B).
+"""Sheet 2: force (kinetostatic) solution (seed 003, Sheet 2 §2.1–2.10, Appendix B).
 
 At the force position only: the mechanism with every load (G, F_IN shifted by
 h, F_PR, F_bal), each Assur group drawn apart to μ_l with its loads, the
@@ -23,10 +23,11 @@ from typing import Any, Iterable, Mapping, Sequence
 
 import numpy as np
 
-from ..forces import ForceAnalysis, ForcePolygon, force_analysis
+from ..forces import ForceAnalysis, ForcePolygon
 from ..forces.state import PositionState
 from ..model import FRAME
 from ..render.backend import Backend
+from ..solution import Solution
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label
 from .labels import Labels
 from .layout import LayoutError, SheetLayout
@@ -107,7 +108,7 @@ _POLYGON_TITLES = {"uk": (("group", "група"), ("link", "ланка"))}
 
 @dataclass
 class Sheet2:
-    """What compose_sheet2 drew: the force analysis, layout, scales, placements."""
+    """What compose_sheet2 drew: the force solution, layout, scales, placements."""
 
     forces: ForceAnalysis
     layout: SheetLayout
@@ -646,7 +647,7 @@ def _translated(sketch: Sketch, lang: Language) -> Sketch:
     return sketch
 
 
-def _sketch_all(fa: ForceAnalysis, analysis: Any, look: Any, lang: Language, shrink: int,
+def _sketch_all(fa: ForceAnalysis, solution: Solution, look: Any, lang: Language, shrink: int,
                 cache: dict[tuple[str, float], Any]
                 ) -> tuple[dict[str, Sketch], dict[str, float], list[tuple[str, float]]]:
     """Every drawing but the loaded mechanism at `shrink` series steps from its
@@ -663,7 +664,7 @@ def _sketch_all(fa: ForceAnalysis, analysis: Any, look: Any, lang: Language, shr
         out["driving-link"] = sketch_driving_link(fa, mu_g, look, lang)
         return out
 
-    mu_g = scale_step(float(analysis.mu_l), shrink)
+    mu_g = scale_step(float(solution.mu_l), shrink)
     scales: dict[str, float] = {"mu_l_groups": mu_g}
     sketches: dict[str, Sketch] = dict(memo("groups", mu_g, lambda: groups_at(mu_g)))
     dl = fa.driving_link
@@ -687,14 +688,14 @@ def _sketch_all(fa: ForceAnalysis, analysis: Any, look: Any, lang: Language, shr
     return sketches, scales, arms
 
 
-def compose_sheet2(analysis: Any, backend: Backend, lang: Language = "en", *,
+def compose_sheet2(solution: Solution, backend: Backend, lang: Language = "en", *,
                    page: Page | None = None, forces: ForceAnalysis | None = None) -> Sheet2:
-    """Draw sheet 2 of `analysis` on `backend`: the force analysis at its force
+    """Draw sheet 2 of `solution` on `backend`: the force solution at its force
     position (computed here unless `forces` is given)."""
     page = page if page is not None else Page.of("A1")
     if lang not in _WORDS:
         raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(_WORDS)}")
-    fa = forces if forces is not None else force_analysis(analysis, mu_l=float(analysis.mu_l))
+    fa = forces if forces is not None else solution.require_forces()
     last: Exception | None = None
     cache: dict[tuple[str, float], Any] = {}
     tables = ["table-balancing", "table-reactions", "table-loads", "table-lever"]
@@ -705,9 +706,9 @@ def compose_sheet2(analysis: Any, backend: Backend, lang: Language = "en", *,
     # Scales from the finest that fits: every drawing `shrink` series steps
     # from its textbook scale, the loaded mechanism up to two steps finer still.
     for shrink in range(-2, 6):
-        sketches, scales, arms = _sketch_all(fa, analysis, backend.look, lang, shrink, cache)
+        sketches, scales, arms = _sketch_all(fa, solution, backend.look, lang, shrink, cache)
         for bigger in (2, 1, 0):
-            mu_l = scale_step(float(analysis.mu_l), shrink - bigger)
+            mu_l = scale_step(float(solution.mu_l), shrink - bigger)
             if ("force-mechanism", mu_l) not in cache:
                 cache[("force-mechanism", mu_l)] = (
                     sketch_loaded_mechanism(fa, mu_l, backend.look, lang),
@@ -735,7 +736,7 @@ def compose_sheet2(analysis: Any, backend: Backend, lang: Language = "en", *,
                     _translated(sketches[name], lang).replay(backend, dx, dy)
                     result.origins[name] = (dx, dy)
                     result.placed[name] = rect
-                fields = title_fields(analysis, mu_l)
+                fields = title_fields(solution, mu_l)
                 fields["sheet"] = "2"
                 draw_page(backend, page, fields, lang)
                 return result

@@ -38,6 +38,8 @@ from typing import Callable
 import numpy as np
 
 import mmt_plans
+from mmt_plans.results_json import results
+from mmt_plans.structure import analyse_structure
 
 HERE = Path(__file__).resolve().parent
 SWEEP = np.linspace(0.0, 360.0, 720, endpoint=False)
@@ -166,7 +168,7 @@ class Task:
         pivot = np.array(next(iter(self.frame.values())), dtype=float)
         A = np.array(hints[self._pin()], dtype=float) - pivot
         phi = math.degrees(math.atan2(A[1], A[0]))
-        sw = mech.sweep(np.array([phi]))
+        sw = mmt_plans.sweep(mech, np.array([phi]))
         out = {}
         for link in self.links:
             for p in link.points:
@@ -179,7 +181,7 @@ class Task:
         return out
 
     def _quality(self, sketch: dict) -> tuple[bool, float]:
-        sw = self.load(sketch).sweep(SWEEP)
+        sw = mmt_plans.sweep(self.load(sketch), SWEEP)
         if not sw.ok.all():
             return False, float(np.mean(sw.ok))
         return True, min(float(np.degrees(np.arcsin(np.clip(p.sin_angle.min(), 0.0, 1.0))))
@@ -197,14 +199,14 @@ class Task:
                 best = (key, sketch, q)
         if best is None:  # no rough sketch assembles at its own crank angle
             self.ok, self.sketch = False, dict(self.hints[0])
-            self.formula = self.load().structure.formula
+            self.formula = analyse_structure(self.load()).formula
             return self
         (self.ok, _), self.sketch, q = best
         mech = self.load()
-        self.formula = mech.structure.formula
+        self.formula = analyse_structure(mech).formula
         if self.ok:
             self.gamma_min = q
-            sw = mech.sweep(SWEEP)
+            sw = mmt_plans.sweep(mech, SWEEP)
             self.working_direction = self.axis if self.fixed_direction else self._slow(sw)
             self.working_span = self._span(sw, self.working_direction)
         return self
@@ -904,7 +906,7 @@ def s2(task: int, v: int) -> Task:
 
 
 def _why_not(t: Task) -> str:
-    sw = t.load().sweep(SWEEP)
+    sw = mmt_plans.sweep(t.load(), SWEEP)
     if any(m.any() for m in sw.failed.values()):
         four_bar = any(m.any() for name, m in sw.failed.items() if name.startswith("2"))
         return ("the crank cannot make a full turn (the four-bar is not a crank-rocker)" if four_bar
@@ -931,8 +933,8 @@ def main(argv: list[str]) -> int:
               f"wd {t.working_direction}{fix}{flag}")
         if "--check" in argv:
             mech = mmt_plans.load(HERE / t.path)
-            if mech.sweep(SWEEP).ok.all():
-                mech.analyze().to_json()
+            if mmt_plans.sweep(mech, SWEEP).ok.all():
+                results(mmt_plans.solve(mech))
             else:
                 bad += 1
     print(f"{len(tasks)} files, {sum(bool(t.corrections) for t in tasks)} corrected, "

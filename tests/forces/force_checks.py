@@ -120,7 +120,7 @@ def equilibrium_residuals(mech, sweep, k: int, stroke: str, fa) -> dict[int, tup
 
 def analyses():
     for path in SAMPLES:
-        yield path.stem, mmt_plans.load(path).analyze()
+        yield path.stem, mmt_plans.solve(mmt_plans.load(path))
 
 
 def close(a: float, b: float, rel: float = 1e-9, abs_: float = 0.0) -> bool:

@@ -23,7 +23,7 @@ import pytest
 from force_checks import ROOT, c, cross
 
 import mmt_plans
-from mmt_plans.forces import force_analysis
+
 
 R, L_ROD, E, F_PR = 0.1, 0.4, 0.03, 2000.0
 
@@ -31,7 +31,7 @@ R, L_ROD, E, F_PR = 0.1, 0.4, 0.03, 2000.0
 def massless(path):
     mech = mmt_plans.load(path)
     links = {lid: replace(link, mass=0.0, J=0.0) for lid, link in mech.links.items()}
-    return mech.with_changes(links=links, g=0.0).analyze()
+    return mmt_plans.solve(mech.with_changes(links=links, g=0.0))
 
 
 @pytest.fixture(scope="module")
@@ -41,10 +41,10 @@ def slider_crank():
 
 def test_slider_crank_balancing_force_by_hand(slider_crank):
     a = slider_crank
-    w = a.mech.drive.omega
+    w = a.mechanism.drive.omega
     working = 0
     for pos in a.positions:
-        fa = force_analysis(a, pos.index)
+        fa = a.forces_at(pos.index)
         phi = math.radians(pos.phi1_deg)
         q = R * math.sin(phi) - E
         root = math.sqrt(L_ROD**2 - q * q)
@@ -71,7 +71,7 @@ def test_scotch_yoke_by_hand():
     a = massless(ROOT / "samples" / "forces_scotch_yoke.toml")
     r = 0.12
     for pos in a.positions:
-        fa = force_analysis(a, pos.index)
+        fa = a.forces_at(pos.index)
         phi = math.radians(pos.phi1_deg)
         F = 1000.0 if pos.stroke == "working" else 0.0
         assert fa.balancing_force_plans == pytest.approx(-F * math.sin(phi), abs=1e-9 * 1000)

@@ -13,7 +13,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 import mmt_plans
-from mmt_plans.forces import force_analysis
+
 from mmt_plans.forces.groups import reaction_name
 
 TOL = 1e-9
@@ -21,17 +21,17 @@ TOL = 1e-9
 
 @pytest.fixture(scope="module", params=SAMPLES, ids=lambda p: p.stem)
 def analysis(request):
-    return mmt_plans.load(request.param).analyze()
+    return mmt_plans.solve(mmt_plans.load(request.param))
 
 
 def every_position(analysis):
     for k, pos in enumerate(analysis.positions):
         if pos.index is not None and analysis.problem(k) is None:
-            yield k, pos, force_analysis(analysis, pos.index)
+            yield k, pos, analysis.forces_at(pos.index)
 
 
 def test_every_link_in_equilibrium(analysis):
-    mech, sweep = analysis.mech, analysis.sweep
+    mech, sweep = analysis.mechanism, analysis.sweep
     checked = 0
     for k, pos, fa in every_position(analysis):
         for link, (F, M, scale) in equilibrium_residuals(mech, sweep, k, pos.stroke, fa).items():
@@ -44,7 +44,7 @@ def test_every_link_in_equilibrium(analysis):
 def test_reactions_are_equal_and_opposite(analysis):
     """The reaction one group finds and the one the next group is loaded with
     (R43 = −R34), as the free bodies of the two links carry them."""
-    mech = analysis.mech
+    mech = analysis.mechanism
     for _, pos, fa in every_position(analysis):
         for i, j, name in pairs_of(mech):
             if 0 in (i, j):
@@ -60,8 +60,8 @@ def test_reactions_are_equal_and_opposite(analysis):
 
 
 def test_every_pair_listed_once(analysis):
-    mech = analysis.mech
-    fa = force_analysis(analysis)
+    mech = analysis.mechanism
+    fa = analysis.forces_at()
     listed = sorted(tuple(sorted((r.by, r.on))) for r in fa.reactions.values())
     assert listed == sorted(tuple(sorted((i, j))) for i, j, _ in pairs_of(mech))
     for name, r in fa.reactions.items():
@@ -70,7 +70,7 @@ def test_every_pair_listed_once(analysis):
 
 
 def test_balancing_force_by_virtual_power(analysis):
-    mech, sweep = analysis.mech, analysis.sweep
+    mech, sweep = analysis.mechanism, analysis.sweep
     for k, pos, fa in every_position(analysis):
         expected = virtual_power_balancing_force(mech, sweep, k, pos.stroke)
         assert abs(fa.balancing_force_plans - expected) <= TOL * abs(expected), pos.index
@@ -121,11 +121,11 @@ def test_force_polygons_close(analysis):
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(phi=st.floats(0.0, 360.0, allow_nan=False))
 def test_equilibrium_at_any_angle(analysis, phi):
-    mech = analysis.mech
+    mech = analysis.mechanism
     sweep = analysis.chain.sweep(np.array([phi]))
     assume(sweep.problem(0) is None)
     stroke = analysis.stroke_of(phi % 360.0)
-    fa = force_analysis(analysis, phi1_deg=phi)
+    fa = analysis.forces_at(phi1_deg=phi)
     assert fa.index is None
     for link, (F, M, scale) in equilibrium_residuals(mech, sweep, 0, stroke, fa).items():
         assert F <= TOL * scale and M <= TOL * scale, (phi, link)
@@ -143,15 +143,15 @@ def test_clockwise_crank(name):
     from force_checks import ROOT
 
     mech = mmt_plans.load(ROOT / "samples" / f"{name}.toml")
-    a = mech.with_changes(drive=replace(mech.drive, sense="cw")).analyze()
+    a = mmt_plans.solve(mech.with_changes(drive=replace(mech.drive, sense="cw")))
     for k, pos, fa in every_position(a):
         assert fa.lever.turn_deg == 90.0
-        expected = virtual_power_balancing_force(a.mech, a.sweep, k, pos.stroke)
+        expected = virtual_power_balancing_force(a.mechanism, a.sweep, k, pos.stroke)
         assert abs(fa.balancing_force_plans - expected) <= TOL * abs(expected)
         assert abs(fa.balancing_force_lever - expected) <= TOL * abs(expected)
-        t = balancing_direction(a.mech, a.sweep, k)
-        V_A = c(a.sweep.v[a.mech.crank_pin][k])
+        t = balancing_direction(a.mechanism, a.sweep, k)
+        V_A = c(a.sweep.v[a.mechanism.crank_pin][k])
         assert abs(t - V_A / abs(V_A)) < 1e-12  # "in the sense of rotation" is along V_A
-        for link, (F, M, scale) in equilibrium_residuals(a.mech, a.sweep, k, pos.stroke,
+        for link, (F, M, scale) in equilibrium_residuals(a.mechanism, a.sweep, k, pos.stroke,
                                                          fa).items():
             assert F <= TOL * scale and M <= TOL * scale

@@ -10,12 +10,12 @@ import pytest
 from force_checks import ROOT, c, cross, own_loads
 
 import mmt_plans
-from mmt_plans.forces import force_analysis
+
 
 
 def analysed(name: str):
-    a = mmt_plans.load(ROOT / "samples" / f"{name}.toml").analyze()
-    return a, force_analysis(a)
+    a = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / f"{name}.toml"))
+    return a, a.forces_at()
 
 
 def entry(a, fa) -> int:
@@ -43,7 +43,7 @@ def test_rrr_four_bar():
     with the sign of t = i·n, n from the outer pin to B); normals along the links."""
     a, fa = analysed("four_bar_coupler")
     k, sw = entry(a, fa), a.sweep
-    own = own_loads(a.mech, sw, k, a.positions[k].stroke)
+    own = own_loads(a.mechanism, sw, k, a.positions[k].stroke)
     A, B, C = (c(sw.points[p][k]) for p in "ABC")
     g = group(fa, "2-3")
     R12, R03, R32 = g.reactions
@@ -65,7 +65,7 @@ def test_rrr_receives_the_later_groups_reaction():
     """Group 2-3 of the press carries R43 = −R34 at D in its moment equation about B."""
     a, fa = analysed("six_link_press")
     k, sw = entry(a, fa), a.sweep
-    own = own_loads(a.mech, sw, k, a.positions[k].stroke)
+    own = own_loads(a.mechanism, sw, k, a.positions[k].stroke)
     B, C, D = (c(sw.points[p][k]) for p in "BCD")
     R34 = fa.reactions["R34"]
     R03 = fa.reactions["R03"]
@@ -93,7 +93,7 @@ def test_rpr_shaper_block_on_a_moving_guide():
     """The block 2 slides in the rocker 3: R23 is normal to the slot, acts at A
     (the block's loads act at A), and loads the rocker too; ΣM_C(3) = 0."""
     a, fa = analysed("shaper")
-    mech, sw = a.mech, a.sweep
+    mech, sw = a.mechanism, a.sweep
     k = entry(a, fa)
     own = own_loads(mech, sw, k, a.positions[k].stroke)
     A, B, C = (c(sw.points[p][k]) for p in "ABC")
@@ -174,17 +174,17 @@ def test_rpr_with_the_slotted_link_first():
     from force_checks import equilibrium_residuals, virtual_power_balancing_force
 
     assert "link = 3\non = 2" in SWAPPED_SHAPER
-    a = mmt_plans.loads(SWAPPED_SHAPER).analyze()
-    ref = mmt_plans.load(ROOT / "samples" / "shaper.toml").analyze()
+    a = mmt_plans.solve(mmt_plans.loads(SWAPPED_SHAPER))
+    ref = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "shaper.toml"))
     g = next(g for g in a.structure.groups if g.kind == "RPR")
     assert g.links == (2, 3)
     for pos in a.positions:
         k = a.entry(pos.index)
-        fa, fr = force_analysis(a, pos.index), force_analysis(ref, pos.index)
-        for link, (F, M, scale) in equilibrium_residuals(a.mech, a.sweep, k, pos.stroke,
+        fa, fr = a.forces_at(pos.index), ref.forces_at(pos.index)
+        for link, (F, M, scale) in equilibrium_residuals(a.mechanism, a.sweep, k, pos.stroke,
                                                          fa).items():
             assert F <= 1e-9 * scale and M <= 1e-9 * scale
-        expected = virtual_power_balancing_force(a.mech, a.sweep, k, pos.stroke)
+        expected = virtual_power_balancing_force(a.mechanism, a.sweep, k, pos.stroke)
         assert fa.balancing_force_plans == pytest.approx(expected, rel=1e-9)
         assert fa.balancing_force_plans == pytest.approx(fr.balancing_force_plans, rel=1e-9)
         # R32 of the swapped numbering (block 3 on rocker 2) is R23 of the sample

@@ -7,13 +7,13 @@ import pytest
 from force_checks import ROOT, c, cross
 
 import mmt_plans
-from mmt_plans.forces import force_analysis
+
 
 
 @pytest.fixture(scope="module")
 def press():
-    a = mmt_plans.load(ROOT / "samples" / "six_link_press.toml").analyze()
-    return a, force_analysis(a, 2)
+    a = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "six_link_press.toml"))
+    return a, a.forces_at(2)
 
 
 def test_plan_turned_against_the_rotation(press):

@@ -8,8 +8,9 @@ import pytest
 from force_checks import ROOT, c, cross, equilibrium_residuals, virtual_power_balancing_force
 
 import mmt_plans
+from mmt_plans.forces.loads import link_loads
 from mmt_plans.errors import MmtError
-from mmt_plans.forces import ForceError, force_analysis, loads_at
+from mmt_plans.forces import ForceError
 
 PRESS = ROOT / "samples" / "six_link_press.toml"
 FOUR_BAR = ROOT / "samples" / "four_bar_coupler.toml"
@@ -17,13 +18,13 @@ FOUR_BAR = ROOT / "samples" / "four_bar_coupler.toml"
 
 @pytest.fixture(scope="module")
 def press():
-    return mmt_plans.load(PRESS).analyze()
+    return mmt_plans.solve(mmt_plans.load(PRESS))
 
 
 def test_weights_inertia_forces_and_moments(press):
-    mech, sw = press.mech, press.sweep
+    mech, sw = press.mechanism, press.sweep
     k = press.entry(2)
-    loads = loads_at(press, k, mu_l=0.005)
+    loads = link_loads(press.state(press.positions[k].index), 0.005)
     assert loads.index == 2 and loads.phi1_deg == press.positions[k].phi1_deg
     for lid, link in mech.links.items():
         ll = loads.links[lid]
@@ -41,11 +42,11 @@ def test_weights_inertia_forces_and_moments(press):
         assert sh.arm == pytest.approx(abs(ll.inertia_moment) / abs(F), rel=1e-12)
         assert sh.arm_mm == pytest.approx(sh.arm / 0.005, rel=1e-15)  # (19)
     with pytest.raises(ForceError):
-        loads_at(press, k, mu_l=-1.0)
+        link_loads(press.state(press.positions[k].index), -1.0)
 
 
 def test_loads_are_read_only(press):
-    ll = loads_at(press, 0).links[2]
+    ll = link_loads(press.state(press.positions[0].index)).links[2]
     with pytest.raises(ValueError):
         ll.inertia_force[0] = 1.0
     with pytest.raises(AttributeError):
@@ -53,13 +54,13 @@ def test_loads_are_read_only(press):
 
 
 def test_gravity_off(press):
-    a = press.mech.with_changes(g=0.0).analyze()
-    for ll in loads_at(a, 0).links.values():
+    a = mmt_plans.solve(press.mechanism.with_changes(g=0.0))
+    for ll in link_loads(a.state(a.positions[0].index)).links.values():
         assert np.array_equal(ll.weight, [0.0, 0.0])
 
 
 def test_loads_at_any_angle(press):
-    loads = loads_at(press, phi1_deg=123.0)
+    loads = link_loads(press.state(phi1_deg=123.0))
     sw = press.chain.sweep(np.array([123.0]))
     assert loads.index is None and loads.phi1_deg == 123.0
     assert np.allclose(loads.links[4].inertia_force, -80.0 * sw.a["S4"][0], rtol=0, atol=1e-12)
@@ -69,12 +70,12 @@ def test_loads_at_any_angle(press):
 def test_production_resistance_off_in_the_idle_stroke(press):
     k = press.entry(8)
     assert press.positions[k].stroke == "idle"
-    fa = force_analysis(press, 8)
+    fa = press.forces_at(8)
     (f,) = fa.loads.production_resistance
     assert f.name == "F_PR" and not f.acting and np.array_equal(f.force, [0.0, 0.0])
     # the same as a press without the force
-    bare = press.mech.with_changes(forces=()).analyze()
-    fb = force_analysis(bare, 8)
+    bare = mmt_plans.solve(press.mechanism.with_changes(forces=()))
+    fb = bare.forces_at(8)
     assert fa.balancing_force_plans == pytest.approx(fb.balancing_force_plans, rel=1e-12)
     for name, r in fa.reactions.items():
         assert np.allclose(r.force, fb.reactions[name].force, rtol=1e-12, atol=1e-9)
@@ -83,10 +84,10 @@ def test_production_resistance_off_in_the_idle_stroke(press):
 def test_production_resistance_acts_in_the_working_stroke(press):
     k = press.entry(2)
     assert press.positions[k].stroke == "working"
-    fa = force_analysis(press, 2)
+    fa = press.forces_at(2)
     (f,) = fa.loads.production_resistance
     assert f.acting and np.array_equal(f.force, [-9000.0, 0.0])  # along −working_direction
-    bare = force_analysis(press.mech.with_changes(forces=()).analyze(), 2)
+    bare = (mmt_plans.solve(press.mechanism.with_changes(forces=()))).forces_at(2)
     V_E = c(press.sweep.v["E"][k])
     V_A = abs(c(press.sweep.v["A"][k]))
     # the force adds −F·V_E / V_A to F_bal (equal powers)
@@ -96,10 +97,10 @@ def test_production_resistance_acts_in_the_working_stroke(press):
 
 
 def test_always_opposes_the_velocity():
-    a = mmt_plans.load(FOUR_BAR).analyze()
+    a = mmt_plans.solve(mmt_plans.load(FOUR_BAR))
     for pos in a.positions:
         k = a.entry(pos.index)
-        (f,) = loads_at(a, k).production_resistance
+        (f,) = link_loads(a.state(a.positions[k].index)).production_resistance
         V = c(a.sweep.v["B"][k])
         F = c(f.force)
         if abs(V) > 1e-9:
@@ -158,18 +159,18 @@ def test_fixed_direction_against_the_motion_is_refused():
 
 @pytest.mark.parametrize("acts, idle_acts", [("", True), ('acts = "working"', False)])
 def test_fixed_direction(acts, idle_acts):
-    a = mmt_plans.loads(FIXED % acts).analyze()
+    a = mmt_plans.solve(mmt_plans.loads(FIXED % acts))
     for pos in a.positions:
         k = a.entry(pos.index)
-        fa = force_analysis(a, pos.index)
+        fa = a.forces_at(pos.index)
         (f,) = fa.loads.production_resistance
         acting = idle_acts or pos.stroke == "working"
         assert f.acting == acting and f.rule == "fixed"
         assert np.array_equal(f.force, [0.0, -500.0] if acting else [0.0, 0.0])
-        for link, (F, M, scale) in equilibrium_residuals(a.mech, a.sweep, k, pos.stroke,
+        for link, (F, M, scale) in equilibrium_residuals(a.mechanism, a.sweep, k, pos.stroke,
                                                          fa).items():
             assert F <= 1e-9 * scale and M <= 1e-9 * scale
-        expected = virtual_power_balancing_force(a.mech, a.sweep, k, pos.stroke)
+        expected = virtual_power_balancing_force(a.mechanism, a.sweep, k, pos.stroke)
         assert fa.balancing_force_plans == pytest.approx(expected, rel=1e-9)
 
 
@@ -183,8 +184,8 @@ def test_zero_inertia_force_keeps_the_couple():
     M_IN3 = −J3·ε3 is not; nothing to shift, so the couple stays (and goes on
     the lever as two forces M/l at C and B)."""
     assert "cm = [0, 0]" in ROCKER_CM_AT_PIVOT
-    a = mmt_plans.loads(ROCKER_CM_AT_PIVOT).analyze()
-    fa = force_analysis(a)
+    a = mmt_plans.solve(mmt_plans.loads(ROCKER_CM_AT_PIVOT))
+    fa = a.forces_at()
     ll = fa.loads.links[3]
     assert np.hypot(*ll.inertia_force) < 1e-12  # rounding noise at most
     assert abs(ll.inertia_moment) > 1e-3
@@ -198,29 +199,29 @@ def test_zero_inertia_force_keeps_the_couple():
     F_B = c(next(f for f in pair if f.point == "B").force)
     assert cross(B - C, F_B) == pytest.approx(ll.inertia_moment, rel=1e-12)  # F' = M / l
     k = a.entry(fa.index)
-    expected = virtual_power_balancing_force(a.mech, a.sweep, k, a.positions[k].stroke)
+    expected = virtual_power_balancing_force(a.mechanism, a.sweep, k, a.positions[k].stroke)
     assert fa.balancing_force_plans == pytest.approx(expected, rel=1e-9)
     assert fa.balancing_force_lever == pytest.approx(expected, rel=1e-9)
-    for link, (F, M, scale) in equilibrium_residuals(a.mech, a.sweep, k, a.positions[k].stroke,
+    for link, (F, M, scale) in equilibrium_residuals(a.mechanism, a.sweep, k, a.positions[k].stroke,
                                                      fa).items():
         assert F <= 1e-9 * scale and M <= 1e-9 * scale
 
 
 def test_errors_are_clear(press):
     with pytest.raises(ForceError, match="position 99 does not exist") as err:
-        force_analysis(press, 99)
+        press.forces_at(99)
     assert isinstance(err.value, MmtError) and isinstance(err.value, ValueError)
     with pytest.raises(ForceError):
-        force_analysis(press, True)  # type: ignore[arg-type]
+        press.forces_at(True)  # type: ignore[arg-type]
     with pytest.raises(ForceError):
-        force_analysis(press, 2, phi1_deg=10.0)
+        press.forces_at(2, phi1_deg=10.0)
     at_rest = PRESS.read_text().replace('at = "E"', 'at = "E"\ndirection = [1, 0]')
-    assert force_analysis(mmt_plans.loads(at_rest).analyze()).loads.production_resistance[0].rule \
+    assert (mmt_plans.solve(mmt_plans.loads(at_rest))).forces_at().loads.production_resistance[0].rule \
         == "fixed"
     # a force against the motion of the crank's pivot, which never moves: always at rest, zero
     pivot = FOUR_BAR.read_text().replace('link = 3\nat = "B"', 'link = 1\nat = "O"')
     assert 'at = "O"' in pivot
-    (f,) = force_analysis(mmt_plans.loads(pivot).analyze()).loads.production_resistance
+    (f,) = (mmt_plans.solve(mmt_plans.loads(pivot))).forces_at().loads.production_resistance
     assert f.at_rest and not f.acting and not f.force.any()
 
 
@@ -229,10 +230,10 @@ def test_a_position_that_does_not_assemble():
     group does not assemble, the kinematics' own error comes through."""
     text = FOUR_BAR.read_text().replace("A = [80, 0]", "A = [200, 0]")
     with pytest.raises(MmtError, match="cannot make a whole turn"):
-        mmt_plans.loads(text).analyze().positions
+        mmt_plans.solve(mmt_plans.loads(text)).positions
     mech = mmt_plans.loads(text.replace("[study]", "[study]\npartial_turn = true"))
-    an = mech.analyze()
+    an = mmt_plans.solve(mech)
     bad = next(phi for phi in np.arange(0.0, 360.0, 5.0)
                if an.chain.sweep(np.array([phi])).problem(0) is not None)
     with pytest.raises(MmtError, match="cannot assemble"):
-        force_analysis(an, phi1_deg=float(bad))
+        an.forces_at(phi1_deg=float(bad))

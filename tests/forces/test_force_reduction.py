@@ -14,16 +14,16 @@ import pytest
 from force_checks import ROOT, SAMPLES
 
 import mmt_plans
-from mmt_plans.forces import force_analysis, reduction
+from mmt_plans.forces.reduction import reduce_sweep
 
 H_DEG = 1e-4
 
 
 def by_differences(a):
-    mech = a.mech
+    mech = a.mechanism
     phi = np.array([p.phi1_deg for p in a.positions])
     h = np.radians(H_DEG)
-    ahead, back = mech.sweep(phi + H_DEG), mech.sweep(phi - H_DEG)
+    ahead, back = mmt_plans.sweep(mech, phi + H_DEG), mmt_plans.sweep(mech, phi - H_DEG)
     w1 = mech.drive.signed_omega
     energy = np.zeros(len(phi))
     for lid, link in mech.links.items():
@@ -47,8 +47,8 @@ def by_differences(a):
 
 @pytest.mark.parametrize("path", SAMPLES, ids=lambda p: p.stem)
 def test_reduced_inertia_and_moment(path):
-    a = mmt_plans.load(path).analyze()
-    red = reduction(a)
+    a = mmt_plans.solve(mmt_plans.load(path))
+    red = a.reduction
     J_red, M_red = by_differences(a)
     assert np.allclose(red.reduced_inertia, J_red, rtol=1e-6, atol=0)
     scale = np.abs(M_red).max()
@@ -61,8 +61,8 @@ def test_reduced_inertia_and_moment(path):
 def test_sign_of_the_reduced_moment():
     """Seed 002 task 5: M = −F_KO·v_S5/ω1 < 0 — the resistance takes energy
     from the drive; zero in the idle stroke."""
-    a = mmt_plans.load(ROOT / "samples" / "six_link_press.toml").analyze()
-    red = reduction(a)
+    a = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "six_link_press.toml"))
+    red = a.reduction
     for pos, m in zip(a.positions, red.reduced_moment):
         if pos.stroke == "idle":
             assert m == 0.0
@@ -70,7 +70,7 @@ def test_sign_of_the_reduced_moment():
             assert m <= 1e-9
     k = a.entry(2)
     V_E = a.sweep.v["E"][k]
-    assert red.reduced_moment[k] == pytest.approx(-9000.0 * V_E[0] / a.mech.drive.omega)
+    assert red.reduced_moment[k] == pytest.approx(-9000.0 * V_E[0] / a.mechanism.drive.omega)
     assert red.reduced_moment_of["F_PR"][k] == red.reduced_moment[k]
 
 
@@ -78,21 +78,23 @@ def test_reduced_moment_is_balanced_by_the_balancing_moment():
     """Massless links and no gravity: M_bal + M_red = 0 at every position."""
     mech = mmt_plans.load(ROOT / "samples" / "six_link_press.toml")
     links = {lid: replace(link, mass=0.0, J=0.0) for lid, link in mech.links.items()}
-    a = mech.with_changes(links=links, g=0.0).analyze()
-    red = reduction(a)
+    a = mmt_plans.solve(mech.with_changes(links=links, g=0.0))
+    red = a.reduction
     assert np.all(red.reduced_inertia == 0.0)
     for k, pos in enumerate(a.positions):
-        fa = force_analysis(a, pos.index)
+        fa = a.forces_at(pos.index)
         assert fa.balancing_moment == pytest.approx(-red.reduced_moment[k], rel=1e-9, abs=1e-9)
 
 
 def test_reduction_at_any_angles():
-    a = mmt_plans.load(ROOT / "samples" / "shaper.toml").analyze()
+    a = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "shaper.toml"))
     phi = np.linspace(0, 360, 73)
-    red = reduction(a, phi)
+    red = reduce_sweep(a.mechanism, a.sweep_at(phi % 360), (None,) * len(phi),
+                       tuple(a.stroke_of(x % 360) for x in phi))
     assert red.phi1_deg.shape == (73,) and all(i is None for i in red.index)
-    at_positions = reduction(a)
+    at_positions = a.reduction
     k = 3
-    again = reduction(a, [a.positions[k].phi1_deg])
+    phi_k = a.positions[k].phi1_deg
+    again = reduce_sweep(a.mechanism, a.sweep_at([phi_k]), (None,), (a.stroke_of(phi_k),))
     assert again.reduced_inertia[0] == pytest.approx(at_positions.reduced_inertia[k], rel=1e-14)
     assert again.reduced_moment[0] == pytest.approx(at_positions.reduced_moment[k], rel=1e-14)

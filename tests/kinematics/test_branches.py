@@ -21,6 +21,8 @@ from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
 import mmt_plans
+from mmt_plans.kinematics.chain import build_chain
+from mmt_plans.results_json import results as results_json
 from mmt_plans.errors import PartialTurnError
 from mechanisms import four_bar_toml, slider_crank_toml
 
@@ -42,17 +44,17 @@ def test_rrr_branch_sign_is_the_side_of_b(sign):
     # the sketch puts B on the side the sign names: left of A->C for +1
     base = four_bar_toml(100, 300, 250, 200)
     mech0 = mmt_plans.loads(base)
-    sw = mech0.sweep([phi])
+    sw = mmt_plans.sweep(mech0, [phi])
     B = complex(*sw.points["B"][0]) * 1e3
     C = 300 + 0j
     # reflect B in the line A-C to get the other branch's B
     u = (C - A) / abs(C - A)
     B_other = A + u * ((B - A) / u).conjugate()
-    wanted = B if mech0.chain.choice.signs["2-3"] == sign else B_other
+    wanted = B if build_chain(mech0).choice.signs["2-3"] == sign else B_other
     mech = mmt_plans.loads(base + f"\n[sketch]\nA = [{A.real}, {A.imag}]\n"
                            f"B = [{wanted.real}, {wanted.imag}]\n")
-    assert mech.chain.choice.signs["2-3"] == sign and mech.chain.choice.rule == "sketch"
-    sw = mech.sweep(GRID).check()
+    assert build_chain(mech).choice.signs["2-3"] == sign and build_chain(mech).choice.rule == "sketch"
+    sw = mmt_plans.sweep(mech, GRID).check()
     for k in range(len(GRID)):
         A_k, B_k = (complex(*sw.points[p][k]) for p in "AB")
         side = cross(C / 1e3 - A_k, B_k - A_k)
@@ -67,8 +69,8 @@ def test_rrp_branch_sign_is_the_far_or_near_intersection(sign):
     x_far = r + math.sqrt(l * l - e * e)
     x = x_far if sign > 0 else r - math.sqrt(l * l - e * e)
     mech = mmt_plans.loads(base + f"\n[sketch]\nA = [{r}, 0]\nB = [{x}, {e}]\n")
-    assert mech.chain.choice.signs["2-3"] == sign
-    sw = mech.sweep(GRID).check()
+    assert build_chain(mech).choice.signs["2-3"] == sign
+    sw = mmt_plans.sweep(mech, GRID).check()
     for k, phi in enumerate(np.radians(GRID)):
         A = r * cmath.exp(1j * phi) / 1e3
         foot = A.real
@@ -82,7 +84,7 @@ def test_rpr_branches_are_the_slot_turned_by_plus_and_minus_arcsin():
     # the shaper's block in the slotted link: the slot line passes through the
     # block's point on both branches, and the two slot angles differ
     mech = mmt_plans.load(ROOT / "samples" / "shaper.toml").with_changes(sketch={})
-    chain = mech.chain
+    chain = build_chain(mech)
     solver = next(sv for sv in chain.solvers if sv.group.kind == "RPR")
     group, pair = solver.group.name, solver.inner
     phi = np.radians(GRID)
@@ -116,10 +118,10 @@ def test_every_sample_turns_fully_without_its_sketch():
             if not skip:
                 kept.append(line)
         mech = mmt_plans.loads("\n".join(kept), f)
-        choice = mech.chain.choice
+        choice = build_chain(mech).choice
         assert choice.whole_turn and choice.rule != "sketch", f
         assert dict(choice.signs) in [dict(c) for c in choice.full_turn]
-        assert mech.sweep(GRID).ok.all(), f
+        assert mmt_plans.sweep(mech, GRID).ok.all(), f
 
 
 # --- three groups, one combination of the first two ---------------------------------
@@ -194,7 +196,7 @@ def independent(phi_deg: float, s1: int, s2: int, s3: int) -> dict[str, complex]
 
 def test_three_groups_where_one_branch_pair_turns():
     mech = mmt_plans.loads(THREE)
-    choice = mech.chain.choice
+    choice = build_chain(mech).choice
     pairs = {(c["2-3"], c["4-5"]) for c in choice.full_turn}
     assert pairs == {(-1, 1)}  # the greedy rule (+1 for group 2-3 first) cannot continue
     assert len(choice.full_turn) == 2  # the last group closes on either branch
@@ -202,16 +204,16 @@ def test_three_groups_where_one_branch_pair_turns():
     # the other pairs fail somewhere, by the independent solver too
     for s1, s2 in ((1, 1), (1, -1), (-1, -1)):
         assert any(independent(p, s1, s2, 1) is None for p in GRID)
-    sw = mech.sweep(GRID).check()
+    sw = mmt_plans.sweep(mech, GRID).check()
     for k, phi in enumerate(GRID):
         ref = independent(float(phi), -1, 1, choice.signs["6-7"])
         assert ref is not None
         for name, z in ref.items():
             got = complex(*sw.points[name][k]) * 1e3
             assert abs(got - z) < 1e-9 * 500, (phi, name)
-    analysis = mech.analyze()
+    analysis = mmt_plans.solve(mech)
     assert analysis.branches.rule == "branch order"
-    assert analysis.to_json()["branches"]["full_turn_combinations"] == 2
+    assert results_json(analysis)["branches"]["full_turn_combinations"] == 2
 
 
 def test_three_groups_sketch_of_a_pair_that_does_not_turn_is_refused():
@@ -221,7 +223,7 @@ def test_three_groups_sketch_of_a_pair_that_does_not_turn_is_refused():
     sketch = "\n[sketch]\n" + "\n".join(f"{n} = [{z.real}, {z.imag}]" for n, z in ref.items())
     mech = mmt_plans.loads(THREE + sketch)
     with pytest.raises(PartialTurnError) as err:
-        mech.analyze().positions
+        mmt_plans.solve(mech).positions
     text = str(err.value)
     assert "sketched branches do not turn fully" in text and "group 2-3 -1, group 4-5 +1" in text
     assert "°…" in text and "fix:" in text
@@ -237,16 +239,16 @@ def _sample_files():
 def test_extreme_positions_are_zeros_of_the_output_velocity():
     for f in _sample_files():
         mech = mmt_plans.load(f)
-        analysis = mech.analyze()
+        analysis = mmt_plans.solve(mech)
         assert analysis.extremes is not None, f
         wd = np.asarray(mech.study.working_direction)
         out = mech.study.output
-        v_max = float(np.max(np.abs(mech.sweep(GRID).v[out] @ wd)))
-        sw = mech.sweep(list(analysis.extremes)).check()
+        v_max = float(np.max(np.abs(mmt_plans.sweep(mech, GRID).v[out] @ wd)))
+        sw = mmt_plans.sweep(mech, list(analysis.extremes)).check()
         v = sw.v[out] @ wd
         assert np.all(np.abs(v) <= 1e-12 * v_max), (f, v / v_max)
         s = sw.points[out] @ wd
-        grid_s = mech.sweep(GRID).points[out] @ wd
+        grid_s = mmt_plans.sweep(mech, GRID).points[out] @ wd
         assert s[0] <= grid_s.min() + 1e-12 and s[1] >= grid_s.max() - 1e-12, f
         if mech.study.zero is None:
             assert analysis.positions[0].phi1_deg == analysis.extremes[0]
@@ -289,17 +291,17 @@ def test_random_extended_four_bars_turn_fully_or_are_refused(text):
         mech = mmt_plans.loads(text)
     except mmt_plans.SpecError:
         return  # e.g. a drawn point that coincides with another
-    choice = mech.chain.choice
+    choice = build_chain(mech).choice
     event("whole turn" if choice.whole_turn else "refused")
     if not choice.whole_turn:
         with pytest.raises(PartialTurnError) as err:
-            mech.analyze().positions
+            mmt_plans.solve(mech).positions
         assert err.value.ranges == choice.ranges != ((0.0, 360.0),)
         assert "°…" in str(err.value) or "no crank angle" in str(err.value)
         assert not choice.full_turn
         return
     assert dict(choice.signs) in [dict(c) for c in choice.full_turn]
-    sw = mech.sweep(GRID)
+    sw = mmt_plans.sweep(mech, GRID)
     assert sw.ok.all() or all(e.__class__.__name__ == "SingularPlanError"
                               for e in (sw.problem(i) for i in np.flatnonzero(~sw.ok)))
     pts = sw.points

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import mmt_plans
+from mmt_plans.results_json import results as results_json
 from mechanisms import four_bar_toml, slider_crank_toml
 
 mp.mp.dps = 50
@@ -46,7 +47,7 @@ def test_dead_centre_of_a_slider_crank(ratio, delta):
     mech = slider_crank(r, l)
     w = mech.drive.omega
     for phi in (delta, 180.0 - delta):
-        sw = mech.sweep([phi]).check()  # finite, no error: a dead centre of the crank is no singular plan
+        sw = mmt_plans.sweep(mech, [phi]).check()  # finite, no error: a dead centre of the crank is no singular plan
         ref = slider_crank_reference(r / 1e3, l / 1e3, w, phi)
         got = (sw.points["B"][0, 0], sw.v["B"][0, 0], sw.a["B"][0, 0], sw.omega[2][0], sw.eps[2][0])
         scales = (r / 1e3, w * r / 1e3, w * w * r / 1e3, w, w * w)
@@ -112,7 +113,7 @@ def test_mechanism_near_a_toggle_keeps_16_minus_2_log_cond_digits(delta):
     so about 2·log10(cond) digits are lost (cond = 1/sin of the plan lines' angle)."""
     mech = toggle_four_bar()
     w = mech.drive.omega
-    sw = mech.sweep([180.0 - delta]).check()
+    sw = mmt_plans.sweep(mech, [180.0 - delta]).check()
     w2, w3, sin_ref = four_bar_reference(180.0 - delta, w)
     cond = 1 / float(sin_ref)
     kept = min(digits(sw.omega[2][0] - w2, w), digits(sw.omega[3][0] - w3, w))
@@ -123,7 +124,7 @@ def test_toggle_within_rounding_is_reported_as_singular_not_nan():
     # 1e-6 deg from the toggle, |AC| differs from l2 + l3 by 37.5·δ² mm ≈ 1e-14 mm:
     # below double precision, so the position is the toggle itself: a singular plan
     mech = toggle_four_bar()
-    sw = mech.sweep([180.0 - 1e-6])
+    sw = mmt_plans.sweep(mech, [180.0 - 1e-6])
     assert not sw.ok[0]
     assert isinstance(sw.problem(0), mmt_plans.SingularPlanError)
     assert "at phi1 = 179.999999 deg" in str(sw.problem(0))
@@ -131,15 +132,15 @@ def test_toggle_within_rounding_is_reported_as_singular_not_nan():
 
 def test_exactly_parallel_plan_lines_are_reported_not_inf():
     mech = toggle_four_bar()
-    sw = mech.sweep([90.0, 180.0, 270.0])
+    sw = mmt_plans.sweep(mech, [90.0, 180.0, 270.0])
     assert list(sw.ok) == [True, False, True]
     err = sw.problem(1)
     assert isinstance(err, mmt_plans.SingularPlanError)
     assert "at phi1 = 180 deg, the plan of group 2-3 is singular" in str(err)
     # the analysis of the other positions is still done, and the JSON has no inf or NaN
-    analysis = mech.analyze()
-    text = json.dumps(analysis.to_json(), allow_nan=False)
-    assert "is singular" in text or all(p["phi1_deg"] != 180.0 for p in analysis.to_json()["positions"])
+    analysis = mmt_plans.solve(mech)
+    text = json.dumps(results_json(analysis), allow_nan=False)
+    assert "is singular" in text or all(p["phi1_deg"] != 180.0 for p in results_json(analysis)["positions"])
 
 
 def test_extreme_proportions_one_mm_beside_ten_metres_at_3000_rpm():
@@ -148,7 +149,7 @@ def test_extreme_proportions_one_mm_beside_ten_metres_at_3000_rpm():
     mech = slider_crank(r, l, rpm=3000.0, e_mm=0.0)
     w = mech.drive.omega
     phis = [0.0, 37.123, 90.0, 200.5, 333.3]
-    sw = mech.sweep(phis).check()
+    sw = mmt_plans.sweep(mech, phis).check()
     for k, phi in enumerate(phis):
         ref = slider_crank_reference(r / 1e3, l / 1e3, w, phi)
         got = (sw.points["B"][k, 0], sw.v["B"][k, 0], sw.a["B"][k, 0], sw.omega[2][k], sw.eps[2][k])
@@ -163,7 +164,7 @@ def test_extreme_proportions_one_mm_beside_ten_metres_at_3000_rpm():
 
 def test_lengths_at_micrometre_resolution_keep_their_value():
     mech = slider_crank(123.457, 456.789, rpm=100.0, e_mm=12.345)
-    sw = mech.sweep([10.0]).check()
+    sw = mmt_plans.sweep(mech, [10.0]).check()
     A, B = sw.position_of("A")[0], sw.position_of("B")[0]
     assert abs(abs(B - A) - 0.456789) < 1e-15
     assert abs(B.imag - 0.012345) < 1e-17
@@ -175,7 +176,7 @@ def test_rocker_rocker_is_refused_with_the_crank_angles_that_work():
     mech = mmt_plans.loads(four_bar_toml(200, 300, 150, 240, rpm=30))
     edge = math.degrees(math.acos((200**2 + 300**2 - 390**2) / (2 * 200 * 300)))
     with pytest.raises(mmt_plans.errors.PartialTurnError) as err:
-        mech.analyze().positions
+        mmt_plans.solve(mech).positions
     (start, end), = err.value.ranges
     assert start == pytest.approx(360 - edge, abs=1e-8)
     assert end == pytest.approx(edge, abs=1e-8)
@@ -187,7 +188,7 @@ def test_rocker_rocker_is_refused_with_the_crank_angles_that_work():
 def test_rocker_rocker_opted_in_analyses_the_range_without_fake_extremes():
     mech = mmt_plans.loads(four_bar_toml(200, 300, 150, 240, rpm=30,
                                          extra="").replace("[study]", "[study]\npartial_turn = true"))
-    analysis = mech.analyze()
+    analysis = mmt_plans.solve(mech)
     edge = math.degrees(math.acos((200**2 + 300**2 - 390**2) / (2 * 200 * 300)))
     first, last = analysis.limits  # counter-clockwise crank: from 360 - edge to edge
     assert first == pytest.approx(360 - edge, abs=1e-8) and last == pytest.approx(edge, abs=1e-8)
@@ -196,7 +197,7 @@ def test_rocker_rocker_opted_in_analyses_the_range_without_fake_extremes():
     span = (last - first) % 360.0
     # every position strictly inside the range, none at a limit of assembly
     assert all(0.0 < a < span for a in ahead)
-    results = analysis.to_json()
+    results = results_json(analysis)
     json.dumps(results, allow_nan=False)  # never inf or NaN
     assert all("problem" not in p for p in results["kinematics"])
     assert results["limits_of_assembly_deg"] == [pytest.approx(first), pytest.approx(last)]
@@ -205,6 +206,6 @@ def test_rocker_rocker_opted_in_analyses_the_range_without_fake_extremes():
     if analysis.extremes is not None:
         for phi in analysis.extremes:
             assert abs((phi - first) % 360.0) > 1e-6 and abs((phi - last) % 360.0) > 1e-6
-            sw = mech.sweep([phi]).check()
+            sw = mmt_plans.sweep(mech, [phi]).check()
             v = sw.v["B"][0] @ np.asarray(mech.study.working_direction)
             assert abs(v) <= 1e-12 * np.abs(analysis.sweep.v["B"]).max()

@@ -33,7 +33,7 @@ def grashof_crank_rocker(draw):
 def test_four_bar_closes_and_never_jumps(dims, sign):
     r, d, l, c = dims
     mech = mmt_plans.loads(four_bar(r, d, l, c, sign))
-    sw = mech.sweep(TURN).check()
+    sw = mmt_plans.sweep(mech, TURN).check()
     A, B, C = (sw.position_of(n) for n in "ABC")
     assert np.abs(np.abs(B - A) - l * MM).max() < 1e-9 * MM
     assert np.abs(np.abs(B - C) - c * MM).max() < 1e-9 * MM
@@ -54,7 +54,7 @@ def test_slider_crank_closes_and_never_jumps(r, ratio, offset):
     l = r * ratio
     e = offset * (l - r)  # |e| < l - r: the crank turns fully
     mech = mmt_plans.loads(slider_crank_toml(r, l, e, drive="omega = 20"))
-    sw = mech.sweep(TURN).check()
+    sw = mmt_plans.sweep(mech, TURN).check()
     A, B = sw.position_of("A"), sw.position_of("B")
     assert np.abs(np.abs(B - A) - l * MM).max() < 1e-9 * MM
     assert np.abs(B.imag - e * MM).max() < 1e-9 * MM
@@ -93,7 +93,7 @@ on = 3
 A = [0, {r}]
 B = [0, {arm - d}]
 """)
-    sw = mech.sweep(TURN).check()
+    sw = mmt_plans.sweep(mech, TURN).check()
     A, B, C = sw.position_of("A"), sw.position_of("B"), sw.position_of("C")
     # the block's point lies on the slot's line C→B at every angle
     assert np.abs(cross(B - C, A - C) / np.abs(B - C)).max() < 1e-9 * MM

@@ -41,7 +41,7 @@ def mech():
 
 def test_slider_crank_matches_closed_form(mech):
     phi = np.linspace(0, 2 * np.pi, 721)
-    sw = mech.sweep(np.degrees(phi)).check()
+    sw = mmt_plans.sweep(mech, np.degrees(phi)).check()
     x, v, a, angle2, w2 = closed_form(phi)
     scale = R * (math.pi * RPM / 30) ** 2
     assert np.abs(sw.points["B"][:, 0] - x).max() < 1e-12
@@ -56,6 +56,6 @@ def test_rod_angular_velocity_sign(mech):
     # at φ = 90° the pin moves left at r ω1 and B is still: the rod AB turns ...
     # V_B = V_A + ω2 × AB;  with A above the guide and B to the right, V_A = (-rω, 0):
     # x: 0... solve: V_Bx = -rω1 - ω2 (yB - yA) ⇒ with V_B·ŷ = 0: 0 = 0 + ω2 (xB - xA) ⇒ ω2 = 0
-    sw = mech.sweep(np.array([90.0]))
+    sw = mmt_plans.sweep(mech, np.array([90.0]))
     assert abs(sw.omega[2][0]) < 1e-12
     assert sw.v["B"][0, 0] == pytest.approx(-R * math.pi * RPM / 30, rel=1e-12)

@@ -61,8 +61,8 @@ def test_every_seed_task_is_here():
 
 @pytest.mark.parametrize("path", FILES, ids=lambda p: f"{p.parent.name}/{p.stem}")
 def test_schematic_of_every_task(path, look):
-    analysis = mmt_plans.load(path).analyze()
-    mech = analysis.mech
+    analysis = mmt_plans.solve(mmt_plans.load(path))
+    mech = analysis.mechanism
     sk = sketch_schematic(analysis, look, "en", width_mm=W, height_mm=H)
 
     # Every point letter and every link number, each in its own group.
@@ -88,8 +88,8 @@ def test_schematic_of_every_task(path, look):
 
 @pytest.mark.parametrize("name", ["seed003/task01_v1", "seed002/task3_v00", "seed002/task6_v00"])
 def test_crank_arrow_turns_with_the_drive_and_output_arrow_points_the_working_way(name, look):
-    analysis = mmt_plans.load(TASKS / f"{name}.toml").analyze()
-    mech = analysis.mech
+    analysis = mmt_plans.solve(mmt_plans.load(TASKS / f"{name}.toml"))
+    mech = analysis.mechanism
     sk = sketch_schematic(analysis, look, "en", width_mm=W, height_mm=H)
     arc = sk.named("arc")[0]
     centre = np.array(arc["center"])
@@ -105,10 +105,10 @@ def test_crank_arrow_turns_with_the_drive_and_output_arrow_points_the_working_wa
 
 def test_drawn_to_one_scale(look):
     """Joints lie where the solution puts them, all to one scale (press of seed 003)."""
-    analysis = mmt_plans.load(TASKS / "seed003" / "task01_v1.toml").analyze()
+    analysis = mmt_plans.solve(mmt_plans.load(TASKS / "seed003" / "task01_v1.toml"))
     sk = sketch_schematic(analysis, look, "en", width_mm=W, height_mm=H)
     k = analysis.entry(0)
-    true = {n: np.asarray(analysis.sweep.points[n][k]) for n in analysis.mech.point_owners}
+    true = {n: np.asarray(analysis.sweep.points[n][k]) for n in analysis.mechanism.point_owners}
     drawn = {c["center"] for c in sk.named("circle")}
     a, b = true["O1"], true["O2"]
     # find the scale from the two pivots' circles (the biggest white ones)

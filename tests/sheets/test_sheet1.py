@@ -22,7 +22,7 @@ PRESS = ROOT / "samples" / "six_link_press.toml"
 
 @pytest.fixture(scope="module")
 def press():
-    analysis = mmt_plans.load(PRESS).analyze()
+    analysis = mmt_plans.solve(mmt_plans.load(PRESS))
     backend = RecordingBackend()
     sheet = compose_sheet1(analysis, backend)
     backend.close()
@@ -50,7 +50,7 @@ def test_every_required_group_is_drawn(press):
 
 def test_plan_scales_are_the_standard_ones(press):
     analysis, _, sheet = press
-    pin = analysis.mech.crank_pin
+    pin = analysis.mechanism.crank_pin
     view = analysis.plan(analysis.plan_positions[0])
     assert sheet.shrink == 0
     assert sheet.scales["mu_V"] == scale_for(float(np.hypot(*view.velocity_images[pin])), VELOCITY_PLAN)
@@ -114,7 +114,7 @@ def test_drawings_stay_inside_their_placed_rectangles(press):
 
 @pytest.mark.parametrize("path", SAMPLES, ids=lambda p: p.stem)
 def test_no_overlaps_on_any_sample(path):
-    analysis = mmt_plans.load(path).analyze()
+    analysis = mmt_plans.solve(mmt_plans.load(path))
     backend = RecordingBackend()
     sheet = compose_sheet1(analysis, backend)
     backend.close()
@@ -130,7 +130,7 @@ def test_omega_and_epsilon_arcs_at_the_planned_positions(press):
     calls = backend.in_group("mechanism")
     labels = " ".join(c["content"] for c in calls if c.name == "text")
     arcs = [c for c in calls if c.name == "arc"]
-    rotating = [lid for lid in analysis.mech.links if lid != analysis.mech.drive.link
+    rotating = [lid for lid in analysis.mechanism.links if lid != analysis.mechanism.drive.link
                 and abs(analysis.plan(analysis.plan_positions[0]).omega[lid]) > 1e-9]
     assert "ω" in labels and "ε" in labels
     # one arc per ω and ε of each rotating link per planned position, and ω1
@@ -147,7 +147,7 @@ def test_omega_and_epsilon_arcs_at_the_planned_positions(press):
 
 def test_s_curve_is_smooth_and_passes_through_the_positions(press):
     analysis, backend, sheet = press
-    construction = analysis.diagrams[0]
+    construction = analysis.diagrams.construction
     curves = [c for c in backend.in_group("diagram-s") if c.name == "polyline" and c["line"] == "main"]
     assert len(curves) == 1
     pts = np.array(curves[0]["points"])
@@ -194,7 +194,7 @@ def test_diagram_scales_are_standard(path):
     μ_a = μ_V/(μ_t·OH2) of the diagrams are all series values."""
     from mmt_plans.scales import is_standard
 
-    c = mmt_plans.load(path).analyze().diagrams[0]
+    c = mmt_plans.solve(mmt_plans.load(path)).diagrams.construction
     assert 150.0 - 1e-9 <= c.L <= 240.0 + 1e-9
     assert c.mu_t * c.L == pytest.approx(60.0 / c.n1, rel=1e-12)
     for name in ("mu_S", "mu_t", "mu_V", "mu_a"):

@@ -22,7 +22,7 @@ PRESS = ROOT / "samples" / "six_link_press.toml"
 
 
 def _draw(path: Path, lang: str = "en"):
-    analysis = mmt_plans.load(path).analyze()
+    analysis = mmt_plans.solve(mmt_plans.load(path))
     backend = RecordingBackend()
     sheet = compose_sheet2(analysis, backend, lang)  # type: ignore[arg-type]
     backend.close()
@@ -177,14 +177,12 @@ def test_force_markup():
 
 def test_draw_sheet_1_runs_no_force_analysis(tmp_path, monkeypatch):
     """`draw --sheet 1` asks only for what sheet 1 shows."""
-    import mmt_plans.forces
-    import mmt_plans.sheets.sheet2
+    import mmt_plans.solution
 
     def refuse(*args, **kwargs):
         raise AssertionError("the force analysis ran for sheet 1")
 
-    monkeypatch.setattr(mmt_plans.forces, "force_analysis", refuse)
-    monkeypatch.setattr(mmt_plans.sheets.sheet2, "force_analysis", refuse)
+    monkeypatch.setattr(mmt_plans.solution, "force_analysis_at", refuse)
     from mmt_plans.cli import main
 
     result = CliRunner().invoke(main, ["draw", str(PRESS), "-o", str(tmp_path), "--format", "svg",

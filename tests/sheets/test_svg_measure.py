@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import mmt_plans
-from mmt_plans.forces import force_analysis
+
 from mmt_plans.render.svg import SvgBackend
 from mmt_plans.sheets.page import Page
 from mmt_plans.sheets.sheet1 import compose_sheet1
@@ -52,7 +52,7 @@ def _arrows(group):
 
 @pytest.mark.parametrize("stem", ["six_link_press", "shaper", "five_dyads"])
 def test_plan_vectors_measured_in_the_svg(stem):
-    analysis = mmt_plans.load(ROOT / "samples" / f"{stem}.toml").analyze()
+    analysis = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / f"{stem}.toml"))
     sheet, root = _svg(compose_sheet1, analysis)
     for i in analysis.plan_positions:
         view = analysis.plan(i)
@@ -68,8 +68,8 @@ def test_plan_vectors_measured_in_the_svg(stem):
 
 @pytest.mark.parametrize("stem", ["six_link_press", "shaper", "five_dyads"])
 def test_force_polygons_measured_in_the_svg(stem):
-    analysis = mmt_plans.load(ROOT / "samples" / f"{stem}.toml").analyze()
-    fa = force_analysis(analysis, mu_l=float(analysis.mu_l))
+    analysis = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / f"{stem}.toml"))
+    fa = analysis.forces_at()
     sheet, root = _svg(lambda a, b: compose_sheet2(a, b, forces=fa), analysis)
     polys = [(g.name, g.polygons) for g in fa.groups]
     polys.append((str(fa.driving_link.link), (fa.driving_link.polygon,)))

@@ -15,25 +15,29 @@ from pathlib import Path
 
 import numpy as np
 
-from .bench import best_time
-from .diagrams import DIFFERENTIATION_METHODS
-from .report import table
+from ..diagrams import DIFFERENTIATION_METHODS
+from ..model import Mechanism
+from ..report import table
+from ..solution import solve
+from ..spec import load
+from .timing import best_time
 
 COUNTS = (8, 12, 24, 36, 72, 360)
 METHOD_NAMES = {"plans": "plans (exact)", "textbook": "graphical (textbook)",
                 "central8": "8th-order differences", "spectral": "spectral (FFT)"}
 
 
-def measure(mech, counts=COUNTS, repeat=5):
+def measure(mech: Mechanism, counts=COUNTS, repeat=5):
     """Rows (method, n, seconds, V error, a error) for one mechanism."""
-    analysis = mech.analyze()
+    solution = solve(mech)
     n1 = mech.drive.n1_rpm
+    phi0 = solution.positions[0].phi1_deg
     rows = []
     for n in counts:
-        phi = analysis.phi0_deg + analysis.sense_sign * 360.0 * np.arange(n) / n
+        phi = phi0 + solution.sense_sign * 360.0 * np.arange(n) / n
 
-        def plans():
-            return analysis.output_along(mech.sweep(phi))
+        def plans(phi=phi):
+            return solution.output_along(solution.sweep_at(phi))
 
         s, v, a = plans()
         vmax, amax = np.abs(v).max(), np.abs(a).max()
@@ -53,8 +57,6 @@ def measure(mech, counts=COUNTS, repeat=5):
 
 
 def bench_diagrams(files, repeat, echo, out_dir: Path = Path("out")) -> None:
-    from . import load
-
     all_rows = []
     for path in files:
         mech = load(path)
@@ -76,7 +78,7 @@ def bench_diagrams(files, repeat, echo, out_dir: Path = Path("out")) -> None:
 
 def plot_speed_error(rows, path: Path) -> Path:
     """Error against time, both on log scales, one polyline per method."""
-    from .render.svg import SvgBackend
+    from ..render.svg import SvgBackend
 
     W, H = 200.0, 140.0
     x0, y0, x1, y1 = 25.0, 20.0, 150.0, 125.0

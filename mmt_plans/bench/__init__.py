@@ -8,44 +8,21 @@ from __future__ import annotations
 
 import subprocess
 import sys
-import time
-from dataclasses import replace
 from pathlib import Path
 from typing import Callable
 
-
-from . import load
-from .report import table
-
-
-def best_time(fn: Callable[[], object], repeat: int, number: int = 1) -> float:
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        for _ in range(number):
-            fn()
-        best = min(best, (time.perf_counter() - t0) / number)
-    return best
-
-
-def full_analysis(mech, diagrams: bool = True):
-    """Everything `analyze` computes, from a mechanism with no caches."""
-    fresh = replace(mech)
-    return fresh.analyze().to_json(diagrams=diagrams)
-
-
-def sweep_everything(mech, phi):
-    sw = mech.sweep(phi)
-    return sw.points, sw.v, sw.a, sw.omega, sw.eps
-
+from ..report import table
+from ..spec import load
+from .timing import best_time, full_analysis
 
 _SWEEP = """
 import sys, numpy as np
-from mmt_plans import load
-from mmt_plans.bench import best_time, sweep_everything
-mech = load(sys.argv[1]); mech.chain  # built once, as a script sweeping many times would
+from mmt_plans.bench.timing import best_time, sweep_everything
+from mmt_plans.kinematics.chain import build_chain
+from mmt_plans.spec import load
+chain = build_chain(load(sys.argv[1]))  # built once, as a script sweeping many times would
 phi = np.linspace(0.0, 360.0, int(sys.argv[2]), endpoint=False)
-print(best_time(lambda: sweep_everything(mech, phi), int(sys.argv[3])))
+print(best_time(lambda: sweep_everything(chain, phi), int(sys.argv[3])))
 """
 
 
@@ -88,26 +65,10 @@ def run_benchmarks(sample_dir: Path, quick: bool = False, echo=print) -> None:
 
 
 def _extra_sections() -> list[Callable]:
-    """Benchmarks of the later stages (forces, diagrams, sheets), where present."""
-    sections = []
-    try:
-        from .forces.bench import bench_forces
-        sections.append(bench_forces)
-    except ImportError:
-        pass
-    try:
-        from .diagrams_bench import bench_diagrams
-        sections.append(bench_diagrams)
-    except ImportError:
-        pass
-    try:
-        from .sheets.bench import bench_sheets
-        sections.append(bench_sheets)
-    except ImportError:
-        pass
-    try:
-        from .batch import bench_batch
-        sections.append(bench_batch)
-    except ImportError:
-        pass
-    return sections
+    """Benchmarks of the later stages: forces, diagrams, sheets, the batch."""
+    from .batch import bench_batch
+    from .diagrams import bench_diagrams
+    from .forces import bench_forces
+    from .sheets import bench_sheets
+
+    return [bench_forces, bench_diagrams, bench_sheets, bench_batch]

@@ -1,23 +1,21 @@
 """Sheet writing times for `make bench` (targets: both sheets as SVG under
 0.5 s, as PDF under 3 s, for the default sample).
 
-Each figure starts from a loaded mechanism with no cached results, so that it
-includes everything the sheets ask the solver for (sheet 1: positions, plans
-at the planned positions, diagrams; sheet 2: the force analysis at the force
-position), then composes, writes SVG, and for PDF converts through Cairo.
+Each figure starts from a loaded mechanism: it solves it (everything the
+sheets draw), composes, writes SVG, and for PDF converts through Cairo.
 """
 
 from __future__ import annotations
 
 import tempfile
-from dataclasses import replace
 from pathlib import Path
 from typing import Callable, Sequence
 
-from .. import load
-from ..bench import best_time
 from ..report import table
-from .compose import available_sheets, write_sheets
+from ..sheets.compose import available_sheets, write_sheets
+from ..solution import solve
+from ..spec import load
+from .timing import best_time
 
 DEFAULT = "six_link_press"
 
@@ -33,7 +31,7 @@ def bench_sheets(files: Sequence[Path], repeat: int, echo: Callable[[str], None]
                 for numbers in [*((n,) for n in sheets), tuple(sheets)]:
 
                     def write() -> None:
-                        write_sheets(replace(mech).analyze(), out, (fmt,), "en", numbers)
+                        write_sheets(solve(mech), out, (fmt,), "en", numbers)
 
                     t = best_time(write, max(1, repeat // 2))
                     what = f"sheet {numbers[0]}" if len(numbers) == 1 else "both"

@@ -1,0 +1,35 @@
+"""Timing helpers of the benchmarks: best of several repeats, and what one
+`analyze` or one sweep computes."""
+
+from __future__ import annotations
+
+import time
+from typing import Any, Callable
+
+import numpy as np
+
+from ..kinematics.chain import Chain
+from ..model import Mechanism
+from ..results_json import results
+from ..solution import solve
+
+
+def best_time(fn: Callable[[], object], repeat: int, number: int = 1) -> float:
+    """The least time of `repeat` runs of `number` calls, per call (s)."""
+    best = float("inf")
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        for _ in range(number):
+            fn()
+        best = min(best, (time.perf_counter() - t0) / number)
+    return best
+
+
+def full_analysis(mech: Mechanism, diagrams: bool = True) -> dict[str, Any]:
+    """Everything `analyze` computes: the solution and its results JSON."""
+    return results(solve(mech), diagrams=diagrams)
+
+
+def sweep_everything(chain: Chain, phi: np.ndarray) -> tuple[Any, ...]:
+    sw = chain.sweep(phi)
+    return sw.points, sw.v, sw.a, sw.omega, sw.eps

@@ -1,0 +1,419 @@
+"""Solve a mechanism once into a frozen `Solution`: everything a sheet, the
+note, the check and the results JSON need.
+
+    >>> import mmt_plans
+    >>> solution = mmt_plans.solve(mmt_plans.load("samples/six_link_press.toml"))
+    >>> solution.structure.formula
+    'I(0,1) <- II(2,3) <- II(4,5)'
+
+The order is the textbook's: structure (seed 003 §1.1), the assembly branches
+and the turn, the extreme positions and the n positions (§1.2), the
+kinematics at every position (the plans of §1.3–1.6 are read from it), the
+S–V–a diagrams with the 5 % check (§1.7–1.8), the force analysis at the force
+position (§2.1–2.11), the reduction to the crank (seed 002 tasks 5–6).
+A part that cannot be computed (a position where the mechanism cannot
+assemble, diagrams of a partial turn) is kept as its problem, never as NaN.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+
+from .diagrams import (DIAGRAM_HEIGHT_MM, TIME_AXIS, KinematicDiagrams, PlanComparison,
+                       compare_with_plans, graphical_differentiation)
+from .errors import ForceError, MmtError, StructureError, partial_turn_error
+from .forces import ForceAnalysis, force_analysis_at
+from .forces.reduction import Reduction, reduce_sweep
+from .forces.state import PositionState, from_sweep
+from .kinematics.branches import Branches
+from .kinematics.chain import Chain, Sweep, build_chain
+from .kinematics.plans import PlanView, plan_view
+from .model import Mechanism, Stroke
+from .scales import DrawnLength, scale_for, series
+from .structure import Structure, analyse_structure
+
+__all__ = ["Position", "Diagrams", "Solution", "solve", "sweep", "EXTREME_TOL_DEG"]
+
+EXTREME_TOL_DEG = 1e-9
+GRID = 1440
+DENSE = 181  # crank angles of the trajectories drawn on sheet 1 (position 0 twice)
+
+
+@dataclass(frozen=True)
+class Position:
+    index: int | None  # None for an extra angle of `study.angles`
+    phi1_deg: float
+    stroke: Stroke
+
+
+@dataclass(frozen=True)
+class Diagrams:
+    """The graphical differentiation (mm and SI) and its 5 % check against the plans."""
+
+    construction: KinematicDiagrams
+    check: PlanComparison
+    v_plan: np.ndarray  # V of the output along the working direction at the positions
+    a_plan: np.ndarray
+
+
+@dataclass(frozen=True)
+class Solution:
+    """A mechanism solved: frozen, read by every output."""
+
+    mechanism: Mechanism
+    structure: Structure
+    chain: Chain  # the kinematic model on its branches (more angles: `sweep_at`)
+    branches: Branches
+    limits: tuple[float, float] | None  # limits of assembly of a partial turn (drive sense)
+    extremes: tuple[float, float] | None  # crank angles of the output's extreme positions
+    working_span_deg: float | None
+    positions: tuple[Position, ...]
+    plan_positions: tuple[int, ...]
+    force_position: int
+    sweep: Sweep  # the kinematics at every position and extra angle
+    mu_l: float  # the scale of the mechanism's drawing, m/mm
+    dense: Sweep  # DENSE angles counter-clockwise over the turn from position 0 (trajectories)
+    s_dense: np.ndarray | None  # S of the output at DENSE - 1 steps in the drive's sense, m
+    diagrams: Diagrams | None
+    diagrams_problem: str | None
+    forces: ForceAnalysis | None
+    forces_problem: str | None
+    reduction: Reduction
+
+    # --- reading ---------------------------------------------------------------------
+    @property
+    def sense_sign(self) -> int:
+        return 1 if self.mechanism.drive.sense == "ccw" else -1
+
+    @property
+    def assembly_ranges(self) -> tuple[tuple[float, float], ...]:
+        return self.branches.ranges
+
+    def entry(self, index: int) -> int:
+        """Where position `index` sits in `positions`."""
+        for k, p in enumerate(self.positions):
+            if p.index == index:
+                return k
+        raise ForceError(f"position {index} does not exist",
+                         f"use a position 0..{self.mechanism.study.positions - 1}")
+
+    def problem(self, k: int) -> MmtError | None:
+        """Why entry k of `positions` has no kinematics (None when it has)."""
+        return self.sweep.problem(k)
+
+    def plan(self, index: int) -> PlanView:
+        """The velocity and acceleration plan at position `index` (its problem raised)."""
+        k = self.entry(index)
+        problem = self.problem(k)
+        if problem is not None:
+            raise problem
+        return plan_view(self.sweep, k, index)
+
+    def output_along(self, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        return output_along(self.mechanism, sweep)
+
+    def stroke_of(self, phi1_deg: float) -> Stroke:
+        return _stroke_of(self.mechanism, self.chain, self.limits, self.extremes,
+                          self.working_span_deg, phi1_deg)
+
+    def require_forces(self) -> ForceAnalysis:
+        """The force analysis at the force position, or its problem raised."""
+        if self.forces is None:
+            raise MmtError(self.forces_problem or "no force analysis")
+        return self.forces
+
+    def require_diagrams(self) -> Diagrams:
+        if self.diagrams is None:
+            raise MmtError(self.diagrams_problem or "no kinematic diagrams")
+        return self.diagrams
+
+    # --- more angles, for the check and the tests ----------------------------------------
+    def sweep_at(self, phi1_deg: Sequence[float] | np.ndarray) -> Sweep:
+        """The kinematics at other crank angles, on the same branches."""
+        return self.chain.sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=float)))
+
+    def state(self, index: int | None = None, *, phi1_deg: float | None = None) -> PositionState:
+        """Where every link is and how it moves at position `index`, or at any crank angle."""
+        if (index is None) == (phi1_deg is None):
+            raise ForceError("give a position index or a crank angle, not both",
+                             "call with index or phi1_deg=...")
+        if phi1_deg is not None:
+            phi = float(phi1_deg) % 360.0
+            return from_sweep(self.mechanism, self.sweep_at([phi]), 0, None, self.stroke_of(phi))
+        if isinstance(index, bool) or not isinstance(index, (int, np.integer)):
+            raise ForceError(f"the position index {index!r} is not a whole number",
+                             "give a position index, e.g. 2")
+        k = self.entry(int(index))
+        pos = self.positions[k]
+        return from_sweep(self.mechanism, self.sweep, k, pos.index, pos.stroke)
+
+    def forces_at(self, index: int | None = None, *, phi1_deg: float | None = None
+                  ) -> ForceAnalysis:
+        """The force analysis at another position or crank angle (the force
+        position's is `forces`)."""
+        if index is None and phi1_deg is None:
+            return self.require_forces()
+        if index == self.force_position and phi1_deg is None and self.forces is not None:
+            return self.forces
+        return force_analysis_at(self.state(index, phi1_deg=phi1_deg), mu_l=self.mu_l)
+
+
+def sweep(mechanism: Mechanism, phi1_deg: Sequence[float] | np.ndarray) -> Sweep:
+    """Positions, velocities and accelerations of every point, ω and ε of every
+    link, over many crank angles at once (NaN where a group cannot assemble;
+    see `Sweep.check()`)."""
+    return build_chain(mechanism).sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=float)))
+
+
+def output_along(mech: Mechanism, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """s, V, a of the output along the working direction (SI, signed)."""
+    wd = np.conj(complex(*mech.study.working_direction))
+    out = mech.study.output
+    return ((sweep.position_of(out) * wd).real, (sweep.velocity_of(out) * wd).real,
+            (sweep.acceleration_of(out) * wd).real)
+
+
+# --- solving -------------------------------------------------------------------------------
+
+def solve(mechanism: Mechanism, *, partial_turn: bool | None = None,
+          forces: bool = True) -> Solution:
+    """Solve `mechanism` (the order of the module docstring). A crank that
+    cannot make a whole turn raises `PartialTurnError` unless the file or
+    `partial_turn=True` opts in. `forces=False` leaves out the force analysis
+    (sheet 1 alone)."""
+    mech = mechanism if not partial_turn else mechanism.with_partial_turn()
+    structure = analyse_structure(mech)
+    chain = build_chain(mech, structure)
+    branches = chain.choice
+    if not branches.whole_turn and not mech.study.partial_turn:
+        raise partial_turn_error(mech, branches)
+    turn = _Turn(mech, chain, branches)
+    positions = turn.positions()
+    sw = chain.sweep(np.array([p.phi1_deg for p in positions]))
+    plan_positions = turn.plan_positions(positions)
+    fp = mech.study.force_position
+    force_position = plan_positions[0] if fp is None else fp
+    mu_l = _mechanism_scale(mech, chain)
+    phi0 = positions[0].phi1_deg
+    dense = chain.sweep(np.linspace(phi0, phi0 + 360.0, DENSE))
+    diagrams, diagrams_problem, s_dense = None, None, None
+    try:
+        s_dense = turn.displacements(DENSE - 1) if turn.limits is None else None
+        diagrams = _diagrams(mech, turn, positions, sw, mu_l)
+    except MmtError as err:
+        diagrams_problem = str(err)
+    force_analysis, forces_problem = None, None
+    k = next(i for i, p in enumerate(positions) if p.index == force_position)
+    if forces:
+        try:
+            state = from_sweep(mech, sw, k, force_position, positions[k].stroke)
+            force_analysis = force_analysis_at(state, mu_l=mu_l)
+        except MmtError as err:
+            forces_problem = str(err)
+    else:
+        forces_problem = "the force analysis was not asked for"
+    reduction = reduce_sweep(mech, sw, tuple(p.index for p in positions),
+                             tuple(p.stroke for p in positions))
+    return Solution(
+        mechanism=mech, structure=structure, chain=chain, branches=branches,
+        limits=turn.limits, extremes=turn.extremes, working_span_deg=turn.working_span_deg,
+        positions=positions, plan_positions=plan_positions, force_position=force_position,
+        sweep=sw, mu_l=mu_l, dense=dense, s_dense=s_dense, diagrams=diagrams,
+        diagrams_problem=diagrams_problem, forces=force_analysis, forces_problem=forces_problem,
+        reduction=reduction)
+
+
+def _mechanism_scale(mech: Mechanism, chain: Chain) -> float:
+    """Scale of the mechanism drawing: the standard value that draws the span
+    of every point's trajectory in 150–300 mm (μ_l = l_OA / OA, (2))."""
+    grid = chain.sweep(np.linspace(0.0, 360.0, 72, endpoint=False))
+    pts = np.concatenate([grid.position_of(n)[grid.ok] for n in mech.point_owners])
+    span = max(np.ptp(pts.real), np.ptp(pts.imag), mech.crank_length)
+    return scale_for(float(span), DrawnLength("mechanism", 150.0, 300.0, 220.0))
+
+
+def _diagrams(mech: Mechanism, turn: "_Turn", positions: tuple[Position, ...], sw: Sweep,
+              mu_l: float) -> Diagrams:
+    """The graphical differentiation and its 5 % check against the plans."""
+    if turn.limits is not None:
+        raise MmtError("no kinematic diagrams: the crank does not make a whole turn "
+                       "(partial_turn), and the diagrams of 1.7 cover one turn")
+    n = mech.study.positions
+    k = [next(j for j, p in enumerate(positions) if p.index == i) for i in range(n)]
+    if not sw.ok[k].all():
+        bad = next(i for i in range(n) if not sw.ok[k[i]])
+        raise sw.problem(k[bad]) or MmtError("diagrams need every position")
+    s, v, a = (x[k] for x in output_along(mech, sw))
+    s = s - s[0]
+    n1 = mech.drive.n1_rpm
+    # the time axis: the standard μ_t that draws one turn in 150 … 240 mm
+    T = 60.0 / n1
+    L = T / scale_for(T, TIME_AXIS)
+    # μ_S from μ_l up the series until no diagram is taller than the sheet
+    # can hold: the heights of V and a grow with μ_t·OH/μ_S and μ_t²·OH1·OH2/μ_S
+    for mu_S in series(mu_l * (1 - 1e-9), mu_l * 1e3):
+        construction = graphical_differentiation(s, n1=n1, mu_S=mu_S, L=L)
+        if max(construction.heights_mm) <= DIAGRAM_HEIGHT_MM:
+            break
+    check = compare_with_plans(construction.v, construction.a, v, a, n1=n1, s=s,
+                               s_of_n=turn.displacements)
+    return Diagrams(construction, check, v, a)
+
+
+def _stroke_of(mech: Mechanism, chain: Chain, limits, extremes, working_span_deg,
+               phi1_deg: float) -> Stroke:
+    sense = 1 if mech.drive.sense == "ccw" else -1
+    if limits is not None or extremes is None:
+        # a partial turn: working where the output moves along the working direction
+        _, v, _ = output_along(mech, chain.sweep(np.array([phi1_deg])))
+        return "working" if float(v[0]) / mech.drive.signed_omega * sense > 0 else "idle"
+    lo, _ = extremes
+    ahead = ((phi1_deg - lo) * sense) % 360.0
+    if ahead <= working_span_deg + EXTREME_TOL_DEG or ahead >= 360.0 - EXTREME_TOL_DEG:
+        return "working"
+    return "idle"
+
+
+class _Turn:
+    """The crank's turn: the range analysed, the extreme positions, the positions."""
+
+    def __init__(self, mech: Mechanism, chain: Chain, branches: Branches) -> None:
+        self.mech, self.chain = mech, chain
+        self.sense = 1 if mech.drive.sense == "ccw" else -1
+        self.limits: tuple[float, float] | None = None
+        if not branches.whole_turn:
+            lo, hi = max(branches.ranges, key=lambda r: (r[1] - r[0]) % 360.0)
+            self.limits = (lo, hi) if self.sense > 0 else (hi, lo)
+        self.extremes = self._extremes()
+        self.working_span_deg = (None if self.extremes is None else
+                                 ((self.extremes[1] - self.extremes[0]) * self.sense) % 360.0)
+        self.phi0 = self._phi0()
+
+    @property
+    def span_deg(self) -> float:
+        """Crank angle the positions are spread over: 360, or the range analysed."""
+        if self.limits is None:
+            return 360.0
+        a, b = self.limits
+        return ((b - a) * self.sense) % 360.0
+
+    def along(self, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """s, ds/dφ and d²s/dφ² of the output along the working direction (ε1 = 0)."""
+        w = self.mech.drive.signed_omega
+        s, v, a = output_along(self.mech, sweep)
+        return s, v / w, a / (w * w)
+
+    def _extremes(self) -> tuple[float, float] | None:
+        """Crank angles (deg) of the output's least and greatest position along
+        the working direction: zeros of ds/dφ to machine precision (Newton with
+        the exact d²s/dφ² of the acceleration plan, kept in a bracket where ds/dφ
+        changes sign). In a partial turn only zeros inside the range count (the
+        limits of assembly are not extreme positions); None when there are none."""
+        if self.limits is None:
+            grid = np.linspace(0.0, 360.0, GRID, endpoint=False)
+        else:
+            grid = self.limits[0] + self.sense * self.span_deg * (np.arange(1, GRID) / GRID)
+        sw = self.chain.sweep(grid)
+        s, ds, _ = self.along(sw)
+        ok = sw.ok & np.isfinite(s) & np.isfinite(ds)
+        if not ok.any():
+            raise sw.problem(0) or StructureError("the mechanism assembles at no crank angle")
+        if np.ptp(s[ok]) < 1e-12 * max(1.0, float(np.max(np.abs(s[ok])))):
+            raise StructureError(
+                f"{self.mech.path}: output {self.mech.study.output} does not move along the "
+                "working direction: set study.working_direction or study.zero")
+        # brackets [φ_i, φ_i+1] of the grid where ds/dφ changes sign
+        nxt = np.roll(np.arange(grid.size), -1)
+        if self.limits is not None:
+            nxt[-1] = grid.size - 1
+        change = ok & ok[nxt] & (np.sign(ds) != np.sign(ds[nxt])) & (nxt != np.arange(grid.size))
+        idx = np.flatnonzero(change)
+        if not idx.size:
+            return None
+        step = 360.0 / GRID if self.limits is None else self.span_deg / GRID
+        lo_b = grid[idx]
+        hi_b = lo_b + (step if self.limits is None else self.sense * step)
+        roots = self._root(np.minimum(lo_b, hi_b), np.maximum(lo_b, hi_b))
+        s_roots, _, _ = self.along(self.chain.sweep(roots))
+        return (float(roots[int(np.argmin(s_roots))] % 360.0),
+                float(roots[int(np.argmax(s_roots))] % 360.0))
+
+    def _root(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        """Zeros of ds/dφ in the brackets [a, b] (deg, ds/dφ changes sign in
+        each): Newton's steps where they stay in the bracket, bisection where
+        they would leave it (rtsafe), all brackets at once."""
+        _, fa, _ = self.along(self.chain.sweep(a))
+        a, b = a.astype(float).copy(), b.astype(float).copy()
+        phi = 0.5 * (a + b)
+        for _ in range(200):
+            _, f, df = self.along(self.chain.sweep(phi))
+            same = np.sign(f) == np.sign(fa)  # keep the sign-change bracket
+            a = np.where(same, phi, a)
+            fa = np.where(same, f, fa)
+            b = np.where(same, b, phi)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                newton = phi - np.degrees(f / df)
+            inside = np.isfinite(newton) & (newton > a) & (newton < b)
+            new = np.where(inside, newton, 0.5 * (a + b))
+            done = (f == 0) | (np.abs(new - phi)
+                               <= 4 * np.finfo(float).eps * np.maximum(1.0, np.abs(phi)))
+            phi = np.where(f == 0, phi, new)
+            if done.all():
+                break
+        return phi
+
+    def _phi0(self) -> float:
+        if self.limits is not None:  # half a step in from the first limit of assembly
+            n = self.mech.study.positions
+            return (self.limits[0] + self.sense * self.span_deg / (2 * n)) % 360.0
+        zero = self.mech.study.zero
+        if zero is None:
+            if self.extremes is None:
+                raise StructureError(
+                    f"{self.mech.path}: output {self.mech.study.output} has no extreme position "
+                    "along the working direction: set study.zero or study.working_direction")
+            return self.extremes[0]
+        return zero % 360.0
+
+    def stroke_of(self, phi1_deg: float) -> Stroke:
+        return _stroke_of(self.mech, self.chain, self.limits, self.extremes,
+                          self.working_span_deg, phi1_deg)
+
+    def positions(self) -> tuple[Position, ...]:
+        n = self.mech.study.positions
+        out = []
+        for i in range(n):
+            phi = (self.phi0 + self.sense * self.span_deg * i / n) % 360.0
+            out.append(Position(i, phi, self.stroke_of(phi)))
+        for phi in self.mech.study.angles:
+            out.append(Position(None, phi % 360.0, self.stroke_of(phi % 360.0)))
+        return tuple(out)
+
+    def plan_positions(self, positions: tuple[Position, ...]) -> tuple[int, ...]:
+        """`study.plans`, or the positions nearest the middle of the working
+        and of the idle stroke (SPEC_FORMAT's default); in a partial turn the
+        positions at a quarter and at three quarters of the range."""
+        if self.mech.study.plans is not None:
+            return self.mech.study.plans
+        n = self.mech.study.positions
+        if self.limits is not None or self.extremes is None or self.working_span_deg is None:
+            return (n // 4, (3 * n) // 4)
+        lo, hi = self.extremes
+        span = self.working_span_deg
+        mids = [lo + self.sense * span / 2, hi + self.sense * (360.0 - span) / 2]
+        picks = []
+        for mid in mids:
+            dist = [abs((p.phi1_deg - mid + 180.0) % 360.0 - 180.0)
+                    for p in positions if p.index is not None]
+            picks.append(int(np.argmin(dist)))
+        return tuple(picks)
+
+    def displacements(self, n: int) -> np.ndarray:
+        """s of the output at n equal crank steps from position 0 (s = 0 there), m:
+        the smooth S curve of the diagram, and the trials of the 5 % check."""
+        phi = self.phi0 + self.sense * 360.0 * np.arange(n) / n
+        s, _, _ = output_along(self.mech, self.chain.sweep(phi))
+        return s - s[0]
