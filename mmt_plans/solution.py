@@ -29,7 +29,8 @@ from .forces import ForceAnalysis, force_analysis_at
 from .forces.reduction import Reduction, reduce_sweep
 from .forces.state import PositionState, from_sweep
 from .kinematics.branches import Branches
-from .kinematics.chain import Chain, Sweep, build_chain
+from .kinematics.branches import build_chain
+from .kinematics.chain import Chain, Sweep
 from .kinematics.plans import PlanView, plan_view
 from .model import Mechanism, Stroke
 from .scales import DrawnLength, scale_for, series

@@ -1,7 +1,7 @@
 import pytest
 
 import mmt_plans
-from mmt_plans.kinematics.chain import build_chain
+from mmt_plans.kinematics.branches import build_chain
 from mmt_plans.structure import analyse_structure
 
 EXPECTED = {

@@ -18,7 +18,7 @@ from .timing import best_time, full_analysis
 _SWEEP = """
 import sys, numpy as np
 from mmt_plans.bench.timing import best_time, sweep_everything
-from mmt_plans.kinematics.chain import build_chain
+from mmt_plans.kinematics.branches import build_chain
 from mmt_plans.spec import load
 chain = build_chain(load(sys.argv[1]))  # built once, as a script sweeping many times would
 phi = np.linspace(0.0, 360.0, int(sys.argv[2]), endpoint=False)

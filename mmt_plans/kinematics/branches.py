@@ -31,14 +31,13 @@ from __future__ import annotations
 import itertools
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Literal, Mapping
+from typing import Literal, Mapping
 
 import numpy as np
 
-from ..model import FRAME
-
-if TYPE_CHECKING:  # pragma: no cover
-    from .chain import Chain
+from ..model import FRAME, Mechanism
+from ..structure import Structure
+from .chain import Chain
 
 GRID = 720
 # a margin this far below zero (relative to the mechanism's size) is rounding
@@ -99,7 +98,7 @@ class Branches:
         }
 
 
-def choose(chain: "Chain") -> Branches:
+def choose(chain: Chain) -> Branches:
     """Search the combinations of branches and choose one (module docstring)."""
     search = _Search(chain)
     names = [s.group.name for s in chain.solvers]
@@ -131,7 +130,7 @@ def choose(chain: "Chain") -> Branches:
 
 
 class _Search:
-    def __init__(self, chain: "Chain") -> None:
+    def __init__(self, chain: Chain) -> None:
         self.chain = chain
         self.solvers = chain.solvers
         self.names = [s.group.name for s in chain.solvers]
@@ -362,3 +361,11 @@ class _Search:
                 return (solver.group.name, "it reaches a limit position between grid angles",
                         "change the lengths of the group's links")
         return "", "", ""
+
+
+def build_chain(mech: Mechanism, structure: Structure | None = None) -> Chain:
+    """The kinematic chain of `mech` on the assembly branches chosen here."""
+    chain = Chain.build(mech, structure)
+    chain.choice = choose(chain)
+    chain.branches = dict(chain.choice.signs)
+    return chain

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any
 from functools import cached_property
 
 import numpy as np
@@ -320,8 +321,8 @@ class Chain:
     def __init__(self, mech: Mechanism, solvers: list[DyadSolver]) -> None:
         self.mech = mech
         self.solvers = solvers
-        self.branches: dict[str, int] = {}
-        self.branch_note = ""
+        self.branches: dict[str, int] = {}  # group -> branch sign (kinematics/branches.py)
+        self.choice: Any = None  # the Branches record that chose them
         crank = mech.links[mech.drive.link]
         self.O = complex(*mech.frame[mech.crank_pivot])
         self.O_local = complex(*crank.points[mech.crank_pivot])
@@ -357,9 +358,7 @@ class Chain:
                     f"{group.group_class}; only class II groups (dyads) are solved. "
                     f"Structure: {structure.formula}")
             solvers.append(SOLVERS[group.kind](mech, group))
-        chain = cls(mech, solvers)
-        chain.choose_branches()
-        return chain
+        return cls(mech, solvers)
 
     # --- one pass over the angles ----------------------------------------------------
     def crank(self, phi_rad: np.ndarray) -> Motion:
@@ -437,17 +436,4 @@ class Chain:
         m = self.place_all(np.radians(np.array([phi1_deg])), self.branches)
         return solver.failure(m, 0, phi1_deg)
 
-    # --- assembly branches ------------------------------------------------------------
-    def choose_branches(self) -> None:
-        """The branch of every group (kinematics/branches.py: the sketch, else a
-        combination that assembles over the whole turn, by a documented rule)."""
-        from .branches import choose
 
-        self.choice = choose(self)
-        self.branches = dict(self.choice.signs)
-        self.branch_note = self.choice.note
-
-
-def build_chain(mech: Mechanism, structure: Structure | None = None) -> Chain:
-    """The kinematic chain of `mech` on its assembly branches (kinematics/branches.py)."""
-    return Chain.build(mech, structure)

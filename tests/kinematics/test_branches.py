@@ -21,7 +21,7 @@ from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
 import mmt_plans
-from mmt_plans.kinematics.chain import build_chain
+from mmt_plans.kinematics.branches import build_chain
 from mmt_plans.results_json import results as results_json
 from mmt_plans.errors import PartialTurnError
 from mechanisms import four_bar_toml, slider_crank_toml

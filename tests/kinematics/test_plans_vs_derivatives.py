@@ -4,7 +4,7 @@ of the exact positions, at every position of every sample."""
 import numpy as np
 
 import mmt_plans
-from mmt_plans.kinematics.chain import build_chain
+from mmt_plans.kinematics.branches import build_chain
 from mmt_plans.results_json import results as results_json
 
 # 8th-order central difference weights for the first derivative
