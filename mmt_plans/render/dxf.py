@@ -41,6 +41,12 @@ order, and every date and GUID that ezdxf would take from the clock or a
 random generator ($TDCREATE, $TDUCREATE, $TDUPDATE, $TDUUPDATE, $TDINDWG,
 $TDUSRTIMER, $FINGERPRINTGUID, $VERSIONGUID, ezdxf's own CREATED_BY/WRITTEN_BY
 marks) is fixed, to $SOURCE_DATE_EPOCH when that is set, else 2000-01-01 UTC.
+The GUIDs are name-based (uuid5): the fingerprint one constant, the version
+one from that date. ezdxf sets the clock's values in Drawing._update_metadata,
+the last step of Drawing.write (ezdxf 1.1 to 1.4), so that step is wrapped for
+the one write; to_bytes() raises if the stamp did not take. The CLASSES that
+ezdxf adds from a set (whose order follows the hash seed) are registered in
+sorted order first. Coordinates are written at full float precision.
 """
 
 from __future__ import annotations
