@@ -310,7 +310,7 @@ def test_sheet1_entities_match_the_recorded_calls():
     import mmt_plans
     from mmt_plans.sheets.sheet1 import compose_sheet1
 
-    analysis = mmt_plans.load(ROOT / "samples" / "six_link_press.toml").analyze()
+    analysis = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "six_link_press.toml"))
     rec, dxf = RecordingBackend(), DxfBackend()
     compose_sheet1(analysis, rec)
     compose_sheet1(analysis, dxf)
