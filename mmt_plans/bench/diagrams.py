@@ -82,7 +82,6 @@ def plot_speed_error(rows, path: Path) -> Path:
 
     W, H = 200.0, 140.0
     x0, y0, x1, y1 = 25.0, 20.0, 150.0, 125.0
-    pts = [(t, max(ev, ea)) for _, m, _, t, ev, ea in rows if m != "plans"]
     tmin = 10 ** math.floor(math.log10(min(t for _, m, _, t, _, _ in rows)))
     tmax = 10 ** math.ceil(math.log10(max(t for _, m, _, t, _, _ in rows)))
     emin, emax = 1e-16, 1.0

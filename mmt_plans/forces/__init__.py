@@ -17,8 +17,6 @@ import math
 from dataclasses import dataclass
 from typing import Mapping
 
-import numpy as np
-
 from ..model import Stroke
 from .errors import ForceError
 from .groups import (DrivingLinkForces, ForcePolygon, GroupForces, PolygonVector, Reaction,

@@ -14,7 +14,7 @@ import numpy as np
 from ..errors import AssemblyError, SingularPlanError, UnsupportedError
 from ..model import FRAME, Mechanism
 from ..structure import Structure, analyse_structure
-from .dyads import SOLVERS, DyadSolver, GroupPlan, Motion
+from .dyads import DYADS, DyadSolver, GroupPlan, Motion
 
 # a plan whose direction lines meet at an angle with a sine below this is
 # reported as singular rather than solved (see tests/kinematics/test_hard_cases.py)
@@ -357,7 +357,7 @@ class Chain:
                     f"{mech.path}: group {group.label} of links {group.name} is of class "
                     f"{group.group_class}; only class II groups (dyads) are solved. "
                     f"Structure: {structure.formula}")
-            solvers.append(SOLVERS[group.kind](mech, group))
+            solvers.append(DYADS[group.kind](mech, group))
         return cls(mech, solvers)
 
     # --- one pass over the angles ----------------------------------------------------

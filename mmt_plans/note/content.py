@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Any, Iterator, Literal, Mapping, Sequence
 import numpy as np
 
 from ..errors import MmtError
-from ..scales import ACCELERATION_PLAN, FORCE_PLAN, VELOCITY_PLAN, format_scale, scale_for
+from ..scales import ACCELERATION_PLAN, FORCE_PLAN, VELOCITY_PLAN, scale_for
 from ..sheets.sheet1 import _image_markup  # images on a plan are lettered as on sheet 1
 
 if TYPE_CHECKING:  # pragma: no cover

@@ -398,8 +398,9 @@ def sketch_group(fa: ForceAnalysis, g: Any, mu_l: float, look: Any, lang: Langua
                     d.moment(q, float(arm[0] * F[1] - arm[1] * F[0]), "M" + label[1:], radius=8.0)
                 at = q
             d.force(at, F, label, largest, line)
-        # the arms of ΣM_B(L1) = 0, the equation of R^t (RRR, RRP)
-        if g.kind in ("RRR", "RRP"):
+        # the arms of ΣM_B(L1) = 0, the equation of R^t: the groups whose first
+        # outer reaction is split into R^n and R^t (RRR, RRP)
+        if len(g.reactions[0].components) == 2:
             B = d.mm(state.point(g.links[0], g.reactions[2].pair))  # the inner pin
             L1 = g.links[0]
             ll = fa.loads.links[L1]

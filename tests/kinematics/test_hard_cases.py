@@ -137,10 +137,15 @@ def test_exactly_parallel_plan_lines_are_reported_not_inf():
     err = sw.problem(1)
     assert isinstance(err, mmt_plans.SingularPlanError)
     assert "at phi1 = 180 deg, the plan of group 2-3 is singular" in str(err)
-    # the analysis of the other positions is still done, and the JSON has no inf or NaN
-    analysis = mmt_plans.solve(mech)
-    text = json.dumps(results_json(analysis), allow_nan=False)
-    assert "is singular" in text or all(p["phi1_deg"] != 180.0 for p in results_json(analysis)["positions"])
+    # the analysis of the other positions is still done, and the JSON has no inf or NaN:
+    # the toggle asked for as an extra angle is reported there as singular
+    analysis = mmt_plans.solve(mmt_plans.loads(four_bar_toml(100, 300, 250, 150, rpm=60).replace(
+        'output = "B"', 'output = "B"\nangles = [180]')))
+    out = json.loads(json.dumps(results_json(analysis), allow_nan=False))
+    extra = [p for p in out["kinematics"] if p["index"] is None]
+    assert len(extra) == 1 and extra[0]["phi1_deg"] == 180.0
+    assert "is singular" in extra[0]["problem"]
+    assert sum("problem" in p for p in out["kinematics"]) == 1
 
 
 def test_extreme_proportions_one_mm_beside_ten_metres_at_3000_rpm():

@@ -1,0 +1,303 @@
+"""What every dyad kind shares: the working state of a link over the angles
+(`Motion`), a leg of a plan's vector equation (`Leg`), a group's plan
+(`GroupPlan`), Cramer's rule, and the protocol of a kind (`DyadSolver`):
+positions in closed form, the plans as the textbook draws them.
+
+Each dyad is oriented outer–inner–outer: link L1 joins the known link K1 by the
+first outer pair, L2 joins K2 by the last one. For the plans every kind writes
+two vector equations for one point X (seed 003 §1.3, §1.5):
+
+    V_X = V_1 + d1·x1 = V_2 + d2·x2
+    a_X = a_1 + n_1 + d1·y1 = a_2 + n_2 + d2·y2
+
+where a leg is either a rotation of a link about a known point P
+(d = i·(X - P), x = ω, n = -ω²·(X - P) the normal component, y = ε) or a slide
+relative to a known link K along the guide u (d = u, x = the relative
+velocity, n = 2·ω_K·x·i·u the Coriolis component, y = the relative
+acceleration). The tangential directions of the acceleration plan are those of
+the velocity plan, so one 2×2 determinant serves both.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Literal
+
+import numpy as np
+
+from ...model import Mechanism, Prismatic, Revolute
+from ...structure import AssurGroup
+from ..geometry import cross
+
+LegKind = Literal["rotation", "slide"]
+
+
+class Motion:
+    """Working state of one link over N crank angles: pose e^{iθ}, origin o,
+    ω, velocity and acceleration of the origin, ε.
+
+    A point with local coordinates p sits at o + e·p and moves with
+    V = v + iω·e·p, a = a + (iε - ω²)·e·p (the textbook's V_P = V_O + ω × OP,
+    a_P = a_O + ε × OP - ω²·OP). The factors iω·e and (iε - ω²)·e are kept,
+    so each further point costs one product and one sum. The frame's entries
+    are plain numbers, not arrays.
+    """
+
+    __slots__ = ("e", "o", "w", "v", "eps", "a", "spin", "spin_acc")
+
+    def __init__(self, e, o, w=0.0, v=0j, eps=0.0, a=0j) -> None:
+        self.e, self.o = e, o
+        self._set(w, v, eps, a)
+
+    @classmethod
+    def of(cls, state) -> "Motion":
+        """The working state again from a solved one (a `chain.LinkState`;
+        a long sweep's does not keep iω·e and (iε - ω²)·e: made again here,
+        by the same operations on the same numbers)."""
+        if state.spin is None:
+            return cls(state.e, state.o, state.omega, state.v, state.eps, state.a)
+        m = cls.__new__(cls)
+        for name in cls.__slots__:
+            setattr(m, name, getattr(state, "omega" if name == "w" else name))
+        return m
+
+    def _set(self, w, v, eps, a) -> None:
+        self.w, self.v, self.eps, self.a = w, v, eps, a
+        # iω·e and (iε - ω²)·e; over arrays, i·e (exact) times ω and the factor
+        # iε - ω² filled in part by part take fewer passes than complex products
+        if isinstance(w, np.ndarray):
+            self.spin = (self.e * 1j) * w
+        else:
+            self.spin = self.e * (1j * w) if w else 0j
+        self.spin_acc = self.e * _complex(-(w * w), eps) if _given(w) or _given(eps) else 0j
+
+    def at(self, p_local: complex):
+        return self.o + self.e * p_local if p_local else self.o
+
+    def vel_at(self, p_local: complex):
+        return self.v + self.spin * p_local if p_local else self.v
+
+    def acc_at(self, p_local: complex):
+        return self.a + self.spin_acc * p_local if p_local else self.a
+
+    def vel(self, P):
+        """Velocity of the link's point that is at P now."""
+        return self.v + ((P - self.o) * 1j) * self.w if _given(self.w) else self.v
+
+    def acc(self, P):
+        if not (_given(self.w) or _given(self.eps)):
+            return self.a
+        return self.a + (1j * self.eps - self.w * self.w) * (P - self.o)
+
+    def move_with(self, p_local, V_P, a_P, w, eps) -> None:
+        """Give the link ω, ε and the motion of its point p (local coordinates)."""
+        self._set(w, V_P, eps, a_P)
+        if _given(p_local):
+            self.v = V_P - self.spin * p_local
+            self.a = a_P - self.spin_acc * p_local
+
+    def local(self, P):
+        """Local coordinates of the link's point that is at P now."""
+        return (P - self.o) * np.conj(self.e)
+
+
+def _complex(re, im):
+    """re + i·im without complex arithmetic (arrays or numbers)."""
+    if not (isinstance(re, np.ndarray) or isinstance(im, np.ndarray)):
+        return complex(re, im)
+    z = np.empty(np.broadcast_shapes(np.shape(re), np.shape(im)), dtype=complex)
+    z.real, z.imag = re, im
+    return z
+
+
+def _given(x) -> bool:
+    """An array, or a number that is not zero (the frame's ω, a point at the origin)."""
+    return isinstance(x, np.ndarray) or bool(x)
+
+
+@dataclass
+class Leg:
+    kind: LegKind
+    start: str  # the plan image the leg starts from (a point, or "X∈K")
+    unknown: str  # what the leg's magnitude is: "ω2", "V_EX", …
+    d: np.ndarray  # direction line of the unknown component
+    V0: np.ndarray  # velocity at the leg's start
+    a0: np.ndarray  # acceleration at the leg's start
+    link: int  # the rotating link, or the link slid on
+    P: np.ndarray | None = None  # centre of the rotation
+    x: np.ndarray | None = None
+    n: np.ndarray | None = None  # normal (rotation) or Coriolis (slide) component
+    y: np.ndarray | None = None
+
+    def normal(self, m: dict) -> np.ndarray:
+        """-ω²·(X - P) of a rotation (d = i·(X - P)), 2·ω_K·x·i·u of a slide."""
+        if self.kind == "rotation":
+            return (self.d * 1j) * (self.x * self.x)
+        w = m[self.link].w
+        if not _given(w):
+            return 0j  # no Coriolis component on a guide that does not turn
+        return self.d * (2j * w * self.x)
+
+
+@dataclass
+class GroupPlan:
+    """One group's velocity and acceleration plan over the N angles."""
+
+    group: AssurGroup
+    X_name: str
+    X: np.ndarray  # the point whose two equations are solved
+    legs: tuple[Leg, Leg]
+    sin_angle: np.ndarray  # sine of the angle between the two direction lines
+
+    @cached_property
+    def V_X(self) -> np.ndarray:
+        leg = self.legs[0]
+        return leg.V0 + leg.d * leg.x
+
+    @cached_property
+    def a_X(self) -> np.ndarray:
+        leg = self.legs[0]
+        return leg.a0 + leg.n + leg.d * leg.y
+
+
+def solve_two_lines(d1, b1, d2, b2):
+    """x1, x2 of b1 + d1·x1 = b2 + d2·x2: a 2×2 system by Cramer's rule."""
+    return _cramer(cross(d2, d1), d1, d2, b2 - b1)
+
+
+def _cramer(det, d1, d2, rhs):
+    """Cramer's rule with the determinant cross(d2, d1) given (the velocity and
+    the acceleration plan share it); NaN, not ±inf, where the lines are parallel."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x1 = cross(d2, rhs) / det
+        x2 = cross(d1, rhs) / det
+    singular = det == 0
+    if np.any(singular):
+        x1 = np.where(singular, np.nan, x1)
+        x2 = np.where(singular, np.nan, x2)
+    return x1, x2
+
+
+class DyadSolver:
+    """Closed-form position and plans of one dyad of the mechanism."""
+
+    has_branches = False
+
+    def __init__(self, mech: Mechanism, group: AssurGroup) -> None:
+        self.mech = mech
+        self.group = group
+        self.L1, self.L2 = group.links
+        self.outer1, self.inner, self.outer2 = group.pairs
+        self.K1 = other_link(self.outer1, self.L1)
+        self.K2 = other_link(self.outer2, self.L2)
+        self.kind = group.kind
+
+    # local coordinates as complex numbers
+    def loc(self, link: int, name: str) -> complex:
+        pts = self.mech.frame if link == 0 else self.mech.links[link].points
+        p = pts[name]
+        return complex(p[0], p[1])
+
+    def prism_line(self, pair: Prismatic, m: dict, unknown: int, Q_local: complex, e):
+        """The line (P0, u) on which the point Q of the unknown link lies, its angle e known."""
+        direction = complex(*pair.direction)
+        through = complex(*pair.through)
+        S_local = self.loc(pair.slider, pair.slider_point)
+        u = e * direction
+        if unknown == pair.slider:
+            K = m[pair.guide]
+            P0 = K.at(through) - e * (S_local - Q_local)
+        else:
+            K = m[pair.slider]
+            P0 = K.at(S_local) + e * (Q_local - through)
+        return P0, u
+
+    def after_velocities(self, m: dict, leg1: Leg, leg2: Leg) -> None:
+        """Hook between the velocity and the acceleration plan."""
+
+    def carried(self) -> list[tuple[int, int, str]]:
+        """(L, K, P) for each link L of the group whose origin is its pair P with
+        the known link K: placing L hands it the velocity and acceleration of
+        K's point P as they are (`move_with` at the origin), so L's v and a are
+        P's, to the last bit."""
+        return []
+
+    def _at_origin(self, *joins: tuple[int, int, str]) -> list[tuple[int, int, str]]:
+        return [(L, K, P) for L, K, P in joins if not self.loc(L, P)]
+
+    def positions(self, m: dict, sign: int) -> None:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def legs(self, m: dict) -> tuple[str, np.ndarray, Leg, Leg]:  # pragma: no cover
+        raise NotImplementedError
+
+    def place(self, m: dict, plan: GroupPlan) -> None:  # pragma: no cover
+        raise NotImplementedError
+
+    def failure(self, m: dict, i: int, phi: float) -> str:  # pragma: no cover
+        raise NotImplementedError
+
+    def margin(self, m: dict):  # pragma: no cover - abstract
+        """How far the group is from failing to assemble, over the angles:
+        positive where it assembles, zero at a limit position (a toggle),
+        negative where it cannot (a length in m, or the sine of the angle
+        between two guides)."""
+        raise NotImplementedError
+
+    def cure(self, m: dict, bad) -> str:
+        """What to change so that the group assembles at the angles `bad`
+        (a mask over the angles of `m`)."""
+        return "change the lengths of the group's links"
+
+    def branch_meaning(self, sign: int) -> str:
+        return "one configuration"
+
+    # --- the plans ---------------------------------------------------------------
+    def plan(self, m: dict, place: bool = True) -> GroupPlan:
+        """Solve the group's velocity and acceleration plan, then (`place`) give
+        its links their ω, ε and the motion of their origins."""
+        X_name, X, leg1, leg2 = self.legs(m)
+        det = cross(leg2.d, leg1.d)
+        leg1.x, leg2.x = _cramer(det, leg1.d, leg2.d, leg2.V0 - leg1.V0)
+        self.after_velocities(m, leg1, leg2)
+        leg1.n, leg2.n = leg1.normal(m), leg2.normal(m)
+        leg1.y, leg2.y = _cramer(det, leg1.d, leg2.d, (leg2.a0 + leg2.n) - (leg1.a0 + leg1.n))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            sin_angle = np.abs(det) / (np.abs(leg1.d) * np.abs(leg2.d))
+        plan = GroupPlan(self.group, X_name, X, (leg1, leg2), sin_angle)
+        if place:
+            self.place(m, plan)
+        return plan
+
+    def rotation(self, link: int, P_name: str, X, K: int, m: dict) -> Leg:
+        """Link `link` turning about its pair P with the known link K."""
+        p = self.loc(K, P_name)
+        P = m[K].at(p)
+        return Leg("rotation", P_name.lower(), f"ω{link}", 1j * (X - P), m[K].vel_at(p),
+                   m[K].acc_at(p), link, P=P)
+
+    def slide(self, link: int, on: int, X, u, K: "Motion", start: str) -> Leg:
+        return Leg("slide", start, f"V{link}/{on}", u, K.vel(X), K.acc(X), on)
+
+    def turn_about(self, m: dict, leg: Leg, P_name: str) -> None:
+        """Place the link of a rotation leg: its pivot moves as the leg's start."""
+        m[leg.link].move_with(self.loc(leg.link, P_name), leg.V0, leg.a0, leg.x, leg.y)
+
+
+def origin(P, e, p_local: complex):
+    """Origin P - e·p of a link whose local point p sits at P. A link whose
+    origin is its pivot on the frame keeps that pivot, one number."""
+    if not p_local and not isinstance(P, np.ndarray):
+        return P
+    return P - e * p_local
+
+
+def entry(x, i: int):
+    """Entry i of an array over the angles, or the number a frame point is."""
+    return x[i] if isinstance(x, np.ndarray) else x
+
+
+def other_link(pair: Revolute | Prismatic, link: int) -> int:
+    a, b = pair.links
+    return b if a == link else a

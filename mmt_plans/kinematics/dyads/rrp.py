@@ -1,0 +1,76 @@
+"""RRP: a link turning about A whose far pin B slides along a guide: B where
+the circle |AB| = l1 meets the guide line."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..geometry import circle_line, cross, turn_between
+from .base import DyadSolver, Motion, entry, origin
+
+
+class RRP(DyadSolver):
+    has_branches = True
+
+    def positions(self, m, sign):
+        a, b = self.outer1.point, self.inner.point
+        A = m[self.K1].at(self.loc(self.K1, a))
+        A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
+        B2 = self.loc(self.L2, b)
+        e2 = m[self.K2].e  # the slider keeps the guide's angle (a number on the frame)
+        P0, u = self.prism_line(self.outer2, m, self.L2, B2, e2)
+        B = circle_line(A, abs(B1 - A1), P0, u, sign)
+        e1 = turn_between(A1, B1, A, B)
+        m[self.L1] = Motion(e1, origin(A, e1, A1))
+        m[self.L2] = Motion(e2, B - e2 * B2)
+
+    def carried(self):
+        return self._at_origin((self.L1, self.K1, self.outer1.point))
+
+    def legs(self, m):
+        a, b = self.outer1.point, self.inner.point
+        K2 = m[self.K2]
+        B = m[self.L1].at(self.loc(self.L1, b))
+        u = m[self.L2].e * complex(*self.outer2.direction)
+        return b, B, self.rotation(self.L1, a, B, self.K1, m), self.slide(
+            self.L2, self.K2, B, u, K2, f"{b}{self.K2}")
+
+    def place(self, m, plan):
+        l1, _ = plan.legs
+        K2 = m[self.K2]
+        self.turn_about(m, l1, self.outer1.point)
+        m[self.L2].move_with(self.loc(self.L2, self.inner.point), plan.V_X, plan.a_X, K2.w, K2.eps)
+
+    def failure(self, m, i, phi):
+        a, b = self.outer1.point, self.inner.point
+        A = entry(m[self.K1].at(self.loc(self.K1, a)), i)
+        l1 = abs(self.loc(self.L1, b) - self.loc(self.L1, a))
+        P0, u = self.prism_line(self.outer2, m, self.L2, self.loc(self.L2, b), m[self.K2].e)
+        P0, u = entry(P0, i), entry(u, i)
+        dist = abs(cross(u, A - P0))
+        return (f"link {self.L1} (l = {l1:.6g} m) cannot reach the guide of link {self.L2}: "
+                f"{b}'s line is {dist:.6g} m from {a}")
+
+    def _reach(self, m):
+        a, b = self.outer1.point, self.inner.point
+        A = m[self.K1].at(self.loc(self.K1, a))
+        l1 = abs(self.loc(self.L1, b) - self.loc(self.L1, a))
+        P0, u = self.prism_line(self.outer2, m, self.L2, self.loc(self.L2, b), m[self.K2].e)
+        return np.abs(cross(u, A - P0)), l1
+
+    def margin(self, m):
+        dist, l1 = self._reach(m)
+        return l1 - dist
+
+    def cure(self, m, bad):
+        dist, l1 = self._reach(m)
+        dist = np.broadcast_to(dist, np.shape(bad))[bad]
+        if dist.size:
+            return (f"make l{self.L1} at least the greatest distance of {self.outer1.point} from "
+                    f"{self.inner.point}'s line, {float(np.nanmax(dist)):.6g} m (now {l1:.6g} m), "
+                    "or move the guide closer")
+        return super().cure(m, bad)
+
+    def branch_meaning(self, sign):
+        return (f"{self.inner.point} at the {'far' if sign > 0 else 'near'} intersection "
+                "along the guide")

@@ -1,0 +1,82 @@
+"""RRR: two links turning about their outer pins, joined by the inner pin B:
+B from the intersection of two circles (|AB| = l1, |CB| = l2)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..geometry import circle_circle, turn_between
+from .base import DyadSolver, Motion, entry, origin
+
+
+class RRR(DyadSolver):
+    has_branches = True
+
+    def positions(self, m, sign):
+        a, b, c = self.outer1.point, self.inner.point, self.outer2.point
+        A = m[self.K1].at(self.loc(self.K1, a))
+        C = m[self.K2].at(self.loc(self.K2, c))
+        A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
+        C2, B2 = self.loc(self.L2, c), self.loc(self.L2, b)
+        B = circle_circle(A, abs(B1 - A1), C, abs(B2 - C2), sign)
+        e1 = turn_between(A1, B1, A, B)
+        e2 = turn_between(C2, B2, C, B)
+        m[self.L1] = Motion(e1, origin(A, e1, A1))
+        m[self.L2] = Motion(e2, origin(C, e2, C2))
+
+    def carried(self):
+        return self._at_origin((self.L1, self.K1, self.outer1.point),
+                               (self.L2, self.K2, self.outer2.point))
+
+    def legs(self, m):
+        a, b, c = self.outer1.point, self.inner.point, self.outer2.point
+        B = m[self.L1].at(self.loc(self.L1, b))
+        return b, B, self.rotation(self.L1, a, B, self.K1, m), self.rotation(self.L2, c, B, self.K2, m)
+
+    def place(self, m, plan):
+        l1, l2 = plan.legs
+        self.turn_about(m, l1, self.outer1.point)
+        self.turn_about(m, l2, self.outer2.point)
+
+    def failure(self, m, i, phi):
+        a, b, c = self.outer1.point, self.inner.point, self.outer2.point
+        A = entry(m[self.K1].at(self.loc(self.K1, a)), i)
+        C = entry(m[self.K2].at(self.loc(self.K2, c)), i)
+        l1 = abs(self.loc(self.L1, b) - self.loc(self.L1, a))
+        l2 = abs(self.loc(self.L2, b) - self.loc(self.L2, c))
+        d = abs(C - A)
+        if d > l1 + l2:
+            return (f"links {self.L1} and {self.L2} cannot reach: |{a}{c}| = {d:.6g} m > "
+                    f"l{self.L1} + l{self.L2} = {l1 + l2:.6g} m")
+        return (f"links {self.L1} and {self.L2} cannot close: |{a}{c}| = {d:.6g} m < "
+                f"|l{self.L1} - l{self.L2}| = {abs(l1 - l2):.6g} m")
+
+    def _reach(self, m):
+        a, b, c = self.outer1.point, self.inner.point, self.outer2.point
+        A = m[self.K1].at(self.loc(self.K1, a))
+        C = m[self.K2].at(self.loc(self.K2, c))
+        l1 = abs(self.loc(self.L1, b) - self.loc(self.L1, a))
+        l2 = abs(self.loc(self.L2, b) - self.loc(self.L2, c))
+        return np.abs(C - A), l1, l2
+
+    def margin(self, m):
+        d, l1, l2 = self._reach(m)
+        return np.minimum(l1 + l2 - d, d - abs(l1 - l2))
+
+    def cure(self, m, bad):
+        d, l1, l2 = self._reach(m)
+        d = np.broadcast_to(d, np.shape(bad))[bad]
+        a, c = self.outer1.point, self.outer2.point
+        L1, L2 = self.L1, self.L2
+        cures = []
+        if d.size and float(np.nanmax(d)) > l1 + l2:
+            cures.append(f"make l{L1} + l{L2} at least max |{a}{c}| = {float(np.nanmax(d)):.6g} m "
+                         f"(now {l1 + l2:.6g} m)")
+        if d.size and float(np.nanmin(d)) < abs(l1 - l2):
+            cures.append(f"make |l{L1} - l{L2}| at most min |{a}{c}| = {float(np.nanmin(d)):.6g} m "
+                         f"(now {abs(l1 - l2):.6g} m)")
+        return " and ".join(cures) or super().cure(m, bad)
+
+    def branch_meaning(self, sign):
+        a, b, c = self.outer1.point, self.inner.point, self.outer2.point
+        return f"{b} to the {'left' if sign > 0 else 'right'} of {a}->{c}"
