@@ -20,10 +20,11 @@ from fractions import Fraction
 from typing import Any, Literal, TypeAlias, get_args
 
 from mmt_plans.errors import SpecError
+from mmt_plans.i18n import Language, catalogue, check_language
 
 MeshKind: TypeAlias = Literal["external", "internal"]
 StageKind: TypeAlias = Literal["pair", "planetary"]
-Lang: TypeAlias = Literal["en", "uk"]
+Lang: TypeAlias = Language
 
 MESH_KINDS: tuple[str, ...] = get_args(MeshKind)
 STAGE_KINDS: tuple[str, ...] = get_args(StageKind)
@@ -178,9 +179,7 @@ class GearTrain:
 
     def steps(self, lang: Lang = "en") -> list[Step]:
         """The calculation note of task 1, in the order of seed 002 §1.3–1.6."""
-        if lang not in ("en", "uk"):
-            raise ValueError(f"lang must be 'en' or 'uk', got {lang!r}")
-        words = _WORDS[lang]
+        words = catalogue(check_language(lang)).words("gears")
         labels = _gear_labels(self.stages)
         out: list[Step] = []
         stage_names: list[str] = []
@@ -223,32 +222,6 @@ class GearTrain:
         out.append(Step(words["eps"], "ε1 = dω1/dt", f"d({w_m}/|{total}|)/dt",
                         f"0 {words['rad/s2']}"))
         return out
-
-
-_WORDS: dict[str, dict[str, str]] = {
-    "en": {
-        "pair": "Ratio of the ordinary gear pair",
-        "held": "Ratio with the carrier held (Willis' method)",
-        "willis": "Ratio of the planetary stage (Willis' formula)",
-        "train": "Ratio of the gear train",
-        "motor": "Angular velocity of the motor",
-        "crank": "Angular velocity of the crank",
-        "eps": "Angular acceleration of the crank (constant motor speed and ratio)",
-        "u_total": "u_m1", "omega_m": "ω_m", "n_m": "n_m",
-        "rad/s": "rad/s", "rad/s2": "rad/s²",
-    },
-    "uk": {
-        "pair": "Передаточне відношення рядної передачі",
-        "held": "Передаточне відношення при зупиненому водилі (метод Вілліса)",
-        "willis": "Передаточне відношення планетарної передачі (формула Вілліса)",
-        "train": "Передаточне відношення зубчастого механізму",
-        "motor": "Кутова швидкість двигуна",
-        "crank": "Кутова швидкість кривошипа",
-        "eps": "Кутове прискорення кривошипа (ω_дв і передаточне відношення сталі)",
-        "u_total": "u_дв1", "omega_m": "ω_дв", "n_m": "n_дв",
-        "rad/s": "рад/с", "rad/s2": "рад/с²",
-    },
-}
 
 
 def _gear_labels(stages: Sequence[Stage]) -> list[list[str]]:
@@ -297,7 +270,7 @@ def _num(x: float, digits: int | None, lang: Lang) -> str:
     # digits=None: a given value (motor rpm) is written as given, 1450 not 1450.00.
     text = f"{x:g}" if digits is None else f"{x:.{digits}f}"
     text = text.replace("-", _MINUS)
-    return text.replace(".", ",") if lang == "uk" else text
+    return catalogue(lang).localise(text)
 
 
 def _ratio(u: Fraction | float, lang: Lang) -> str:
@@ -305,7 +278,7 @@ def _ratio(u: Fraction | float, lang: Lang) -> str:
     x = float(u)
     text = f"{x:.3f}" if x == 0 or abs(x) >= 0.1 else f"{x:.4g}"
     text = text.replace("-", _MINUS)
-    return text.replace(".", ",") if lang == "uk" else text
+    return catalogue(lang).localise(text)
 
 
 def _paren(u: Fraction, lang: Lang) -> str:

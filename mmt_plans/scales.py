@@ -26,6 +26,8 @@ from dataclasses import dataclass
 from decimal import Decimal
 from typing import Iterator, Literal, get_args
 
+from .i18n import Language, catalogue, check_language
+
 __all__ = [
     "MANTISSAS",
     "DrawnLength",
@@ -193,25 +195,21 @@ def scale_for(magnitude: float, target: DrawnLength) -> float:
 Quantity = Literal[
     "length", "displacement", "velocity", "acceleration", "force", "time", "moment", "angle"
 ]
-Language = Literal["en", "uk"]
-
-
 @dataclass(frozen=True)
-class _QuantityUnits:
+class _QuantityIndex:
     index: str
-    en: str
-    uk: str
 
 
-QUANTITIES: dict[str, _QuantityUnits] = {
-    "length": _QuantityUnits("l", "m/mm", "м/мм"),
-    "displacement": _QuantityUnits("S", "m/mm", "м/мм"),
-    "velocity": _QuantityUnits("V", "(m/s)/mm", "(м/с)/мм"),
-    "acceleration": _QuantityUnits("a", "(m/s²)/mm", "(м/с²)/мм"),
-    "force": _QuantityUnits("F", "N/mm", "Н/мм"),
-    "time": _QuantityUnits("t", "s/mm", "с/мм"),
-    "moment": _QuantityUnits("M", "(N·m)/mm", "(Н·м)/мм"),
-    "angle": _QuantityUnits("φ", "rad/mm", "рад/мм"),
+# the index of each scale's μ; its unit comes from the language's catalogue
+QUANTITIES: dict[str, _QuantityIndex] = {
+    "length": _QuantityIndex("l"),
+    "displacement": _QuantityIndex("S"),
+    "velocity": _QuantityIndex("V"),
+    "acceleration": _QuantityIndex("a"),
+    "force": _QuantityIndex("F"),
+    "time": _QuantityIndex("t"),
+    "moment": _QuantityIndex("M"),
+    "angle": _QuantityIndex("φ"),
 }
 assert set(QUANTITIES) == set(get_args(Quantity))
 
@@ -266,10 +264,9 @@ def scale_label(
         raise ValueError(
             f"unknown quantity {quantity!r}; expected one of {', '.join(QUANTITIES)}"
         ) from None
-    if lang not in ("en", "uk"):
-        raise ValueError(f"unknown language {lang!r}; expected 'en' or 'uk'")
-    comma = (lang == "uk") if decimal_comma is None else decimal_comma
-    unit = units.uk if lang == "uk" else units.en
+    words = catalogue(check_language(lang))
+    comma = (words.decimal == ",") if decimal_comma is None else decimal_comma
+    unit = str(words.words("scale_units")[quantity])
     return ScaleLabel("μ", units.index, format_number(mu, decimal_comma=comma), unit)
 
 

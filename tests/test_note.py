@@ -82,7 +82,7 @@ def test_balancing_force_by_both_methods(press):
     assert f"= {number(fa.balancing_force_plans)} N" in text
     assert re.search(rf"F_bal\.pl = .* = {re.escape(number(fa.balancing_force_plans))} N", text)
     assert re.search(rf"F_bal\.z = .* = {re.escape(number(fa.balancing_force_lever))} N", text)
-    assert f"= {number(fa.discrepancy_percent, 3)} %" in text
+    assert f"= {number(fa.discrepancy_percent, sig=3)} %" in text
     for lid, ll in fa.loads.links.items():
         assert f"G_{lid} = m_{lid}·g = {number(ll.mass)}·9.81 = {number(ll.mass * 9.81)} N" in text
 

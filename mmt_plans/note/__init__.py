@@ -18,13 +18,14 @@ import os
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .content import Block, Language, NoteContent, WORDS, note_content, number, plain
+from ..i18n import Language
+from .content import Block, NoteContent, note_content, number, plain
 from .pages import NotePage, draw_note_page, layout_note, note_page
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..solution import Solution
 
-__all__ = ["Block", "NoteContent", "NotePage", "WORDS", "draw_note", "layout_note",
+__all__ = ["Block", "NoteContent", "NotePage", "draw_note", "layout_note",
            "note_content", "note_svgs", "number", "plain", "write_note"]
 
 

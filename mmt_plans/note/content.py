@@ -15,11 +15,12 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Iterator, Literal, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, Iterator, Literal, Sequence
 
 import numpy as np
 
 from ..errors import MmtError
+from ..i18n import Language, catalogue, check_language
 from ..scales import ACCELERATION_PLAN, FORCE_PLAN, VELOCITY_PLAN, scale_for
 from ..sheets.sheet1 import _image_markup  # images on a plan are lettered as on sheet 1
 
@@ -28,10 +29,9 @@ if TYPE_CHECKING:  # pragma: no cover
     from ..kinematics.plans import PlanView
     from ..solution import Solution
 
-Language = Literal["en", "uk"]
 BlockKind = Literal["title", "section", "subsection", "text", "equation", "table", "problem"]
 
-__all__ = ["Block", "NoteContent", "note_content", "plain", "WORDS", "Language"]
+__all__ = ["Block", "NoteContent", "note_content", "plain", "Language"]
 
 
 @dataclass(frozen=True)
@@ -73,219 +73,13 @@ def plain(markup: str) -> str:
     return markup.replace("{", "").replace("}", "")
 
 
-WORDS: Mapping[str, Mapping[str, str]] = {
-    "en": {
-        "title": "Calculation and explanatory note",
-        "sheet1": "1. Sheet 1. Structural and kinematic analysis of the mechanism",
-        "1.1": "Structural analysis of the mechanism",
-        "1.2": "Determination of the mechanism's positions",
-        "1.3": "Velocity plans",
-        "1.4": "Angular velocities of the links",
-        "1.5": "Acceleration plans",
-        "1.6": "Angular accelerations of the links",
-        "1.7": "Kinematic diagrams",
-        "1.8": "Matching the results",
-        "sheet2": "2. Sheet 2. Force analysis of the mechanism",
-        "2.1": "Weight forces of the links",
-        "2.2": "Inertia forces of the links",
-        "2.3": "Moments of inertia of the links",
-        "2.4": "Moments of the inertia forces",
-        "2.5": "Reduction of the inertia moments to the inertia forces",
-        "group": "Force calculation of group {name} ({kind})",
-        "driver": "Force calculation of the driving link. Balancing force",
-        "reactions": "Values of the reactions",
-        "lever": "Balancing force by N.E. Zhukovsky's lever",
-        "match": "Matching the results",
-        "chebyshev": "Degree of mobility by Chebyshev's formula (1):",
-        "groups": "The mechanism consists of the initial mechanism I(0,{d}) and the Assur groups:",
-        "group_line": "group {label}: links {links}, class {cls}, order {order}, kind {kind}, pairs {pairs}",
-        "class": "The mechanism belongs to class {cls}. Structural formula: {formula}",
-        "mu_l": "Scale of the kinematic diagram (2), OA = {oa} mm on the drawing:",
-        "extremes": "Extreme positions of {out}: φ_1 = {lo}° (start of the working stroke) and φ_1 = {hi}° (end); the working stroke takes {span}° of the crank's turn.",
-        "positions": "{n} positions from the extreme position 0, every {step}°; plans at positions {plans}, forces at position {force}.",
-        "pos_head": ("Pos.", "φ_1, °", "Stroke", "S, mm"),
-        "working": "working",
-        "idle": "idle",
-        "omega1": "Angular velocity of the crank (3):",
-        "vplan": "Position {i} (φ_1 = {phi}°, {stroke} stroke)",
-        "VA": "Velocity of the crank pin (4) and the scale of the plan (5):",
-        "vequations": "Group {name} ({kind}): the velocity of {X} from the vector equations",
-        "coincident": "{X}({k}) is the point of link {k} under {X}.",
-        "found_v": "Velocities from the plan (6), V = segment·μ_V:",
-        "aA": "Acceleration of the crank pin (8) and the scale of the plan (9):",
-        "aequations": "Group {name} ({kind}): the acceleration of {X} from the vector equations",
-        "normal": "Normal and Coriolis components with their segments on the plan:",
-        "found_a": "Accelerations from the plan (10), a = segment·μ_a:",
-        "omega_pos": "Position {i}, by (7):",
-        "eps_pos": "Position {i}, by (11):",
-        "slides_with": "link {lid} slides along link {g} and turns with it",
-        "ccw": "counter-clockwise",
-        "cw": "clockwise",
-        "still": "",
-        "eps1": "ε_1 = 0 (the crank turns uniformly)",
-        "diagram_scales": "Displacement diagram S_{out}(t) drawn at μ_S = μ_l; time axis L = {L} mm for one turn; pole distances OH_1 = {H1} mm, OH_2 = {H2} mm:",
-        "check_head": ("Pos.", "V plan, m/s", "V diagr., m/s", "Δ_V, %", "a plan, m/s²", "a diagr., m/s²", "Δ_a, %"),
-        "check_pos": "Planned position {i}, by (12) and (13):",
-        "passed": "All errors are within 5 %: the check is passed.",
-        "failed": "The check is NOT passed: {why}",
-        "needed": "{n} positions would bring the construction's own errors under 5 %.",
-        "force_at": "Force analysis at position {i}: φ_1 = {phi}°, {stroke} stroke; g = {g} m/s².",
-        "k_default": "J_S = k·m·l² (16) with k = {k}",
-        "J_given": "J_S{lid} = {J} kg·m² (given)",
-        "no_shift": "link {lid}: F_in = 0, the inertia moment stays a couple",
-        "F_PR": "Production resistance {name} on link {link} at {at}: {F} N",
-        "F_PR_idle": "Production resistance {name} does not act in the idle stroke",
-        "vector_eq": "Vector equation of the group's force plan:",
-        "mu_F": "Scale of the force plan (20):",
-        "solve": "Solution:",
-        "found_R": "Reactions from the plan, R = |R|·μ_F:",
-        "driver_eq": "Moments about {O} of every force on link {d} (h = M/F, m):",
-        "F_bal_pl": "Balancing force from ΣM_{O} = 0 (positive in the sense of rotation):",
-        "R01": "Reaction in pair {O} from the plan of forces of link {d}:",
-        "react_head": ("Reaction", "Pair", "R_x, N", "R_y, N", "R, N"),
-        "lever_text": "The velocity plan turned by 90° ({turn}) is the lever; every force at the image of its point, arms h in mm of the plan (h = M_p/(F·μ_V)):",
-        "lever_head": ("Force", "at", "F, N", "h, mm", "F·h, N·mm"),
-        "F_bal_z": "From ΣM_p = 0:",
-        "discrepancy": "Relative error (21):",
-        "within": "≤ 5 %: the balancing forces agree.",
-        "beyond": "> 5 %: the balancing forces do NOT agree.",
-        "problem": "! {msg}",
-        "against": "against the crank's rotation",
-        "with": "with the crank's rotation",
-        "drives": "driving",
-        "hence": "hence",
-        "brakes": "braking",
-    },
-    "uk": {
-        "title": "Розрахунково-пояснювальна записка",
-        "sheet1": "1. Аркуш 1. Структурний і кінематичний аналіз механізму",
-        "1.1": "Структурний аналіз механізму",
-        "1.2": "Визначення положень механізму",
-        "1.3": "Плани швидкостей",
-        "1.4": "Кутові швидкості ланок",
-        "1.5": "Плани прискорень",
-        "1.6": "Кутові прискорення ланок",
-        "1.7": "Кінематичні діаграми",
-        "1.8": "Порівняння результатів",
-        "sheet2": "2. Аркуш 2. Силовий аналіз механізму",
-        "2.1": "Сили ваги ланок",
-        "2.2": "Сили інерції ланок",
-        "2.3": "Моменти інерції ланок",
-        "2.4": "Моменти сил інерції",
-        "2.5": "Зведення моментів сил інерції до сил інерції",
-        "group": "Силовий розрахунок групи {name} ({kind})",
-        "driver": "Силовий розрахунок ведучої ланки. Зрівноважувальна сила",
-        "reactions": "Значення реакцій",
-        "lever": "Зрівноважувальна сила за важелем М.Є. Жуковського",
-        "match": "Порівняння результатів",
-        "chebyshev": "Ступінь рухомості за формулою Чебишева (1):",
-        "groups": "Механізм складається з початкового механізму I(0,{d}) і груп Ассура:",
-        "group_line": "група {label}: ланки {links}, клас {cls}, порядок {order}, вид {kind}, пари {pairs}",
-        "class": "Механізм {cls} класу. Структурна формула: {formula}",
-        "mu_l": "Масштаб кінематичної схеми (2), OA = {oa} мм на кресленні:",
-        "extremes": "Крайні положення {out}: φ_1 = {lo}° (початок робочого ходу) і φ_1 = {hi}° (кінець); робочий хід триває {span}° оберту кривошипа.",
-        "positions": "{n} положень від крайнього положення 0, через {step}°; плани в положеннях {plans}, сили в положенні {force}.",
-        "pos_head": ("Пол.", "φ_1, °", "Хід", "S, мм"),
-        "working": "робочий",
-        "idle": "холостий",
-        "omega1": "Кутова швидкість кривошипа (3):",
-        "vplan": "Положення {i} (φ_1 = {phi}°, {stroke} хід)",
-        "VA": "Швидкість точки A кривошипа (4) і масштаб плану (5):",
-        "vequations": "Група {name} ({kind}): швидкість точки {X} з векторних рівнянь",
-        "coincident": "{X}({k}) - точка ланки {k}, що збігається з {X}.",
-        "found_v": "Швидкості з плану (6), V = відрізок·μ_V:",
-        "aA": "Прискорення точки A кривошипа (8) і масштаб плану (9):",
-        "aequations": "Група {name} ({kind}): прискорення точки {X} з векторних рівнянь",
-        "normal": "Нормальні та коріолісові складові і їх відрізки на плані:",
-        "found_a": "Прискорення з плану (10), a = відрізок·μ_a:",
-        "omega_pos": "Положення {i}, за (7):",
-        "eps_pos": "Положення {i}, за (11):",
-        "slides_with": "ланка {lid} ковзає по ланці {g} і повертається разом з нею",
-        "ccw": "проти годинникової стрілки",
-        "cw": "за годинниковою стрілкою",
-        "still": "",
-        "eps1": "ε_1 = 0 (кривошип обертається рівномірно)",
-        "diagram_scales": "Діаграма переміщень S_{out}(t) у масштабі μ_S = μ_l; вісь часу L = {L} мм на оберт; полюсні відстані OH_1 = {H1} мм, OH_2 = {H2} мм:",
-        "check_head": ("Пол.", "V план, м/с", "V діагр., м/с", "Δ_V, %", "a план, м/с²", "a діагр., м/с²", "Δ_a, %"),
-        "check_pos": "Положення {i} з планами, за (12) і (13):",
-        "passed": "Усі похибки не перевищують 5 %: перевірку виконано.",
-        "failed": "Перевірку НЕ виконано: {why}",
-        "needed": "{n} положень зменшили б похибки побудови нижче 5 %.",
-        "force_at": "Силовий аналіз у положенні {i}: φ_1 = {phi}°, {stroke} хід; g = {g} м/с².",
-        "k_default": "J_S = k·m·l² (16), k = {k}",
-        "J_given": "J_S{lid} = {J} кг·м² (задано)",
-        "no_shift": "ланка {lid}: F_in = 0, момент сил інерції лишається парою",
-        "F_PR": "Сила виробничого опору {name} на ланці {link} у точці {at}: {F} Н",
-        "F_PR_idle": "Сила виробничого опору {name} не діє на холостому ходу",
-        "vector_eq": "Векторне рівняння плану сил групи:",
-        "mu_F": "Масштаб плану сил (20):",
-        "solve": "Розв'язок:",
-        "found_R": "Реакції з плану сил, R = |R|·μ_F:",
-        "driver_eq": "Моменти відносно {O} усіх сил на ланці {d} (h = M/F, м):",
-        "F_bal_pl": "Зрівноважувальна сила з ΣM_{O} = 0 (додатна в бік обертання):",
-        "R01": "Реакція в парі {O} з плану сил ланки {d}:",
-        "react_head": ("Реакція", "Пара", "R_x, Н", "R_y, Н", "R, Н"),
-        "lever_text": "Важіль - план швидкостей, повернутий на 90° ({turn}); кожна сила в зображенні своєї точки, плечі h у мм плану (h = M_p/(F·μ_V)):",
-        "lever_head": ("Сила", "точка", "F, Н", "h, мм", "F·h, Н·мм"),
-        "F_bal_z": "З ΣM_p = 0:",
-        "discrepancy": "Відносна похибка (21):",
-        "within": "≤ 5 %: зрівноважувальні сили узгоджуються.",
-        "beyond": "> 5 %: зрівноважувальні сили НЕ узгоджуються.",
-        "problem": "! {msg}",
-        "against": "проти обертання кривошипа",
-        "with": "за обертанням кривошипа",
-        "drives": "рушійна",
-        "hence": "звідки",
-        "brakes": "гальмівна",
-    },
-}
-
 # Units, and the phrases of the force solver's step lines, per language.
-_UNITS = {
-    "en": {"m": "m", "mm": "mm", "m/s": "m/s", "m/s2": "m/s²", "rad/s": "rad/s",
-           "rad/s2": "rad/s²", "N": "N", "Nm": "N·m", "kg": "kg", "kgm2": "kg·m²",
-           "rpm": "rpm", "%": "%", "m/mm": "m/mm", "v/mm": "(m/s)/mm",
-           "a/mm": "(m/s²)/mm", "N/mm": "N/mm", "s/mm": "s/mm"},
-    "uk": {"m": "м", "mm": "мм", "m/s": "м/с", "m/s2": "м/с²", "rad/s": "рад/с",
-           "rad/s2": "рад/с²", "N": "Н", "Nm": "Н·м", "kg": "кг", "kgm2": "кг·м²",
-           "rpm": "об/хв", "%": "%", "m/mm": "м/мм", "v/mm": "(м/с)/мм",
-           "a/mm": "(м/с²)/мм", "N/mm": "Н/мм", "s/mm": "с/мм"},
-}
-
-_STEP_PHRASES_UK = (
-    ("group polygon", "план сил групи"),
-    ("polygon", "план сил"),
-    ("(positive in the sense of rotation)", "(додатна в бік обертання)"),
-    ("normal to the guide", "перпендикулярно до напрямної"),
-    ("has no normal force; the pair carries a couple", "не має нормальної сили; пара передає момент"),
-    ("mm from", "мм від"),
-    ("along the guide", "уздовж напрямної"),
-    ("acts", "діє"),
-    ("link", "ланка"),
-    ("Sum", "Σ"),
-    (" N*m", " Н·м"),
-    (" N", " Н"),
-)
-
-
 # --- number formatting -----------------------------------------------------------------
 
 def number(x: float, lang: Language = "en", sig: int = 4) -> str:
     """At least `sig` significant digits, no exponent, no trailing zeros; a
     decimal comma in Ukrainian: 10.47, 2.094, 0.2, 12403; "2,094"."""
-    x = float(x)
-    if not math.isfinite(x):
-        return "-"
-    if abs(x) < 1e-12:
-        text = "0"
-    else:
-        digits = min(8, max(0, sig - 1 - int(math.floor(math.log10(abs(x))))))
-        text = f"{x:.{digits}f}"
-        if "." in text:
-            text = text.rstrip("0").rstrip(".")
-        if text in ("-0", ""):
-            text = "0"
-    return text.replace(".", ",") if lang == "uk" else text
+    return catalogue(lang).number(x, sig)
 
 
 def _paren(text: str) -> str:
@@ -322,13 +116,12 @@ def _equation_markup(eq: str) -> str:
 
 class _Writer:
     def __init__(self, analysis: "Solution", lang: Language) -> None:
-        if lang not in WORDS:
-            raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(WORDS)}")
+        check_language(lang)
         self.a = analysis
         self.mech = analysis.mechanism
         self.lang = lang
-        self.w = WORDS[lang]
-        self.u = _UNITS[lang]
+        self.w = catalogue(lang).words("note")
+        self.u = catalogue(lang).words("units")
         self.blocks: list[Block] = []
 
     # small helpers
@@ -887,8 +680,8 @@ class _Writer:
         s = re.sub(r"\bR(\d)(\d)\b", r"R_{\1\2}", s)
         s = s.replace("F_bal", "F_{bal.pl}").replace("M_bal", "M_{bal}")
         if self.lang == "uk":
-            for en, uk in _STEP_PHRASES_UK:
-                s = s.replace(en, uk)
+            for en, uk in catalogue(self.lang).words("step_phrases").items():
+                s = s.replace(en, str(uk))
             s = re.sub(r"(\d)\.(\d)", r"\1,\2", s)
         else:
             s = s.replace(" N*m", " N·m")

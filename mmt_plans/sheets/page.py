@@ -28,6 +28,7 @@ from types import MappingProxyType
 from typing import Any, Iterator, Literal, Mapping, NamedTuple
 
 from ..render.backend import Backend, HAlign
+from ..i18n import Language, catalogue, check_language
 from ..render.look import Look, load_look, load_template
 
 __all__ = [
@@ -55,7 +56,6 @@ __all__ = [
     "draw_page",
 ]
 
-Language = Literal["en", "uk"]
 
 # ISO 216 sizes in mm as this course uses them: the drawing sheets in
 # landscape, the A4 of the explanatory note in portrait.
@@ -380,7 +380,8 @@ _CAPTION_CELLS: Mapping[str, str] = MappingProxyType(
 
 @dataclass(frozen=True)
 class TitleBlockLook:
-    """Lettering sizes and captions of the main inscription (templates/title_block.toml)."""
+    """Lettering sizes of the main inscription (templates/title_block.toml); its
+    captions come from the language's catalogue."""
 
     caption: float
     field: float
@@ -389,26 +390,19 @@ class TitleBlockLook:
     organisation: float
     padding: float
     block_padding: float
-    captions: Mapping[str, Mapping[str, str]]
 
     def caption_text(self, lang: Language, key: str) -> str:
+        """A printed caption in `lang` (the catalogue's [title_block])."""
         try:
-            return self.captions[lang][key]
+            return str(catalogue(lang).words("title_block")[key])
         except KeyError:
-            raise ValueError(f"no caption {key!r} for language {lang!r} in title_block.toml") from None
+            raise ValueError(f"no caption {key!r} for language {lang!r}") from None
 
 
 @functools.cache
 def load_title_block_look() -> TitleBlockLook:
     data = load_template("title_block.toml")
     sizes = data["sizes"]
-    captions = {
-        lang: MappingProxyType(dict(texts)) for lang, texts in data["captions"].items()
-    }
-    for lang, texts in captions.items():
-        missing = set(_CAPTION_CELLS) - set(texts)
-        if missing:
-            raise ValueError(f"title_block.toml [captions.{lang}] lacks {', '.join(sorted(missing))}")
     return TitleBlockLook(
         caption=float(sizes["caption"]),
         field=float(sizes["field"]),
@@ -417,7 +411,6 @@ def load_title_block_look() -> TitleBlockLook:
         organisation=float(sizes["organisation"]),
         padding=float(sizes["padding"]),
         block_padding=float(sizes["block_padding"]),
-        captions=MappingProxyType(captions),
     )
 
 
@@ -458,8 +451,7 @@ def title_block_texts(
     """
     look = look if look is not None else load_look()
     tb = tb_look if tb_look is not None else load_title_block_look()
-    if lang not in tb.captions:
-        raise ValueError(f"no captions for language {lang!r}; have {', '.join(tb.captions)}")
+    check_language(lang)
     values = _check_fields(fields)
     let = look.lettering
     pad = tb.padding

@@ -19,7 +19,7 @@ import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Iterable, Mapping, Sequence
+from typing import Any, Iterable, Sequence
 
 import numpy as np
 from shapely.geometry import LineString
@@ -27,7 +27,8 @@ from shapely.geometry import LineString
 from ..model import FRAME, Prismatic
 from ..solution import Solution
 from .labels import Labels, arc_line
-from .page import Language, Page, Rect, draw_frame
+from ..i18n import Language, catalogue, check_language
+from .page import Page, Rect, draw_frame
 from .sheet1 import Sketch, hatched_guide, hatched_base, point_markup, unit_vector
 
 __all__ = [
@@ -58,20 +59,6 @@ _BASE = (6.0, 3.2)  # width and depth of a frame pivot's symbol, mm
 _GUIDE_MARGIN = 4.0  # a guide runs this far past the slider's stroke, mm
 _DENSE = 145  # crank angles of the sweep that finds the strokes along the guides
 _PAD = 2.0  # Sketch.extent's clearance
-
-_WORDS: Mapping[str, Mapping[str, str]] = {
-    "en": {
-        "task": "Task {task}, variant {variant}",
-        "heading": "{seed}: kinematic schemes of the tasks at position 0 (φ1 where the task gives it)",
-        "position": "φ1 = {phi:.0f}°",
-    },
-    "uk": {
-        "task": "Завдання {task}, варіант {variant}",
-        "heading": "{seed}: кінематичні схеми завдань у положенні 0 (φ1, де його задано)",
-        "position": "φ1 = {phi:.0f}°",
-    },
-}
-
 
 # --- the mechanism at one position -------------------------------------------------
 
@@ -330,8 +317,7 @@ def sketch_schematic(
     Every point letter is drawn in a group "point-<name>", every link number
     in a group "link-<id>" (class "label"), so that they can be found again.
     """
-    if lang not in _WORDS:
-        raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(_WORDS)}")
+    check_language(lang)
     k = solution.entry(position)
     pose = _pose(solution, k)
     x0, y0, x1, y1 = _geometry_bounds(pose)
@@ -381,7 +367,7 @@ def _formula(sk: Sketch, pos: tuple[float, float], formula: str, size: float) ->
 def sketch_caption(solution: Solution, path: str | os.PathLike[str], look: Any, lang: Language,
                    width: float, size: float = _CAPTION) -> Sketch:
     """Two lines centred on x = 0 under y = 0: "Task 3, variant 2, φ1 = …" and the formula."""
-    words = _WORDS[lang]
+    words = catalogue(lang).words("schematic")
     tv = task_of(path)
     first = words["task"].format(task=tv[0], variant=tv[1]) if tv else str(solution.mechanism.title)
     if solution.mechanism.study.zero is not None:
@@ -437,7 +423,7 @@ def write_task_schematics(
     look = backend.look
     seed = Path(task_dir).name
     with backend.group("heading", "heading"):
-        backend.text((frame.left, frame.top - 5.0), _WORDS[lang]["heading"].format(seed=seed), 3.5,
+        backend.text((frame.left, frame.top - 5.0), catalogue(lang).words("schematic")["heading"].format(seed=seed), 3.5,
                      valign="middle")
     top = frame.top - head
     for f in files:

@@ -20,7 +20,8 @@ from ..render.recording import RecordingBackend
 from ..scales import ACCELERATION_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from .labels import Labels
 from .layout import LayoutError, SheetLayout
-from .page import FIELDS, Language, Page, Rect, draw_page
+from ..i18n import Language, catalogue, check_language
+from .page import FIELDS, Page, Rect, draw_page
 from .table import Table
 
 __all__ = ["Sheet1", "Sketch", "compose_sheet1", "GROUPS"]
@@ -44,66 +45,9 @@ _PAD = 2.0  # clearance added round every sketch's drawn extent, mm
 _DENSE = 181
 _NUMBER = re.compile(r"[-−]?\d+\.\d+(e[-+]?\d+)?")  # positions of the dense sweep for the trajectories
 
-_WORDS: Mapping[str, Mapping[str, str]] = {
-    "en": {
-        "mechanism": "Kinematic diagram of the mechanism",
-        "velocity_plan": "Velocity plan, position {i}",
-        "acceleration_plan": "Acceleration plan, position {i}",
-        "diagram_s": "Displacement diagram S(t)",
-        "diagram_v": "Velocity diagram V(t)",
-        "diagram_a": "Acceleration diagram a(t)",
-        "velocities": "Velocities, m/s",
-        "accelerations": "Accelerations, m/s²",
-        "omega_eps": "Angular velocities and accelerations",
-        "check": "Diagrams vs plans (limit 5 %)",
-        "quantity": "Quantity",
-        "position": "Pos.",
-        "link": "Link",
-        "plan": "plan",
-        "diagram": "diagram",
-        "structure": "Structural formula",
-        "over": "{q} at position {i}: {e:.1f} % > {lim:g} % ({why})",
-        "cure": "all within {lim:g} % with {n} positions ({how})",
-        "all_within": "all within {lim:g} %",
-        "sign_change": "next to a sign change of the output's {q}",
-        "small_value": "the plan value is small",
-        "fast_change": "fast change between positions",
-        "plan_mismatch": "construction and plan disagree",
-        "unexplained": "not explained",
-        "trial": "found by trial",
-        "estimate": "estimated",
-        "current": "as drawn",
-    },
-    "uk": {
-        "mechanism": "Кінематична схема механізму",
-        "velocity_plan": "План швидкостей, положення {i}",
-        "acceleration_plan": "План прискорень, положення {i}",
-        "diagram_s": "Діаграма переміщень S(t)",
-        "diagram_v": "Діаграма швидкостей V(t)",
-        "diagram_a": "Діаграма прискорень a(t)",
-        "velocities": "Швидкості, м/с",
-        "accelerations": "Прискорення, м/с²",
-        "omega_eps": "Кутові швидкості та прискорення",
-        "check": "Діаграми і плани (допуск 5 %)",
-        "quantity": "Величина",
-        "position": "Пол.",
-        "link": "Ланка",
-        "plan": "план",
-        "diagram": "діагр.",
-        "structure": "Структурна формула",
-        "over": "{q} у положенні {i}: {e:.1f} % > {lim:g} % ({why})",
-        "cure": "усі в межах {lim:g} % при {n} положеннях ({how})",
-        "all_within": "усі в межах {lim:g} %",
-        "sign_change": "поблизу зміни знаку {q} вихідної ланки",
-        "small_value": "мале значення за планом",
-        "fast_change": "швидка зміна між положеннями",
-        "plan_mismatch": "побудова і план розходяться",
-        "unexplained": "причина не встановлена",
-        "trial": "перевірено",
-        "estimate": "оцінка",
-        "current": "як накреслено",
-    },
-}
+
+def _words(lang: Language):
+    return catalogue(lang).words("sheet1")
 
 
 # --- sketches: drawings in their own coordinates ---------------------------------
@@ -384,7 +328,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         ext = sk.extent()
         label = scale_label(mu_l, "length", lang)
         sk.rich_text((ext.x + _PAD, ext.bottom - 6.0), label.markup(), _TEXT)
-        sk.text((ext.x + _PAD, ext.top + 3.0), _WORDS[lang]["mechanism"], _TITLE)
+        sk.text((ext.x + _PAD, ext.top + 3.0), _words(lang)["mechanism"], _TITLE)
     return sk
 
 
@@ -392,7 +336,7 @@ def sketch_formula(solution: Solution, look: Any, lang: Language) -> Sketch:
     st = solution.structure
     sk = Sketch(look)
     with sk.group("structural-formula", "structural-formula"):
-        sk.text((0.0, 14.0), _WORDS[lang]["structure"], _TITLE)
+        sk.text((0.0, 14.0), _words(lang)["structure"], _TITLE)
         mobility = f"W = 3n - 2p_{{5}} - p_{{4}} = 3·{st.n} - 2·{st.p5} - {st.p4} = {st.W}"
         sk.rich_text((0.0, 6.0), mobility, _TEXT)
         # osifont has no arrow glyph: the arrows between groups are drawn.
@@ -483,7 +427,7 @@ def sketch_plan(
         q = "velocity" if kind == "velocity" else "acceleration"
         sk.rich_text(((ext.left + ext.right) / 2, ext.bottom - 5.0),
                      scale_label(mu, q, lang).markup(), _TEXT, anchor="center")
-        title = _WORDS[lang][f"{kind}_plan"].format(i=index)
+        title = _words(lang)[f"{kind}_plan"].format(i=index)
         sk.text(((ext.left + ext.right) / 2, ext.top + 3.0), title, _TEXT, anchor="center")
     return sk, images
 
@@ -505,6 +449,7 @@ def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
     positions' ordinates, as a draughtsman draws it with a French curve."""
     c = construction
     sk = Sketch(look)
+    axes = catalogue(lang).words("diagram_axes")
     L = float(c.s_points[-1][0])
     with sk.group(f"diagram-{which}", "diagram"):
         if which == "s":
@@ -514,25 +459,25 @@ def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
                 y = np.append(s_dense, s_dense[0]) / c.mu_S
                 curve = np.column_stack([np.linspace(0.0, L, len(y)), y])
             deriv = c.velocity
-            label = "S, m"
+            label = axes["s"]
             scales = [scale_label(_tidy(c.mu_S), "displacement", lang),
                       scale_label(_tidy(c.mu_t), "time", lang)]
         elif which == "v":
             deriv = c.velocity
             pts = np.asarray(deriv.mid_points, dtype=float)
             curve = np.asarray(deriv.curve, dtype=float)
-            label = "V, m/s"
+            label = axes["v"]
             scales = [scale_label(_tidy(c.mu_V), "velocity", lang)]
         else:
             deriv = c.acceleration
             pts = np.asarray(deriv.mid_points, dtype=float)
             curve = np.asarray(deriv.curve, dtype=float)
-            label = "a, m/s²"
+            label = axes["a"]
             scales = [scale_label(_tidy(c.mu_a), "acceleration", lang)]
         ymin = min(0.0, float(curve[:, 1].min()))
         ymax = max(0.0, float(curve[:, 1].max()))
         x_lo = float(deriv.pole[0]) - 4.0 if which != "s" else -4.0
-        _axes(sk, x_lo, L + 12.0, ymin - 4.0, ymax + 10.0, label, "t, s")
+        _axes(sk, x_lo, L + 12.0, ymin - 4.0, ymax + 10.0, str(label), str(axes["t"]))
         # Ordinates at the positions, numbered under the axis.
         for i, x in enumerate(np.asarray(c.abscissae, dtype=float).tolist() + [L]):
             sk.text((x, -1.5 if which != "s" else -1.5), str(i % len(c.abscissae)), _SMALL,
@@ -567,8 +512,9 @@ def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
         for lab in scales:
             x += sk.rich_text((x, y), lab.markup(), _TEXT) + 8.0
         if which != "s":
-            sk.rich_text((x, y), f"H = {float(-deriv.pole[0]):.2f}".rstrip("0").rstrip(".") + " mm", _TEXT)
-        sk.text((ext.x + _PAD, ext.top + 3.0), _WORDS[lang][f"diagram_{which}"], _TEXT)
+            H = f"{float(-deriv.pole[0]):.2f}".rstrip("0").rstrip(".")
+            sk.rich_text((x, y), str(axes["pole"]).format(H=catalogue(lang).localise(H)), _TEXT)
+        sk.text((ext.x + _PAD, ext.top + 3.0), _words(lang)[f"diagram_{which}"], _TEXT)
     return sk
 
 
@@ -604,7 +550,7 @@ def table_sketch(
     sk = Sketch(look)
 
     def cell(text: str) -> str:
-        return text.replace(".", ",") if lang == "uk" and _NUMBER.fullmatch(text) else text
+        return catalogue(lang).localise(text) if _NUMBER.fullmatch(text) else text
 
     body = [["", *(cell(t) for t in r[1:])] for r in rows]
     row_h, head_h = 8.0, 12.0
@@ -622,7 +568,7 @@ def table_sketch(
 
 
 def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, Sketch]:
-    w = _WORDS[lang]
+    w = _words(lang)
     idx = list(solution.plan_positions)
     views = [solution.plan(i) for i in idx]
     moving = _moving_points(solution)
@@ -707,6 +653,7 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
                                       how=w[check.positions_needed_how]))
     else:
         notes.append(w["all_within"].format(lim=check.limit_percent))
+    notes = [catalogue(lang).localise(n) if lang != "en" else n for n in notes]
     extra = Sketch(look)
     y = sk.extent().bottom - 2.0
     for note in notes:
@@ -825,8 +772,7 @@ def compose_sheet1(solution: Solution, backend: Backend, lang: Language = "en", 
     that a sheet with room draws it large.
     """
     page = page if page is not None else Page.of("A1")
-    if lang not in _WORDS:
-        raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(_WORDS)}")
+    check_language(lang)
     last: Exception | None = None
     cache: dict[tuple[str, float], Any] = {}
     attempts = [(shrink, stacked, bigger, gap) for shrink in range(5) for stacked in (True, False)

@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any, Iterable, Mapping, Sequence
+from typing import Any, Iterable, Sequence
 
 import numpy as np
 
@@ -31,7 +31,8 @@ from ..solution import Solution
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label
 from .labels import Labels
 from .layout import LayoutError, SheetLayout
-from .page import Language, Page, Rect, draw_page
+from ..i18n import Language, catalogue, check_language
+from .page import Page, Rect, draw_page
 from .sheet1 import (Sketch, hatched_guide, hatched_base, point_markup, table_sketch, title_fields,
                      unit_vector, scale_step, sense_arc)
 
@@ -46,66 +47,6 @@ _FAR_MM = 40.0  # a reaction applied farther than this from its group's points m
 GROUPS = ("force-mechanism", "driving-link", "force-polygon-1", "zhukovsky-lever",
           "table-loads", "table-reactions", "table-lever", "table-balancing")
 
-_WORDS: Mapping[str, Mapping[str, str]] = {
-    "en": {
-        "mechanism": "Mechanism in position {i} with its loads",
-        "group": "Assur group {name} ({kind})",
-        "driving": "Driving link {link}",
-        "polygon": "Force polygon: {title}",
-        "lever": "Zhukovsky's lever (velocity plan turned by 90°)",
-        "not_to_scale": "forces to direction, not to scale",
-        "short": "shorter than 1 mm: {names}",
-        "loads": "Loads of the links, position {i}",
-        "reactions": "Reactions in the kinematic pairs, N",
-        "lever_table": "Moments on the lever about p",
-        "balancing": "Balancing force (limit 5 %)",
-        "link": "Link",
-        "pair": "Pair",
-        "force": "Force",
-        "no": "No.",
-        "quantity": "Quantity",
-        "value": "Value",
-        "plans": "F_{bal} (force plans), N",
-        "by_lever": "F_{bal} (Zhukovsky's lever), N",
-        "delta": "Discrepancy Δ, %",
-        "moment": "M_{bal}, N·m",
-        "equation": "F_{bal}·pa = Σ F_{i}·h_{i}",
-        "loads_header": ("m, kg", "G, N", "aS, m/s²", "Fin, N", "JS, kg·m²", "ε, 1/s²",
-                         "Min, N·m", "h, mm"),
-        "lever_header": ("h No.", "F, N", "h, mm", "±F·h, N·mm"),
-    },
-    "uk": {
-        "mechanism": "Механізм у положенні {i} з навантаженнями",
-        "group": "Група Ассура {name} ({kind})",
-        "driving": "Ведуча ланка {link}",
-        "polygon": "План сил: {title}",
-        "lever": "Важіль Жуковського (план швидкостей, повернутий на 90°)",
-        "not_to_scale": "сили показано за напрямом, не в масштабі",
-        "short": "коротші за 1 мм: {names}",
-        "loads": "Навантаження ланок, положення {i}",
-        "reactions": "Реакції в кінематичних парах, Н",
-        "lever_table": "Моменти на важелі відносно p",
-        "balancing": "Зрівноважувальна сила (допуск 5 %)",
-        "link": "Ланка",
-        "pair": "Пара",
-        "force": "Сила",
-        "no": "№",
-        "quantity": "Величина",
-        "value": "Значення",
-        "plans": "F_{зр} (плани сил), Н",
-        "by_lever": "F_{зр} (важіль Жуковського), Н",
-        "delta": "Розбіжність Δ, %",
-        "moment": "M_{зр}, Н·м",
-        "equation": "F_{зр}·pa = Σ F_{i}·h_{i}",
-        "loads_header": ("m, кг", "G, Н", "aS, м/с²", "Fin, Н", "JS, кг·м²", "ε, 1/с²",
-                         "Min, Н·м", "h, мм"),
-        "lever_header": ("h №", "F, Н", "h, мм", "±F·h, Н·мм"),
-    },
-}
-
-_POLYGON_TITLES = {"uk": (("group", "група"), ("link", "ланка"))}
-
-
 @dataclass
 class Sheet2:
     """What compose_sheet2 drew: the force solution, layout, scales, placements."""
@@ -117,6 +58,11 @@ class Sheet2:
     placed: dict[str, Rect] = field(default_factory=dict)
     arms: dict[str, list[tuple[str, float]]] = field(default_factory=dict)  # lever: label, h mm
     shrink: int = 0
+
+
+
+def _words(lang: Language):
+    return catalogue(lang).words("sheet2")
 
 
 # --- lettering ------------------------------------------------------------------------
@@ -349,8 +295,8 @@ def sketch_loaded_mechanism(fa: ForceAnalysis, mu_l: float, look: Any, lang: Lan
         O = d.mm(state.point(mech.drive.link, mech.crank_pivot))
         d.moment(O, state.omega1, "ω_{1}", radius=9.0)
         label = scale_label(mu_l, "length", lang).markup()
-        sk = d.finish(_WORDS[lang]["mechanism"].format(i=fa.index),
-                      [label, _WORDS[lang]["not_to_scale"]])
+        sk = d.finish(_words(lang)["mechanism"].format(i=fa.index),
+                      [label, _words(lang)["not_to_scale"]])
     return sk
 
 
@@ -419,7 +365,7 @@ def sketch_group(fa: ForceAnalysis, g: Any, mu_l: float, look: Any, lang: Langua
                     name = f"h'_{{{len(arm_names) + 1}}}"  # h_i is the shift of F_in.i
                     if d.arm(B, d.mm(P), np.asarray(F, float), name) >= 1.0:
                         arm_names.append(label)
-        title = _WORDS[lang]["group"].format(name=g.name, kind=g.kind)
+        title = _words(lang)["group"].format(name=g.name, kind=g.kind)
         sk = d.finish(title, [scale_label(mu_l, "length", lang).markup()])
     return sk
 
@@ -435,14 +381,14 @@ def sketch_driving_link(fa: ForceAnalysis, mu_l: float, look: Any, lang: Languag
         d.loads(fa, [dl.link], largest)
         for label, F, P in forces:
             d.force(d.mm(P), F, label, largest)
-        title = _WORDS[lang]["driving"].format(link=dl.link)
+        title = _words(lang)["driving"].format(link=dl.link)
         sk = d.finish(title, [scale_label(mu_l, "length", lang).markup()])
     return sk
 
 
 def _polygon_title(title: str, lang: Language) -> str:
-    for en, uk in _POLYGON_TITLES.get(lang, ()):
-        title = title.replace(en, uk)
+    for en, word in catalogue(lang).words("polygon_titles").items():
+        title = title.replace(en, str(word))
     return title
 
 
@@ -503,10 +449,10 @@ def sketch_force_polygons(polygons: Sequence[ForcePolygon], mu_F: float, look: A
             sk.rich_text((ext.left + _PAD, y), _equation_markup(poly.equation), _TEXT)
             y -= 6.0
         if short:
-            sk.rich_text((ext.left + _PAD, y), _WORDS[lang]["short"].format(names=", ".join(short)), _TEXT)
+            sk.rich_text((ext.left + _PAD, y), _words(lang)["short"].format(names=", ".join(short)), _TEXT)
             y -= 6.0
         sk.rich_text((ext.left + _PAD, y), scale_label(mu_F, "force", lang).markup(), _TEXT)
-        sk.text((ext.left + _PAD, ext.top + 3.0), _WORDS[lang]["polygon"].format(
+        sk.text((ext.left + _PAD, ext.top + 3.0), _words(lang)["polygon"].format(
             title=_polygon_title(title, lang)), _TITLE)
     return sk
 
@@ -569,9 +515,9 @@ def sketch_lever(fa: ForceAnalysis, mu_V: float, look: Any, lang: Language,
             labels.later(foot / 2, f"h_{{{','.join(numbers)}}}")
         labels.write_later()
         ext = sk.extent()
-        sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _WORDS[lang]["equation"], _TEXT)
+        sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
         sk.rich_text((ext.left + _PAD, ext.bottom - 11.0), scale_label(mu_V, "velocity", lang).markup(), _TEXT)
-        sk.text((ext.left + _PAD, ext.top + 3.0), _WORDS[lang]["lever"], _TITLE)
+        sk.text((ext.left + _PAD, ext.top + 3.0), _words(lang)["lever"], _TITLE)
     return sk
 
 
@@ -579,7 +525,7 @@ def sketch_lever(fa: ForceAnalysis, mu_V: float, look: Any, lang: Language,
 
 def sketch_loads_table(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
     """G, F_IN, M_IN and the arm h of every link; h in mm of the drawing at μ_l (19)."""
-    w = _WORDS[lang]
+    w = _words(lang)
     rows, marks = [], []
     for lid, ll in fa.loads.links.items():
         sh = ll.shifted_inertia_force
@@ -595,7 +541,7 @@ def sketch_loads_table(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language
 
 def _sketch_tables(fa: ForceAnalysis, arms: Sequence[tuple[str, float]], look: Any,
                    lang: Language) -> dict[str, Sketch]:
-    w = _WORDS[lang]
+    w = _words(lang)
     out: dict[str, Sketch] = {}
     rows, marks = [], []
     for name, r in fa.reactions.items():
@@ -634,12 +580,12 @@ def _force_scale(polygons: Sequence[ForcePolygon]) -> float:
     return scale_for(largest, FORCE_PLAN) if largest > 0 else 1.0
 
 
-_RUNS = {"uk": {"bal": "зр"}}  # indices of the textbook's symbols that differ by language
+  # indices of the textbook's symbols that differ by language
 
 
 def _translated(sketch: Sketch, lang: Language) -> Sketch:
     """The sketch with its lettering runs in `lang`: F_bal is F_зр on a Ukrainian sheet."""
-    runs = _RUNS.get(lang)
+    runs = {k: str(v) for k, v in catalogue(lang).words("symbol_indices").items() if k != v}
     if not runs:
         return sketch
     for i, c in enumerate(sketch.calls):
@@ -694,8 +640,7 @@ def compose_sheet2(solution: Solution, backend: Backend, lang: Language = "en", 
     """Draw sheet 2 of `solution` on `backend`: the force solution at its force
     position (computed here unless `forces` is given)."""
     page = page if page is not None else Page.of("A1")
-    if lang not in _WORDS:
-        raise ValueError(f"unknown language {lang!r}; expected one of {', '.join(_WORDS)}")
+    check_language(lang)
     fa = forces if forces is not None else solution.require_forces()
     last: Exception | None = None
     cache: dict[tuple[str, float], Any] = {}
