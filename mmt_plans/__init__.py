@@ -8,8 +8,14 @@ Mechanisms course project, exact and drawn.
     'I(0,1) <- II(2,3) <- II(4,5)'
 """
 
-from .errors import (AssemblyError, MmtError, PartialTurnError, SingularPlanError, SpecError,
-                     StructureError)
+from .errors import (
+                     AssemblyError,
+                     MmtError,
+                     PartialTurnError,
+                     SingularPlanError,
+                     SpecError,
+                     StructureError,
+)
 from .model import Mechanism
 from .solution import Solution, solve, sweep
 from .spec import load, loads

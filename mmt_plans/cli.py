@@ -64,7 +64,9 @@ from .sheets.draw_cmd import draw  # noqa: E402
 main.add_command(draw)
 
 from .check_cmd import check  # noqa: E402
+
 main.add_command(check)
 
 from .batch_cmd import batch  # noqa: E402
+
 main.add_command(batch)

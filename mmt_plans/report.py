@@ -7,9 +7,8 @@ import math
 import numpy as np
 
 from .errors import degrees_range
-from .results_json import diagrams_json
-
 from .forces import ForceAnalysis
+from .results_json import diagrams_json
 from .solution import Solution
 
 

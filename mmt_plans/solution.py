@@ -22,14 +22,19 @@ from typing import Sequence
 
 import numpy as np
 
-from .diagrams import (DIAGRAM_HEIGHT_MM, TIME_AXIS, KinematicDiagrams, PlanComparison,
-                       compare_with_plans, graphical_differentiation)
+from .diagrams import (
+    DIAGRAM_HEIGHT_MM,
+    TIME_AXIS,
+    KinematicDiagrams,
+    PlanComparison,
+    compare_with_plans,
+    graphical_differentiation,
+)
 from .errors import ForceError, MmtError, StructureError, partial_turn_error
 from .forces import ForceAnalysis, force_analysis_at
 from .forces.reduction import Reduction, reduce_sweep
 from .forces.state import PositionState, from_sweep
-from .kinematics.branches import Branches
-from .kinematics.branches import build_chain
+from .kinematics.branches import Branches, build_chain
 from .kinematics.chain import Chain, Sweep
 from .kinematics.plans import PlanView, plan_view
 from .model import Mechanism, Stroke

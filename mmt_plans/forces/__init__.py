@@ -19,8 +19,17 @@ from typing import Mapping
 
 from ..model import Stroke
 from .errors import ForceError
-from .groups import (DrivingLinkForces, ForcePolygon, GroupForces, PolygonVector, Reaction,
-                     ReactionComponent, reaction_name, solve_groups, with_reactions)
+from .groups import (
+    DrivingLinkForces,
+    ForcePolygon,
+    GroupForces,
+    PolygonVector,
+    Reaction,
+    ReactionComponent,
+    reaction_name,
+    solve_groups,
+    with_reactions,
+)
 from .lever import LeverForce, ZhukovskyLever, zhukovsky_lever
 from .loads import AppliedForce, ExternalForce, LinkLoads, Loads, ShiftedInertiaForce, link_loads
 from .reduction import Reduction

@@ -19,10 +19,10 @@ from typing import TYPE_CHECKING, Any, Iterator, Literal, Sequence
 
 import numpy as np
 
+from ..drawing.markup import image_markup as _image_markup
 from ..errors import MmtError
 from ..i18n import Language, catalogue, check_language
 from ..scales import ACCELERATION_PLAN, FORCE_PLAN, VELOCITY_PLAN, scale_for
-from ..sheets.sheet1 import _image_markup  # images on a plan are lettered as on sheet 1
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..forces import ForceAnalysis

@@ -14,10 +14,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
+from ..drawing.page import FIELDS, Page, Rect, draw_frame, draw_title_block, load_title_block_look
+from ..i18n import Language
 from ..render.backend import Backend, parse_markup
 from ..render.look import Lettering, Look, load_look
-from ..sheets.page import (FIELDS, Language, Page, Rect, draw_frame, draw_title_block,
-                           load_title_block_look)
 from .content import Block, NoteContent
 
 __all__ = ["NotePage", "Line", "layout_note", "draw_note_page", "FORM2A_HEIGHT", "note_page"]

@@ -167,3 +167,37 @@ class RecordingBackend(Backend):
 
     def _end_group(self) -> None:
         self._record("end_group")
+
+    def replay(self, backend: Backend, dx: float = 0.0, dy: float = 0.0) -> None:
+        """Draw every recorded call again on `backend`, shifted by (dx, dy) mm."""
+        def t(p: Sequence[float]) -> tuple[float, float]:
+            return (p[0] + dx, p[1] + dy)
+
+        for c in self.calls:
+            a = c.args
+            if c.name == "begin_group":
+                backend.begin_group(a["id"], a["cls"])
+            elif c.name == "end_group":
+                backend.end_group()
+            elif c.name == "line":
+                backend.line(t(a["start"]), t(a["end"]), a["line"])
+            elif c.name == "polyline":
+                backend.polyline([t(p) for p in a["points"]], a["line"])
+            elif c.name == "polygon":
+                backend.polygon([t(p) for p in a["points"]], a["line"], a["fill"])
+            elif c.name == "circle":
+                backend.circle(t(a["center"]), a["radius"], a["line"], a["fill"])
+            elif c.name == "arc":
+                backend.arc(t(a["center"]), a["radius"], a["start_deg"], a["end_deg"], a["line"])
+            elif c.name == "arrow":
+                backend.arrow(
+                    t(a["start"]), t(a["end"]), a["line"],
+                    head_length=a["head_length"], head_width=a["head_width"],
+                )
+            elif c.name == "text":
+                backend.text(
+                    t(a["pos"]), a["content"], a["size"], anchor=a["anchor"],
+                    valign=a["valign"], rotation=a["rotation"], max_width=a["max_width"],
+                )
+            else:  # pragma: no cover - a new primitive must be added here
+                raise ValueError(f"cannot replay {c.name!r}")

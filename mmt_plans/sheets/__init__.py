@@ -1,9 +1,10 @@
-"""Composing the A1 sheets from solved data: page, frame, title block, tables, layout."""
+"""Composing the A1 sheets from a Solution (sheet1, sheet2, the task schematics);
+the page, frame, title block, tables and layout come from mmt_plans.drawing."""
 
 from __future__ import annotations
 
-from .layout import Element, LayoutError, SheetLayout, as_footprint, find_overlaps
-from .page import (
+from ..drawing.layout import Element, LayoutError, SheetLayout, as_footprint, find_overlaps
+from ..drawing.page import (
     FIELDS,
     GOST_MARGINS,
     PAGE_SIZES,
@@ -17,7 +18,7 @@ from .page import (
     draw_title_block,
     title_block_texts,
 )
-from .table import Table
+from ..drawing.table import Table
 
 __all__ = [
     "FIELDS",

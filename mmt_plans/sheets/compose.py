@@ -6,9 +6,10 @@ import os
 from pathlib import Path
 from typing import Any, Callable, Iterable, Sequence
 
+from ..drawing.page import Page
 from ..errors import MmtError
+from ..i18n import Language
 from ..render.svg import SvgBackend
-from .page import Language, Page
 from ..solution import Solution
 
 __all__ = ["FORMATS", "SheetNotAvailable", "available_sheets", "write_sheets"]

@@ -24,12 +24,14 @@ from typing import Any, Iterable, Sequence
 import numpy as np
 from shapely.geometry import LineString
 
+from ..drawing.labels import Labels, arc_line
+from ..drawing.markup import point_markup
+from ..drawing.page import Page, Rect, draw_frame
+from ..drawing.sketch import Sketch
+from ..drawing.symbols import hatched_base, hatched_guide, unit_vector
+from ..i18n import Language, catalogue, check_language
 from ..model import FRAME, Prismatic
 from ..solution import Solution
-from .labels import Labels, arc_line
-from ..i18n import Language, catalogue, check_language
-from .page import Page, Rect, draw_frame
-from .sheet1 import Sketch, hatched_guide, hatched_base, point_markup, unit_vector
 
 __all__ = [
     "LABEL_GROUP",
@@ -407,9 +409,9 @@ def write_task_schematics(
     page: str = "A2",
 ) -> Path:
     """One small scheme per task file on one page: a row per task, a column per variant."""
+    from ..render.svg import SvgBackend
     from ..solution import solve
     from ..spec import load
-    from ..render.svg import SvgBackend
 
     files = _task_files(task_dir)
     tasks = sorted({(task_of(f) or (0, 0))[0] for f in files})
@@ -452,10 +454,10 @@ def write_task_files(
     height_mm: float = 110.0,
 ) -> list[Path]:
     """task_NN.svg: the first variant of each task, drawn large with its title and formula."""
-    from ..solution import solve
-    from ..spec import load
     from ..render.look import load_look
     from ..render.svg import SvgBackend
+    from ..solution import solve
+    from ..spec import load
 
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)

@@ -14,17 +14,22 @@ from typing import Any, Callable, Mapping, Sequence
 
 import numpy as np
 
-from ..render.backend import Backend
-from ..solution import Solution
-from ..render.recording import RecordingBackend
-from ..scales import ACCELERATION_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
-from .labels import Labels
-from .layout import LayoutError, SheetLayout
+from ..drawing.labels import Labels
+from ..drawing.layout import LayoutError, SheetLayout
+from ..drawing.markup import component_markup, image_markup, point_markup
+from ..drawing.page import Page, Rect, draw_page
+from ..drawing.sketch import PAD as _PAD
+from ..drawing.sketch import Sketch
+from ..drawing.symbols import hatched_base, hatched_guide, sense_arc, unit_vector
+from ..drawing.table import table_sketch
 from ..i18n import Language, catalogue, check_language
-from .page import FIELDS, Page, Rect, draw_page
-from .table import Table
+from ..render.backend import Backend
+from ..scales import ACCELERATION_PLAN, VELOCITY_PLAN, scale_for, scale_label
+from ..solution import Solution
+from .common import next_scale as _next_scale
+from .common import scale_step, title_fields
 
-__all__ = ["Sheet1", "Sketch", "compose_sheet1", "GROUPS"]
+__all__ = ["Sheet1", "compose_sheet1", "GROUPS"]
 
 GROUPS = (
     "mechanism",
@@ -41,7 +46,6 @@ GROUPS = (
 _TEXT = 3.5
 _SMALL = 2.5
 _TITLE = 5.0
-_PAD = 2.0  # clearance added round every sketch's drawn extent, mm
 _DENSE = 181
 _NUMBER = re.compile(r"[-−]?\d+\.\d+(e[-+]?\d+)?")  # positions of the dense sweep for the trajectories
 
@@ -53,67 +57,6 @@ def _words(lang: Language):
 # --- sketches: drawings in their own coordinates ---------------------------------
 
 
-class Sketch(RecordingBackend):
-    """A drawing recorded in local mm, measured, then replayed at an offset."""
-
-    def __init__(self, look: Any) -> None:
-        super().__init__(841.0, 594.0, look)
-
-    def extent(self) -> Rect:
-        xs: list[float] = []
-        ys: list[float] = []
-        for c in self.calls:
-            if c.name == "text":
-                x0, y0, x1, y1 = self.text_box(c)
-                pts = [(x0, y0), (x1, y1)]
-            else:
-                pts = c.points()
-            for x, y in pts:
-                xs.append(x)
-                ys.append(y)
-        if not xs:
-            return Rect(0.0, 0.0, 1.0, 1.0)
-        return Rect.from_bounds(min(xs) - _PAD, min(ys) - _PAD, max(xs) + _PAD, max(ys) + _PAD)
-
-    def add_to_last_group(self, other: "Sketch", group_id: str) -> None:
-        """Splice `other`'s calls into this sketch's last group `group_id`, before its end."""
-        end = max(i for i, c in enumerate(self.calls) if c.name == "end_group")
-        self.calls[end:end] = [type(c)(c.name, c.args, (group_id,)) for c in other.calls]
-
-    def replay(self, backend: Backend, dx: float, dy: float) -> None:
-        def t(p: Sequence[float]) -> tuple[float, float]:
-            return (p[0] + dx, p[1] + dy)
-
-        for c in self.calls:
-            a = c.args
-            if c.name == "begin_group":
-                backend.begin_group(a["id"], a["cls"])
-            elif c.name == "end_group":
-                backend.end_group()
-            elif c.name == "line":
-                backend.line(t(a["start"]), t(a["end"]), a["line"])
-            elif c.name == "polyline":
-                backend.polyline([t(p) for p in a["points"]], a["line"])
-            elif c.name == "polygon":
-                backend.polygon([t(p) for p in a["points"]], a["line"], a["fill"])
-            elif c.name == "circle":
-                backend.circle(t(a["center"]), a["radius"], a["line"], a["fill"])
-            elif c.name == "arc":
-                backend.arc(t(a["center"]), a["radius"], a["start_deg"], a["end_deg"], a["line"])
-            elif c.name == "arrow":
-                backend.arrow(
-                    t(a["start"]), t(a["end"]), a["line"],
-                    head_length=a["head_length"], head_width=a["head_width"],
-                )
-            elif c.name == "text":
-                backend.text(
-                    t(a["pos"]), a["content"], a["size"], anchor=a["anchor"],
-                    valign=a["valign"], rotation=a["rotation"], max_width=a["max_width"],
-                )
-            else:  # pragma: no cover - a new primitive must be added here
-                raise ValueError(f"cannot replay {c.name!r}")
-
-
 @dataclass
 class Sheet1:
     """What compose_sheet1 drew: the layout, the scales, where each local origin went."""
@@ -123,33 +66,6 @@ class Sheet1:
     origins: dict[str, tuple[float, float]] = field(default_factory=dict)
     placed: dict[str, Rect] = field(default_factory=dict)
     shrink: int = 0  # series steps the plan scales were raised by to make room
-
-
-def _image_markup(name: str) -> str:
-    """"S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters."""
-    m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
-    if m:
-        return f"{m.group(1).lower()}_{{{m.group(2)}}}"
-    return name.lower()
-
-
-def point_markup(name: str) -> str:
-    m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
-    return f"{m.group(1)}_{{{m.group(2)}}}" if m else name
-
-
-def _component_markup(label: str) -> str:
-    """"a^n_BA" → "a^{n}_{BA}", "V_E/0" → "V_{E/0}"."""
-    m = re.fullmatch(r"([A-Za-z])(?:\^(\w))?_(.+)", label)
-    if not m:
-        return label
-    sup = f"^{{{m.group(2)}}}" if m.group(2) else ""
-    return f"{m.group(1)}{sup}_{{{m.group(3)}}}"
-
-
-def _plain(label: str) -> str:
-    """A label for plain lettering (tables): "a^n_BA" → "anBA"."""
-    return label.replace("^", "").replace("_", "")
 
 
 def _fmt(x: float, digits: int = 3) -> str:
@@ -166,51 +82,7 @@ def _tidy(mu: float) -> float:
     return float(f"{float(mu):.9g}")
 
 
-def unit_vector(v: np.ndarray) -> np.ndarray:
-    n = float(np.hypot(*v))
-    return v / n if n > 1e-12 else np.array([1.0, 0.0])
-
-
 # --- the mechanism -----------------------------------------------------------------
-
-
-def sense_arc(sk: Sketch, centre: Sequence[float], radius: float, sense: float,
-              start_deg: float = 20.0, end_deg: float = 250.0, line: str = "main") -> np.ndarray:
-    """An arc round `centre` with its arrowhead in the sense of `sense` (ccw
-    positive): the direction of ω, ε or a couple. Returns the arrow's tip."""
-    c = np.asarray(centre, dtype=float)
-    sk.arc(c, radius, start_deg, end_deg, line)  # type: ignore[arg-type]
-    t = math.radians(end_deg if sense > 0 else start_deg)
-    radial = np.array([math.cos(t), math.sin(t)])
-    tip = c + radius * radial
-    tangent = np.array([-radial[1], radial[0]]) * (1.0 if sense > 0 else -1.0)
-    sk.arrow(tip - 2.5 * tangent, tip, "main", head_length=2.5, head_width=1.0)
-    return tip
-
-
-def hatched_base(sk: Sketch, p: np.ndarray, width: float = 8.0, down: float = 4.0) -> None:
-    """A frame pivot: the pin, two legs and a hatched ground line."""
-    x, y = p
-    sk.circle((x, y), 1.2, "main", "white")
-    sk.line((x, y), (x - width / 3, y - down), "main")
-    sk.line((x, y), (x + width / 3, y - down), "main")
-    gy = y - down
-    sk.line((x - width / 2, gy), (x + width / 2, gy), "main")
-    for k in range(5):
-        hx = x - width / 2 + k * width / 4 + 0.5
-        sk.line((hx, gy), (hx - 2.0, gy - 2.0), "thin")
-
-
-def hatched_guide(sk: Sketch, a: np.ndarray, b: np.ndarray, u: np.ndarray, offset: float) -> None:
-    """A slider's guide: a main line `offset` mm under the slider's path, hatched below."""
-    n = np.array([-u[1], u[0]])
-    a, b = a - offset * n, b - offset * n
-    sk.line(a, b, "main")
-    length = float(np.hypot(*(b - a)))
-    steps = max(2, int(length / 4.0))
-    for k in range(steps + 1):
-        q = a + (b - a) * k / steps
-        sk.line(q, q - 2.0 * (u + n), "thin")
 
 
 def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language) -> Sketch:
@@ -420,7 +292,7 @@ def sketch_plan(
             v = images[names[0]]
             if float(np.hypot(*v)) < 0.5:
                 continue
-            placer.place(v, ", ".join(_image_markup(n) for n in names), towards=unit_vector(v))
+            placer.place(v, ", ".join(image_markup(n) for n in names), towards=unit_vector(v))
         placer.size = _SMALL
         placer.write_later()
         ext = sk.extent()
@@ -541,32 +413,6 @@ def _stack(parts: Sequence[Sketch], look: Any, gap: float = 6.0) -> Sketch:
 # --- tables ------------------------------------------------------------------------
 
 
-def table_sketch(
-    look: Any, gid: str, title: str, header: Sequence[str], rows: Sequence[Sequence[str]],
-    widths: Sequence[float], first_markup: Sequence[str], lang: Language = "en",
-) -> Sketch:
-    """A Table whose first column is set with indices (rich_text) over empty cells;
-    Ukrainian tables write numbers with a decimal comma, as the scale labels do."""
-    sk = Sketch(look)
-
-    def cell(text: str) -> str:
-        return catalogue(lang).localise(text) if _NUMBER.fullmatch(text) else text
-
-    body = [["", *(cell(t) for t in r[1:])] for r in rows]
-    row_h, head_h = 8.0, 12.0
-    table = Table(header, body, widths, text_size=3.5, row_height=row_h, header_height=head_h,
-                  title=title, title_size=_TEXT)
-    table.draw(sk, (0.0, 0.0), gid)
-    # The overlay goes into the table's group: reopen it by replaying into it.
-    top = -(_TEXT + 3.0) - head_h
-    extra = Sketch(look)
-    for r, text in enumerate(first_markup):
-        extra.rich_text((widths[0] / 2, top - (r + 0.5) * row_h), text, _TEXT,
-                        anchor="center", valign="middle")
-    sk.add_to_last_group(extra, gid)
-    return sk
-
-
 def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, Sketch]:
     w = _words(lang)
     idx = list(solution.plan_positions)
@@ -601,7 +447,7 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
             if all(x in ("0", "—") for x in vals):
                 continue  # a component that vanishes at every planned position (Coriolis on a still guide)
             rows.append([lab, *vals])
-            marks.append(_component_markup(lab))
+            marks.append(component_markup(lab))
         header = [w["quantity"], *(f"{w['position']} {i}" for i in idx)]
         out[gid] = table_sketch(look, gid, title, header, rows, [22.0] + [20.0] * len(idx), marks,
                                 lang)
@@ -667,34 +513,6 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
 # --- composing ---------------------------------------------------------------------
 
 
-def _next_scale(mu: float, steps: int) -> float:
-    """The series value `steps` places above mu (mu itself for 0)."""
-    if steps <= 0:
-        return mu
-    values = list(series(mu * (1 + 1e-6), mu * 1e4))
-    return values[steps - 1]
-
-
-def drawing_scale(mu_l: float) -> str:
-    """μ_l (m/mm) as the scale of the title block: 0.004 → "1:4", 0.0005 → "2:1"."""
-    k = float(mu_l) * 1000.0  # mm of the machine per mm of paper
-    text = f"{k:.6g}" if k >= 1 else f"{1 / k:.6g}"
-    return f"1:{text}" if k >= 1 else f"{text}:1"
-
-
-def title_fields(solution: Solution, mu_l: float | None = None) -> dict[str, str]:
-    """The title block's fields: the file's [sheet] entries, its title, the sheet
-    numbers, and the scale of the mechanism's drawing (μ_l) unless the file gives one."""
-    mech = solution.mechanism
-    fields = {k: str(v) for k, v in dict(mech.sheet or {}).items() if k in FIELDS}
-    if mu_l is not None:
-        fields.setdefault("scale", drawing_scale(mu_l))
-    fields.setdefault("title", str(mech.title))
-    fields.setdefault("sheet", "1")
-    fields.setdefault("sheets", "2")
-    return fields
-
-
 _PLACEMENT: Mapping[str, str] = {
     "mechanism": "top-left",
     "structural-formula": "top-left",
@@ -718,13 +536,6 @@ def _plan_scales(solution: Solution) -> tuple[float, float]:
         v_a = max(v_a, float(np.hypot(*view.velocity_images[pin])))
         a_a = max(a_a, float(np.hypot(*view.acceleration_images[pin])))
     return scale_for(v_a, VELOCITY_PLAN), scale_for(a_a, ACCELERATION_PLAN)
-
-
-def scale_step(mu: float, steps: int) -> float:
-    """The series value `steps` places above mu (below it for negative steps)."""
-    if steps >= 0:
-        return _next_scale(mu, steps)
-    return list(series(mu * 1e-4, mu * (1 - 1e-6)))[steps]
 
 
 def _sketch_all(solution: Solution, look: Any, lang: Language, shrink: int, stacked: bool,

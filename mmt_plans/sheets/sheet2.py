@@ -23,18 +23,22 @@ from typing import Any, Iterable, Sequence
 
 import numpy as np
 
+from ..drawing.labels import Labels
+from ..drawing.layout import LayoutError, SheetLayout
+from ..drawing.markup import equation_markup as _equation_markup
+from ..drawing.markup import force_markup, point_markup
+from ..drawing.page import Page, Rect, draw_page
+from ..drawing.sketch import Sketch
+from ..drawing.symbols import hatched_base, hatched_guide, sense_arc, unit_vector
+from ..drawing.table import table_sketch
 from ..forces import ForceAnalysis, ForcePolygon
 from ..forces.state import PositionState
+from ..i18n import Language, catalogue, check_language
 from ..model import FRAME
 from ..render.backend import Backend
-from ..solution import Solution
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label
-from .labels import Labels
-from .layout import LayoutError, SheetLayout
-from ..i18n import Language, catalogue, check_language
-from .page import Page, Rect, draw_page
-from .sheet1 import (Sketch, hatched_guide, hatched_base, point_markup, table_sketch, title_fields,
-                     unit_vector, scale_step, sense_arc)
+from ..solution import Solution
+from .common import scale_step, title_fields
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "GROUPS"]
 
@@ -66,27 +70,6 @@ def _words(lang: Language):
 
 
 # --- lettering ------------------------------------------------------------------------
-
-def force_markup(label: str) -> str:
-    """A solver's force label as lettering: "R34^n" → "R^{n}_{34}", "F_in4" → "F_{in4}",
-    "R0_11" → "R_{0,11}", "G2" → "G_{2}", "F_bal" → "F_{bal}"."""
-    m = re.fullmatch(r"R(\d+)_(\d+)(?:\^(\w))?", label)
-    if m:
-        sup = f"^{{{m.group(3)}}}" if m.group(3) else ""
-        return f"R{sup}_{{{m.group(1)},{m.group(2)}}}"
-    m = re.fullmatch(r"([A-Z])(\d+)(?:\^(\w))?", label)
-    if m:
-        sup = f"^{{{m.group(3)}}}" if m.group(3) else ""
-        return f"{m.group(1)}{sup}_{{{m.group(2)}}}"
-    m = re.fullmatch(r"([A-Z])'?_(\w+)", label.replace("'", ""))
-    if m:
-        return f"{m.group(1)}_{{{m.group(2)}}}"
-    return label
-
-
-def _equation_markup(equation: str) -> str:
-    return re.sub(r"[A-Za-z]+'?[\w^]*", lambda m: force_markup(m.group(0)), equation)
-
 
 # --- primitives -------------------------------------------------------------------------
 

@@ -6,7 +6,7 @@ import pytest
 
 from mmt_plans.render import RecordingBackend, SvgBackend
 from mmt_plans.sheets import FIELDS, Page, Rect, draw_page, title_block_texts
-from mmt_plans.sheets.page import (
+from mmt_plans.drawing.page import (
     FORM1_CELLS,
     FORM1_COLUMNS,
     FORM1_MAIN_LINES,

@@ -12,7 +12,7 @@ from shapely.geometry import box
 
 import mmt_plans
 from mmt_plans.render.look import load_look
-from mmt_plans.sheets.layout import find_overlaps
+from mmt_plans.drawing.layout import find_overlaps
 from mmt_plans.sheets.schematic import (
     LABEL_GROUP,
     NUMBER_GROUP,

@@ -202,7 +202,7 @@ def test_diagram_scales_are_standard(path):
 
 
 def test_title_block_scale_is_the_mechanism_drawing_scale(press):
-    from mmt_plans.sheets.sheet1 import drawing_scale
+    from mmt_plans.sheets.common import drawing_scale
 
     assert (drawing_scale(0.004), drawing_scale(0.00125), drawing_scale(0.0005)) == ("1:4", "1:1.25", "2:1")
     _, backend, sheet = press

@@ -16,7 +16,7 @@ import pytest
 import mmt_plans
 
 from mmt_plans.render.svg import SvgBackend
-from mmt_plans.sheets.page import Page
+from mmt_plans.drawing.page import Page
 from mmt_plans.sheets.sheet1 import compose_sheet1
 from mmt_plans.sheets.sheet2 import compose_sheet2
 

@@ -36,8 +36,18 @@ from ...model import FRAME
 from ..errors import ForceError
 from ..loads import AppliedForce, Loads
 from ..state import PositionState, cross, xy
-from .base import (DrivingLinkForces, ForcePolygon, GroupForces, GroupSolver, PolygonVector,
-                   Reaction, ReactionComponent, _c, fmt, reaction_name)
+from .base import (
+    DrivingLinkForces,
+    ForcePolygon,
+    GroupForces,
+    GroupSolver,
+    PolygonVector,
+    Reaction,
+    ReactionComponent,
+    _c,
+    fmt,
+    reaction_name,
+)
 from .prp import PRP
 from .rpp import RPP
 from .rpr import RPR

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from ...errors import ForceError
 from ..state import cross, xy
-from .base import GroupForces, GroupSolver, Reaction, SINGULAR_SIN, fmt, reaction_name
+from .base import SINGULAR_SIN, GroupForces, GroupSolver, Reaction, fmt, reaction_name
 
 
 class RPR(GroupSolver):

@@ -27,8 +27,8 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any, Iterator, Literal, Mapping, NamedTuple
 
-from ..render.backend import Backend, HAlign
 from ..i18n import Language, catalogue, check_language
+from ..render.backend import Backend, HAlign
 from ..render.look import Look, load_look, load_template
 
 __all__ = [

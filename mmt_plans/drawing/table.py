@@ -8,14 +8,17 @@ header main, the lines between rows thin. Rows at least 8 mm (GOST 2.105).
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Any, Sequence
 
+from ..i18n import Language, catalogue
 from ..render.backend import Backend, HAlign, PointLike, as_point
 from ..render.look import Lettering, load_look
 from .page import Rect
+from .sketch import Sketch
 
-__all__ = ["Table"]
+__all__ = ["Table", "table_sketch"]
 
 _PAD = 1.0  # clearance between lettering and cell lines, mm
 _TITLE_GAP = 3.0  # between the title's baseline and the table's top line, mm
@@ -183,3 +186,33 @@ class Table:
                         (x, cy), content, size, anchor=anchor, valign="middle", max_width=width
                     )
         return box
+
+
+_NUMBER = re.compile(r"[-−]?\d+\.\d+(e[-+]?\d+)?")
+_TEXT = 3.5
+
+
+def table_sketch(
+    look: Any, gid: str, title: str, header: Sequence[str], rows: Sequence[Sequence[str]],
+    widths: Sequence[float], first_markup: Sequence[str], lang: Language = "en",
+) -> Sketch:
+    """A Table whose first column is set with indices (rich_text) over empty cells;
+    Ukrainian tables write numbers with a decimal comma, as the scale labels do."""
+    sk = Sketch(look)
+
+    def cell(text: str) -> str:
+        return catalogue(lang).localise(text) if _NUMBER.fullmatch(text) else text
+
+    body = [["", *(cell(t) for t in r[1:])] for r in rows]
+    row_h, head_h = 8.0, 12.0
+    table = Table(header, body, widths, text_size=3.5, row_height=row_h, header_height=head_h,
+                  title=title, title_size=_TEXT)
+    table.draw(sk, (0.0, 0.0), gid)
+    # The overlay goes into the table's group: reopen it by replaying into it.
+    top = -(_TEXT + 3.0) - head_h
+    extra = Sketch(look)
+    for r, text in enumerate(first_markup):
+        extra.rich_text((widths[0] / 2, top - (r + 0.5) * row_h), text, _TEXT,
+                        anchor="center", valign="middle")
+    sk.add_to_last_group(extra, gid)
+    return sk

@@ -1,0 +1,57 @@
+"""Lettering of the textbook's symbols as rich-text markup (`Backend.rich_text`:
+`_x` or `_{xy}` a subscript, `^x` a superscript)."""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["image_markup", "point_markup", "component_markup", "plain_label", "force_markup",
+           "equation_markup"]
+
+
+def image_markup(name: str) -> str:
+    """"S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters."""
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
+    if m:
+        return f"{m.group(1).lower()}_{{{m.group(2)}}}"
+    return name.lower()
+
+
+def point_markup(name: str) -> str:
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
+    return f"{m.group(1)}_{{{m.group(2)}}}" if m else name
+
+
+def component_markup(label: str) -> str:
+    """"a^n_BA" → "a^{n}_{BA}", "V_E/0" → "V_{E/0}"."""
+    m = re.fullmatch(r"([A-Za-z])(?:\^(\w))?_(.+)", label)
+    if not m:
+        return label
+    sup = f"^{{{m.group(2)}}}" if m.group(2) else ""
+    return f"{m.group(1)}{sup}_{{{m.group(3)}}}"
+
+
+def plain_label(label: str) -> str:
+    """A label for plain lettering (tables): "a^n_BA" → "anBA"."""
+    return label.replace("^", "").replace("_", "")
+
+
+def force_markup(label: str) -> str:
+    """A solver's force label as lettering: "R34^n" → "R^{n}_{34}", "F_in4" → "F_{in4}",
+    "R0_11" → "R_{0,11}", "G2" → "G_{2}", "F_bal" → "F_{bal}"."""
+    m = re.fullmatch(r"R(\d+)_(\d+)(?:\^(\w))?", label)
+    if m:
+        sup = f"^{{{m.group(3)}}}" if m.group(3) else ""
+        return f"R{sup}_{{{m.group(1)},{m.group(2)}}}"
+    m = re.fullmatch(r"([A-Z])(\d+)(?:\^(\w))?", label)
+    if m:
+        sup = f"^{{{m.group(3)}}}" if m.group(3) else ""
+        return f"{m.group(1)}{sup}_{{{m.group(2)}}}"
+    m = re.fullmatch(r"([A-Z])'?_(\w+)", label.replace("'", ""))
+    if m:
+        return f"{m.group(1)}_{{{m.group(2)}}}"
+    return label
+
+
+def equation_markup(equation: str) -> str:
+    return re.sub(r"[A-Za-z]+'?[\w^]*", lambda m: force_markup(m.group(0)), equation)

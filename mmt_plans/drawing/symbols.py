@@ -1,0 +1,57 @@
+"""The conventional symbols of a kinematic scheme, drawn into a sketch: frame
+pivots, guides hatched, the arc of ω, ε or a couple."""
+
+from __future__ import annotations
+
+import math
+from typing import Sequence
+
+import numpy as np
+
+from .sketch import Sketch
+
+__all__ = ["unit_vector", "sense_arc", "hatched_base", "hatched_guide"]
+
+
+def unit_vector(v: np.ndarray) -> np.ndarray:
+    n = float(np.hypot(*v))
+    return v / n if n > 1e-12 else np.array([1.0, 0.0])
+
+
+def sense_arc(sk: Sketch, centre: Sequence[float], radius: float, sense: float,
+              start_deg: float = 20.0, end_deg: float = 250.0, line: str = "main") -> np.ndarray:
+    """An arc round `centre` with its arrowhead in the sense of `sense` (ccw
+    positive): the direction of ω, ε or a couple. Returns the arrow's tip."""
+    c = np.asarray(centre, dtype=float)
+    sk.arc(c, radius, start_deg, end_deg, line)  # type: ignore[arg-type]
+    t = math.radians(end_deg if sense > 0 else start_deg)
+    radial = np.array([math.cos(t), math.sin(t)])
+    tip = c + radius * radial
+    tangent = np.array([-radial[1], radial[0]]) * (1.0 if sense > 0 else -1.0)
+    sk.arrow(tip - 2.5 * tangent, tip, "main", head_length=2.5, head_width=1.0)
+    return tip
+
+
+def hatched_base(sk: Sketch, p: np.ndarray, width: float = 8.0, down: float = 4.0) -> None:
+    """A frame pivot: the pin, two legs and a hatched ground line."""
+    x, y = p
+    sk.circle((x, y), 1.2, "main", "white")
+    sk.line((x, y), (x - width / 3, y - down), "main")
+    sk.line((x, y), (x + width / 3, y - down), "main")
+    gy = y - down
+    sk.line((x - width / 2, gy), (x + width / 2, gy), "main")
+    for k in range(5):
+        hx = x - width / 2 + k * width / 4 + 0.5
+        sk.line((hx, gy), (hx - 2.0, gy - 2.0), "thin")
+
+
+def hatched_guide(sk: Sketch, a: np.ndarray, b: np.ndarray, u: np.ndarray, offset: float) -> None:
+    """A slider's guide: a main line `offset` mm under the slider's path, hatched below."""
+    n = np.array([-u[1], u[0]])
+    a, b = a - offset * n, b - offset * n
+    sk.line(a, b, "main")
+    length = float(np.hypot(*(b - a)))
+    steps = max(2, int(length / 4.0))
+    for k in range(steps + 1):
+        q = a + (b - a) * k / steps
+        sk.line(q, q - 2.0 * (u + n), "thin")

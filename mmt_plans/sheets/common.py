@@ -1,0 +1,44 @@
+"""What both sheets share: the title block's fields and the steps of the scale series."""
+
+from __future__ import annotations
+
+from ..drawing.page import FIELDS
+from ..scales import series
+from ..solution import Solution
+
+__all__ = ["drawing_scale", "next_scale", "scale_step", "title_fields"]
+
+
+def next_scale(mu: float, steps: int) -> float:
+    """The series value `steps` places above mu (mu itself for 0)."""
+    if steps <= 0:
+        return mu
+    values = list(series(mu * (1 + 1e-6), mu * 1e4))
+    return values[steps - 1]
+
+
+def drawing_scale(mu_l: float) -> str:
+    """μ_l (m/mm) as the scale of the title block: 0.004 → "1:4", 0.0005 → "2:1"."""
+    k = float(mu_l) * 1000.0  # mm of the machine per mm of paper
+    text = f"{k:.6g}" if k >= 1 else f"{1 / k:.6g}"
+    return f"1:{text}" if k >= 1 else f"{text}:1"
+
+
+def title_fields(solution: Solution, mu_l: float | None = None) -> dict[str, str]:
+    """The title block's fields: the file's [sheet] entries, its title, the sheet
+    numbers, and the scale of the mechanism's drawing (μ_l) unless the file gives one."""
+    mech = solution.mechanism
+    fields = {k: str(v) for k, v in dict(mech.sheet or {}).items() if k in FIELDS}
+    if mu_l is not None:
+        fields.setdefault("scale", drawing_scale(mu_l))
+    fields.setdefault("title", str(mech.title))
+    fields.setdefault("sheet", "1")
+    fields.setdefault("sheets", "2")
+    return fields
+
+
+def scale_step(mu: float, steps: int) -> float:
+    """The series value `steps` places above mu (below it for negative steps)."""
+    if steps >= 0:
+        return next_scale(mu, steps)
+    return list(series(mu * 1e-4, mu * (1 - 1e-6)))[steps]
