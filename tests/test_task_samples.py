@@ -104,3 +104,40 @@ def test_seed002_task1_train_is_the_worked_example_shape():
     mech = mmt_plans.load(TASKS / "seed002" / "task1_v00.toml")
     u = mech.drive.gear_train.ratio
     assert u == pytest.approx((-80 / 20) * (1 - (32 / 30) * (48 / 30)))
+
+
+# --- Ukrainian titles (title_uk), printed on the Ukrainian sheets ---------------------
+
+FOUNDATION = sorted((ROOT / "samples").glob("*.toml"))
+ENGLISH = {"task", "seed", "crank", "rocker", "slider", "coupler", "rod", "link", "shaper", "ram",
+           "press", "yoke", "slotted", "block", "point", "mechanism", "and", "with", "on", "of",
+           "the", "an", "phi", "phi1", "deg"}  # not "a": A is a point's name
+
+
+def sample_id(path: Path) -> str:
+    return path.relative_to(ROOT / "samples").as_posix()
+
+
+@pytest.mark.parametrize("path", FOUNDATION + FILES, ids=sample_id)
+def test_every_sample_has_a_ukrainian_title(path):
+    text = path.read_text(encoding="utf-8")
+    title = tomllib.loads(text).get("title_uk", "")
+    assert title.strip(), f"{sample_id(path)} has no title_uk"
+    assert re.search(r"[А-ЩЬЮЯЄІЇҐа-щьюяєіїґ]", title), title
+    latin = re.findall(r"[A-Za-z][A-Za-z0-9]*", title)
+    assert not {w.lower() for w in latin} & ENGLISH, title
+    # Latin only in symbols: point and link names (O1, BD), pair kinds (RPP)
+    assert all(w.isupper() for w in latin), title
+    assert re.search(r'^title = ".*"\ntitle_uk = ', text, re.M), "title_uk right after title"
+    assert mmt_plans.load(path).title_in("uk") == title
+
+
+@pytest.mark.parametrize("path", FILES, ids=rel)
+def test_task_titles_follow_one_pattern(path):
+    data = tomllib.loads(path.read_text(encoding="utf-8"))
+    seed, stem = path.parent.name[-3:], path.stem  # "002", "task2_v05"
+    task, variant = (int(x) for x in re.fullmatch(r"task(\d+)_v(\d+)", stem).groups())
+    start = f"Завдання {task} (посібник {seed}), варіант {variant}: "
+    assert data["title_uk"].startswith(start), data["title_uk"]
+    if seed == "002":
+        assert data["title_uk"].endswith(f" (φ1 = {data['study']['angles'][0]:g}°)")

@@ -24,6 +24,10 @@ do not let the crank make a full turn. Such a variant gets the nearest value of
 one frame dimension (1 mm steps) that turns with γ_min >= 15°; the file says so
 in a "Correction:" comment. Seed 003's misprints are corrected by hand below.
 
+Every file has its title in English (`title`) and in Ukrainian (`title_uk`, for
+the Ukrainian sheets; one pattern for all, `uk_title`, in the terms of seeds 000
+and 002).
+
 Rerunnable: the output depends only on the tables here and on mmt_plans.
 """
 
@@ -63,6 +67,14 @@ def vec(p) -> str:
     return f"[{num(p[0])}, {num(p[1])}]"
 
 
+def uk_title(seed: str, task: int, v: int, what: str, phi1: float | None = None) -> str:
+    """The Ukrainian title, one pattern for every file (the English one is
+    "Seed 003 task 1 v1: ..."): "Завдання 1 (посібник 003), варіант 1: ...";
+    seed 002 adds its crank angle as "(φ1 = 210°)". Terms as in seeds 000 and 002."""
+    angle = "" if phi1 is None else f" (φ1 = {phi1:g}°)"
+    return f"Завдання {task} (посібник {seed}), варіант {v}: {what}{angle}"
+
+
 @dataclass
 class Link:
     id: int
@@ -85,6 +97,7 @@ class Slider:
 class Task:
     path: str  # relative to samples/tasks
     title: str
+    title_uk: str  # the same title in Ukrainian (uk_title), for the Ukrainian sheets
     header: list[str]
     frame: dict[str, tuple[float, float]]  # the crank pivot first
     links: list[Link]
@@ -117,7 +130,8 @@ class Task:
         if self.ok:
             lines.append(f"# Smallest transmission angle over the turn: {self.gamma_min:.0f} deg; "
                          f"working stroke {self.working_span:.0f} deg of crank turn.")
-        out = lines + ["", f'title = "{self.title}"', "", "[drive]", "link = 1"]
+        out = lines + ["", f'title = "{self.title}"', f'title_uk = "{self.title_uk}"', "",
+                       "[drive]", "link = 1"]
         if self.rpm is not None:
             out.append(f"rpm = {num(self.rpm)}")
         out += ["", "[study]", "positions = 12", f'output = "{self.output}"',
@@ -375,6 +389,7 @@ def t1(v: int) -> Task:
     return Task(
         path=f"seed003/task01_v{v}.toml",
         title=f"Seed 003 task 1 v{v}: six-link press (crank, rocker, rod, slider)",
+        title_uk=uk_title("003", 1, v, "шестиланковий механізм преса (кривошип, коромисло, шатун, повзун)"),
         header=s3_header(1, v, "crank O1A (1), coupler AB (2), rocker O2B (3), rod BC (4) hinged "
                          "at B, slider C (5) on the axis x-x through O1.",
                          f"a = {c['a']} (O2 right of O1), b = {c['b']} (O2 below x-x), "
@@ -397,6 +412,7 @@ def t2(v: int) -> Task:
     return Task(
         path=f"seed003/task02_v{v}.toml",
         title=f"Seed 003 task 2 v{v}: crank, coupler with two sliders",
+        title_uk=uk_title("003", 2, v, "кривошип, шатун із двома повзунами"),
         header=s3_header(2, v, "crank O1A (1), coupler AC (2) with B at its middle, slider C (3) on "
                          "the axis x-x through O1, rod BD (4), slider D (5) on a vertical guide "
                          "at distance a right of O1.",
@@ -421,6 +437,7 @@ def t3(v: int) -> Task:
     return Task(
         path=f"seed003/task03_v{v}.toml",
         title=f"Seed 003 task 3 v{v}: two slider-cranks on one crank (opposed)",
+        title_uk=uk_title("003", 3, v, "два кривошипно-повзунні механізми на одному кривошипі (опозитні)"),
         header=s3_header(3, v, "crank O1A (1) drives two equal rods from its pin A: rod AB (2) with "
                          "slider B (3) and rod AC (4) with slider C (5), both sliders on the axis "
                          "x-x through O1, B to the right, C to the left (m2 = m4, m3 = m5).",
@@ -444,6 +461,8 @@ def rocker_on_axis(task: int, v: int) -> Task:
     return Task(
         path=f"seed003/task{task:02d}_v{v}.toml",
         title=f"Seed 003 task {task} v{v}: crank-rocker with a slider on the axis through O1",
+        title_uk=uk_title("003", task, v, "кривошипно-коромисловий механізм із повзуном на осі, "
+                                          "що проходить через O1"),
         header=s3_header(task, v, "crank O1A (1), coupler AB (2), rocker O2C (3) whose end C is the "
                          "coupler's hinge B (C = B), rod CD (4, written BD), slider D (5) on the "
                          "axis x-x through O1.",
@@ -470,6 +489,7 @@ def t5(v: int) -> Task:
     return Task(
         path=f"seed003/task05_v{v}.toml",
         title=f"Seed 003 task 5 v{v}: six-link press with an accepted coupler",
+        title_uk=uk_title("003", 5, v, "шестиланковий механізм преса з прийнятою довжиною шатуна"),
         header=s3_header(5, v, "crank O1A (1), coupler AB (2), rocker O2B (3), rod BC (4) hinged at "
                          "B, slider C (5) on the axis x-x through O1 (the scheme of task 1).",
                          f"a = {c['a']} (O2 right of O1), b = {c['b']} (O2 below x-x), L_O1A = {r}, "
@@ -497,6 +517,7 @@ def t6(v: int) -> Task:
     return Task(
         path=f"seed003/task06_v{v}.toml",
         title=f"Seed 003 task 6 v{v}: crank-rocker, rod from the rocker's middle, slider",
+        title_uk=uk_title("003", 6, v, "кривошипно-коромисловий механізм, шатун від середини коромисла, повзун"),
         header=s3_header(6, v, "crank O1A (1), coupler AB (2), rocker O2B (3) with C at its middle, "
                          "rod CD (4), slider D (5) on a horizontal guide c above O2.",
                          f"c = {cc}, L_O1A = {r}, L_AB = {l}, L_O2B = {rho}, L_CD = {cd}, "
@@ -525,6 +546,7 @@ def t7(v: int) -> Task:
     return Task(
         path=f"seed003/task07_v{v}.toml",
         title=f"Seed 003 task 7 v{v}: crank-rocker and slider, accepted frame",
+        title_uk=uk_title("003", 7, v, "кривошипно-коромисловий механізм і повзун, прийнятий розмір стояка"),
         header=s3_header(7, v, "crank O1A (1), coupler AB (2), rocker O2B (3), rod BD (4) hinged at "
                          "B, slider D (5) on a horizontal guide c above O1.",
                          f"b = {b} (O2 below O1), c = {cc}, L_O1A = {r}, L_AB = {l}, L_O2B = {rho}, "
@@ -551,6 +573,8 @@ def t8(v: int) -> Task:
     return Task(
         path=f"seed003/task08_v{v}.toml",
         title=f"Seed 003 task 8 v{v}: crank-rocker, rod from the coupler's middle, slider",
+        title_uk=uk_title("003", 8, v, "кривошипно-коромисловий механізм, шатун BD від середини "
+                                       "шатуна AC, повзун"),
         header=s3_header(8, v, "crank O1A (1), coupler AC (2) with B at its middle, rocker O2C (3), "
                          "rod BD (4), slider D (5) on a vertical guide c right of O1.",
                          f"b = {b} (O2 below O1), c = {cc}, L_O1A = {r}, L_AC = {l}, L_O2C = {rho}, "
@@ -574,6 +598,8 @@ def t9(v: int) -> Task:
     return Task(
         path=f"seed003/task09_v{v}.toml",
         title=f"Seed 003 task 9 v{v}: slider-crank driving two symmetric toggle sliders",
+        title_uk=uk_title("003", 9, v, "кривошипно-повзунний механізм, що приводить два симетричні "
+                                       "повзуни колінно-важільного механізму"),
         header=s3_header(9, v, "crank O1A (1), rod AB (2), slider B (3) on the axis x-x through O1; "
                          "from B two equal rods BC (4) and BD (6) drive sliders C (5) and D (7) on "
                          "one vertical guide at distance a right of O1, C above x-x, D below "
@@ -599,6 +625,7 @@ def t11(v: int) -> Task:
     return Task(
         path=f"seed003/task11_v{v}.toml",
         title=f"Seed 003 task 11 v{v}: crank-rocker driving a slotted crosshead",
+        title_uk=uk_title("003", 11, v, "кривошипно-коромисловий механізм, що приводить поступальну кулісу"),
         header=s3_header(11, v, "crank O1A (1), coupler AB (2), rocker O2C (3) with the coupler's hinge "
                          "B at its middle, a block C (5, massless) on the rocker's end slides in the "
                          "horizontal slot of the crosshead (4), which slides on a vertical guide at "
@@ -796,6 +823,7 @@ def s2_rocker_task(task: int, v: int, c: dict, g: dict) -> Task:
     return Task(
         path=f"seed002/task{task}_v{v:02d}.toml",
         title=f"Seed 002 task {task} v{v}: crank-rocker with a slider (phi1 = {c['phi1']} deg)",
+        title_uk=uk_title("002", task, v, "кривошипно-коромисловий механізм із повзуном", c["phi1"]),
         header=s2_header(task, v, scheme, given, reading,
                          TRAIN_A if task in (1, 4, 5) else TRAIN_B),
         frame={"O1": (0, 0), "O2": O2},
@@ -815,6 +843,7 @@ def s2_slotted(v: int, c: dict, g: dict) -> Task:
     return Task(
         path=f"seed002/task3_v{v:02d}.toml",
         title=f"Seed 002 task 3 v{v}: crank-slotted-link mechanism with a slider (phi1 = {c['phi1']} deg)",
+        title_uk=uk_title("002", 3, v, "кривошипно-кулісний механізм із повзуном", c["phi1"]),
         header=s2_header(3, v, "crank O1A (1), block A (2) sliding in the slotted link O2C (3), "
                          "rod CD (4), slider D (5) on a vertical guide.",
                          f"l_AO1 = {r}, l_CO2 = {oc}, l_CD = {cd}, x = {g['x']}, x1 = {g['x1']}, "
@@ -840,6 +869,8 @@ def s2_shaper(v: int, c: dict, g: dict) -> Task:
     return Task(
         path=f"seed002/task6_v{v:02d}.toml",
         title=f"Seed 002 task 6 v{v}: shaper, crank-slotted link and ram (phi1 = {c['phi1']} deg)",
+        title_uk=uk_title("002", 6, v, "поперечно-стругальний верстат, кривошипно-кулісний механізм "
+                                       "і повзун", c["phi1"]),
         header=s2_header(6, v, "crank O1A (1), block A (2) in the slotted link O2B (3), block D (4) "
                          "in the same slot, pinned to the ram D (5) on a horizontal guide (a PRP "
                          "group).",
