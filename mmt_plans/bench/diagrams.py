@@ -78,7 +78,8 @@ def bench_diagrams(files, repeat, echo, out_dir: Path = Path("out")) -> None:
 
 def plot_speed_error(rows, path: Path) -> Path:
     """Error against time, both on log scales, one polyline per method."""
-    from ..render.svg import SvgBackend
+    from ..render.output import write_drawing
+    from ..render.recording import RecordingBackend
 
     W, H = 200.0, 140.0
     x0, y0, x1, y1 = 25.0, 20.0, 150.0, 125.0
@@ -92,7 +93,7 @@ def plot_speed_error(rows, path: Path) -> Path:
         fy = (math.log10(e) - math.log10(emin)) / (math.log10(emax) - math.log10(emin))
         return (x0 + fx * (x1 - x0), y0 + fy * (y1 - y0))
 
-    b = SvgBackend(W, H, title="mmt_plans: speed against error")
+    b = RecordingBackend(W, H)
     with b.group("axes", "axes"):
         b.line((x0, y0), (x1, y0), "thin")
         b.line((x0, y0), (x0, y1), "thin")
@@ -131,5 +132,4 @@ def plot_speed_error(rows, path: Path) -> Path:
         for t, n in plans:
             b.circle(xy(t, emin), 0.8, "main")
     path.parent.mkdir(parents=True, exist_ok=True)
-    b.save(path)
-    return path
+    return write_drawing(b, path, "svg", "mmt_plans: speed against error")

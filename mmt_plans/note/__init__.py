@@ -19,6 +19,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ..i18n import Language
+from ..render.output import render
+from ..render.recording import RecordingBackend
 from .content import Block, NoteContent, note_content, number, plain
 from .pages import NotePage, draw_note_page, layout_note, note_page
 
@@ -50,13 +52,15 @@ def draw_note(analysis: "Solution", backend_factory: Any, lang: Language = "en")
 
 
 def note_svgs(analysis: "Solution", lang: Language = "en") -> list[str]:
-    """The pages of the note as SVG documents."""
-    from ..render.svg import SvgBackend
+    """The pages of the note as SVG documents (render's factory by format)."""
+    titles: list[str] = []
 
-    def factory(width: float, height: float, title: str) -> SvgBackend:
-        return SvgBackend(width, height, title=title)
+    def factory(width: float, height: float, title: str) -> RecordingBackend:
+        titles.append(title)
+        return RecordingBackend(width, height)
 
-    return [b.to_string() for b in draw_note(analysis, factory, lang)]
+    pages = draw_note(analysis, factory, lang)
+    return [render(page, "svg", title).decode("utf-8") for page, title in zip(pages, titles)]
 
 
 def write_note(analysis: "Solution", target: str | os.PathLike[str],

@@ -13,7 +13,8 @@ import shutil
 import subprocess
 from pathlib import Path
 
-__all__ = ["svg_to_pdf", "svg_to_png", "installed_families", "prefer_installed_font"]
+__all__ = ["svg_to_pdf", "svg_to_png", "svg_to_pdf_bytes", "svg_to_png_bytes",
+           "installed_families", "prefer_installed_font"]
 
 SvgSource = str | bytes | os.PathLike[str]
 
@@ -88,3 +89,17 @@ def svg_to_png(svg: SvgSource, target: str | os.PathLike[str], dpi: float = 96.0
     target = Path(target)
     cairosvg.svg2png(bytestring=_svg_bytes(svg), write_to=str(target), dpi=dpi)
     return target
+
+
+def svg_to_pdf_bytes(svg: SvgSource) -> bytes:
+    """A vector PDF of the page, as bytes."""
+    import cairosvg
+
+    return cairosvg.svg2pdf(bytestring=_svg_bytes(svg))
+
+
+def svg_to_png_bytes(svg: SvgSource, dpi: float = 96.0) -> bytes:
+    """A PNG of the page at `dpi`, as bytes."""
+    import cairosvg
+
+    return cairosvg.svg2png(bytestring=_svg_bytes(svg), dpi=dpi)

@@ -1,4 +1,4 @@
-"""Writing the A1 sheets of an solution to files: SVG, and PDF/PNG through Cairo."""
+"""Writing the A1 sheets of a Solution to files, in every format of render.output."""
 
 from __future__ import annotations
 
@@ -9,12 +9,14 @@ from typing import Any, Callable, Iterable, Sequence
 from ..drawing.page import Page
 from ..errors import MmtError
 from ..i18n import Language
-from ..render.svg import SvgBackend
+from ..render.output import FORMATS, write_drawing
+from ..render.recording import RecordingBackend
 from ..solution import Solution
+from .sheet1 import compose_sheet1
+from .sheet2 import compose_sheet2
 
 __all__ = ["FORMATS", "SheetNotAvailable", "available_sheets", "write_sheets"]
 
-FORMATS = ("svg", "pdf", "png")
 
 
 class SheetNotAvailable(MmtError, ValueError):
@@ -22,27 +24,19 @@ class SheetNotAvailable(MmtError, ValueError):
 
 
 def available_sheets() -> dict[int, Callable[..., Any]]:
-    """Sheet number → compose function, for the sheets this package can draw."""
-    from .sheet1 import compose_sheet1
-
-    sheets: dict[int, Callable[..., Any]] = {1: compose_sheet1}
-    try:
-        from .sheet2 import compose_sheet2  # type: ignore[import-not-found]
-    except ImportError:
-        pass
-    else:
-        sheets[2] = compose_sheet2
-    return sheets
+    """Sheet number → compose function."""
+    return {1: compose_sheet1, 2: compose_sheet2}
 
 
 def write_sheets(
     solution: Solution,
     out_dir: str | os.PathLike[str],
-    formats: Sequence[str] = FORMATS,
+    formats: Sequence[str] = ("svg", "pdf", "png"),
     lang: Language = "en",
     sheets: Iterable[int] = (1,),
 ) -> list[Path]:
-    """Compose each sheet and write sheet<N>.<format> into out_dir; returns the paths."""
+    """Compose each sheet once and write sheet<N>.<format> into out_dir (render's
+    factory by format: svg, pdf, png, dxf); returns the paths."""
     formats = tuple(formats)
     unknown = [f for f in formats if f not in FORMATS]
     if unknown:
@@ -52,7 +46,7 @@ def write_sheets(
     missing = [n for n in wanted if n not in composers]
     if missing:
         raise SheetNotAvailable(
-            f"sheet {', '.join(map(str, missing))} cannot be drawn yet; available: "
+            f"sheet {', '.join(map(str, missing))} does not exist; the sheets are "
             f"{', '.join(map(str, sorted(composers)))}"
         )
     out = Path(out_dir)
@@ -60,19 +54,10 @@ def write_sheets(
     written: list[Path] = []
     page = Page.of("A1")
     for n in wanted:
-        backend = SvgBackend(page.width, page.height, title=f"{solution.mechanism.title}, sheet {n}")
-        composers[n](solution, backend, lang)
-        svg = backend.to_string()
-        if "svg" in formats:
-            path = out / f"sheet{n}.svg"
-            path.write_text(svg, encoding="utf-8")
-            written.append(path)
-        if "pdf" in formats or "png" in formats:
-            # Cairo is imported only when a raster or PDF is asked for.
-            from ..render.export import svg_to_pdf, svg_to_png
-
-            if "pdf" in formats:
-                written.append(svg_to_pdf(svg, out / f"sheet{n}.pdf"))
-            if "png" in formats:
-                written.append(svg_to_png(svg, out / f"sheet{n}.png"))
+        recording = RecordingBackend(page.width, page.height)
+        composers[n](solution, recording, lang)
+        recording.close()
+        title = f"{solution.mechanism.title_in(lang)}, sheet {n}"
+        for fmt in formats:
+            written.append(write_drawing(recording, out / f"sheet{n}.{fmt}", fmt, title))
     return written

@@ -24,7 +24,7 @@ def _formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[st
 @click.option("-o", "--out", "out_dir", default="out", show_default=True,
               type=click.Path(file_okay=False, path_type=Path), help="Directory for the sheets.")
 @click.option("--format", "formats", default="svg,pdf,png", show_default=True, callback=_formats,
-              help="Comma-separated: svg, pdf, png.")
+              help="Comma-separated: svg, pdf, png, dxf.")
 @click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
 @click.option("--sheet", type=click.Choice(["1", "2", "all"]), default="all", show_default=True)
 @click.option("--partial-turn", is_flag=True,

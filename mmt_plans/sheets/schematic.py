@@ -31,6 +31,8 @@ from ..drawing.sketch import Sketch
 from ..drawing.symbols import hatched_base, hatched_guide, unit_vector
 from ..i18n import Language, catalogue, check_language
 from ..model import FRAME, Prismatic
+from ..render.output import write_drawing
+from ..render.recording import RecordingBackend
 from ..solution import Solution
 
 __all__ = [
@@ -409,7 +411,6 @@ def write_task_schematics(
     page: str = "A2",
 ) -> Path:
     """One small scheme per task file on one page: a row per task, a column per variant."""
-    from ..render.svg import SvgBackend
     from ..solution import solve
     from ..spec import load
 
@@ -420,7 +421,8 @@ def write_task_schematics(
     head = 10.0
     pg, cw, ch = _grid(Page.of(page), len(tasks), len(variants), head, caption_h)
     frame = pg.frame.inset(4.0)
-    backend = SvgBackend(pg.width, pg.height, title=f"{Path(task_dir).name}: task schematics")
+    title = f"{Path(task_dir).name}: task schematics"
+    backend = RecordingBackend(pg.width, pg.height)
     draw_frame(backend, pg)
     look = backend.look
     seed = Path(task_dir).name
@@ -441,8 +443,7 @@ def write_task_schematics(
             cap.replay(backend, cell.x + cw / 2.0, cell.y + caption_h)
     out = Path(out_svg)
     out.parent.mkdir(parents=True, exist_ok=True)
-    backend.save(out)
-    return out
+    return write_drawing(backend, out, "svg", title)
 
 
 def write_task_files(
@@ -455,7 +456,6 @@ def write_task_files(
 ) -> list[Path]:
     """task_NN.svg: the first variant of each task, drawn large with its title and formula."""
     from ..render.look import load_look
-    from ..render.svg import SvgBackend
     from ..solution import solve
     from ..spec import load
 
@@ -475,7 +475,7 @@ def write_task_files(
         cap_h = 2.0 * _CAPTION + 5.0
         title_h = look.lettering.block_height(len(title_lines), size) + 4.0
         height = margin + title_h + height_mm + cap_h + margin
-        backend = SvgBackend(width_mm + 2 * margin, height, title=str(solution.mechanism.title))
+        backend = RecordingBackend(width_mm + 2 * margin, height)
         y = height - margin - size
         with backend.group("title", "heading"):
             for line in title_lines:
@@ -485,6 +485,5 @@ def write_task_files(
         sk.replay(backend, margin, margin + cap_h)
         sketch_caption(solution, f, look, lang, width_mm).replay(backend, margin + width_mm / 2.0, margin + cap_h)
         path = out_dir / f"task_{task:02d}.svg"
-        backend.save(path)
-        written.append(path)
+        written.append(write_drawing(backend, path, "svg", str(solution.mechanism.title)))
     return written
