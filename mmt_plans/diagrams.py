@@ -41,7 +41,7 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Literal
+from typing import Literal, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -590,10 +590,9 @@ def compare_with_plans(
         for i, err in enumerate(errs):
             if err is not None and abs(err) <= limit_percent:
                 continue
-            kind, reason = _explain(quantity, i, err, plan, diagram, r, re, limit_percent, n)
-            flags.append(
-                ErrorFlag(quantity, i, err, float(plan[i]), float(diagram[i]), kind, reason)
-            )
+            q = cast(Literal["v", "a"], quantity)
+            kind, reason = _explain(q, i, err, plan, diagram, r, re, limit_percent, n)
+            flags.append(ErrorFlag(q, i, err, float(plan[i]), float(diagram[i]), kind, reason))
 
     # Only errors the construction makes, and that (12)/(13) can measure, can be cured by positions.
     curable = [f for f in flags if f.construction_own and f.error_percent is not None]

@@ -185,7 +185,7 @@ class Mechanism:
         for link in self.links.values():
             for name in link.points:
                 owners.setdefault(name, []).append(link.id)
-        pairs = []
+        pairs: list[Revolute] = []
         for name, ids in owners.items():
             ids = sorted(ids)
             pairs.extend(Revolute(name, (ids[0], other)) for other in ids[1:])

@@ -29,9 +29,10 @@ def results(solution: Solution, *, diagrams: bool = True) -> dict[str, Any]:
     mech = solution.mechanism
     cms = _cm_names(mech)
     point_names = [n for n in solution.chain.locate if n not in cms]
-    positions, kinematics = [], []
+    positions: list[dict[str, Any]] = []
+    kinematics: list[dict[str, Any]] = []
     for k, pos in enumerate(solution.positions):
-        head = {"index": pos.index, "phi1_deg": pos.phi1_deg}
+        head: dict[str, Any] = {"index": pos.index, "phi1_deg": pos.phi1_deg}
         problem = solution.problem(k)
         if isinstance(problem, AssemblyError):
             positions.append({**head, "stroke": pos.stroke, "problem": str(problem)})

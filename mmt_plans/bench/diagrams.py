@@ -78,6 +78,7 @@ def bench_diagrams(files, repeat, echo, out_dir: Path = Path("out")) -> None:
 
 def plot_speed_error(rows, path: Path) -> Path:
     """Error against time, both on log scales, one polyline per method."""
+    from ..render.look import LineType
     from ..render.output import write_drawing
     from ..render.recording import RecordingBackend
 
@@ -111,7 +112,7 @@ def plot_speed_error(rows, path: Path) -> Path:
         b.text((8, (y0 + y1) / 2), "relative error of V, a (log)", 3.0, anchor="center",
                rotation=90)
         b.text((x0, y1 + 8), "Speed against error: six-link press, n = 8 to 360 positions", 3.5)
-    lines = {"textbook": "main", "central8": "dashed", "spectral": "dashdot"}
+    lines: dict[str, LineType] = {"textbook": "main", "central8": "dashed", "spectral": "dashdot"}
     ly = y1 - 5
     for method, style in lines.items():
         series = [(t, max(ev, ea), n) for _, m, n, t, ev, ea in rows if m == method]

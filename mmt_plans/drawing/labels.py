@@ -48,7 +48,7 @@ class Labels:
         self._clearance: list[float] = []
         self._tree: STRtree | None = None
         self._grown: BaseGeometry | None = None
-        self._later: list[tuple[np.ndarray, str, Sequence[float] | None]] = []
+        self._later: list[tuple[Sequence[float], str, Sequence[float] | None]] = []
 
     def avoid(self, shape: BaseGeometry, clearance: float) -> None:
         """Keep labels `clearance` mm off any shape (a filled polygon is avoided whole)."""
@@ -103,7 +103,7 @@ class Labels:
     def later(self, anchor: Sequence[float], markup: str,
               towards: Sequence[float] | None = None) -> None:
         """A label to write with `write_later`, once every line is drawn and avoided."""
-        self._later.append((np.asarray(anchor, dtype=float), markup, towards))
+        self._later.append((tuple(float(v) for v in anchor), markup, towards))
 
     def write_later(self) -> None:
         """Write the labels kept by `later`, in the order they came."""

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from decimal import Decimal
 from importlib import resources
 from types import MappingProxyType
-from typing import Literal, Mapping, get_args
+from typing import Any, Literal, Mapping, get_args
 
 __all__ = ["Language", "LANGUAGES", "Catalogue", "catalogue", "check_language"]
 
@@ -38,13 +38,13 @@ class Catalogue:
     """The words of one language: `words(table)[key]`, `unit(key)`, numbers."""
 
     lang: Language
-    tables: Mapping[str, Mapping[str, object]]
+    tables: Mapping[str, Mapping[str, Any]]
 
     @property
     def decimal(self) -> str:
         return str(self.tables["language"]["decimal"])
 
-    def words(self, table: str) -> Mapping[str, object]:
+    def words(self, table: str) -> Mapping[str, Any]:
         """One table of the catalogue (e.g. "sheet1"), as a read-only mapping."""
         try:
             return self.tables[table]
@@ -92,7 +92,7 @@ class Catalogue:
         return self.localise(text)
 
 
-def _freeze(data: dict) -> Mapping[str, Mapping[str, object]]:
+def _freeze(data: dict) -> Mapping[str, Mapping[str, Any]]:
     return MappingProxyType({k: MappingProxyType(dict(v)) for k, v in data.items()})
 
 

@@ -35,8 +35,8 @@ class LinkState:
     eps: np.ndarray
     a: np.ndarray
     # iω·e and (iε - ω²)·e: velocity and acceleration per unit of local coordinate
-    spin: np.ndarray = field(repr=False, default=None)  # type: ignore[assignment]
-    spin_acc: np.ndarray = field(repr=False, default=None)  # type: ignore[assignment]
+    spin: np.ndarray | None = field(repr=False, default=None)
+    spin_acc: np.ndarray | None = field(repr=False, default=None)
 
     @property
     def angle_deg(self) -> np.ndarray:
@@ -357,6 +357,7 @@ class Chain:
                     f"{mech.path}: group {group.label} of links {group.name} is of class "
                     f"{group.group_class}; only class II groups (dyads) are solved. "
                     f"Structure: {structure.formula}")
+            assert group.kind is not None  # a dyad has a kind
             solvers.append(DYADS[group.kind](mech, group))
         return cls(mech, solvers)
 

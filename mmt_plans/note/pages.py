@@ -17,7 +17,7 @@ from typing import Any, Mapping, Sequence
 from ..drawing.page import FIELDS, Page, Rect, draw_frame, draw_title_block, load_title_block_look
 from ..i18n import Language
 from ..render.backend import Backend, parse_markup
-from ..render.look import Lettering, Look, load_look
+from ..render.look import Lettering, LineType, Look, load_look
 from .content import Block, NoteContent
 
 __all__ = ["NotePage", "Line", "layout_note", "draw_note_page", "FORM2A_HEIGHT", "note_page"]
@@ -252,7 +252,7 @@ def draw_note_page(backend: Backend, note_page_: NotePage, pages: int, content: 
 def _draw_row(backend: Backend, line: Line) -> None:
     x = line.x
     bottom, top = line.y, line.y + ROW
-    kind = "main" if line.header else "thin"
+    kind: LineType = "main" if line.header else "thin"
     backend.line((x, top), (x + sum(line.widths), top), "main" if line.header else "thin")
     backend.line((x, bottom), (x + sum(line.widths), bottom), kind)
     backend.line((x, bottom), (x, top), "main")

@@ -67,6 +67,7 @@ from ezdxf.document import CREATED_BY_EZDXF, WRITTEN_BY_EZDXF, Drawing
 from ezdxf.enums import TextEntityAlignment
 from ezdxf.lldxf.const import VALID_DXF_LINEWEIGHTS
 from ezdxf.tools.juliandate import juliandate
+from ezdxf.colors import RGB
 
 from .backend import LINE_TYPES, Backend, Fill, HAlign, LineType, PointLike, VAlign, as_point
 from .look import Look
@@ -239,10 +240,10 @@ class DxfBackend(Backend):
         doc.layers.add(FILL_LAYER, color=_INK_ACI, lineweight=0)
         lettering = self.look.lettering
         family = lettering.families[0]
-        style = doc.styles.add(TEXT_STYLE, font=family.replace(" ", "") + ".ttf")
-        style.dxf.oblique = lettering.slant_deg
-        style.dxf.height = 0.0  # the height is given by each text
-        style.set_extended_font_data(family)
+        text_style: Any = doc.styles.add(TEXT_STYLE, font=family.replace(" ", "") + ".ttf")
+        text_style.dxf.oblique = lettering.slant_deg
+        text_style.dxf.height = 0.0  # the height is given by each text
+        text_style.set_extended_font_data(family)
 
     # --- output --------------------------------------------------------------
 
@@ -309,7 +310,7 @@ class DxfBackend(Backend):
     def _hatch(self, fill: Fill) -> Any:
         hatch = self._msp.add_hatch(dxfattribs={"layer": FILL_LAYER})
         if fill == "white":
-            hatch.set_solid_fill(color=_INK_ACI, rgb=(255, 255, 255))
+            hatch.set_solid_fill(color=_INK_ACI, rgb=RGB(255, 255, 255))
         else:
             hatch.set_solid_fill(color=256)  # BYLAYER
         return hatch
@@ -464,7 +465,8 @@ class DxfBackend(Backend):
 def _area(points: Sequence[tuple[float, float]]) -> float:
     """Twice the signed area of a polygon (shoelace)."""
     return sum(
-        x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1])
+        x0 * y1 - x1 * y0
+        for (x0, y0), (x1, y1) in zip(points, [*points[1:], *points[:1]], strict=True)
     )
 
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Literal, Mapping
+from typing import Any, Literal, Mapping
 
 import numpy as np
 
@@ -152,6 +152,10 @@ class GroupSolver:
         self.state = state
         self.group = group
         self.L1, self.L2 = group.links
+        # the kind fixes which pairs are revolute and which prismatic
+        self.outer1: Any
+        self.inner: Any
+        self.outer2: Any
         self.outer1, self.inner, self.outer2 = group.pairs
         self.K1 = other_link(self.outer1, self.L1)
         self.K2 = other_link(self.outer2, self.L2)

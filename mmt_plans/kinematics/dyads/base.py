@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 
@@ -122,15 +122,16 @@ class Leg:
     start: str  # the plan image the leg starts from (a point, or "X∈K")
     unknown: str  # what the leg's magnitude is: "ω2", "V_EX", …
     d: np.ndarray  # direction line of the unknown component
-    V0: np.ndarray  # velocity at the leg's start
-    a0: np.ndarray  # acceleration at the leg's start
+    # arrays over the angles, or plain numbers where they are the frame's
+    V0: Any  # velocity at the leg's start
+    a0: Any  # acceleration at the leg's start
     link: int  # the rotating link, or the link slid on
-    P: np.ndarray | None = None  # centre of the rotation
-    x: np.ndarray | None = None
-    n: np.ndarray | None = None  # normal (rotation) or Coriolis (slide) component
-    y: np.ndarray | None = None
+    P: Any = None  # centre of the rotation
+    x: Any = None  # the plan's unknowns, solved later: x of the velocity plan
+    n: Any = None  # normal (rotation) or Coriolis (slide) component
+    y: Any = None  # and y of the acceleration plan
 
-    def normal(self, m: dict) -> np.ndarray:
+    def normal(self, m: dict) -> Any:
         """-ω²·(X - P) of a rotation (d = i·(X - P)), 2·ω_K·x·i·u of a slide."""
         if self.kind == "rotation":
             return (self.d * 1j) * (self.x * self.x)
@@ -188,6 +189,10 @@ class DyadSolver:
         self.mech = mech
         self.group = group
         self.L1, self.L2 = group.links
+        # the kind fixes which pairs are revolute and which prismatic
+        self.outer1: Any
+        self.inner: Any
+        self.outer2: Any
         self.outer1, self.inner, self.outer2 = group.pairs
         self.K1 = other_link(self.outer1, self.L1)
         self.K2 = other_link(self.outer2, self.L2)
