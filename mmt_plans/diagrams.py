@@ -635,3 +635,56 @@ def compare_with_plans(
         positions_needed_how=how,
         trials=tuple(trials),
     )
+
+
+# --------------------------------------------------------------------------- the check of the sheet
+
+# A plan value under this share of its largest magnitude over the turn makes
+# formula (12)/(13) ill-conditioned: a small absolute error becomes a large
+# relative one. Such a value is reported by its absolute error, not failed.
+ILL_CONDITIONED = 0.05
+# the grids tried, in divisions of one position step: positions stay grid points
+GRID_REFINEMENTS = (1, 2, 3, 4, 6, 8, 12)
+
+
+@dataclass(frozen=True)
+class InvestigatedValue:
+    """Formula (12) or (13) at one investigated position, on the drawn diagrams."""
+
+    index: int  # the position
+    quantity: Literal["v", "a"]
+    plan: float
+    diagram: float
+    error_percent: float  # (plan − diagram)/plan·100
+    absolute_error: float  # |plan − diagram|
+    ill_conditioned: bool  # |plan| < ILL_CONDITIONED · its largest magnitude over the turn
+    passed: bool  # within the limit, or ill-conditioned (then judged by its absolute error)
+
+
+@dataclass(frozen=True)
+class SheetCheck:
+    """The 5 % check of seed 003 §1.8 at the investigated positions, judged on
+    the diagrams the sheet draws: over `intervals` divisions of the turn
+    (`refinement` per position step), the fewest of GRID_REFINEMENTS that pass."""
+
+    intervals: int
+    refinement: int
+    limit_percent: float
+    values: tuple[InvestigatedValue, ...]
+    tried: tuple[tuple[int, bool], ...]  # (intervals, passed) for each grid tried
+
+    @property
+    def passed(self) -> bool:
+        return all(v.passed for v in self.values)
+
+
+def judge(index: int, quantity: Literal["v", "a"], plan: float, diagram: float, largest: float,
+          limit_percent: float = ERROR_LIMIT_PERCENT) -> InvestigatedValue:
+    """One value of the check: relative error by (12)/(13), or, where that is
+    ill-conditioned, the absolute error."""
+    ill = abs(plan) < ILL_CONDITIONED * largest
+    err = (plan - diagram) / plan * 100.0 if plan != 0.0 else math.inf
+    passed = ill or abs(err) <= limit_percent
+    return InvestigatedValue(index, quantity, float(plan), float(diagram),
+                             float(err) if math.isfinite(err) else 0.0, abs(plan - diagram), ill,
+                             bool(passed))

@@ -104,13 +104,16 @@ def diagrams_report(analysis: Solution) -> list[str]:
                      num(d["a_plan"][i]), num(d["a_diagram"][i]), "-" if ea is None else f"{ea:.2f}"])
     out.append(_indent(table(["pos", "s mm", "V plan", "V diagram", "dV %", "a plan",
                               "a diagram", "da %"], rows)))
-    out.append(f"  (* planned positions) 5 % check: {'passed' if d['passed'] else 'NOT passed'}")
-    for f in d["flags"]:
-        err = "undefined" if f["error_percent"] is None else f"{f['error_percent']:.2f} %"
-        out.append(f"  ! position {f['index']}, {f['quantity']}: {err}: {f['reason']}")
-    if not d["passed"]:
-        out.append(f"  {d['positions_needed']} positions would bring the construction's own "
-                   "errors under 5 %")
+    out.append(f"  (* planned positions) diagrams drawn over {d['grid_intervals']} divisions "
+               f"of the turn; 5 % check at the investigated positions: "
+               f"{'passed' if d['passed'] else 'NOT passed'}")
+    for v in d["investigated"]:
+        q = "V" if v["quantity"] == "v" else "a"
+        if v["ill_conditioned"]:
+            out.append(f"  position {v['index']}, {q}: ill-conditioned (under 5 % of its largest "
+                       f"value), absolute error {v['absolute_error']:.3g}")
+        elif not v["passed"]:
+            out.append(f"  ! position {v['index']}, {q}: {v['error_percent']:.2f} %")
     out.append("")
     return out
 

@@ -78,26 +78,32 @@ def diagrams_json(solution: Solution) -> dict[str, Any]:
     output = solution.mechanism.study.output
     if solution.diagrams is None:
         return {"output": output, "problem": solution.diagrams_problem}
-    construction, check = solution.diagrams.construction, solution.diagrams.check
-    v, a = solution.diagrams.v_plan, solution.diagrams.a_plan
+    dg = solution.diagrams
+    construction, check, sc = dg.construction, dg.check, dg.sheet_check
     n = solution.mechanism.study.positions
     return {
         "output": output,
         "phi1_deg": [solution.positions[i].phi1_deg for i in range(n)],
-        "s": [float(x) for x in construction.s],
-        "v_diagram": [float(x) for x in construction.v],
-        "a_diagram": [float(x) for x in construction.a],
-        "v_plan": [float(x) for x in v],
-        "a_plan": [float(x) for x in a],
+        "s": [float(x) for x in dg.at_position(construction.s)],
+        "v_diagram": [float(x) for x in dg.at_position(construction.v)],
+        "a_diagram": [float(x) for x in dg.at_position(construction.a)],
+        "v_plan": [float(x) for x in dg.v_plan],
+        "a_plan": [float(x) for x in dg.a_plan],
         "error_percent": {"v": list(check.v_error_percent), "a": list(check.a_error_percent)},
         "scales": {"mu_S": construction.mu_S, "mu_t": construction.mu_t,
                    "mu_V": construction.mu_V, "mu_a": construction.mu_a,
                    "H1_mm": construction.H1, "H2_mm": construction.H2, "L_mm": construction.L},
-        "limit_percent": check.limit_percent,
-        "passed": check.passed,
+        "limit_percent": sc.limit_percent,
+        # seed 003 §1.8: the investigated positions, on the diagrams drawn
+        "passed": sc.passed,
+        "grid_intervals": sc.intervals,
+        "investigated": [
+            {"index": v.index, "quantity": v.quantity, "plan": v.plan, "diagram": v.diagram,
+             "error_percent": v.error_percent, "absolute_error": v.absolute_error,
+             "ill_conditioned": v.ill_conditioned, "passed": v.passed} for v in sc.values],
+        "grids_tried": [{"intervals": i, "passed": p} for i, p in sc.tried],
         "flags": [{"quantity": f.quantity, "index": f.index, "error_percent": f.error_percent,
                    "kind": f.kind, "reason": f.reason} for f in check.flags],
-        "positions_needed": check.positions_needed,
     }
 
 

@@ -24,11 +24,15 @@ import numpy as np
 
 from .diagrams import (
     DIAGRAM_HEIGHT_MM,
+    ERROR_LIMIT_PERCENT,
+    GRID_REFINEMENTS,
     TIME_AXIS,
     KinematicDiagrams,
     PlanComparison,
+    SheetCheck,
     compare_with_plans,
     graphical_differentiation,
+    judge,
 )
 from .errors import ForceError, MmtError, StructureError, partial_turn_error
 from .forces import ForceAnalysis, force_analysis_at
@@ -60,9 +64,19 @@ class Diagrams:
     """The graphical differentiation (mm and SI) and its 5 % check against the plans."""
 
     construction: KinematicDiagrams
-    check: PlanComparison
+    check: PlanComparison  # every position of the study against the drawn construction
     v_plan: np.ndarray  # V of the output along the working direction at the positions
     a_plan: np.ndarray
+    sheet_check: SheetCheck  # the verdict: the investigated positions, on the grid drawn
+    refinement: int  # divisions of the diagrams per position step
+
+    def at_position(self, values: np.ndarray) -> np.ndarray:
+        """A construction's values (on its grid) at the n positions."""
+        return np.asarray(values)[:: self.refinement]
+
+    @property
+    def passed(self) -> bool:
+        return self.sheet_check.passed
 
 
 @dataclass(frozen=True)
@@ -82,7 +96,7 @@ class Solution:
     sweep: Sweep  # the kinematics at every position and extra angle
     mu_l: float  # the scale of the mechanism's drawing, m/mm
     dense: Sweep  # DENSE angles counter-clockwise over the turn from position 0 (trajectories)
-    s_dense: np.ndarray | None  # S of the output at DENSE - 1 steps in the drive's sense, m
+    s_dense: np.ndarray | None  # S of the output, a dozen steps to a division of the diagrams, m
     diagrams: Diagrams | None
     diagrams_problem: str | None
     forces: ForceAnalysis | None
@@ -207,8 +221,9 @@ def solve(mechanism: Mechanism, *, partial_turn: bool | None = None,
     dense = chain.sweep(np.linspace(phi0, phi0 + 360.0, DENSE))
     diagrams, diagrams_problem, s_dense = None, None, None
     try:
-        s_dense = turn.displacements(DENSE - 1) if turn.limits is None else None
-        diagrams = _diagrams(mech, turn, positions, sw, mu_l)
+        diagrams = _diagrams(mech, turn, positions, sw, mu_l, plan_positions)
+        # the smooth S curve: a dozen points to every division of the diagrams
+        s_dense = turn.displacements(max(DENSE - 1, 12 * diagrams.sheet_check.intervals))
     except MmtError as err:
         diagrams_problem = str(err)
     force_analysis, forces_problem = None, None
@@ -242,8 +257,11 @@ def _mechanism_scale(mech: Mechanism, chain: Chain) -> float:
 
 
 def _diagrams(mech: Mechanism, turn: "_Turn", positions: tuple[Position, ...], sw: Sweep,
-              mu_l: float) -> Diagrams:
-    """The graphical differentiation and its 5 % check against the plans."""
+              mu_l: float, investigated: tuple[int, ...]) -> Diagrams:
+    """The graphical differentiation and its 5 % check against the plans (seed
+    003 §1.7–1.8), judged at the investigated positions on the diagrams drawn:
+    the S diagram over n·k divisions of the turn (the positions among them),
+    with the fewest k of GRID_REFINEMENTS that pass."""
     if turn.limits is not None:
         raise MmtError("no kinematic diagrams: the crank does not make a whole turn "
                        "(partial_turn), and the diagrams of 1.7 cover one turn")
@@ -252,21 +270,35 @@ def _diagrams(mech: Mechanism, turn: "_Turn", positions: tuple[Position, ...], s
     if not sw.ok[k].all():
         bad = next(i for i in range(n) if not sw.ok[k[i]])
         raise sw.problem(k[bad]) or MmtError("diagrams need every position")
-    s, v, a = (x[k] for x in output_along(mech, sw))
-    s = s - s[0]
+    _, v, a = (x[k] for x in output_along(mech, sw))
     n1 = mech.drive.n1_rpm
     # the time axis: the standard μ_t that draws one turn in 150 … 240 mm
     T = 60.0 / n1
     L = T / scale_for(T, TIME_AXIS)
-    # μ_S from μ_l up the series until no diagram is taller than the sheet
-    # can hold: the heights of V and a grow with μ_t·OH/μ_S and μ_t²·OH1·OH2/μ_S
-    for mu_S in series(mu_l * (1 - 1e-9), mu_l * 1e3):
-        construction = graphical_differentiation(s, n1=n1, mu_S=mu_S, L=L)
-        if max(construction.heights_mm) <= DIAGRAM_HEIGHT_MM:
+    tried: list[tuple[int, bool]] = []
+    for refinement in GRID_REFINEMENTS:
+        s_grid, v_grid, a_grid = turn.along_grid(n * refinement)
+        # μ_S from μ_l up the series until no diagram is taller than the sheet
+        # can hold: the heights of V and a grow with μ_t·OH/μ_S and μ_t²·OH1·OH2/μ_S
+        for mu_S in series(mu_l * (1 - 1e-9), mu_l * 1e3):
+            construction = graphical_differentiation(s_grid, n1=n1, mu_S=mu_S, L=L)
+            if max(construction.heights_mm) <= DIAGRAM_HEIGHT_MM:
+                break
+        vmax, amax = float(np.max(np.abs(v_grid))), float(np.max(np.abs(a_grid)))
+        values = []
+        for i in investigated:
+            values.append(judge(i, "v", float(v[i]), float(construction.v[i * refinement]), vmax))
+            values.append(judge(i, "a", float(a[i]), float(construction.a[i * refinement]), amax))
+        passed = all(x.passed for x in values)
+        tried.append((n * refinement, passed))
+        if passed:
             break
-    check = compare_with_plans(construction.v, construction.a, v, a, n1=n1, s=s,
-                               s_of_n=turn.displacements)
-    return Diagrams(construction, check, v, a)
+    sheet_check = SheetCheck(n * refinement, refinement, ERROR_LIMIT_PERCENT, tuple(values),
+                             tuple(tried))
+    at_positions = slice(None, None, refinement)
+    check = compare_with_plans(construction.v[at_positions], construction.a[at_positions], v, a,
+                               n1=n1, s=construction.s[at_positions], candidates=())
+    return Diagrams(construction, check, v, a, sheet_check, refinement)
 
 
 def _stroke_of(mech: Mechanism, chain: Chain, limits, extremes, working_span_deg,
@@ -416,6 +448,13 @@ class _Turn:
                     for p in positions if p.index is not None]
             picks.append(int(np.argmin(dist)))
         return tuple(picks)
+
+    def along_grid(self, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """s (from position 0), V and a of the output at n equal crank steps
+        from position 0 in the drive's sense (SI)."""
+        phi = self.phi0 + self.sense * 360.0 * np.arange(n) / n
+        s, v, a = output_along(self.mech, self.chain.sweep(phi))
+        return s - s[0], v, a
 
     def displacements(self, n: int) -> np.ndarray:
         """s of the output at n equal crank steps from position 0 (s = 0 there), m:

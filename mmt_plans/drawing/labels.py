@@ -20,6 +20,7 @@ from shapely import STRtree
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
+from ..render.backend import PointLike
 from ..render.recording import Call, RecordingBackend
 
 __all__ = ["Labels", "arc_line"]
@@ -37,7 +38,7 @@ class Labels:
     """Places rich-text labels on a recording sketch without collisions."""
 
     def __init__(self, sketch: RecordingBackend, size: float, *,
-                 rings: Sequence[float] = _RINGS) -> None:
+                 rings: PointLike = _RINGS) -> None:
         self.sketch = sketch
         self.size = size
         # how much further out than `distance` a label may go, tried in turn; past
@@ -48,7 +49,7 @@ class Labels:
         self._clearance: list[float] = []
         self._tree: STRtree | None = None
         self._grown: BaseGeometry | None = None
-        self._later: list[tuple[Sequence[float], str, Sequence[float] | None]] = []
+        self._later: list[tuple[Sequence[float], str, PointLike | None]] = []
 
     def avoid(self, shape: BaseGeometry, clearance: float) -> None:
         """Keep labels `clearance` mm off any shape (a filled polygon is avoided whole)."""
@@ -57,14 +58,14 @@ class Labels:
         self._tree = None
         self._grown = None
 
-    def avoid_line(self, start: Sequence[float], end: Sequence[float], clearance: float = 0.4) -> None:
+    def avoid_line(self, start: PointLike, end: PointLike, clearance: float = 0.4) -> None:
         """Keep labels `clearance` mm off a drawn segment."""
         if math.dist(start, end) > 1e-9:
             self.avoid(LineString([tuple(start), tuple(end)]), clearance)
         else:
             self.avoid(Point(tuple(start)), clearance)
 
-    def avoid_circle(self, centre: Sequence[float], radius: float) -> None:
+    def avoid_circle(self, centre: PointLike, radius: float) -> None:
         self.avoid(Point(tuple(centre)), radius)
 
     def avoid_drawn(self, calls: Iterable[Call], clearance: float = 0.3, *,
@@ -100,8 +101,8 @@ class Labels:
         probe = RecordingBackend(look=self.sketch.look)
         return probe.rich_text((0.0, 0.0), markup, self.size)
 
-    def later(self, anchor: Sequence[float], markup: str,
-              towards: Sequence[float] | None = None) -> None:
+    def later(self, anchor: PointLike, markup: str,
+              towards: PointLike | None = None) -> None:
         """A label to write with `write_later`, once every line is drawn and avoided."""
         self._later.append((tuple(float(v) for v in anchor), markup, towards))
 
@@ -111,7 +112,7 @@ class Labels:
             self.place(anchor, markup, towards=towards)
         self._later.clear()
 
-    def place(self, anchor: Sequence[float], markup: str, *, towards: Sequence[float] | None = None,
+    def place(self, anchor: PointLike, markup: str, *, towards: PointLike | None = None,
               distance: float = 1.5, group: str | None = None) -> BaseGeometry:
         """Write `markup` beside `anchor`, first trying the side `towards` points to;
         inside a group `group` (class "label") if one is named."""
@@ -128,7 +129,7 @@ class Labels:
         cy = (y + dirs.imag * (ring + h / 2 * np.sqrt(np.abs(dirs.imag)))).ravel()
         return self._write_first_free(cx, cy, w, h, drop, markup, group)
 
-    def place_along(self, start: Sequence[float], end: Sequence[float], markup: str, *,
+    def place_along(self, start: PointLike, end: PointLike, markup: str, *,
                     distance: float = 1.0, group: str | None = None) -> BaseGeometry:
         """Write `markup` `distance` mm beside the segment start–end (a link's
         number): at its middle if that is free, else further along, either side."""
@@ -200,7 +201,7 @@ class Labels:
         return footprint
 
 
-def arc_line(centre: Sequence[float], radius: float, start_deg: float,
+def arc_line(centre: PointLike, radius: float, start_deg: float,
              end_deg: float) -> LineString:
     """An arc drawn counter-clockwise from start_deg to end_deg, as a polyline."""
     span = (end_deg - start_deg) % 360.0 or 360.0

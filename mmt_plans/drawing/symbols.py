@@ -4,10 +4,10 @@ pivots, guides hatched, the arc of ω, ε or a couple."""
 from __future__ import annotations
 
 import math
-from typing import Sequence
 
 import numpy as np
 
+from ..render.backend import LineType, PointLike
 from .sketch import Sketch
 
 __all__ = ["unit_vector", "sense_arc", "hatched_base", "hatched_guide"]
@@ -18,12 +18,12 @@ def unit_vector(v: np.ndarray) -> np.ndarray:
     return v / n if n > 1e-12 else np.array([1.0, 0.0])
 
 
-def sense_arc(sk: Sketch, centre: Sequence[float], radius: float, sense: float,
-              start_deg: float = 20.0, end_deg: float = 250.0, line: str = "main") -> np.ndarray:
+def sense_arc(sk: Sketch, centre: PointLike, radius: float, sense: float,
+              start_deg: float = 20.0, end_deg: float = 250.0, line: LineType = "main") -> np.ndarray:
     """An arc round `centre` with its arrowhead in the sense of `sense` (ccw
     positive): the direction of ω, ε or a couple. Returns the arrow's tip."""
     c = np.asarray(centre, dtype=float)
-    sk.arc(c, radius, start_deg, end_deg, line)  # type: ignore[arg-type]
+    sk.arc(c, radius, start_deg, end_deg, line)
     t = math.radians(end_deg if sense > 0 else start_deg)
     radial = np.array([math.cos(t), math.sin(t)])
     tip = c + radius * radial

@@ -468,8 +468,10 @@ class _Writer:
             self.section("1.8", "1.8")
             self.problem(err)
             return
-        construction, check = a.diagrams.construction, a.diagrams.check
-        v_plan, a_plan = a.diagrams.v_plan, a.diagrams.a_plan
+        dg = a.diagrams
+        construction, check = dg.construction, dg.check
+        v_plan, a_plan = dg.v_plan, dg.a_plan
+        c_v, c_a = dg.at_position(construction.v), dg.at_position(construction.a)
         c = construction
         self.text(w["diagram_scales"].format(out=a.mechanism.study.output, L=self.n(c.L),
                                              H1=self.n(c.H1), H2=self.n(c.H2)))
@@ -482,31 +484,33 @@ class _Writer:
         self.section("1.8", "1.8")
         plans = set(a.plan_positions)
         rows = [w["check_head"]]
-        for k in range(len(c.v)):
+        for k in range(len(c_v)):
             ev, ea = check.v_error_percent[k], check.a_error_percent[k]
-            rows.append((f"{k}{'*' if k in plans else ''}", self.n(v_plan[k]), self.n(c.v[k]),
+            rows.append((f"{k}{'*' if k in plans else ''}", self.n(v_plan[k]), self.n(c_v[k]),
                          "-" if ev is None else self.n(ev, 3), self.n(a_plan[k]),
-                         self.n(c.a[k]), "-" if ea is None else self.n(ea, 3)))
+                         self.n(c_a[k]), "-" if ea is None else self.n(ea, 3)))
         self.add("table", rows=rows, widths=(13, 25, 25, 18, 27, 27, 18))
+        sc = dg.sheet_check
+        self.text(w["grid"].format(n=sc.intervals, step=self.n(360.0 / sc.intervals)))
         for i in a.plan_positions:
-            if i >= len(c.v):
-                continue
             self.text(w["check_pos"].format(i=i))
-            for sym, plan_, diag, err in (("V", v_plan[i], c.v[i], check.v_error_percent[i]),
-                                          ("a", a_plan[i], c.a[i], check.a_error_percent[i])):
-                if err is None:
-                    self.eq(f"Δ_{sym} = ({sym}_{{plan}} - {sym}_{{diagr}})/{sym}_{{plan}}·100 % : "
-                            f"{sym}_{{plan}} = 0")
+            for val in (x for x in sc.values if x.index == i):
+                sym = "V" if val.quantity == "v" else "a"
+                if val.ill_conditioned:
+                    unit = u["m/s"] if val.quantity == "v" else u["m/s2"]
+                    self.eq(f"|{sym}_{{plan}} - {sym}_{{diagr}}| = |{self.n(val.plan)} - "
+                            f"{self.np_(val.diagram)}| = {self.n(val.absolute_error, 3)} {unit}")
+                    self.text(w["ill_conditioned"].format(q=sym))
                     continue
                 self.eq(f"Δ_{sym} = ({sym}_{{plan}} - {sym}_{{diagr}})/{sym}_{{plan}}·100 % = "
-                        f"({self.n(plan_)} - {self.np_(diag)})/{self.np_(plan_)}·100 % = "
-                        f"{self.n(err, 3)} %")
-        if check.passed:
+                        f"({self.n(val.plan)} - {self.np_(val.diagram)})/{self.np_(val.plan)}"
+                        f"·100 % = {self.n(val.error_percent, 3)} %")
+        if sc.passed:
             self.text(w["passed"])
         else:
-            why = "; ".join(f"{f.quantity}, {f.index}: {f.reason}" for f in check.flags)
-            self.text(w["failed"].format(why=why))
-            self.text(w["needed"].format(n=check.positions_needed))
+            bad = "; ".join(f"{'V' if x.quantity == 'v' else 'a'}, {x.index}: "
+                            f"{self.n(x.error_percent, 3)} %" for x in sc.values if not x.passed)
+            self.text(w["failed"].format(why=bad))
 
     # --- sheet 2 -------------------------------------------------------------------------
     def forces(self) -> None:
