@@ -83,4 +83,6 @@ def test_repeated_stems_get_distinct_folders(tmp_path):
     b = tmp_path / "seed003" / "task01_v1.toml"
     outs = plan_outputs([a, b], tmp_path / "out")
     assert outs[0] != outs[1]
-    assert [o.name for o in outs] == ["seed002-task01_v1", "seed003-task01_v1"]
+    # clashing stems keep their path relative to the folder the files share
+    assert [o.relative_to(tmp_path / "out").as_posix() for o in outs] == \
+        ["seed002/task01_v1", "seed003/task01_v1"]

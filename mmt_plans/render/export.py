@@ -1,7 +1,9 @@
 """SVG to PDF (vector) and PNG through cairosvg.
 
 cairosvg (and Cairo under it) is imported inside the functions, so that the
-rest of mmt_plans works on a machine without Cairo.
+rest of mmt_plans works on a machine without Cairo. Files are written
+atomically (files.atomic_path); a PDF goes through note/pdf.py's writer,
+which fixes the document's dates, so that two runs give the same bytes.
 """
 
 from __future__ import annotations
@@ -74,17 +76,19 @@ def _svg_bytes(svg: SvgSource) -> bytes:
 
 def svg_to_pdf(svg: SvgSource, target: str | os.PathLike[str]) -> Path:
     """Write a vector PDF of the page. `svg` is SVG text (str/bytes) or a file path."""
-    import cairosvg
+    from ..note.pdf import svgs_to_pdf
 
-    target = Path(target)
-    cairosvg.svg2pdf(bytestring=_svg_bytes(svg), write_to=str(target))
-    return target
+    return svgs_to_pdf([_svg_bytes(svg).decode("utf-8")], target)
 
 
 def svg_to_png(svg: SvgSource, target: str | os.PathLike[str], dpi: float = 96.0) -> Path:
     """Write a PNG of the page at `dpi` (the SVG is sized in mm, so dpi sets pixels)."""
     import cairosvg
 
+    from ..files import atomic_path
+
     target = Path(target)
-    cairosvg.svg2png(bytestring=_svg_bytes(svg), write_to=str(target), dpi=dpi)
+    data = _svg_bytes(svg)
+    with atomic_path(target) as tmp:
+        cairosvg.svg2png(bytestring=data, write_to=str(tmp), dpi=dpi)
     return target

@@ -1,4 +1,8 @@
-"""Writing the A1 sheets of an analysis to files: SVG, and PDF/PNG through Cairo."""
+"""Writing the A1 sheets of an analysis to files: SVG, and PDF/PNG through Cairo.
+
+Each file is written atomically (files.py): an interrupted run leaves no
+half-written sheet. PDFs carry a fixed date (files.document_date), so two
+runs give the same bytes."""
 
 from __future__ import annotations
 
@@ -7,6 +11,7 @@ from pathlib import Path
 from typing import Any, Callable, Iterable, Sequence
 
 from ..errors import MmtError
+from ..files import ensure_dir, write_text_atomic
 from ..render.svg import SvgBackend
 from .page import Language, Page
 
@@ -53,8 +58,7 @@ def write_sheets(
             f"sheet {', '.join(map(str, missing))} cannot be drawn yet; available: "
             f"{', '.join(map(str, sorted(composers)))}"
         )
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
+    out = ensure_dir(out_dir)
     written: list[Path] = []
     page = Page.of("A1")
     for n in wanted:
@@ -62,9 +66,7 @@ def write_sheets(
         composers[n](analysis, backend, lang)
         svg = backend.to_string()
         if "svg" in formats:
-            path = out / f"sheet{n}.svg"
-            path.write_text(svg, encoding="utf-8")
-            written.append(path)
+            written.append(write_text_atomic(out / f"sheet{n}.svg", svg))
         if "pdf" in formats or "png" in formats:
             # Cairo is imported only when a raster or PDF is asked for.
             from ..render.export import svg_to_pdf, svg_to_png
