@@ -79,11 +79,12 @@ def find_files(inputs: Iterable[str | os.PathLike[str]]) -> list[Path]:
         if p.is_dir():
             found = _tomls_under(p)
             if not found:
-                raise BatchError(f"{p}: no *.toml files in this directory (searched recursively)")
+                raise BatchError(f"{shown(p)}: no *.toml files in this directory (searched "
+                                 "recursively)")
         elif p.exists():
             found = [p]
         else:
-            raise BatchError(f"{p}: no such file or directory")
+            raise BatchError(f"{shown(p)}: no such file or directory")
         for f in found:
             key = f.resolve()
             if key not in seen:

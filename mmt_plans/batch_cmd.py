@@ -32,7 +32,10 @@ def batch(inputs: tuple[Path, ...], out_dir: Path, jobs: int | None, lang: str,
     from .batch import find_files, run_batch, summary_table, write_summary_csv
     from .errors import shown
 
+    from .files import ensure_dir
+
     files = find_files(inputs)
+    ensure_dir(out_dir)
     with click.progressbar(length=len(files), label=f"{len(files)} files",
                            file=sys.stderr, show_pos=True) as bar:
         results = run_batch(files, out_dir, jobs=jobs, lang=lang, force=force,

@@ -39,6 +39,14 @@ TOLERANCE_MAX = 100.0
 VALUE_MAX = 1e15
 VALUES_MAX = 2000
 
+LIMITS: dict[str, str] = {  # the answers file's rows of README's "Input limits"
+    "answers: mu_V, mu_a": f"{MU_MIN:g} to {MU_MAX:g}",
+    "answers: tolerance_percent, --tolerance": f"above 0, at most {TOLERANCE_MAX:g}",
+    "answers: any value": f"finite, at most {VALUE_MAX:g} in size",
+    "answers: values in one file": f"at most {VALUES_MAX:,}",
+    "answers: names (points, links, segments, reactions)": "1 to 32 printable characters",
+}
+
 # An exact value this small against the largest of its kind is zero: the
 # position's ε1 of a uniformly turning crank, a point on the frame.
 _ZERO = 1e-9

@@ -31,9 +31,11 @@ def main(debug: bool) -> None:
 def analyze(file: Path, json_out: Path | None, quiet: bool) -> None:
     """Structural, kinematic (and force) analysis of FILE."""
     from . import load
-    from .files import finite_json, write_text_atomic
+    from .files import check_output, finite_json, write_text_atomic
     from .report import text_report
 
+    if json_out is not None:
+        check_output(json_out)
     mech = load(file)
     analysis = mech.analyze()
     results = analysis.to_json()

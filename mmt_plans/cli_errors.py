@@ -88,7 +88,9 @@ def reports_errors(fn):
             with quiet_numerics():
                 return fn(*args, **kwargs)
         except MmtError as err:
-            click.echo(f"error: {err}", err=True)
+            # each line printable: no terminal control sequence from an input
+            text = "\n".join(shown(line, 10_000) for line in str(err).split("\n"))
+            click.echo(f"error: {text}", err=True)
             sys.exit(EXIT_BAD_INPUT)
         except KeyboardInterrupt:
             click.echo("interrupted", err=True)

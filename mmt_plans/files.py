@@ -38,7 +38,7 @@ from typing import Any, Iterator
 from .errors import MmtError, SpecError, shown
 
 __all__ = ["MAX_INPUT_BYTES", "OutputError", "NonFiniteResultError", "read_input",
-           "write_bytes_atomic", "write_text_atomic", "atomic_path", "ensure_dir",
+           "write_bytes_atomic", "write_text_atomic", "atomic_path", "ensure_dir", "check_output",
            "finite_json", "first_non_finite", "document_date"]
 
 MAX_INPUT_BYTES = 1_000_000
@@ -174,6 +174,22 @@ def _file_in_the_way(folder: Path) -> Path | None:
         if os.path.lexists(p):
             return None if p.is_dir() else p
     return None
+
+
+def check_output(path: str | os.PathLike[str], *, folder: bool = False) -> Path:
+    """Refuse early (before a long analysis) an output that cannot be written:
+    a folder where a file should go, a path under an existing file. Nothing is
+    created; permissions are met when writing."""
+    target = Path(path)
+    where = target if folder else target.parent
+    blocker = _file_in_the_way(where)
+    if blocker is not None:
+        raise OutputError(target, f"cannot be written: {shown(blocker)} is a file, not a folder",
+                          "choose another output path, or move that file away")
+    if not folder and target.is_dir():
+        raise OutputError(target, "is a folder, not a file",
+                          "give a file name, e.g. out/results.json")
+    return target
 
 
 def ensure_dir(folder: str | os.PathLike[str]) -> Path:

@@ -36,7 +36,7 @@ SPEED_MIN, SPEED_MAX = 1e-3, 1e5   # drive.rpm (1/min), drive.omega (rad/s), gea
                                 # and the crank speed a gear train gives
 FORCE_MAX_N = 1e9
 G_MAX = 1000.0                  # m/s²
-POSITIONS_MIN, POSITIONS_MAX = 4, 360   # the diagrams need 4; sheet 1 takes ~15 s at 360
+POSITIONS_MIN, POSITIONS_MAX = 4, 360   # the diagrams need 4; `draw` takes ~40 s at 360
 ANGLES_MAX = 100                # extra crank angles of study.angles
 LINKS_MAX = 25                  # the Assur-group search takes ~2 s at 25 links in its worst case
 LINK_ID_MAX = 999
@@ -51,28 +51,31 @@ TITLE_MAX = 200                 # title, title_uk and each [sheet] field
 TEETH_MAX = 10_000              # a gear's tooth count
 GEAR_STAGES_MAX = 20            # stages of [gears], and meshes of one planetary stage
 
-LIMITS: dict[str, str] = {
-    "coordinates (frame, points, cm, through, sketch)": f"|x|, |y| <= {COORDINATE_MAX_MM:,.0f} mm",
-    "distance of two points of a link": f">= {LENGTH_MIN_MM} mm",
-    "link mass": f"0 .. {MASS_MAX_KG:.0e} kg",
-    "link J (given)": f"0 .. {J_MAX:.0e} kg*m2",
-    "link k": f"0 .. {K_MAX:g}",
-    "drive.rpm, drive.omega, gears.motor_rpm, the crank speed of a gear train":
-        f"{SPEED_MIN:g} .. {SPEED_MAX:.0e} (1/min or rad/s)",
-    "force magnitude": f"0 .. {FORCE_MAX_N:.0e} N",
-    "env.g": f"0 .. {G_MAX:g} m/s2",
-    "study.positions": f"{POSITIONS_MIN} .. {POSITIONS_MAX}",
-    "study.angles": f"at most {ANGLES_MAX}, finite (taken mod 360)",
+LIMITS: dict[str, str] = {  # README's table "Input limits" is this, row by row
+    "coordinates (frame, points, cm, through, sketch)":
+        f"x and y within ±{COORDINATE_MAX_MM:,.0f} mm",
+    "distance of two points of one link": f"at least {LENGTH_MIN_MM} mm",
+    "link mass": f"0 to {MASS_MAX_KG:,.0f} kg",
+    "link J (when given)": f"0 to {J_MAX:,.0f} kg·m²",
+    "link k": f"0 to {K_MAX:g}",
+    "drive.rpm, gears.motor_rpm, the crank speed of a gear train":
+        f"{SPEED_MIN:g} to {SPEED_MAX:,.0f} 1/min",
+    "drive.omega": f"{SPEED_MIN:g} to {SPEED_MAX:,.0f} rad/s",
+    "force magnitude": f"0 to {FORCE_MAX_N:.0e} N",
+    "env.g": f"0 to {G_MAX:,.0f} m/s²",
+    "study.positions": f"{POSITIONS_MIN} to {POSITIONS_MAX}",
+    "study.angles": f"at most {ANGLES_MAX} angles, finite (taken mod 360)",
     "study.zero, slider angle": "finite (taken mod 360)",
-    "links": f"at most {LINKS_MAX}, ids 1 .. {LINK_ID_MAX}",
+    "study.plans": "a non-empty list of positions",
+    "links": f"at most {LINKS_MAX}, ids 1 to {LINK_ID_MAX}",
     "points": f"at most {POINTS_PER_LINK_MAX} per link, {FRAME_POINTS_MAX} on the frame, "
               f"{POINTS_MAX} names in all",
-    "sliders, higher pairs": f"at most {SLIDERS_MAX} each",
+    "sliders; higher pairs": f"at most {SLIDERS_MAX} each",
     "forces": f"at most {FORCES_MAX}",
-    "point and force names": f"1 .. {NAME_MAX} printable characters",
+    "point and force names": f"1 to {NAME_MAX} printable characters",
     "title, title_uk, [sheet] fields": f"at most {TITLE_MAX} printable characters",
-    "gear tooth counts": f"1 .. {TEETH_MAX}",
-    "gear stages, meshes of a planetary stage": f"at most {GEAR_STAGES_MAX}",
+    "gear tooth counts": f"1 to {TEETH_MAX:,}",
+    "gear stages; meshes of a planetary stage": f"at most {GEAR_STAGES_MAX}",
 }
 
 _VALUE = reprlib.Repr()
@@ -258,8 +261,13 @@ class _Reader:
                             "character", "use letters, digits and _ only")
         return value
 
-    def text(self, value: Any, entry: str) -> str:
-        """A title or a [sheet] field: a string of at most TITLE_MAX printable characters."""
+    def text(self, value: Any, entry: str, *, numbers: bool = False) -> str:
+        """A title or a [sheet] field: a string of at most TITLE_MAX printable
+        characters (with `numbers`, a number is taken as it is written: group = 21)."""
+        if numbers and isinstance(value, int) and not isinstance(value, bool):
+            value = show_value(value)
+        elif numbers and isinstance(value, float) and math.isfinite(value):
+            value = str(value)
         if not isinstance(value, str):
             raise self.fail(entry, f"must be a string, not {show_value(value)}",
                             f'write {entry.rsplit(".", 1)[-1]} = "..."')
@@ -527,9 +535,6 @@ class _Reader:
                     or not all(isinstance(p, int) and not isinstance(p, bool) for p in plans)):
                 raise self.fail("study.plans", "must be a non-empty list of position indices, "
                                 f"not {show_value(plans)}", "write plans = [2, 8]")
-            if len(set(plans)) != len(plans):
-                raise self.fail("study.plans", f"names a position twice: {show_value(plans)}",
-                                "name each planned position once, e.g. plans = [2, 8]")
             plans = tuple(plans)
         fp = table.get("force_position")
         if fp is not None and (not isinstance(fp, int) or isinstance(fp, bool)):
@@ -562,15 +567,10 @@ class _Reader:
             raise self.fail("force", f"{len(entries)} forces, more than the {FORCES_MAX} this "
                             "tool accepts", "README lists the input limits")
         out = []
-        names: dict[str, str] = {}
         for i, table in enumerate(entries):
             entry = f"force[{i + 1}]"
             self.check_keys(table, "force", entry)
             name = self.name(table.get("name", f"F{i + 1}"), f"{entry}.name", "a force name")
-            if name in names:
-                raise self.fail(f"{entry}.name", f"the force name {name} is already used by "
-                                f"{names[name]}", "give every force its own name")
-            names[name] = entry
             lid = self.integer(table, "link", entry)
             if lid not in links:
                 raise self.fail(f"{entry}.link", f"link {lid} does not exist",
@@ -645,7 +645,7 @@ class _Reader:
 
     def sheet(self, table: Any) -> dict[str, str]:
         self.check_keys(table, "sheet", "sheet")
-        return {k: self.text(v, f"sheet.{k}") for k, v in table.items()}
+        return {k: self.text(v, f"sheet.{k}", numbers=True) for k, v in table.items()}
 
     # --- whole-mechanism checks ---------------------------------------------------
     def check_connections(self, mech: Mechanism) -> None:

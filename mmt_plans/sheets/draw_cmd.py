@@ -31,8 +31,10 @@ def _formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[st
 def draw(file: Path, out_dir: Path, formats: tuple[str, ...], lang: str, sheet: str) -> None:
     """Draw the A1 sheets of FILE."""
     from .. import load
+    from ..files import check_output
     from .compose import available_sheets, write_sheets
 
+    check_output(out_dir, folder=True)
     analysis = load(file).analyze()
     numbers = sorted(available_sheets()) if sheet == "all" else [int(sheet)]
     for path in write_sheets(analysis, out_dir, formats, lang, numbers):  # type: ignore[arg-type]
