@@ -7,7 +7,7 @@ STAMP   := $(VENV)/.installed
 SAMPLE  ?= samples/six_link_press.toml
 OUT     ?= out
 
-.PHONY: run test bench lint fonts clean
+.PHONY: run test bench lint fonts clean fuzz
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -33,6 +33,14 @@ test: $(STAMP)
 
 bench: $(STAMP)
 	$(BIN)/python -m mmt_plans bench
+
+# 20,000 seeded mutants of the samples, in-process (tests/fuzz.py): counts of
+# clean errors, analysed, unexpected exceptions, non-finite outputs and slow
+# cases; every 20th analysed mutant's sheets are drawn too. Exit 1 on a finding.
+FUZZ_CASES ?= 20000
+FUZZ_SEED  ?= 1
+fuzz: $(STAMP)
+	$(BIN)/python tests/fuzz.py --cases $(FUZZ_CASES) --seed $(FUZZ_SEED) --draw-every 20
 
 lint: $(STAMP)
 	$(BIN)/python -m compileall -q mmt_plans

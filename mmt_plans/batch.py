@@ -4,25 +4,42 @@ For each file, into OUT/<file stem>/: the sheets (SVG and PDF, every sheet
 `available_sheets()` offers), results.json (what `analyze --json` writes) and
 note.pdf (the A4 calculation note). Files run in parallel processes; a file
 that fails is reported by its message and the others are still done.
+
+Hygiene:
+- files whose stems clash (task01_v1 of two seeds) keep their relative path
+  under OUT (OUT/seed002/task01_v1/); no output ever lands outside OUT (no
+  `..`, no absolute part, a folder that resolves outside OUT is refused);
+- every output is written atomically (files.py), and a finished file records
+  a manifest, MANIFEST_NAME, written last, with its input's SHA-256 and its
+  outputs' sizes; a later run skips a file whose manifest matches and whose
+  outputs are all there ("kept"), unless `force`.
 """
 
 from __future__ import annotations
 
 import csv
+import hashlib
+import io
 import json
 import math
 import os
+import signal
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 from typing import Callable, Iterable, Iterator, Sequence
 
-from .errors import MmtError
+from .errors import MmtError, shown
 from .report import table
 
 __all__ = ["BatchError", "FileResult", "find_files", "plan_outputs", "process_file",
-           "run_batch", "summary_rows", "summary_table", "write_summary_csv", "SUMMARY_HEADERS"]
+           "run_batch", "summary_rows", "summary_table", "write_summary_csv",
+           "SUMMARY_HEADERS", "MANIFEST_NAME", "read_manifest"]
+
+MANIFEST_NAME = ".mmt-batch.json"
+MANIFEST_SCHEMA = "mmt_plans/batch-item@1"
+SUMMARY_NAME = "summary.csv"
 
 SUMMARY_HEADERS = ["file", "status", "W", "class", "F_bal plans N", "F_bal lever N",
                    "discrepancy %", "5 % check", "time s"]
@@ -49,6 +66,7 @@ class FileResult:
     seconds: float = 0.0
     written: tuple[str, ...] = ()
     stages: dict[str, float] = field(default_factory=dict)  # seconds per stage
+    kept: bool = False  # done by an earlier run (its manifest matched): not redone
 
 
 def find_files(inputs: Iterable[str | os.PathLike[str]]) -> list[Path]:
@@ -59,13 +77,14 @@ def find_files(inputs: Iterable[str | os.PathLike[str]]) -> list[Path]:
     for item in inputs:
         p = Path(item)
         if p.is_dir():
-            found = sorted(p.rglob("*.toml"))
+            found = _tomls_under(p)
             if not found:
-                raise BatchError(f"{p}: no *.toml files in this directory (searched recursively)")
+                raise BatchError(f"{shown(p)}: no *.toml files in this directory (searched "
+                                 "recursively)")
         elif p.exists():
             found = [p]
         else:
-            raise BatchError(f"{p}: no such file or directory")
+            raise BatchError(f"{shown(p)}: no such file or directory")
         for f in found:
             key = f.resolve()
             if key not in seen:
@@ -76,37 +95,145 @@ def find_files(inputs: Iterable[str | os.PathLike[str]]) -> list[Path]:
     return out
 
 
+def _tomls_under(folder: Path) -> list[Path]:
+    """*.toml files under `folder`, sorted; folders reached through a symbolic
+    link are not entered (a link to a parent would never end)."""
+    found = []
+    for root, dirs, names in os.walk(folder):
+        dirs.sort()
+        found += [Path(root) / n for n in names if n.endswith(".toml")]
+    return sorted(found)
+
+
+def _safe_part(name: str) -> str:
+    """One folder name of an output path: never empty, `.` or `..`, no separator
+    or control character."""
+    name = shown(name, 100).replace("/", "_").replace("\\", "_").replace("\0", "_")
+    return name if name.strip(".") else "_" + name
+
+
 def plan_outputs(files: Sequence[Path], out: Path) -> list[Path]:
-    """OUT/<stem> for each file; stems that repeat (task01_v1 of two seeds)
-    take their parent folders' names in front until they differ."""
-    names = [f.stem for f in files]
-    depth = 0
-    while len(set(names)) < len(names) and depth < 8:
-        depth += 1
-        counts: dict[str, int] = {}
-        for n in names:
-            counts[n] = counts.get(n, 0) + 1
-        names = [("-".join(f.resolve().parent.parts[-depth:] + (f.stem,)) if counts[n] > 1 else n)
-                 for f, n in zip(files, names)]
-    return [out / n for n in names]
+    """OUT/<stem> for each file. Files whose stems clash (task01_v1 of two
+    seeds, compared without case) keep their path relative to the folder the
+    clashing files share: OUT/seed002/task01_v1, OUT/seed003/task01_v1. Every
+    part is a plain folder name (no `..`, no absolute part), and the folders
+    are distinct."""
+    out = Path(out)
+    stems = [_safe_part(f.stem) for f in files]
+    counts: dict[str, int] = {}
+    for n in stems:
+        counts[n.lower()] = counts.get(n.lower(), 0) + 1
+    resolved = [Path(os.path.abspath(f)) for f in files]
+    clashing = [r for r, n in zip(resolved, stems) if counts[n.lower()] > 1]
+    base = Path(os.path.commonpath([str(r.parent) for r in clashing])) if clashing else None
+    rels: list[PurePosixPath] = []
+    for f, r, n in zip(files, resolved, stems):
+        if counts[n.lower()] == 1 or base is None:
+            rels.append(PurePosixPath(n))
+            continue
+        parts = [_safe_part(x) for x in r.relative_to(base).parts[:-1]]
+        rels.append(PurePosixPath(*parts, n))
+    # still equal (a.toml and a.TOML in one folder): number them
+    taken: set[str] = set()
+    final: list[Path] = []
+    for rel in rels:
+        key, k = str(rel).lower(), 1
+        while key in taken or key == SUMMARY_NAME:
+            k += 1
+            key = f"{str(rel).lower()}-{k}"
+        taken.add(key)
+        final.append(out / (rel if k == 1 else rel.with_name(f"{rel.name}-{k}")))
+    return final
+
+
+def _inside(folder: Path, out: Path) -> bool:
+    """Whether `folder`, symbolic links resolved, lies inside `out`."""
+    try:
+        folder.resolve().relative_to(out.resolve())
+    except ValueError:
+        return False
+    return True
+
+
+def _sha256(path: str | os.PathLike[str]) -> str | None:
+    from .files import read_input
+
+    try:
+        return hashlib.sha256(read_input(path).encode("utf-8")).hexdigest()
+    except MmtError:
+        return None
+
+
+def read_manifest(out_dir: str | os.PathLike[str]) -> dict | None:
+    """The manifest of a finished item, or None (missing, unreadable, another schema)."""
+    try:
+        data = json.loads((Path(out_dir) / MANIFEST_NAME).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    return data if isinstance(data, dict) and data.get("schema") == MANIFEST_SCHEMA else None
+
+
+def _settings(lang: str) -> dict:
+    from . import __version__
+
+    return {"lang": lang, "version": __version__}
+
+
+def _kept(path: str, out: Path, lang: str) -> FileResult | None:
+    """The result of an earlier run when its manifest matches the input and
+    its outputs are all there, as they were written; else None."""
+    manifest = read_manifest(out)
+    if manifest is None or manifest.get("settings") != _settings(lang):
+        return None
+    digest = _sha256(path)
+    if digest is None or manifest.get("input_sha256") != digest:
+        return None
+    outputs = manifest.get("outputs")
+    if not isinstance(outputs, dict) or not outputs:
+        return None
+    for name, size in outputs.items():
+        target = out / name
+        if (not isinstance(name, str) or "/" in name or name.startswith(".")
+                or not target.is_file() or target.is_symlink() or target.stat().st_size != size):
+            return None
+    summary = manifest.get("summary", {})
+    return FileResult(str(path), str(out), True, None,
+                      W=summary.get("W"), mechanism_class=summary.get("mechanism_class"),
+                      balancing_force_plans=summary.get("balancing_force_plans"),
+                      balancing_force_lever=summary.get("balancing_force_lever"),
+                      discrepancy_percent=summary.get("discrepancy_percent"),
+                      diagrams_passed=summary.get("diagrams_passed"),
+                      written=tuple(str(out / n) for n in outputs), kept=True)
 
 
 def process_file(path: str | os.PathLike[str], out_dir: str | os.PathLike[str],
-                 lang: str = "en") -> FileResult:
-    """Analyse one file and write its sheets, results.json and note.pdf.
+                 lang: str = "en", force: bool = True) -> FileResult:
+    """Analyse one file and write its sheets, results.json and note.pdf, then
+    its manifest; with `force` False, a file whose manifest matches is kept.
 
     Never raises: an `MmtError` becomes the result's message; anything else
     (a bug) too, named by its type, so one file cannot stop the batch."""
+    from .cli_errors import quiet_numerics
+
+    with quiet_numerics():
+        return _process_file(str(path), Path(out_dir), lang, force)
+
+
+def _process_file(path: str, out: Path, lang: str, force: bool) -> FileResult:
+    from .files import ensure_dir, finite_json, write_text_atomic
     from .note import write_note
     from .results_json import results as results_json
     from .sheets.compose import available_sheets, write_sheets
     from .solution import solve
     from .spec import load
 
+    if not force:
+        kept = _kept(path, out, lang)
+        if kept is not None:
+            return kept
     t0 = time.perf_counter()
     stages: dict[str, float] = {}
     written: list[str] = []
-    out = Path(out_dir)
     info: dict = {}
     problems: list[str] = []
 
@@ -117,21 +244,33 @@ def process_file(path: str | os.PathLike[str], out_dir: str | os.PathLike[str],
         except MmtError as err:
             problems.append(f"{name}: {err}")
         except Exception as err:  # a bug: reported, the batch goes on
-            problems.append(f"{name}: internal error {type(err).__name__}: {err}")
+            problems.append(f"{name}: internal error ({type(err).__name__}: "
+                            f"{shown(err, 300)}), please report it")
         finally:
             stages[name] = stages.get(name, 0.0) + time.perf_counter() - t
         return None
 
+    digest = _sha256(path)  # before the analysis: what the manifest vouches for
     analysis = stage("analysis", lambda: solve(load(path)))
     if analysis is None:
         return FileResult(str(path), str(out), False, problems[0],
                           seconds=time.perf_counter() - t0, stages=stages)
-    out.mkdir(parents=True, exist_ok=True)
+
+    def prepare() -> None:
+        ensure_dir(out)
+        try:  # a redone item is not finished until its new manifest is written
+            (out / MANIFEST_NAME).unlink()
+        except FileNotFoundError:
+            pass
+
+    stage("output folder", prepare)
+    if problems:
+        return FileResult(str(path), str(out), False, problems[0],
+                          seconds=time.perf_counter() - t0, stages=stages)
 
     def results() -> None:
         data = results_json(analysis)
-        target = out / "results.json"
-        target.write_text(json.dumps(data, indent=1, allow_nan=False) + "\n", encoding="utf-8")
+        target = write_text_atomic(out / "results.json", finite_json(data, path))
         written.append(str(target))
         info["json"] = data
 
@@ -152,48 +291,87 @@ def process_file(path: str | os.PathLike[str], out_dir: str | os.PathLike[str],
     diagrams = data.get("diagrams", {})
     if "problem" in forces:
         problems.append(f"forces: {forces['problem']}")
+    summary = dict(W=st.get("W"), mechanism_class=st.get("mechanism_class"),
+                   balancing_force_plans=forces.get("balancing_force_plans"),
+                   balancing_force_lever=forces.get("balancing_force_lever"),
+                   discrepancy_percent=forces.get("discrepancy_percent"),
+                   diagrams_passed=diagrams.get("passed"))
+    if not problems and digest is not None:
+        def manifest() -> None:
+            data = {"schema": MANIFEST_SCHEMA, "input": path, "input_sha256": digest,
+                    "settings": _settings(lang),
+                    "outputs": {Path(w).name: Path(w).stat().st_size for w in written},
+                    "summary": summary}
+            write_text_atomic(out / MANIFEST_NAME, finite_json(data, path))
+
+        stage("manifest", manifest)
     return FileResult(
-        str(path), str(out), not problems, "; ".join(problems) or None,
-        W=st.get("W"), mechanism_class=st.get("mechanism_class"),
-        balancing_force_plans=forces.get("balancing_force_plans"),
-        balancing_force_lever=forces.get("balancing_force_lever"),
-        discrepancy_percent=forces.get("discrepancy_percent"),
-        diagrams_passed=diagrams.get("passed"),
+        str(path), str(out), not problems, "; ".join(problems) or None, **summary,
         seconds=time.perf_counter() - t0, written=tuple(written), stages=stages)
 
 
-def _run(args: tuple[str, str, str]) -> FileResult:
+def _run(args: tuple[str, str, str, bool]) -> FileResult:
     return process_file(*args)
 
 
+def _worker_ignores_ctrl_c() -> None:
+    # Ctrl-C is the parent's to handle: workers print no traceback of their own.
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 def run_batch(files: Sequence[Path], out: str | os.PathLike[str], *, jobs: int | None = None,
-              lang: str = "en", progress: Callable[[FileResult], None] | None = None
-              ) -> list[FileResult]:
+              lang: str = "en", progress: Callable[[FileResult], None] | None = None,
+              force: bool = True) -> list[FileResult]:
     """Process `files` with `jobs` processes (default: every core); results in
-    the order of `files`. `progress(result)` is called as each file finishes."""
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
+    the order of `files`. `progress(result)` is called as each file finishes.
+    With `force` False a file finished by an earlier run (its manifest matches,
+    its outputs are there) is kept rather than redone."""
+    from .files import ensure_dir
+
+    out = ensure_dir(out)
     targets = plan_outputs(list(files), out)
-    tasks = [(str(f), str(t), lang) for f, t in zip(files, targets)]
+    results: list[FileResult | None] = [None] * len(targets)
+    tasks: list[tuple[str, str, str, bool]] = []
+    index: list[int] = []
+    for i, (f, t) in enumerate(zip(files, targets)):
+        if not _inside(t, out):  # OUT/x is a symbolic link to elsewhere
+            results[i] = FileResult(str(f), str(t), False,
+                                    f"{shown(t)} leads outside {shown(out)} (a symbolic link): "
+                                    "nothing written there; remove the link")
+            if progress:
+                progress(results[i])  # type: ignore[arg-type]
+            continue
+        tasks.append((str(f), str(t), lang, force))
+        index.append(i)
     jobs = max(1, jobs or os.cpu_count() or 1)
-    results: list[FileResult | None] = [None] * len(tasks)
-    if jobs == 1 or len(tasks) == 1:
-        for i, task in enumerate(tasks):
+    if jobs == 1 or len(tasks) <= 1:
+        for i, task in zip(index, tasks):
             results[i] = _run(task)
             if progress:
                 progress(results[i])  # type: ignore[arg-type]
     else:
-        with ProcessPoolExecutor(max_workers=min(jobs, len(tasks))) as pool:
-            futures = {pool.submit(_run, task): i for i, task in enumerate(tasks)}
+        pool = ProcessPoolExecutor(max_workers=min(jobs, len(tasks)),
+                                   initializer=_worker_ignores_ctrl_c)
+        try:
+            futures = {pool.submit(_run, task): i for i, task in zip(index, tasks)}
             for fut in as_completed(futures):
                 i = futures[fut]
                 try:
                     results[i] = fut.result()
                 except Exception as err:  # the worker process itself died
-                    results[i] = FileResult(tasks[i][0], tasks[i][1], False,
-                                            f"worker failed: {type(err).__name__}: {err}")
+                    results[i] = FileResult(str(files[i]), str(targets[i]), False,
+                                            f"worker failed: {type(err).__name__}: "
+                                            f"{shown(err, 300)}")
                 if progress:
                     progress(results[i])  # type: ignore[arg-type]
+        except BaseException:
+            # Ctrl-C: drop what has not started, stop the workers (their
+            # outputs are atomic: nothing is left half-written)
+            pool.shutdown(wait=False, cancel_futures=True)
+            for proc in list(getattr(pool, "_processes", {}).values()):
+                proc.terminate()
+            raise
+        pool.shutdown(wait=True)
     return [r for r in results if r is not None]
 
 
@@ -205,12 +383,21 @@ def _num(x: float | None, digits: int = 6) -> str:
     return f"{float(x) + 0.0:.{digits}g}"
 
 
-def summary_rows(results: Sequence[FileResult]) -> list[list[str]]:
+def summary_rows(results: Sequence[FileResult], out: str | os.PathLike[str] | None = None
+                 ) -> list[list[str]]:
+    """One row per file: its output folder (relative to `out` when given), status
+    ("done", "kept" from an earlier run, "FAILED") and numbers."""
     rows = []
     for r in results:
         passed = "-" if r.diagrams_passed is None else ("passed" if r.diagrams_passed else "NOT passed")
-        rows.append([Path(r.out_dir).name,
-                     "done" if r.ok else "FAILED",
+        name = Path(r.out_dir).name
+        if out is not None:
+            try:
+                name = Path(r.out_dir).relative_to(out).as_posix()
+            except ValueError:
+                pass
+        rows.append([shown(name, 80),
+                     "kept" if r.kept else "done" if r.ok else "FAILED",
                      "-" if r.W is None else str(r.W),
                      "-" if r.mechanism_class is None else str(r.mechanism_class),
                      _num(r.balancing_force_plans), _num(r.balancing_force_lever),
@@ -218,18 +405,21 @@ def summary_rows(results: Sequence[FileResult]) -> list[list[str]]:
     return rows
 
 
-def summary_table(results: Sequence[FileResult]) -> str:
-    return table(SUMMARY_HEADERS, summary_rows(results))
+def summary_table(results: Sequence[FileResult], out: str | os.PathLike[str] | None = None
+                  ) -> str:
+    return table(SUMMARY_HEADERS, summary_rows(results, out))
 
 
 def write_summary_csv(results: Sequence[FileResult], target: str | os.PathLike[str]) -> Path:
-    target = Path(target)
-    with target.open("w", newline="", encoding="utf-8") as fh:
-        w = csv.writer(fh)
-        w.writerow(["path", *SUMMARY_HEADERS[1:], "message"])
-        for r, row in zip(results, summary_rows(results)):
-            w.writerow([r.path, *row[1:], r.message or ""])
-    return target
+    """The summary with every file's path and, for a failure, its message (atomically)."""
+    from .files import write_text_atomic
+
+    buffer = io.StringIO(newline="")
+    w = csv.writer(buffer)
+    w.writerow(["path", *SUMMARY_HEADERS[1:], "message"])
+    for r, row in zip(results, summary_rows(results)):
+        w.writerow([r.path, *row[1:], r.message or ""])
+    return write_text_atomic(target, buffer.getvalue())
 
 
 def failures(results: Sequence[FileResult]) -> Iterator[FileResult]:

@@ -21,9 +21,9 @@ from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 
-from .errors import MmtError, SpecError
+from .errors import MmtError, SpecError, shown
 from .scales import format_number, series
-from .spec import parse_toml, read_text
+from .spec import NAME_MAX, parse_toml, read_text, show_value
 
 if TYPE_CHECKING:  # pragma: no cover
     from .forces import ForceAnalysis
@@ -31,6 +31,21 @@ if TYPE_CHECKING:  # pragma: no cover
     from .solution import Solution
 
 DEFAULT_TOLERANCE_PERCENT = 5.0
+
+# Input limits of an answers file (README, "Input limits"): a plan's scale μ,
+# the tolerance, any value, and how many values one file may give.
+MU_MIN, MU_MAX = 1e-9, 1e9
+TOLERANCE_MAX = 100.0
+VALUE_MAX = 1e15
+VALUES_MAX = 2000
+
+LIMITS: dict[str, str] = {  # the answers file's rows of README's "Input limits"
+    "answers: mu_V, mu_a": f"{MU_MIN:g} to {MU_MAX:g}",
+    "answers: tolerance_percent, --tolerance": f"above 0, at most {TOLERANCE_MAX:g}",
+    "answers: any value": f"finite, at most {VALUE_MAX:g} in size",
+    "answers: values in one file": f"at most {VALUES_MAX:,}",
+    "answers: names (points, links, segments, reactions)": "1 to 32 printable characters",
+}
 
 # An exact value this small against the largest of its kind is zero: the
 # position's ε1 of a uniformly turning crank, a point on the frame.
@@ -215,7 +230,7 @@ def _num(x: float) -> str:
 
 def load_answers(path: str | Path, analysis: "Solution") -> Answers:
     """Read an answers file and check every name in it against the mechanism."""
-    return loads_answers(read_text(path), analysis, str(path))
+    return loads_answers(read_text(path, "answers file"), analysis, str(path))
 
 
 def loads_answers(text: str, analysis: "Solution", path: str = "<string>") -> Answers:
@@ -243,19 +258,39 @@ class _Reader:
         return table
 
     def number(self, value: Any, entry: str, *, positive: bool = False,
-               non_negative: bool = False, signed_key: str = "") -> float:
-        if (isinstance(value, bool) or not isinstance(value, (int, float))
-                or not math.isfinite(value)):
-            raise self.fail(entry, f"must be a number, not {value!r}",
+               non_negative: bool = False, signed_key: str = "",
+               minimum: float | None = None, maximum: float = VALUE_MAX) -> float:
+        x = None
+        if not isinstance(value, bool) and isinstance(value, (int, float)):
+            try:
+                x = float(value)
+            except OverflowError:  # an integer beyond any float
+                x = math.inf
+        if x is None or not math.isfinite(x):
+            raise self.fail(entry, f"must be a number, not {show_value(value)}",
                             f"write {entry.rsplit('.', 1)[-1]} = <number>, e.g. 1.23")
-        if positive and value <= 0:
-            raise self.fail(entry, f"must be positive, not {value}", "give a value above zero")
-        if non_negative and value < 0:
+        if positive and x <= 0:
+            raise self.fail(entry, f"must be positive, not {x:g}", "give a value above zero")
+        if non_negative and x < 0:
             fix = "give the magnitude"
             if signed_key:
                 fix += f", or write the signed value under {signed_key}"
-            raise self.fail(entry, f"is a magnitude and must not be negative, not {value}", fix)
-        return float(value)
+            raise self.fail(entry, f"is a magnitude and must not be negative, not {x:g}", fix)
+        if abs(x) > maximum or (minimum is not None and abs(x) < minimum):
+            span = (f"between {minimum:g} and {maximum:g}" if minimum is not None
+                    else f"at most {maximum:g} in size")
+            raise self.fail(entry, f"is {x:g}, out of the range this tool accepts: {span}",
+                            "check the value and its unit; README lists the input limits")
+        return x
+
+    def key(self, name: str, entry: str) -> str:
+        """A name from the file (a point, a link, a segment, a reaction): short and printable."""
+        if len(name) > NAME_MAX or not name.isprintable() or not name:
+            raise self.fail(f"{entry}.{shown(name, NAME_MAX)}",
+                            f"'{shown(name, NAME_MAX)}' is not a name this mechanism uses",
+                            f"write a point, link, segment or reaction name (at most {NAME_MAX} "
+                            "printable characters)")
+        return name
 
     def index(self, table: dict, entry: str, default: int | None = None) -> int:
         n = self.analysis.mechanism.study.positions
@@ -280,7 +315,7 @@ class _Reader:
             check = self.check_keys(data["check"], "check", "check")
             if "tolerance_percent" in check:
                 tolerance = self.number(check["tolerance_percent"], "check.tolerance_percent",
-                                        positive=True)
+                                        positive=True, maximum=TOLERANCE_MAX)
         values: list[Answer] = []
         seen: dict[int, str] = {}
         for k, table in enumerate(_as_list(data.get("position", [])), start=1):
@@ -289,6 +324,9 @@ class _Reader:
         for k, table in enumerate(_as_list(data.get("forces", [])), start=1):
             entry = "forces" if not isinstance(data["forces"], list) else f"forces[{k}]"
             values += self.forces(table, entry)
+        if len(values) > VALUES_MAX:
+            raise self.fail("file", f"gives {len(values)} values, more than the {VALUES_MAX} "
+                            "this tool checks in one file", "split the answers into several files")
         if not values:
             raise self.fail("file", "gives no value to check",
                             "add a [[position]] with e.g. velocity = { B = 1.23 }, or [forces]")
@@ -307,10 +345,10 @@ class _Reader:
         except MmtError as err:
             raise self.fail(f"{entry}.index", f"position {index} has no plans: {err}",
                             "check a position where the mechanism assembles") from None
-        mu_v = (self.number(table["mu_V"], f"{entry}.mu_V", positive=True)
-                if "mu_V" in table else None)
-        mu_a = (self.number(table["mu_a"], f"{entry}.mu_a", positive=True)
-                if "mu_a" in table else None)
+        mu_v = (self.number(table["mu_V"], f"{entry}.mu_V", positive=True, minimum=MU_MIN,
+                            maximum=MU_MAX) if "mu_V" in table else None)
+        mu_a = (self.number(table["mu_a"], f"{entry}.mu_a", positive=True, minimum=MU_MIN,
+                            maximum=MU_MAX) if "mu_a" in table else None)
         out = []
         for key, (kind, signed) in _POSITION_TABLES.items():
             if key not in table:
@@ -320,8 +358,11 @@ class _Reader:
             if not isinstance(values, dict):
                 raise self.fail(where, "must be a table of values",
                                 f"write {key} = {{ {_example(kind)} }}")
+            if len(values) > VALUES_MAX:
+                raise self.fail(where, f"gives {len(values)} values, more than the {VALUES_MAX} "
+                                "this tool checks in one file", "give the values you measured")
             for name, raw in values.items():
-                name = str(name)
+                name = self.key(str(name), where)
                 value = self.number(raw, f"{where}.{name}", non_negative=not signed,
                                     signed_key=kind if kind in ("omega", "eps") else "")
                 mu, other_mu = _scales(kind, mu_v, mu_a)
@@ -404,7 +445,12 @@ class _Reader:
             if not isinstance(reactions, dict):
                 raise self.fail(where, "must be a table of values",
                                 "write reactions = { R12 = 15100, R03 = 15300 }")
+            if len(reactions) > VALUES_MAX:
+                raise self.fail(where, f"gives {len(reactions)} values, more than the "
+                                f"{VALUES_MAX} this tool checks in one file",
+                                "give the reactions you found")
             for name, raw in reactions.items():
+                name = self.key(str(name), where)
                 value = self.number(raw, f"{where}.{name}", non_negative=True)
                 self.reaction(name, fa, f"{where}.{name}")
                 out.append(Answer(f"{where}.{name}", index, "reaction", name, value, False))

@@ -13,10 +13,20 @@ import click
 from .cli_errors import reports_errors
 
 
+def _tolerance(ctx: click.Context, param: click.Parameter, value: float | None) -> float | None:
+    """A finite percentage in (0, 100] (click's FloatRange lets nan through)."""
+    from .check import TOLERANCE_MAX
+
+    if value is not None and not (0 < value <= TOLERANCE_MAX):  # False for nan
+        raise click.BadParameter(f"{value} is not a percentage in (0, {TOLERANCE_MAX:g}]; "
+                                 "give e.g. --tolerance 5")
+    return value
+
+
 @click.command()
 @click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
 @click.argument("answers", type=click.Path(dir_okay=False, path_type=Path))
-@click.option("--tolerance", type=click.FloatRange(min=0, min_open=True), default=None,
+@click.option("--tolerance", type=float, default=None, callback=_tolerance,
               metavar="PERCENT",
               help="Pass/fail limit in percent (default: the answers file's "
                    "check.tolerance_percent, else 5).")

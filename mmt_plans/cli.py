@@ -1,9 +1,9 @@
 """`mmt-plans`: click commands. An `MmtError` becomes one clean message and
-exit code 2; anything else is a bug and keeps its traceback."""
+exit code 2; anything else is a bug: exit code 3 and one line, the traceback
+only with --debug (cli_errors.reports_errors)."""
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 import click
@@ -13,8 +13,13 @@ from .cli_errors import reports_errors
 
 @click.group()
 @click.version_option(package_name="mmt_plans")
-def main() -> None:
-    """Graph-analytic analysis of planar linkages: plans, forces, A1 sheets."""
+@click.option("--debug", is_flag=True,
+              help="Show the traceback of an internal error (also: MMT_PLANS_DEBUG=1).")
+def main(debug: bool) -> None:
+    """Graph-analytic analysis of planar linkages: plans, forces, A1 sheets.
+
+    Exit codes: 0 done, 1 some check or batch file failed, 2 bad input or
+    unwritable output, 3 internal error (a bug), 130 interrupted."""
 
 
 @main.command()
@@ -28,18 +33,21 @@ def main() -> None:
 @reports_errors
 def analyze(file: Path, json_out: Path | None, quiet: bool, partial_turn: bool) -> None:
     """Structural, kinematic (and force) analysis of FILE."""
+    from .files import check_output, finite_json, write_text_atomic
     from .report import text_report
     from .results_json import results as results_json
     from .solution import solve
     from .spec import load
 
+    if json_out is not None:
+        check_output(json_out)
     analysis = solve(load(file), partial_turn=partial_turn)
     results = results_json(analysis)
+    text = finite_json(results, str(file)) if json_out is not None else ""
     if not quiet:
         click.echo(text_report(analysis))
     if json_out is not None:
-        json_out.parent.mkdir(parents=True, exist_ok=True)
-        json_out.write_text(json.dumps(results, indent=1, allow_nan=False) + "\n", encoding="utf-8")
+        write_text_atomic(json_out, text)
         if not quiet:
             click.echo(f"results written to {json_out}")
 

@@ -6,6 +6,23 @@ else reaching the CLI is a bug and keeps its traceback.
 
 from __future__ import annotations
 
+# A part of a message (a file name, an entry, a name from the file) longer
+# than this is cut: a 1 MB key must not become a 1 MB message.
+MESSAGE_PART_MAX = 1000
+
+
+def shown(text: object, limit: int = MESSAGE_PART_MAX) -> str:
+    """`text` as it may appear in a message: control and format characters
+    (a newline, NUL, a bidirectional override) escaped as \\n, \\x00, \\u202e,
+    and cut to `limit` characters with "..." after it."""
+    text = str(text)
+    if not text.isprintable():
+        text = "".join(ch if ch.isprintable() else ch.encode("unicode_escape").decode("ascii")
+                       for ch in text)
+    if len(text) > limit:
+        text = text[:limit] + "..."
+    return text
+
 
 class MmtError(Exception):
     """Root of every error mmt_plans reports to a user."""
@@ -18,10 +35,12 @@ class SpecError(MmtError, ValueError):
     """
 
     def __init__(self, path: str, entry: str, problem: str, fix: str = "") -> None:
+        # Names from the file reach the message only escaped: no raw newline,
+        # NUL or terminal control sequence from an input is ever printed.
         self.path, self.entry, self.problem, self.fix = str(path), entry, problem, fix
-        text = f"{self.path}: {entry}: {problem}"
+        text = f"{shown(path)}: {shown(entry)}: {shown(problem)}"
         if fix:
-            text += f"\n  fix: {fix}"
+            text += f"\n  fix: {shown(fix)}"
         super().__init__(text)
 
 

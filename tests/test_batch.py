@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from mmt_plans.batch import BatchError, find_files, plan_outputs, run_batch
+from mmt_plans.batch import MANIFEST_NAME, BatchError, find_files, plan_outputs, run_batch
 from mmt_plans.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -83,4 +83,96 @@ def test_repeated_stems_get_distinct_folders(tmp_path):
     b = tmp_path / "seed003" / "task01_v1.toml"
     outs = plan_outputs([a, b], tmp_path / "out")
     assert outs[0] != outs[1]
-    assert [o.name for o in outs] == ["seed002-task01_v1", "seed003-task01_v1"]
+    # clashing stems keep their path relative to the folder the files share
+    assert [o.relative_to(tmp_path / "out").as_posix() for o in outs] == \
+        ["seed002/task01_v1", "seed003/task01_v1"]
+
+
+# --- hygiene: relative paths, never outside OUT, resume, atomic outputs -----------------
+
+def test_clashing_stems_keep_their_relative_paths(tmp_path):
+    for seed in ("seed002", "seed003"):
+        (tmp_path / "in" / seed).mkdir(parents=True)
+        shutil.copy(SMALL, tmp_path / "in" / seed / "task.toml")
+    out = tmp_path / "out"
+    results = run_batch(find_files([tmp_path / "in"]), out, jobs=1)
+    assert [Path(r.out_dir).relative_to(out).as_posix() for r in results] == \
+        ["seed002/task", "seed003/task"]
+    assert all(r.ok for r in results)
+    assert (out / "seed002" / "task" / "results.json").is_file()
+
+
+def test_no_output_escapes_out(tmp_path):
+    files = [tmp_path / "a" / "...toml", tmp_path / "a" / "..toml", tmp_path / "b" / "x.toml",
+             tmp_path / "c" / "x.toml"]
+    out = tmp_path / "deep" / "out"
+    for target in plan_outputs(files, out):
+        rel = target.relative_to(out)
+        assert ".." not in rel.parts and "." not in rel.parts and not rel.is_absolute()
+    assert len(set(plan_outputs(files, out))) == len(files)
+
+
+def test_a_symbolic_link_out_of_out_is_refused(tmp_path):
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "offset_slider_crank").symlink_to(elsewhere)
+    [r] = run_batch([SMALL], out, jobs=1)
+    assert not r.ok and "leads outside" in r.message
+    assert list(elsewhere.iterdir()) == []
+
+
+def test_a_second_run_keeps_what_is_done_and_force_redoes_it(tmp_path):
+    src = tmp_path / "in"
+    src.mkdir()
+    shutil.copy(SMALL, src / "a.toml")
+    (src / "b.toml").write_text('title = "broken"\n[drive\n', encoding="utf-8")
+    out = tmp_path / "out"
+    runner = CliRunner()
+    first = runner.invoke(main, ["batch", str(src), "-o", str(out), "--jobs", "1"])
+    assert first.exit_code == 1
+    manifest = json.loads((out / "a" / MANIFEST_NAME).read_text(encoding="utf-8"))
+    assert manifest["outputs"].keys() >= {"results.json", "sheet1.svg", "note.pdf"}
+    assert len(manifest["input_sha256"]) == 64
+    assert not (out / "b").exists()
+    stamp = (out / "a" / "note.pdf").stat().st_mtime_ns
+
+    second = runner.invoke(main, ["batch", str(src), "-o", str(out), "--jobs", "1"])
+    assert second.exit_code == 1  # b still fails, and is named
+    assert "b.toml" in second.stderr and "1 kept from an earlier run" in second.stdout
+    assert (out / "a" / "note.pdf").stat().st_mtime_ns == stamp
+    with (out / "summary.csv").open(encoding="utf-8") as fh:
+        rows = {Path(r["path"]).stem: r for r in csv.DictReader(fh)}
+    assert rows["a"]["status"] == "kept" and rows["a"]["W"] == "1"
+    assert rows["b"]["status"] == "FAILED" and "TOML" in rows["b"]["message"]
+
+    forced = runner.invoke(main, ["batch", str(src), "-o", str(out), "--jobs", "1", "--force"])
+    assert "kept" not in forced.stdout
+    assert (out / "a" / "note.pdf").stat().st_mtime_ns != stamp
+
+
+@pytest.mark.parametrize("change", ["input", "output gone"])
+def test_a_changed_item_is_redone(tmp_path, change):
+    src = tmp_path / "a.toml"
+    shutil.copy(SMALL, src)
+    out = tmp_path / "out"
+    [first] = run_batch([src], out, jobs=1, force=False)
+    assert first.ok and not first.kept
+    [again] = run_batch([src], out, jobs=1, force=False)
+    assert again.kept and again.W == 1
+    if change == "input":
+        src.write_text(src.read_text(encoding="utf-8").replace("mass = 5", "mass = 6"),
+                       encoding="utf-8")
+    else:
+        (out / "a" / "sheet1.pdf").unlink()
+    [redone] = run_batch([src], out, jobs=1, force=False)
+    assert redone.ok and not redone.kept
+    assert (out / "a" / "sheet1.pdf").is_file()
+
+
+def test_batch_leaves_no_temporary_file(tmp_path):
+    out = tmp_path / "out"
+    run_batch([SMALL], out, jobs=1)
+    names = [p.name for p in out.rglob("*")]
+    assert not [n for n in names if ".tmp-" in n], names

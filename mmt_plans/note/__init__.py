@@ -65,9 +65,8 @@ def note_svgs(analysis: "Solution", lang: Language = "en") -> list[str]:
 
 def write_note(analysis: "Solution", target: str | os.PathLike[str],
                lang: Language = "en") -> Path:
-    """Write the note as one multi-page A4 PDF at `target`."""
+    """Write the note as one multi-page A4 PDF at `target` (atomically, with
+    fixed dates: note/pdf.py)."""
     from .pdf import svgs_to_pdf
 
-    target = Path(target)
-    target.parent.mkdir(parents=True, exist_ok=True)
-    return svgs_to_pdf(note_svgs(analysis, lang), target)
+    return svgs_to_pdf(note_svgs(analysis, lang), Path(target))

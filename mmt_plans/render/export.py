@@ -1,19 +1,23 @@
 """SVG to PDF (vector) and PNG through cairosvg.
 
 cairosvg (and Cairo under it) is imported inside the functions, so that the
-rest of mmt_plans works on a machine without Cairo.
+rest of mmt_plans works on a machine without Cairo. Files are written
+atomically (files.atomic_path); a PDF goes through note/pdf.py's writer,
+which fixes the document's dates, so that two runs give the same bytes.
 """
 
 from __future__ import annotations
 
 import functools
+import io
 import os
 import re
 import shutil
 import subprocess
 from pathlib import Path
+from typing import Any, Iterable
 
-__all__ = ["svg_to_pdf", "svg_to_png", "svg_to_pdf_bytes", "svg_to_png_bytes",
+__all__ = ["svg_to_pdf", "svg_to_png", "svg_to_pdf_bytes", "svg_to_png_bytes", "svgs_to_pdf",
            "installed_families", "prefer_installed_font"]
 
 SvgSource = str | bytes | os.PathLike[str]
@@ -75,27 +79,27 @@ def _svg_bytes(svg: SvgSource) -> bytes:
 
 def svg_to_pdf(svg: SvgSource, target: str | os.PathLike[str]) -> Path:
     """Write a vector PDF of the page. `svg` is SVG text (str/bytes) or a file path."""
-    import cairosvg
-
-    target = Path(target)
-    cairosvg.svg2pdf(bytestring=_svg_bytes(svg), write_to=str(target))
-    return target
+    return svgs_to_pdf([_svg_bytes(svg).decode("utf-8")], target)
 
 
 def svg_to_png(svg: SvgSource, target: str | os.PathLike[str], dpi: float = 96.0) -> Path:
     """Write a PNG of the page at `dpi` (the SVG is sized in mm, so dpi sets pixels)."""
     import cairosvg
 
+    from ..files import atomic_path
+
     target = Path(target)
-    cairosvg.svg2png(bytestring=_svg_bytes(svg), write_to=str(target), dpi=dpi)
+    data = _svg_bytes(svg)
+    with atomic_path(target) as tmp:
+        cairosvg.svg2png(bytestring=data, write_to=str(tmp), dpi=dpi)
     return target
 
 
 def svg_to_pdf_bytes(svg: SvgSource) -> bytes:
-    """A vector PDF of the page, as bytes."""
-    import cairosvg
-
-    return cairosvg.svg2pdf(bytestring=_svg_bytes(svg))
+    """A vector PDF of the page, as bytes (the same bytes svg_to_pdf writes)."""
+    out = io.BytesIO()
+    _pdf([_svg_bytes(svg).decode("utf-8")], out)
+    return out.getvalue()
 
 
 def svg_to_png_bytes(svg: SvgSource, dpi: float = 96.0) -> bytes:
@@ -103,3 +107,53 @@ def svg_to_png_bytes(svg: SvgSource, dpi: float = 96.0) -> bytes:
     import cairosvg
 
     return cairosvg.svg2png(bytestring=_svg_bytes(svg), dpi=dpi)
+
+
+def svgs_to_pdf(svgs: Iterable[str], target: str | os.PathLike[str]) -> Path:
+    """Write the SVG documents `svgs` (text) as the pages of one vector PDF,
+    atomically (files.atomic_path)."""
+    from ..files import atomic_path
+
+    target = Path(target)
+    with atomic_path(target) as tmp:
+        _pdf(svgs, str(tmp))
+    return target
+
+
+def _pdf(svgs: Iterable[str], target: Any) -> None:
+    """The pages into one PDF at `target` (a file name or a binary file object).
+
+    cairosvg converts one SVG document to one page: its `Surface` creates the
+    Cairo surface in `_create_surface` and draws the tree into it. A subclass
+    of its `PDFSurface` that hands out one shared `cairocffi.PDFSurface`
+    instead draws every page into the same PDF document; `show_page()` ends
+    each page, `set_size()` sizes the next one. The creation and modification
+    dates are files.document_date() (SOURCE_DATE_EPOCH, else a fixed date),
+    not the clock, so the same pages give the same bytes."""
+    import cairocffi
+    from cairosvg.parser import Tree
+    from cairosvg.surface import PDFSurface
+
+    from ..files import document_date
+
+    document = cairocffi.PDFSurface(target, 1, 1)
+    date = document_date()
+    for key in (cairocffi.PDF_METADATA_CREATE_DATE, cairocffi.PDF_METADATA_MOD_DATE):
+        document.set_metadata(key, date)
+
+    class PageOfDocument(PDFSurface):
+        def _create_surface(self, width: float, height: float):
+            document.set_size(width, height)
+            return document, width, height
+
+    pages = 0
+    try:
+        for svg in svgs:
+            tree = Tree(bytestring=prefer_installed_font(svg).encode("utf-8"))
+            PageOfDocument(tree, None, 96)
+            document.show_page()
+            pages += 1
+        if pages == 0:
+            raise ValueError("a PDF needs at least one page")
+    finally:
+        document.finish()

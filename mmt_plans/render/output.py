@@ -49,7 +49,8 @@ def render(recording: RecordingBackend, fmt: str, title: str | None = None) -> b
 
 def write_drawing(recording: RecordingBackend, target: str | os.PathLike[str], fmt: str,
                   title: str | None = None) -> Path:
-    """Write the recorded drawing to `target` in format `fmt`; returns the path."""
-    target = Path(target)
-    target.write_bytes(render(recording, fmt, title))
-    return target
+    """Write the recorded drawing to `target` in format `fmt`, atomically (a
+    temporary name in the same folder, renamed when complete); returns the path."""
+    from ..files import write_bytes_atomic
+
+    return write_bytes_atomic(Path(target), render(recording, fmt, title))

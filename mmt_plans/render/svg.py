@@ -73,9 +73,10 @@ class SvgBackend(Backend):
         return '<?xml version="1.0" encoding="utf-8" ?>\n' + self._dwg.tostring() + "\n"
 
     def save(self, path: str | os.PathLike[str]) -> Path:
-        path = Path(path)
-        path.write_text(self.to_string(), encoding="utf-8")
-        return path
+        """Write the SVG to `path` atomically (files.write_text_atomic)."""
+        from ..files import write_text_atomic
+
+        return write_text_atomic(path, self.to_string())
 
     # --- number formatting and the one y flip --------------------------------
 

@@ -1,4 +1,7 @@
-"""Writing the A1 sheets of a Solution to files, in every format of render.output."""
+"""Writing the A1 sheets of a Solution to files, in every format of render.output.
+
+Each file is written atomically (files.py): an interrupted run leaves no
+half-written sheet. PDFs carry a fixed date, so two runs give the same bytes."""
 
 from __future__ import annotations
 
@@ -8,6 +11,7 @@ from typing import Any, Callable, Iterable, Sequence
 
 from ..drawing.page import Page
 from ..errors import MmtError
+from ..files import ensure_dir
 from ..i18n import Language
 from ..render.output import FORMATS, write_drawing
 from ..render.recording import RecordingBackend
@@ -49,8 +53,7 @@ def write_sheets(
             f"sheet {', '.join(map(str, missing))} does not exist; the sheets are "
             f"{', '.join(map(str, sorted(composers)))}"
         )
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
+    out = ensure_dir(out_dir)
     written: list[Path] = []
     page = Page.of("A1")
     for n in wanted:

@@ -33,10 +33,12 @@ def _formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[st
 def draw(file: Path, out_dir: Path, formats: tuple[str, ...], lang: str, sheet: str,
          partial_turn: bool) -> None:
     """Draw the A1 sheets of FILE."""
+    from ..files import check_output
     from ..solution import solve
     from ..spec import load
     from .compose import available_sheets, write_sheets
 
+    check_output(out_dir, folder=True)
     numbers = sorted(available_sheets()) if sheet == "all" else [int(sheet)]
     solution = solve(load(file), partial_turn=partial_turn, forces=2 in numbers)
     for path in write_sheets(solution, out_dir, formats, lang, numbers):  # type: ignore[arg-type]
