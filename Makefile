@@ -15,20 +15,23 @@ $(STAMP): pyproject.toml
 	$(BIN)/pip install -q -e '.[test]'
 	touch $(STAMP)
 
-# The drafting font (ISO 3098 / GOST 2.304 look). Optional: the sheets fall
-# back to a font with Cyrillic when it cannot be installed.
+# The fonts: osifont, the drafting font of the sheets (ISO 3098 / GOST 2.304,
+# with Cyrillic), and Liberation Serif, metric-compatible with Times New Roman,
+# for the note (seed 003 §III). Installed from Debian's packages where they
+# are missing; a machine without apt keeps its fallback fonts.
+FONT_PACKAGES := fonts-osifont fonts-liberation2
 fonts:
-	@fc-list 2>/dev/null | grep -qi osifont || \
+	@{ fc-list 2>/dev/null | grep -qi osifont && fc-list 2>/dev/null | grep -qi "liberation serif"; } || \
 	  { command -v apt-get >/dev/null && [ "$$(id -u)" = 0 ] && \
-	    (apt-get install -y -q fonts-osifont >/dev/null 2>&1 || \
-	     (apt-get update -q >/dev/null 2>&1 && apt-get install -y -q fonts-osifont >/dev/null 2>&1)) ; } || \
-	  echo "fonts-osifont not installed: sheets use the fallback font"
+	    (apt-get install -y -q $(FONT_PACKAGES) >/dev/null 2>&1 || \
+	     (apt-get update -q >/dev/null 2>&1 && apt-get install -y -q $(FONT_PACKAGES) >/dev/null 2>&1)) ; } || \
+	  echo "fonts not installed ($(FONT_PACKAGES)): sheets and note use fallback fonts"
 
 run: $(STAMP) fonts
 	$(BIN)/mmt-plans analyze $(SAMPLE) --json $(OUT)/results.json
 	$(BIN)/mmt-plans draw $(SAMPLE) -o $(OUT)
 
-test: $(STAMP)
+test: $(STAMP) fonts
 	$(BIN)/python -m pytest
 
 bench: $(STAMP)
@@ -43,7 +46,9 @@ fuzz: $(STAMP)
 	$(BIN)/python tests/fuzz.py --cases $(FUZZ_CASES) --seed $(FUZZ_SEED) --draw-every 20
 
 lint: $(STAMP)
-	$(BIN)/python -m compileall -q mmt_plans
+	$(BIN)/ruff check mmt_plans
+	$(BIN)/ruff format --check mmt_plans
+	$(BIN)/mypy mmt_plans
 
 clean:
 	rm -rf $(VENV) $(OUT) .pytest_cache

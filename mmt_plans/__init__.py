@@ -9,17 +9,29 @@ Mechanisms course project, exact and drawn.
 """
 
 from .errors import (
-                     AssemblyError,
-                     MmtError,
-                     PartialTurnError,
-                     SingularPlanError,
-                     SpecError,
-                     StructureError,
+    AssemblyError,
+    MmtError,
+    PartialTurnError,
+    SingularPlanError,
+    SpecError,
+    StructureError,
 )
 from .model import Mechanism
 from .solution import Solution, solve, sweep
 from .spec import load, loads
 
-__all__ = ["load", "loads", "solve", "sweep", "Mechanism", "Solution", "MmtError", "SpecError",
-           "StructureError", "AssemblyError", "SingularPlanError", "PartialTurnError"]
+__all__ = [
+    "load",
+    "loads",
+    "solve",
+    "sweep",
+    "Mechanism",
+    "Solution",
+    "MmtError",
+    "SpecError",
+    "StructureError",
+    "AssemblyError",
+    "SingularPlanError",
+    "PartialTurnError",
+]
 __version__ = "0.1.0"

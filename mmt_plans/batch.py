@@ -25,24 +25,48 @@ import math
 import os
 import signal
 import time
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
-from typing import Callable, Iterable, Iterator, Sequence
+from typing import TYPE_CHECKING, cast
 
 from .errors import MmtError, shown
 from .report import table
 
-__all__ = ["BatchError", "FileResult", "find_files", "plan_outputs", "process_file",
-           "run_batch", "summary_rows", "summary_table", "write_summary_csv",
-           "SUMMARY_HEADERS", "MANIFEST_NAME", "read_manifest"]
+if TYPE_CHECKING:  # pragma: no cover
+    from .solution import Solution
+
+__all__ = [
+    "BatchError",
+    "FileResult",
+    "find_files",
+    "plan_outputs",
+    "process_file",
+    "run_batch",
+    "summary_rows",
+    "summary_table",
+    "write_summary_csv",
+    "SUMMARY_HEADERS",
+    "MANIFEST_NAME",
+    "read_manifest",
+]
 
 MANIFEST_NAME = ".mmt-batch.json"
 MANIFEST_SCHEMA = "mmt_plans/batch-item@1"
 SUMMARY_NAME = "summary.csv"
 
-SUMMARY_HEADERS = ["file", "status", "W", "class", "F_bal plans N", "F_bal lever N",
-                   "discrepancy %", "5 % check", "time s"]
+SUMMARY_HEADERS = [
+    "file",
+    "status",
+    "W",
+    "class",
+    "F_bal plans N",
+    "F_bal lever N",
+    "discrepancy %",
+    "5 % check",
+    "time s",
+]
 
 
 class BatchError(MmtError, ValueError):
@@ -79,8 +103,9 @@ def find_files(inputs: Iterable[str | os.PathLike[str]]) -> list[Path]:
         if p.is_dir():
             found = _tomls_under(p)
             if not found:
-                raise BatchError(f"{shown(p)}: no *.toml files in this directory (searched "
-                                 "recursively)")
+                raise BatchError(
+                    f"{shown(p)}: no *.toml files in this directory (searched recursively)"
+                )
         elif p.exists():
             found = [p]
         else:
@@ -193,21 +218,38 @@ def _kept(path: str, out: Path, lang: str) -> FileResult | None:
         return None
     for name, size in outputs.items():
         target = out / name
-        if (not isinstance(name, str) or "/" in name or name.startswith(".")
-                or not target.is_file() or target.is_symlink() or target.stat().st_size != size):
+        if (
+            not isinstance(name, str)
+            or "/" in name
+            or name.startswith(".")
+            or not target.is_file()
+            or target.is_symlink()
+            or target.stat().st_size != size
+        ):
             return None
     summary = manifest.get("summary", {})
-    return FileResult(str(path), str(out), True, None,
-                      W=summary.get("W"), mechanism_class=summary.get("mechanism_class"),
-                      balancing_force_plans=summary.get("balancing_force_plans"),
-                      balancing_force_lever=summary.get("balancing_force_lever"),
-                      discrepancy_percent=summary.get("discrepancy_percent"),
-                      diagrams_passed=summary.get("diagrams_passed"),
-                      written=tuple(str(out / n) for n in outputs), kept=True)
+    return FileResult(
+        str(path),
+        str(out),
+        True,
+        None,
+        W=summary.get("W"),
+        mechanism_class=summary.get("mechanism_class"),
+        balancing_force_plans=summary.get("balancing_force_plans"),
+        balancing_force_lever=summary.get("balancing_force_lever"),
+        discrepancy_percent=summary.get("discrepancy_percent"),
+        diagrams_passed=summary.get("diagrams_passed"),
+        written=tuple(str(out / n) for n in outputs),
+        kept=True,
+    )
 
 
-def process_file(path: str | os.PathLike[str], out_dir: str | os.PathLike[str],
-                 lang: str = "en", force: bool = True) -> FileResult:
+def process_file(
+    path: str | os.PathLike[str],
+    out_dir: str | os.PathLike[str],
+    lang: str = "en",
+    force: bool = True,
+) -> FileResult:
     """Analyse one file and write its sheets, results.json and note.pdf, then
     its manifest; with `force` False, a file whose manifest matches is kept.
 
@@ -244,8 +286,10 @@ def _process_file(path: str, out: Path, lang: str, force: bool) -> FileResult:
         except MmtError as err:
             problems.append(f"{name}: {err}")
         except Exception as err:  # a bug: reported, the batch goes on
-            problems.append(f"{name}: internal error ({type(err).__name__}: "
-                            f"{shown(err, 300)}), please report it")
+            problems.append(
+                f"{name}: internal error ({type(err).__name__}: "
+                f"{shown(err, 300)}), please report it"
+            )
         finally:
             stages[name] = stages.get(name, 0.0) + time.perf_counter() - t
         return None
@@ -253,8 +297,9 @@ def _process_file(path: str, out: Path, lang: str, force: bool) -> FileResult:
     digest = _sha256(path)  # before the analysis: what the manifest vouches for
     analysis = stage("analysis", lambda: solve(load(path)))
     if analysis is None:
-        return FileResult(str(path), str(out), False, problems[0],
-                          seconds=time.perf_counter() - t0, stages=stages)
+        return FileResult(
+            str(path), str(out), False, problems[0], seconds=time.perf_counter() - t0, stages=stages
+        )
 
     def prepare() -> None:
         ensure_dir(out)
@@ -265,22 +310,30 @@ def _process_file(path: str, out: Path, lang: str, force: bool) -> FileResult:
 
     stage("output folder", prepare)
     if problems:
-        return FileResult(str(path), str(out), False, problems[0],
-                          seconds=time.perf_counter() - t0, stages=stages)
+        return FileResult(
+            str(path), str(out), False, problems[0], seconds=time.perf_counter() - t0, stages=stages
+        )
+
+    solution = cast("Solution", analysis)
 
     def results() -> None:
-        data = results_json(analysis)
+        data = results_json(solution)
         target = write_text_atomic(out / "results.json", finite_json(data, path))
         written.append(str(target))
         info["json"] = data
 
     def sheets() -> None:
-        paths = write_sheets(analysis, out, formats=("svg", "pdf"), lang=lang,  # type: ignore[arg-type]
-                             sheets=sorted(available_sheets()))
+        paths = write_sheets(
+            solution,
+            out,
+            formats=("svg", "pdf"),
+            lang=lang,  # type: ignore[arg-type]
+            sheets=sorted(available_sheets()),
+        )
         written.extend(str(p) for p in paths)
 
     def note() -> None:
-        written.append(str(write_note(analysis, out / "note.pdf", lang=lang)))  # type: ignore[arg-type]
+        written.append(str(write_note(solution, out / "note.pdf", lang=lang)))  # type: ignore[arg-type]
 
     stage("results", results)
     stage("sheets", sheets)
@@ -291,23 +344,38 @@ def _process_file(path: str, out: Path, lang: str, force: bool) -> FileResult:
     diagrams = data.get("diagrams", {})
     if "problem" in forces:
         problems.append(f"forces: {forces['problem']}")
-    summary = dict(W=st.get("W"), mechanism_class=st.get("mechanism_class"),
-                   balancing_force_plans=forces.get("balancing_force_plans"),
-                   balancing_force_lever=forces.get("balancing_force_lever"),
-                   discrepancy_percent=forces.get("discrepancy_percent"),
-                   diagrams_passed=diagrams.get("passed"))
+    summary = dict(
+        W=st.get("W"),
+        mechanism_class=st.get("mechanism_class"),
+        balancing_force_plans=forces.get("balancing_force_plans"),
+        balancing_force_lever=forces.get("balancing_force_lever"),
+        discrepancy_percent=forces.get("discrepancy_percent"),
+        diagrams_passed=diagrams.get("passed"),
+    )
     if not problems and digest is not None:
+
         def manifest() -> None:
-            data = {"schema": MANIFEST_SCHEMA, "input": path, "input_sha256": digest,
-                    "settings": _settings(lang),
-                    "outputs": {Path(w).name: Path(w).stat().st_size for w in written},
-                    "summary": summary}
+            data = {
+                "schema": MANIFEST_SCHEMA,
+                "input": path,
+                "input_sha256": digest,
+                "settings": _settings(lang),
+                "outputs": {Path(w).name: Path(w).stat().st_size for w in written},
+                "summary": summary,
+            }
             write_text_atomic(out / MANIFEST_NAME, finite_json(data, path))
 
         stage("manifest", manifest)
     return FileResult(
-        str(path), str(out), not problems, "; ".join(problems) or None, **summary,
-        seconds=time.perf_counter() - t0, written=tuple(written), stages=stages)
+        str(path),
+        str(out),
+        not problems,
+        "; ".join(problems) or None,
+        **summary,
+        seconds=time.perf_counter() - t0,
+        written=tuple(written),
+        stages=stages,
+    )
 
 
 def _run(args: tuple[str, str, str, bool]) -> FileResult:
@@ -319,9 +387,15 @@ def _worker_ignores_ctrl_c() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
-def run_batch(files: Sequence[Path], out: str | os.PathLike[str], *, jobs: int | None = None,
-              lang: str = "en", progress: Callable[[FileResult], None] | None = None,
-              force: bool = True) -> list[FileResult]:
+def run_batch(
+    files: Sequence[Path],
+    out: str | os.PathLike[str],
+    *,
+    jobs: int | None = None,
+    lang: str = "en",
+    progress: Callable[[FileResult], None] | None = None,
+    force: bool = True,
+) -> list[FileResult]:
     """Process `files` with `jobs` processes (default: every core); results in
     the order of `files`. `progress(result)` is called as each file finishes.
     With `force` False a file finished by an earlier run (its manifest matches,
@@ -335,9 +409,13 @@ def run_batch(files: Sequence[Path], out: str | os.PathLike[str], *, jobs: int |
     index: list[int] = []
     for i, (f, t) in enumerate(zip(files, targets)):
         if not _inside(t, out):  # OUT/x is a symbolic link to elsewhere
-            results[i] = FileResult(str(f), str(t), False,
-                                    f"{shown(t)} leads outside {shown(out)} (a symbolic link): "
-                                    "nothing written there; remove the link")
+            results[i] = FileResult(
+                str(f),
+                str(t),
+                False,
+                f"{shown(t)} leads outside {shown(out)} (a symbolic link): "
+                "nothing written there; remove the link",
+            )
             if progress:
                 progress(results[i])  # type: ignore[arg-type]
             continue
@@ -350,8 +428,9 @@ def run_batch(files: Sequence[Path], out: str | os.PathLike[str], *, jobs: int |
             if progress:
                 progress(results[i])  # type: ignore[arg-type]
     else:
-        pool = ProcessPoolExecutor(max_workers=min(jobs, len(tasks)),
-                                   initializer=_worker_ignores_ctrl_c)
+        pool = ProcessPoolExecutor(
+            max_workers=min(jobs, len(tasks)), initializer=_worker_ignores_ctrl_c
+        )
         try:
             futures = {pool.submit(_run, task): i for i, task in zip(index, tasks)}
             for fut in as_completed(futures):
@@ -359,9 +438,12 @@ def run_batch(files: Sequence[Path], out: str | os.PathLike[str], *, jobs: int |
                 try:
                     results[i] = fut.result()
                 except Exception as err:  # the worker process itself died
-                    results[i] = FileResult(str(files[i]), str(targets[i]), False,
-                                            f"worker failed: {type(err).__name__}: "
-                                            f"{shown(err, 300)}")
+                    results[i] = FileResult(
+                        str(files[i]),
+                        str(targets[i]),
+                        False,
+                        f"worker failed: {type(err).__name__}: {shown(err, 300)}",
+                    )
                 if progress:
                     progress(results[i])  # type: ignore[arg-type]
         except BaseException:
@@ -377,36 +459,46 @@ def run_batch(files: Sequence[Path], out: str | os.PathLike[str], *, jobs: int |
 
 # --- the summary -------------------------------------------------------------------------
 
+
 def _num(x: float | None, digits: int = 6) -> str:
     if x is None or (isinstance(x, float) and not math.isfinite(x)):
         return "-"
     return f"{float(x) + 0.0:.{digits}g}"
 
 
-def summary_rows(results: Sequence[FileResult], out: str | os.PathLike[str] | None = None
-                 ) -> list[list[str]]:
+def summary_rows(
+    results: Sequence[FileResult], out: str | os.PathLike[str] | None = None
+) -> list[list[str]]:
     """One row per file: its output folder (relative to `out` when given), status
     ("done", "kept" from an earlier run, "FAILED") and numbers."""
     rows = []
     for r in results:
-        passed = "-" if r.diagrams_passed is None else ("passed" if r.diagrams_passed else "NOT passed")
+        passed = (
+            "-" if r.diagrams_passed is None else ("passed" if r.diagrams_passed else "NOT passed")
+        )
         name = Path(r.out_dir).name
         if out is not None:
             try:
                 name = Path(r.out_dir).relative_to(out).as_posix()
             except ValueError:
                 pass
-        rows.append([shown(name, 80),
-                     "kept" if r.kept else "done" if r.ok else "FAILED",
-                     "-" if r.W is None else str(r.W),
-                     "-" if r.mechanism_class is None else str(r.mechanism_class),
-                     _num(r.balancing_force_plans), _num(r.balancing_force_lever),
-                     _num(r.discrepancy_percent, 3), passed, f"{r.seconds:.2f}"])
+        rows.append(
+            [
+                shown(name, 80),
+                "kept" if r.kept else "done" if r.ok else "FAILED",
+                "-" if r.W is None else str(r.W),
+                "-" if r.mechanism_class is None else str(r.mechanism_class),
+                _num(r.balancing_force_plans),
+                _num(r.balancing_force_lever),
+                _num(r.discrepancy_percent, 3),
+                passed,
+                f"{r.seconds:.2f}",
+            ]
+        )
     return rows
 
 
-def summary_table(results: Sequence[FileResult], out: str | os.PathLike[str] | None = None
-                  ) -> str:
+def summary_table(results: Sequence[FileResult], out: str | os.PathLike[str] | None = None) -> str:
     return table(SUMMARY_HEADERS, summary_rows(results, out))
 
 

@@ -11,19 +11,27 @@ from .cli_errors import reports_errors
 
 
 @click.command()
-@click.argument("inputs", nargs=-1, required=True,
-                type=click.Path(path_type=Path))
-@click.option("-o", "--out", "out_dir", required=True,
-              type=click.Path(file_okay=False, path_type=Path),
-              help="Directory for OUT/<file stem>/ and OUT/summary.csv.")
-@click.option("--jobs", type=click.IntRange(min=1), default=None,
-              help="Processes to run at once  [default: every core]")
+@click.argument("inputs", nargs=-1, required=True, type=click.Path(path_type=Path))
+@click.option(
+    "-o",
+    "--out",
+    "out_dir",
+    required=True,
+    type=click.Path(file_okay=False, path_type=Path),
+    help="Directory for OUT/<file stem>/ and OUT/summary.csv.",
+)
+@click.option(
+    "--jobs",
+    type=click.IntRange(min=1),
+    default=None,
+    help="Processes to run at once  [default: every core]",
+)
 @click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
-@click.option("--force", is_flag=True,
-              help="Redo every file, also those an earlier run finished.")
+@click.option("--force", is_flag=True, help="Redo every file, also those an earlier run finished.")
 @reports_errors
-def batch(inputs: tuple[Path, ...], out_dir: Path, jobs: int | None, lang: str,
-          force: bool) -> None:
+def batch(
+    inputs: tuple[Path, ...], out_dir: Path, jobs: int | None, lang: str, force: bool
+) -> None:
     """Answer keys for many mechanism files: each file's sheets (SVG, PDF),
     results.json and note.pdf into OUT/<file stem>/ (OUT/<relative path>/ when
     stems clash); directories are searched recursively for *.toml. A file an
@@ -31,15 +39,16 @@ def batch(inputs: tuple[Path, ...], out_dir: Path, jobs: int | None, lang: str,
     Exit code 1 if some file failed."""
     from .batch import find_files, run_batch, summary_table, write_summary_csv
     from .errors import shown
-
     from .files import ensure_dir
 
     files = find_files(inputs)
     ensure_dir(out_dir)
-    with click.progressbar(length=len(files), label=f"{len(files)} files",
-                           file=sys.stderr, show_pos=True) as bar:
-        results = run_batch(files, out_dir, jobs=jobs, lang=lang, force=force,
-                            progress=lambda result: bar.update(1))
+    with click.progressbar(
+        length=len(files), label=f"{len(files)} files", file=sys.stderr, show_pos=True
+    ) as bar:
+        results = run_batch(
+            files, out_dir, jobs=jobs, lang=lang, force=force, progress=lambda result: bar.update(1)
+        )
     for r in results:
         if not r.ok:
             click.echo(f"error: {shown(r.path)}: {r.message}", err=True)
@@ -48,7 +57,8 @@ def batch(inputs: tuple[Path, ...], out_dir: Path, jobs: int | None, lang: str,
     failed = sum(not r.ok for r in results)
     kept = sum(r.kept for r in results)
     kept_note = f" ({kept} kept from an earlier run; --force redoes them)" if kept else ""
-    click.echo(f"{len(results) - failed} done{kept_note}, {failed} failed; summary written to "
-               f"{csv_path}")
+    click.echo(
+        f"{len(results) - failed} done{kept_note}, {failed} failed; summary written to {csv_path}"
+    )
     if failed:
         sys.exit(1)

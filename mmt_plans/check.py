@@ -51,17 +51,42 @@ LIMITS: dict[str, str] = {  # the answers file's rows of README's "Input limits"
 # position's ε1 of a uniformly turning crank, a point on the frame.
 _ZERO = 1e-9
 
-Kind = Literal["velocity", "acceleration", "omega", "eps", "velocity_plan_mm",
-               "acceleration_plan_mm", "balancing_force_plans", "balancing_force_lever",
-               "balancing_moment", "reaction"]
+Kind = Literal[
+    "velocity",
+    "acceleration",
+    "omega",
+    "eps",
+    "velocity_plan_mm",
+    "acceleration_plan_mm",
+    "balancing_force_plans",
+    "balancing_force_lever",
+    "balancing_moment",
+    "reaction",
+]
 
 KEYS: dict[str, tuple[str, ...]] = {
     "": ("check", "position", "forces"),
     "check": ("tolerance_percent",),
-    "position": ("index", "mu_V", "mu_a", "velocity", "acceleration", "omega", "eps",
-                 "omega_magnitude", "eps_magnitude", "velocity_plan_mm", "acceleration_plan_mm"),
-    "forces": ("index", "balancing_force_plans", "balancing_force_lever", "balancing_moment",
-               "reactions"),
+    "position": (
+        "index",
+        "mu_V",
+        "mu_a",
+        "velocity",
+        "acceleration",
+        "omega",
+        "eps",
+        "omega_magnitude",
+        "eps_magnitude",
+        "velocity_plan_mm",
+        "acceleration_plan_mm",
+    ),
+    "forces": (
+        "index",
+        "balancing_force_plans",
+        "balancing_force_lever",
+        "balancing_moment",
+        "reactions",
+    ),
 }
 
 # What each key of a position or of [forces] holds.
@@ -82,20 +107,34 @@ _FORCE_VALUES: dict[str, Kind] = {
 }
 
 UNITS: dict[Kind, str] = {
-    "velocity": "m/s", "acceleration": "m/s2", "omega": "rad/s", "eps": "rad/s2",
-    "velocity_plan_mm": "mm", "acceleration_plan_mm": "mm", "balancing_force_plans": "N",
-    "balancing_force_lever": "N", "balancing_moment": "N*m", "reaction": "N",
+    "velocity": "m/s",
+    "acceleration": "m/s2",
+    "omega": "rad/s",
+    "eps": "rad/s2",
+    "velocity_plan_mm": "mm",
+    "acceleration_plan_mm": "mm",
+    "balancing_force_plans": "N",
+    "balancing_force_lever": "N",
+    "balancing_moment": "N*m",
+    "reaction": "N",
 }
 
 # The other plan of the same position: where a point's image is read by mistake.
 _OTHER_PLAN: dict[Kind, Kind] = {
-    "velocity": "acceleration", "acceleration": "velocity", "omega": "eps", "eps": "omega",
-    "velocity_plan_mm": "acceleration_plan_mm", "acceleration_plan_mm": "velocity_plan_mm",
+    "velocity": "acceleration",
+    "acceleration": "velocity",
+    "omega": "eps",
+    "eps": "omega",
+    "velocity_plan_mm": "acceleration_plan_mm",
+    "acceleration_plan_mm": "velocity_plan_mm",
 }
 _PLAN_NAME: dict[Kind, str] = {
-    "velocity": "velocity plan", "acceleration": "acceleration plan",
-    "omega": "velocity plan", "eps": "acceleration plan",
-    "velocity_plan_mm": "velocity plan", "acceleration_plan_mm": "acceleration plan",
+    "velocity": "velocity plan",
+    "acceleration": "acceleration plan",
+    "omega": "velocity plan",
+    "eps": "acceleration plan",
+    "velocity_plan_mm": "velocity plan",
+    "acceleration_plan_mm": "acceleration plan",
 }
 
 # The pole of each plan as a student may write it: p (velocities), π or pi (accelerations).
@@ -113,6 +152,7 @@ _NEIGHBOUR_RATIOS = (1.25, 1.6)
 
 
 # --- what the student gave ----------------------------------------------------------
+
 
 @dataclass(frozen=True)
 class Answer:
@@ -142,8 +182,11 @@ class Answer:
             return f"{self.name} (a plan)"
         if self.kind == "reaction":
             return self.name
-        return {"balancing_force_plans": "F_bal (plans)", "balancing_force_lever": "F_bal (lever)",
-                "balancing_moment": "M_bal"}[self.kind]
+        return {
+            "balancing_force_plans": "F_bal (plans)",
+            "balancing_force_lever": "F_bal (lever)",
+            "balancing_moment": "M_bal",
+        }[self.kind]
 
 
 @dataclass(frozen=True)
@@ -158,6 +201,7 @@ class Answers:
 
 
 # --- the verdict --------------------------------------------------------------------
+
 
 @dataclass(frozen=True)
 class CheckedValue:
@@ -196,21 +240,37 @@ class CheckResult:
         for v in self.values:
             a = v.answer
             dev = "-" if v.deviation_percent is None else f"{v.deviation_percent:+.2f}"
-            rows.append([str(a.position), a.label, UNITS[a.kind], _num(v.exact), _num(a.value),
-                         dev, "pass" if v.passed else "FAIL", v.cause or ""])
+            rows.append(
+                [
+                    str(a.position),
+                    a.label,
+                    UNITS[a.kind],
+                    _num(v.exact),
+                    _num(a.value),
+                    dev,
+                    "pass" if v.passed else "FAIL",
+                    v.cause or "",
+                ]
+            )
         head = f"Check of {self.answers} against {self.mechanism}"
         out = [head, "=" * len(head), ""]
         headers = ["pos", "value", "unit", "exact", "student", "dev %", "result", "likely cause"]
         body = table(headers, rows)
         # The cause is free text: left-aligned reads better than right-aligned.
         out += [line.rstrip() for line in _left_last(body, rows)]
-        also = [f"  position {v.answer.position}, {v.answer.label}: also fits: {why}"
-                for v in self.failures for why in v.causes[1:]]
+        also = [
+            f"  position {v.answer.position}, {v.answer.label}: also fits: {why}"
+            for v in self.failures
+            for why in v.causes[1:]
+        ]
         if also:
             out += ["", "Other causes that fit as well:", *also]
         n, bad = len(self.values), len(self.failures)
-        out += ["", f"{n - bad} of {n} values within {format_number(self.tolerance_percent)} %"
-                + ("" if bad else ": passed")]
+        out += [
+            "",
+            f"{n - bad} of {n} values within {format_number(self.tolerance_percent)} %"
+            + ("" if bad else ": passed"),
+        ]
         return "\n".join(out)
 
 
@@ -218,8 +278,9 @@ def _left_last(body: str, rows: list[list[str]]) -> list[str]:
     """The table with its last column aligned to the left."""
     width = max([len("likely cause"), *(len(r[-1]) for r in rows)])
     lines = body.splitlines()
-    return [line[:len(line) - width] + line[len(line) - width:].strip().ljust(width)
-            for line in lines]
+    return [
+        line[: len(line) - width] + line[len(line) - width :].strip().ljust(width) for line in lines
+    ]
 
 
 def _num(x: float) -> str:
@@ -228,17 +289,18 @@ def _num(x: float) -> str:
 
 # --- reading the answers file -------------------------------------------------------
 
-def load_answers(path: str | Path, analysis: "Solution") -> Answers:
+
+def load_answers(path: str | Path, analysis: Solution) -> Answers:
     """Read an answers file and check every name in it against the mechanism."""
     return loads_answers(read_text(path, "answers file"), analysis, str(path))
 
 
-def loads_answers(text: str, analysis: "Solution", path: str = "<string>") -> Answers:
+def loads_answers(text: str, analysis: Solution, path: str = "<string>") -> Answers:
     return _Reader(path, analysis).answers(parse_toml(text, path))
 
 
 class _Reader:
-    def __init__(self, path: str, analysis: "Solution") -> None:
+    def __init__(self, path: str, analysis: Solution) -> None:
         self.path = path
         self.analysis = analysis
         self.exact = Exact(analysis)
@@ -248,18 +310,32 @@ class _Reader:
 
     def check_keys(self, table: Any, section: str, entry: str) -> dict:
         if not isinstance(table, dict):
-            raise self.fail(entry or "file", "must be a table",
-                            f"write it as [{entry}] with keys" if entry else "")
+            raise self.fail(
+                entry or "file",
+                "must be a table",
+                f"write it as [{entry}] with keys" if entry else "",
+            )
         allowed = KEYS[section]
         for key in table:
             if key not in allowed:
-                raise self.fail(f"{entry}.{key}" if entry else key, "unknown key",
-                                _suggest(key, allowed, "allowed keys"))
+                raise self.fail(
+                    f"{entry}.{key}" if entry else key,
+                    "unknown key",
+                    _suggest(key, allowed, "allowed keys"),
+                )
         return table
 
-    def number(self, value: Any, entry: str, *, positive: bool = False,
-               non_negative: bool = False, signed_key: str = "",
-               minimum: float | None = None, maximum: float = VALUE_MAX) -> float:
+    def number(
+        self,
+        value: Any,
+        entry: str,
+        *,
+        positive: bool = False,
+        non_negative: bool = False,
+        signed_key: str = "",
+        minimum: float | None = None,
+        maximum: float = VALUE_MAX,
+    ) -> float:
         x = None
         if not isinstance(value, bool) and isinstance(value, (int, float)):
             try:
@@ -267,8 +343,11 @@ class _Reader:
             except OverflowError:  # an integer beyond any float
                 x = math.inf
         if x is None or not math.isfinite(x):
-            raise self.fail(entry, f"must be a number, not {show_value(value)}",
-                            f"write {entry.rsplit('.', 1)[-1]} = <number>, e.g. 1.23")
+            raise self.fail(
+                entry,
+                f"must be a number, not {show_value(value)}",
+                f"write {entry.rsplit('.', 1)[-1]} = <number>, e.g. 1.23",
+            )
         if positive and x <= 0:
             raise self.fail(entry, f"must be positive, not {x:g}", "give a value above zero")
         if non_negative and x < 0:
@@ -277,35 +356,50 @@ class _Reader:
                 fix += f", or write the signed value under {signed_key}"
             raise self.fail(entry, f"is a magnitude and must not be negative, not {x:g}", fix)
         if abs(x) > maximum or (minimum is not None and abs(x) < minimum):
-            span = (f"between {minimum:g} and {maximum:g}" if minimum is not None
-                    else f"at most {maximum:g} in size")
-            raise self.fail(entry, f"is {x:g}, out of the range this tool accepts: {span}",
-                            "check the value and its unit; README lists the input limits")
+            span = (
+                f"between {minimum:g} and {maximum:g}"
+                if minimum is not None
+                else f"at most {maximum:g} in size"
+            )
+            raise self.fail(
+                entry,
+                f"is {x:g}, out of the range this tool accepts: {span}",
+                "check the value and its unit; README lists the input limits",
+            )
         return x
 
     def key(self, name: str, entry: str) -> str:
         """A name from the file (a point, a link, a segment, a reaction): short and printable."""
         if len(name) > NAME_MAX or not name.isprintable() or not name:
-            raise self.fail(f"{entry}.{shown(name, NAME_MAX)}",
-                            f"'{shown(name, NAME_MAX)}' is not a name this mechanism uses",
-                            f"write a point, link, segment or reaction name (at most {NAME_MAX} "
-                            "printable characters)")
+            raise self.fail(
+                f"{entry}.{shown(name, NAME_MAX)}",
+                f"'{shown(name, NAME_MAX)}' is not a name this mechanism uses",
+                f"write a point, link, segment or reaction name (at most {NAME_MAX} "
+                "printable characters)",
+            )
         return name
 
     def index(self, table: dict, entry: str, default: int | None = None) -> int:
         n = self.analysis.mechanism.study.positions
         if "index" not in table:
             if default is None:
-                raise self.fail(f"{entry}.index", "is required",
-                                f"add index = <position number 0..{n - 1}>")
+                raise self.fail(
+                    f"{entry}.index", "is required", f"add index = <position number 0..{n - 1}>"
+                )
             return default
         value = table["index"]
         if isinstance(value, bool) or not isinstance(value, int):
-            raise self.fail(f"{entry}.index", f"must be a whole position number, not {value!r}",
-                            f"use a position 0..{n - 1} (0 = the extreme position)")
+            raise self.fail(
+                f"{entry}.index",
+                f"must be a whole position number, not {value!r}",
+                f"use a position 0..{n - 1} (0 = the extreme position)",
+            )
         if not 0 <= value < n:
-            raise self.fail(f"{entry}.index", f"position {value} does not exist",
-                            f"use a position 0..{n - 1} (0 = the extreme position)")
+            raise self.fail(
+                f"{entry}.index",
+                f"position {value} does not exist",
+                f"use a position 0..{n - 1} (0 = the extreme position)",
+            )
         return value
 
     def answers(self, data: dict) -> Answers:
@@ -314,8 +408,12 @@ class _Reader:
         if "check" in data:
             check = self.check_keys(data["check"], "check", "check")
             if "tolerance_percent" in check:
-                tolerance = self.number(check["tolerance_percent"], "check.tolerance_percent",
-                                        positive=True, maximum=TOLERANCE_MAX)
+                tolerance = self.number(
+                    check["tolerance_percent"],
+                    "check.tolerance_percent",
+                    positive=True,
+                    maximum=TOLERANCE_MAX,
+                )
         values: list[Answer] = []
         seen: dict[int, str] = {}
         for k, table in enumerate(_as_list(data.get("position", [])), start=1):
@@ -325,30 +423,53 @@ class _Reader:
             entry = "forces" if not isinstance(data["forces"], list) else f"forces[{k}]"
             values += self.forces(table, entry)
         if len(values) > VALUES_MAX:
-            raise self.fail("file", f"gives {len(values)} values, more than the {VALUES_MAX} "
-                            "this tool checks in one file", "split the answers into several files")
+            raise self.fail(
+                "file",
+                f"gives {len(values)} values, more than the {VALUES_MAX} "
+                "this tool checks in one file",
+                "split the answers into several files",
+            )
         if not values:
-            raise self.fail("file", "gives no value to check",
-                            "add a [[position]] with e.g. velocity = { B = 1.23 }, or [forces]")
+            raise self.fail(
+                "file",
+                "gives no value to check",
+                "add a [[position]] with e.g. velocity = { B = 1.23 }, or [forces]",
+            )
         return Answers(self.path, tolerance, tuple(values))
 
     def position(self, table: Any, entry: str, seen: dict[int, str]) -> list[Answer]:
         self.check_keys(table, "position", entry)
         index = self.index(table, entry)
         if index in seen:
-            raise self.fail(f"{entry}.index", f"position {index} is already given in {seen[index]}",
-                            "write each position once")
+            raise self.fail(
+                f"{entry}.index",
+                f"position {index} is already given in {seen[index]}",
+                "write each position once",
+            )
         seen[index] = entry
         entry = f"{entry} (index {index})"
         try:
             plan = self.exact.plan(index)
         except MmtError as err:
-            raise self.fail(f"{entry}.index", f"position {index} has no plans: {err}",
-                            "check a position where the mechanism assembles") from None
-        mu_v = (self.number(table["mu_V"], f"{entry}.mu_V", positive=True, minimum=MU_MIN,
-                            maximum=MU_MAX) if "mu_V" in table else None)
-        mu_a = (self.number(table["mu_a"], f"{entry}.mu_a", positive=True, minimum=MU_MIN,
-                            maximum=MU_MAX) if "mu_a" in table else None)
+            raise self.fail(
+                f"{entry}.index",
+                f"position {index} has no plans: {err}",
+                "check a position where the mechanism assembles",
+            ) from None
+        mu_v = (
+            self.number(
+                table["mu_V"], f"{entry}.mu_V", positive=True, minimum=MU_MIN, maximum=MU_MAX
+            )
+            if "mu_V" in table
+            else None
+        )
+        mu_a = (
+            self.number(
+                table["mu_a"], f"{entry}.mu_a", positive=True, minimum=MU_MIN, maximum=MU_MAX
+            )
+            if "mu_a" in table
+            else None
+        )
         out = []
         for key, (kind, signed) in _POSITION_TABLES.items():
             if key not in table:
@@ -356,15 +477,24 @@ class _Reader:
             where = f"{entry}.{key}"
             values = table[key]
             if not isinstance(values, dict):
-                raise self.fail(where, "must be a table of values",
-                                f"write {key} = {{ {_example(kind)} }}")
+                raise self.fail(
+                    where, "must be a table of values", f"write {key} = {{ {_example(kind)} }}"
+                )
             if len(values) > VALUES_MAX:
-                raise self.fail(where, f"gives {len(values)} values, more than the {VALUES_MAX} "
-                                "this tool checks in one file", "give the values you measured")
+                raise self.fail(
+                    where,
+                    f"gives {len(values)} values, more than the {VALUES_MAX} "
+                    "this tool checks in one file",
+                    "give the values you measured",
+                )
             for name, raw in values.items():
                 name = self.key(str(name), where)
-                value = self.number(raw, f"{where}.{name}", non_negative=not signed,
-                                    signed_key=kind if kind in ("omega", "eps") else "")
+                value = self.number(
+                    raw,
+                    f"{where}.{name}",
+                    non_negative=not signed,
+                    signed_key=kind if kind in ("omega", "eps") else "",
+                )
                 mu, other_mu = _scales(kind, mu_v, mu_a)
                 segment = None
                 if kind in ("velocity", "acceleration"):
@@ -375,35 +505,48 @@ class _Reader:
                     if mu is None:
                         scale = "mu_V" if kind == "velocity_plan_mm" else "mu_a"
                         unit = "(m/s)/mm" if scale == "mu_V" else "(m/s2)/mm"
-                        raise self.fail(where, f"plan segments in mm need the plan's scale {scale}",
-                                        f"add {scale} = <{unit}>, e.g. {scale} = 0.02, to {entry}")
+                        raise self.fail(
+                            where,
+                            f"plan segments in mm need the plan's scale {scale}",
+                            f"add {scale} = <{unit}>, e.g. {scale} = 0.02, to {entry}",
+                        )
                     segment = self.segment(name, kind, plan, f"{where}.{name}")
-                out.append(Answer(f"{where}.{name}", index, kind, name, value, signed, segment,
-                                  mu, other_mu))
+                out.append(
+                    Answer(
+                        f"{where}.{name}", index, kind, name, value, signed, segment, mu, other_mu
+                    )
+                )
         return out
 
-    def point(self, name: str, plan: "PlanView", entry: str) -> None:
+    def point(self, name: str, plan: PlanView, entry: str) -> None:
         if name not in plan.velocity_images:
             names = list(plan.velocity_images)
-            raise self.fail(entry, f"point {name} does not exist",
-                            _suggest(name, names, "points of this mechanism"))
+            raise self.fail(
+                entry,
+                f"point {name} does not exist",
+                _suggest(name, names, "points of this mechanism"),
+            )
 
-    def link(self, name: str, plan: "PlanView", entry: str) -> str:
+    def link(self, name: str, plan: PlanView, entry: str) -> str:
         links = [str(lid) for lid in plan.omega]
         if name not in links:
-            raise self.fail(entry, f"link {name} does not exist",
-                            f"links of this mechanism: {', '.join(links)} "
-                            '(write the link number as the key, e.g. "2" = -1.36)')
+            raise self.fail(
+                entry,
+                f"link {name} does not exist",
+                f"links of this mechanism: {', '.join(links)} "
+                '(write the link number as the key, e.g. "2" = -1.36)',
+            )
         return name
 
-    def segment(self, name: str, kind: Kind, plan: "PlanView", entry: str) -> tuple[str, str]:
+    def segment(self, name: str, kind: Kind, plan: PlanView, entry: str) -> tuple[str, str]:
         """The two images a segment like "pb", "ab", "πb", "pis2", "a-s2" joins."""
         poles = VELOCITY_POLES if kind == "velocity_plan_mm" else ACCELERATION_POLES
         images = {p.lower(): p for p in plan.velocity_images}
 
         def ends(token: str) -> set[str]:
             return ({POLE} if token in poles else set()) | (
-                {images[token]} if token in images else set())
+                {images[token]} if token in images else set()
+            )
 
         key = name.lower()
         if "-" in key:
@@ -413,14 +556,19 @@ class _Reader:
             splits = [(key[:i], key[i:]) for i in range(1, len(key))]
         found = {(x, y) for left, right in splits for x in ends(left) for y in ends(right)}
         pole = poles[0] if kind == "velocity_plan_mm" else "pi"
-        fix = (f"name the two ends by their images: the pole {pole} and lower-case point "
-               f"names ({', '.join(images)}), e.g. {pole}b or ab; a dash may separate them: a-s2")
+        fix = (
+            f"name the two ends by their images: the pole {pole} and lower-case point "
+            f"names ({', '.join(images)}), e.g. {pole}b or ab; a dash may separate them: a-s2"
+        )
         if not found:
             raise self.fail(entry, f"{name!r} is not a segment of the {_PLAN_NAME[kind]}", fix)
         if len(found) > 1:
             readings = " or ".join(_segment_name(kind, seg, dash=True) for seg in sorted(found))
-            raise self.fail(entry, f"{name!r} can be read as {readings}",
-                            "separate the two images with a dash, e.g. a-s2")
+            raise self.fail(
+                entry,
+                f"{name!r} can be read as {readings}",
+                "separate the two images with a dash, e.g. a-s2",
+            )
         x, y = found.pop()
         if x == y:
             raise self.fail(entry, f"{name!r} joins an image to itself", fix)
@@ -432,8 +580,11 @@ class _Reader:
         try:
             fa = self.exact.forces(index)
         except MmtError as err:
-            raise self.fail(f"{entry}.index", f"no force analysis at position {index}: {err}",
-                            "check the position of your force analysis") from None
+            raise self.fail(
+                f"{entry}.index",
+                f"no force analysis at position {index}: {err}",
+                "check the position of your force analysis",
+            ) from None
         out = []
         for key, kind in _FORCE_VALUES.items():
             if key in table:
@@ -443,12 +594,18 @@ class _Reader:
             where = f"{entry}.reactions"
             reactions = table["reactions"]
             if not isinstance(reactions, dict):
-                raise self.fail(where, "must be a table of values",
-                                "write reactions = { R12 = 15100, R03 = 15300 }")
+                raise self.fail(
+                    where,
+                    "must be a table of values",
+                    "write reactions = { R12 = 15100, R03 = 15300 }",
+                )
             if len(reactions) > VALUES_MAX:
-                raise self.fail(where, f"gives {len(reactions)} values, more than the "
-                                f"{VALUES_MAX} this tool checks in one file",
-                                "give the reactions you found")
+                raise self.fail(
+                    where,
+                    f"gives {len(reactions)} values, more than the "
+                    f"{VALUES_MAX} this tool checks in one file",
+                    "give the reactions you found",
+                )
             for name, raw in reactions.items():
                 name = self.key(str(name), where)
                 value = self.number(raw, f"{where}.{name}", non_negative=True)
@@ -456,18 +613,24 @@ class _Reader:
                 out.append(Answer(f"{where}.{name}", index, "reaction", name, value, False))
         return out
 
-    def reaction(self, name: str, fa: "ForceAnalysis", entry: str) -> None:
+    def reaction(self, name: str, fa: ForceAnalysis, entry: str) -> None:
         pairs = ", ".join(fa.reactions)
         m = _REACTION.fullmatch(name)
         if m is None:
-            raise self.fail(entry, f"{name!r} is not a reaction name",
-                            f"write R and the two links, e.g. R12 (R1_12 for link 12); "
-                            f"this mechanism's pairs: {pairs}")
+            raise self.fail(
+                entry,
+                f"{name!r} is not a reaction name",
+                f"write R and the two links, e.g. R12 (R1_12 for link 12); "
+                f"this mechanism's pairs: {pairs}",
+            )
         try:
             fa.reaction(*_reaction_links(m))
         except KeyError:
-            raise self.fail(entry, f"no pair joins links {m[1] or m[3]} and {m[2] or m[4]}",
-                            f"this mechanism's pairs: {pairs}") from None
+            raise self.fail(
+                entry,
+                f"no pair joins links {m[1] or m[3]} and {m[2] or m[4]}",
+                f"this mechanism's pairs: {pairs}",
+            ) from None
 
 
 _REACTION = re.compile(r"R(?:(\d)(\d)|(\d+)_(\d+))")
@@ -477,8 +640,9 @@ def _reaction_links(m: re.Match) -> tuple[int, int]:
     return (int(m[1]), int(m[2])) if m[1] else (int(m[3]), int(m[4]))
 
 
-def _scales(kind: Kind, mu_v: float | None, mu_a: float | None
-            ) -> tuple[float | None, float | None]:
+def _scales(
+    kind: Kind, mu_v: float | None, mu_a: float | None
+) -> tuple[float | None, float | None]:
     """(this plan's μ, the other plan's μ) for a value read off a plan."""
     if kind in ("velocity", "velocity_plan_mm"):
         return mu_v, mu_a
@@ -492,9 +656,14 @@ def _as_list(value: Any) -> list:
 
 
 def _example(kind: Kind) -> str:
-    return {"velocity": "B = 1.23", "acceleration": "B = 31.7", "omega": '"2" = -1.36',
-            "eps": '"2" = -56.1', "velocity_plan_mm": "pb = 61.5",
-            "acceleration_plan_mm": "pib = 254"}[kind]
+    return {
+        "velocity": "B = 1.23",
+        "acceleration": "B = 31.7",
+        "omega": '"2" = -1.36',
+        "eps": '"2" = -56.1',
+        "velocity_plan_mm": "pb = 61.5",
+        "acceleration_plan_mm": "pib = 254",
+    }[kind]
 
 
 def _suggest(name: str, allowed: list[str] | tuple[str, ...], what: str) -> str:
@@ -507,26 +676,35 @@ def _suggest(name: str, allowed: list[str] | tuple[str, ...], what: str) -> str:
 
 # --- the exact values ---------------------------------------------------------------
 
+
 class Exact:
     """The exact value of anything a student may give, from the analysis."""
 
-    def __init__(self, analysis: "Solution") -> None:
+    def __init__(self, analysis: Solution) -> None:
         self.analysis = analysis
         self._plans: dict[int, PlanView] = {}
         self._forces: dict[int, ForceAnalysis] = {}
 
-    def plan(self, index: int) -> "PlanView":
+    def plan(self, index: int) -> PlanView:
         if index not in self._plans:
             self._plans[index] = self.analysis.plan(index)
         return self._plans[index]
 
-    def forces(self, index: int) -> "ForceAnalysis":
+    def forces(self, index: int) -> ForceAnalysis:
         if index not in self._forces:
             self._forces[index] = self.analysis.forces_at(index)
         return self._forces[index]
 
-    def value(self, kind: Kind, index: int, name: str, *, signed: bool = False,
-              segment: tuple[str, str] | None = None, mu: float | None = None) -> float:
+    def value(
+        self,
+        kind: Kind,
+        index: int,
+        name: str,
+        *,
+        signed: bool = False,
+        segment: tuple[str, str] | None = None,
+        mu: float | None = None,
+    ) -> float:
         """In SI units, or mm of the plan drawn at `mu` for a segment."""
         if kind in ("velocity", "acceleration"):
             plan = self.plan(index)
@@ -539,10 +717,11 @@ class Exact:
         if kind in ("velocity_plan_mm", "acceleration_plan_mm"):
             assert segment is not None and mu is not None
             plan = self.plan(index)
-            images = (plan.velocity_images if kind == "velocity_plan_mm"
-                      else plan.acceleration_images)
-            x, y = (np.zeros(2) if e == POLE else images[e] for e in segment)
-            return float(np.hypot(*(y - x))) / mu
+            images = (
+                plan.velocity_images if kind == "velocity_plan_mm" else plan.acceleration_images
+            )
+            p, q = (np.zeros(2) if e == POLE else images[e] for e in segment)
+            return float(np.hypot(*(q - p))) / mu
         fa = self.forces(index)
         if kind == "reaction":
             m = _REACTION.fullmatch(name)
@@ -558,27 +737,43 @@ class Exact:
         is measured against."""
         if a.kind in ("velocity", "acceleration", "velocity_plan_mm", "acceleration_plan_mm"):
             plan = self.plan(a.position)
-            images = (plan.velocity_images if a.kind.startswith("velocity")
-                      else plan.acceleration_images)
+            images = (
+                plan.velocity_images if a.kind.startswith("velocity") else plan.acceleration_images
+            )
             big = max(float(np.hypot(*v)) for v in images.values())
             return big / a.mu if a.mu is not None and a.kind.endswith("_mm") else big
         if a.kind in ("omega", "eps"):
             plan = self.plan(a.position)
             return max(abs(x) for x in (plan.omega if a.kind == "omega" else plan.eps).values())
         fa = self.forces(a.position)
-        return max([abs(fa.balancing_force_plans), abs(fa.balancing_force_lever),
-                    *(r.magnitude for r in fa.reactions.values())])
+        return max(
+            [
+                abs(fa.balancing_force_plans),
+                abs(fa.balancing_force_lever),
+                *(r.magnitude for r in fa.reactions.values()),
+            ]
+        )
 
 
 # --- comparing and diagnosing -------------------------------------------------------
 
-def check(analysis: "Solution", answers: Answers, tolerance_percent: float | None = None,
-          *, mechanism: str | None = None) -> CheckResult:
+
+def check(
+    analysis: Solution,
+    answers: Answers,
+    tolerance_percent: float | None = None,
+    *,
+    mechanism: str | None = None,
+) -> CheckResult:
     """Every answer against the exact value. The tolerance is `tolerance_percent`,
     else the answers file's, else 5 %."""
-    tol = (tolerance_percent if tolerance_percent is not None
-           else answers.tolerance_percent if answers.tolerance_percent is not None
-           else DEFAULT_TOLERANCE_PERCENT)
+    tol = (
+        tolerance_percent
+        if tolerance_percent is not None
+        else answers.tolerance_percent
+        if answers.tolerance_percent is not None
+        else DEFAULT_TOLERANCE_PERCENT
+    )
     exact = Exact(analysis)
     drawn = sorted(set(analysis.plan_positions) | set(answers.positions))
     out = []
@@ -596,8 +791,9 @@ def check(analysis: "Solution", answers: Answers, tolerance_percent: float | Non
     return CheckResult(mechanism or str(analysis.mechanism.path), answers.path, tol, tuple(out))
 
 
-def check_file(mechanism_path: str | Path, answers_path: str | Path,
-               tolerance_percent: float | None = None) -> CheckResult:
+def check_file(
+    mechanism_path: str | Path, answers_path: str | Path, tolerance_percent: float | None = None
+) -> CheckResult:
     """`mmt-plans check FILE ANSWERS` as a function."""
     from .solution import solve
     from .spec import load
@@ -630,8 +826,13 @@ def _diagnose(a: Answer, exact: float, tol: float, ex: Exact, drawn: list[int]) 
 def _candidates(a: Answer, exact: float, ex: Exact, drawn: list[int]):
     """(value, cause) pairs: what the student's value would be after each mistake."""
     if a.signed:
-        yield -exact, (f"sign or direction swapped: the exact value is {_num(exact)}"
-                       + (" (counter-clockwise +)" if a.kind in ("omega", "eps") else ""))
+        yield (
+            -exact,
+            (
+                f"sign or direction swapped: the exact value is {_num(exact)}"
+                + (" (counter-clockwise +)" if a.kind in ("omega", "eps") else "")
+            ),
+        )
     for factor, why in _scale_slips(a):
         yield exact * factor, f"wrong scale: {why}"
     yield from _wrong_images(a, ex, drawn)
@@ -645,28 +846,58 @@ def _scale_slips(a: Answer) -> list[tuple[float, str]]:
     mine, other = ("mu_V", "mu_a") if plan_v else ("mu_a", "mu_V")
     if a.mu is not None and a.kind in ("velocity", "acceleration"):
         if a.other_mu is not None:
-            slips.append((a.other_mu / a.mu, f"the segment multiplied by {other} = "
-                          f"{format_number(a.other_mu)} instead of {mine} = {format_number(a.mu)}"))
+            slips.append(
+                (
+                    a.other_mu / a.mu,
+                    f"the segment multiplied by {other} = "
+                    f"{format_number(a.other_mu)} instead of {mine} = {format_number(a.mu)}",
+                )
+            )
         for mu in _neighbours(a.mu):
-            slips.append((mu / a.mu, f"the segment multiplied by {format_number(mu)}, the "
-                          "neighbouring standard scale, instead of "
-                          f"{mine} = {format_number(a.mu)}"))
+            slips.append(
+                (
+                    mu / a.mu,
+                    f"the segment multiplied by {format_number(mu)}, the "
+                    "neighbouring standard scale, instead of "
+                    f"{mine} = {format_number(a.mu)}",
+                )
+            )
     if a.mu is not None and a.kind in ("velocity_plan_mm", "acceleration_plan_mm"):
         what = "speed" if plan_v else "acceleration"
         if a.other_mu is not None:
-            slips.append((a.mu / a.other_mu, f"the {what} divided by {other} = "
-                          f"{format_number(a.other_mu)} instead of {mine} = {format_number(a.mu)}"))
+            slips.append(
+                (
+                    a.mu / a.other_mu,
+                    f"the {what} divided by {other} = "
+                    f"{format_number(a.other_mu)} instead of {mine} = {format_number(a.mu)}",
+                )
+            )
         for mu in _neighbours(a.mu):
-            slips.append((a.mu / mu, f"the plan drawn at {format_number(mu)}, the neighbouring "
-                          f"standard scale, not at the stated {mine} = {format_number(a.mu)}"))
+            slips.append(
+                (
+                    a.mu / mu,
+                    f"the plan drawn at {format_number(mu)}, the neighbouring "
+                    f"standard scale, not at the stated {mine} = {format_number(a.mu)}",
+                )
+            )
     for k in (1, 2, 3):
         slips.append((10.0**k, f"{10**k} times the exact value (a decimal point or unit slip)"))
         slips.append((10.0**-k, f"1/{10**k} of the exact value (a decimal point or unit slip)"))
     for r in _NEIGHBOUR_RATIOS:
-        slips.append((r, f"{format_number(r)} times the exact value, the ratio of two "
-                      "neighbouring standard scales"))
-        slips.append((1 / r, f"1/{format_number(r)} of the exact value, the ratio of two "
-                      "neighbouring standard scales"))
+        slips.append(
+            (
+                r,
+                f"{format_number(r)} times the exact value, the ratio of two "
+                "neighbouring standard scales",
+            )
+        )
+        slips.append(
+            (
+                1 / r,
+                f"1/{format_number(r)} of the exact value, the ratio of two "
+                "neighbouring standard scales",
+            )
+        )
     out: list[tuple[float, str]] = []
     for factor, why in slips:
         if all(not math.isclose(factor, f, rel_tol=1e-9) for f, _ in out):
@@ -692,33 +923,45 @@ def _wrong_images(a: Answer, ex: Exact, drawn: list[int]):
     if a.kind in ("velocity", "acceleration", "omega", "eps"):
         other = _OTHER_PLAN[a.kind]
         what = _describe(other, a.name, a.signed)
-        yield value(other, pos, a.name), (f"read off the {_PLAN_NAME[other]}: {what} = "
-                                          f"{_num(value(other, pos, a.name))}")
+        yield (
+            value(other, pos, a.name),
+            (f"read off the {_PLAN_NAME[other]}: {what} = {_num(value(other, pos, a.name))}"),
+        )
         if a.kind in ("velocity", "acceleration") and a.mu is not None and a.other_mu is not None:
-            seg = f"{'pi' if other == 'acceleration' else 'p'}{a.name.lower()}"
+            seg_name = f"{'pi' if other == 'acceleration' else 'p'}{a.name.lower()}"
             x = value(other, pos, a.name) / a.other_mu * a.mu
-            yield x, (f"the segment {seg} of the {_PLAN_NAME[other]} ({_num(x / a.mu)} mm) "
-                      f"multiplied by this plan's scale {format_number(a.mu)}")
+            yield (
+                x,
+                (
+                    f"the segment {seg_name} of the {_PLAN_NAME[other]} ({_num(x / a.mu)} mm) "
+                    f"multiplied by this plan's scale {format_number(a.mu)}"
+                ),
+            )
         for i in drawn:
             if i != pos:
                 x = value(a.kind, i, a.name)
                 what = _describe(a.kind, a.name, a.signed)
                 yield x, f"taken from position {i}: {what} = {_num(x)}"
         plan = ex.plan(pos)
-        names = (plan.velocity_images if a.kind in ("velocity", "acceleration")
-                 else {str(lid): 0 for lid in plan.omega})
+        names = (
+            plan.velocity_images
+            if a.kind in ("velocity", "acceleration")
+            else {str(lid): 0 for lid in plan.omega}
+        )
         for n in names:
             if n != a.name:
                 x = value(a.kind, pos, n)
-                noun = ("another point's image on the same plan"
-                        if a.kind in ("velocity", "acceleration") else "another link")
+                noun = (
+                    "another point's image on the same plan"
+                    if a.kind in ("velocity", "acceleration")
+                    else "another link"
+                )
                 yield x, f"{noun}: {_describe(a.kind, n, a.signed)} = {_num(x)}"
     elif a.segment is not None:
         other = _OTHER_PLAN[a.kind]
         if a.other_mu is not None:
             x = value(other, pos, a.name, a.segment, a.other_mu)
-            yield x, (f"read off the {_PLAN_NAME[other]}: the same segment there is "
-                      f"{_num(x)} mm")
+            yield x, (f"read off the {_PLAN_NAME[other]}: the same segment there is {_num(x)} mm")
         for i in drawn:
             if i != pos:
                 x = value(a.kind, i, a.name, a.segment, a.mu)
@@ -731,8 +974,13 @@ def _wrong_images(a: Answer, ex: Exact, drawn: list[int]):
                 if n in a.segment or seg[0] == seg[1]:
                     continue
                 x = value(a.kind, pos, a.name, seg, a.mu)
-                yield x, (f"another point's image on the same plan: {_segment_name(a.kind, seg)}"
-                          f" = {_num(x)} mm")
+                yield (
+                    x,
+                    (
+                        f"another point's image on the same plan: {_segment_name(a.kind, seg)}"
+                        f" = {_num(x)} mm"
+                    ),
+                )
     elif a.kind == "reaction":
         fa = ex.forces(pos)
         for r in fa.reactions.values():

@@ -13,8 +13,11 @@ from .cli_errors import reports_errors
 
 @click.group()
 @click.version_option(package_name="mmt_plans")
-@click.option("--debug", is_flag=True,
-              help="Show the traceback of an internal error (also: MMT_PLANS_DEBUG=1).")
+@click.option(
+    "--debug",
+    is_flag=True,
+    help="Show the traceback of an internal error (also: MMT_PLANS_DEBUG=1).",
+)
 def main(debug: bool) -> None:
     """Graph-analytic analysis of planar linkages: plans, forces, A1 sheets.
 
@@ -24,12 +27,19 @@ def main(debug: bool) -> None:
 
 @main.command()
 @click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
-@click.option("--json", "json_out", type=click.Path(dir_okay=False, path_type=Path),
-              help="Write the results JSON here.")
+@click.option(
+    "--json",
+    "json_out",
+    type=click.Path(dir_okay=False, path_type=Path),
+    help="Write the results JSON here.",
+)
 @click.option("--quiet", is_flag=True, help="Print nothing but errors.")
-@click.option("--partial-turn", is_flag=True,
-              help="A crank that cannot make a whole turn: analyse the range where the "
-                   "mechanism assembles (as [study] partial_turn = true).")
+@click.option(
+    "--partial-turn",
+    is_flag=True,
+    help="A crank that cannot make a whole turn: analyse the range where the "
+    "mechanism assembles (as [study] partial_turn = true).",
+)
 @reports_errors
 def analyze(file: Path, json_out: Path | None, quiet: bool, partial_turn: bool) -> None:
     """Structural, kinematic (and force) analysis of FILE."""
@@ -53,8 +63,13 @@ def analyze(file: Path, json_out: Path | None, quiet: bool, partial_turn: bool) 
 
 
 @main.command()
-@click.option("--samples", "sample_dir", default="samples", show_default=True,
-              type=click.Path(file_okay=False, path_type=Path))
+@click.option(
+    "--samples",
+    "sample_dir",
+    default="samples",
+    show_default=True,
+    type=click.Path(file_okay=False, path_type=Path),
+)
 @click.option("--quick", is_flag=True, help="Fewer repeats (for a smoke run).")
 @reports_errors
 def bench(sample_dir: Path, quick: bool) -> None:
@@ -62,8 +77,6 @@ def bench(sample_dir: Path, quick: bool) -> None:
     from .bench import run_benchmarks
 
     run_benchmarks(sample_dir, quick=quick, echo=click.echo)
-
-
 
 
 # registered last: the draw command uses reports_errors from this module

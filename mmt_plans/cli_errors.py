@@ -23,18 +23,28 @@ import sys
 import traceback
 import warnings
 from functools import wraps
+from typing import Any
 
 import click
 
 from .errors import MmtError, shown
 
-__all__ = ["reports_errors", "debug_enabled", "quiet_numerics", "EXIT_OK", "EXIT_FAILED",
-           "EXIT_BAD_INPUT", "EXIT_INTERNAL", "EXIT_INTERRUPTED", "DEBUG_ENV"]
+__all__ = [
+    "reports_errors",
+    "debug_enabled",
+    "quiet_numerics",
+    "EXIT_OK",
+    "EXIT_FAILED",
+    "EXIT_BAD_INPUT",
+    "EXIT_INTERNAL",
+    "EXIT_INTERRUPTED",
+    "DEBUG_ENV",
+]
 
-EXIT_OK = 0           # done (check: every value within the tolerance)
-EXIT_FAILED = 1       # check: some value out of the tolerance; batch: some file failed
-EXIT_BAD_INPUT = 2    # an MmtError: a bad input file or option, an unwritable output
-EXIT_INTERNAL = 3     # a bug: please report it
+EXIT_OK = 0  # done (check: every value within the tolerance)
+EXIT_FAILED = 1  # check: some value out of the tolerance; batch: some file failed
+EXIT_BAD_INPUT = 2  # an MmtError: a bad input file or option, an unwritable output
+EXIT_INTERNAL = 3  # a bug: please report it
 EXIT_INTERRUPTED = 130  # Ctrl-C
 
 DEBUG_ENV = "MMT_PLANS_DEBUG"
@@ -55,7 +65,7 @@ def debug_enabled() -> bool:
 class quiet_numerics:
     """numpy's floating-point errors and RuntimeWarnings silenced within."""
 
-    def __enter__(self) -> "quiet_numerics":
+    def __enter__(self) -> quiet_numerics:
         import numpy as np
 
         self._errstate = np.errstate(all="ignore")
@@ -65,7 +75,7 @@ class quiet_numerics:
         warnings.simplefilter("ignore", RuntimeWarning)
         return self
 
-    def __exit__(self, *exc: object) -> None:
+    def __exit__(self, *exc: Any) -> None:
         self._warnings.__exit__(*exc)
         self._errstate.__exit__(*exc)
 
@@ -100,7 +110,11 @@ def reports_errors(fn):
         except Exception as err:
             if debug_enabled():
                 traceback.print_exc(file=sys.stderr)
-            click.echo(f"error: {shown(_subject(kwargs))}: internal error ({type(err).__name__}), "
-                       "please report it (run with --debug for the traceback)", err=True)
+            click.echo(
+                f"error: {shown(_subject(kwargs))}: internal error ({type(err).__name__}), "
+                "please report it (run with --debug for the traceback)",
+                err=True,
+            )
             sys.exit(EXIT_INTERNAL)
+
     return wrapper

@@ -186,8 +186,13 @@ class GraphicalDerivative:
         x_mid = self.mid_points[:, 0]
         h = float(x_mid[1] - x_mid[0])
         y = np.asarray(self.mid_points[:, 1])
-        return _periodic_spline_eval(np.asarray(x_mm, dtype=np.float64), float(x_mid[0]), h, y,
-                                     _periodic_spline_moments(y, h))
+        return _periodic_spline_eval(
+            np.asarray(x_mm, dtype=np.float64),
+            float(x_mid[0]),
+            h,
+            y,
+            _periodic_spline_moments(y, h),
+        )
 
 
 @dataclass(frozen=True)
@@ -218,10 +223,15 @@ class KinematicDiagrams:
     @property
     def heights_mm(self) -> tuple[float, float, float]:
         """Drawn heights of the S, V and a diagrams (the curves' extent, axis included), mm."""
+
         def extent(y: Array) -> float:
             return float(max(0.0, y.max()) - min(0.0, y.min()))
-        return (extent(self.s_points[:, 1]), extent(self.velocity.curve[:, 1]),
-                extent(self.acceleration.curve[:, 1]))
+
+        return (
+            extent(self.s_points[:, 1]),
+            extent(self.velocity.curve[:, 1]),
+            extent(self.acceleration.curve[:, 1]),
+        )
 
     def values_at(self, t: ArrayLike) -> tuple[Array, Array]:
         """V and a read off the smooth curves at times t (s)."""
@@ -313,8 +323,14 @@ def graphical_differentiation(
     acceleration = _differentiate(v_points, H2, mu_a, samples_per_interval)
 
     return KinematicDiagrams(
-        n1=float(n1), L=float(L), mu_t=mu_t, mu_S=float(mu_S), mu_V=mu_V, mu_a=mu_a,
-        H1=H1, H2=H2,
+        n1=float(n1),
+        L=float(L),
+        mu_t=mu_t,
+        mu_S=float(mu_S),
+        mu_V=mu_V,
+        mu_a=mu_a,
+        H1=H1,
+        H2=H2,
         abscissae=_frozen(x[:-1]),
         t=_frozen(x[:-1] * mu_t),
         s_points=_frozen(s_points),
@@ -397,11 +413,13 @@ def textbook_derivatives(s: ArrayLike, *, n1: float) -> tuple[Array, Array]:
     return d.v, d.a
 
 
-DIFFERENTIATION_METHODS: Mapping[str, Callable[..., tuple[Array, Array]]] = MappingProxyType({
-    "textbook": textbook_derivatives,
-    "central8": central_difference_derivatives,
-    "spectral": spectral_derivatives,
-})
+DIFFERENTIATION_METHODS: Mapping[str, Callable[..., tuple[Array, Array]]] = MappingProxyType(
+    {
+        "textbook": textbook_derivatives,
+        "central8": central_difference_derivatives,
+        "spectral": spectral_derivatives,
+    }
+)
 
 
 # --------------------------------------------------------------------------- the 5 % check
@@ -467,8 +485,9 @@ def _sign_changes_next_to(plan: Array, i: int) -> bool:
     return bool(sign[i] * sign[(i - 1) % n] <= 0.0 or sign[i] * sign[(i + 1) % n] <= 0.0)
 
 
-def _reference(s: Array | None, s_of_n: Callable[[int], np.ndarray] | None, n: int,
-               n1: float) -> tuple[Array, Array, Array, Array] | None:
+def _reference(
+    s: Array | None, s_of_n: Callable[[int], np.ndarray] | None, n: int, n1: float
+) -> tuple[Array, Array, Array, Array] | None:
     """Accurate V, a at the n positions and a bound on their own error.
 
     With s_of_n, the spectral derivative of at least 360 positions (an even
@@ -498,8 +517,15 @@ def _reference(s: Array | None, s_of_n: Callable[[int], np.ndarray] | None, n: i
 
 
 def _explain(
-    quantity: Literal["v", "a"], i: int, err: float | None, plan: Array, diagram: Array,
-    ref: Array | None, ref_err: Array | None, limit: float, n: int,
+    quantity: Literal["v", "a"],
+    i: int,
+    err: float | None,
+    plan: Array,
+    diagram: Array,
+    ref: Array | None,
+    ref_err: Array | None,
+    limit: float,
+    n: int,
 ) -> tuple[FlagKind, str]:
     p, d = float(plan[i]), float(diagram[i])
     sym, unit = ("V", "m/s") if quantity == "v" else ("a", "m/s²")
@@ -516,8 +542,11 @@ def _explain(
             )
     big = float(np.max(np.abs(plan)))
     if _sign_changes_next_to(plan, i):
-        where = ("an extreme position of the output, where V changes sign" if quantity == "v"
-                 else "where a changes sign (V at its largest or smallest)")
+        where = (
+            "an extreme position of the output, where V changes sign"
+            if quantity == "v"
+            else "where a changes sign (V at its largest or smallest)"
+        )
         if err is None:
             return "sign_change", (
                 f"{sym}_plan is zero here ({where}): formula ({12 if quantity == 'v' else 13}) is"
@@ -606,8 +635,9 @@ def compare_with_plans(
         if s_of_n is not None:
             t = np.arange(n) * (60.0 / (n1 * n))
             for c in sorted(int(c) for c in candidates if int(c) > n):
-                d = graphical_differentiation(s_of_n(c), n1=n1, mu_S=1.0, H1=40.0, H2=40.0,
-                                              samples_per_interval=1)
+                d = graphical_differentiation(
+                    s_of_n(c), n1=n1, mu_S=1.0, H1=40.0, H2=40.0, samples_per_interval=1
+                )
                 v_c, a_c = d.values_at(t)
                 worst_c = 0.0
                 for f in curable:
@@ -678,13 +708,26 @@ class SheetCheck:
         return all(v.passed for v in self.values)
 
 
-def judge(index: int, quantity: Literal["v", "a"], plan: float, diagram: float, largest: float,
-          limit_percent: float = ERROR_LIMIT_PERCENT) -> InvestigatedValue:
+def judge(
+    index: int,
+    quantity: Literal["v", "a"],
+    plan: float,
+    diagram: float,
+    largest: float,
+    limit_percent: float = ERROR_LIMIT_PERCENT,
+) -> InvestigatedValue:
     """One value of the check: relative error by (12)/(13), or, where that is
     ill-conditioned, the absolute error."""
     ill = abs(plan) < ILL_CONDITIONED * largest
     err = (plan - diagram) / plan * 100.0 if plan != 0.0 else math.inf
     passed = ill or abs(err) <= limit_percent
-    return InvestigatedValue(index, quantity, float(plan), float(diagram),
-                             float(err) if math.isfinite(err) else 0.0, abs(plan - diagram), ill,
-                             bool(passed))
+    return InvestigatedValue(
+        index,
+        quantity,
+        float(plan),
+        float(diagram),
+        float(err) if math.isfinite(err) else 0.0,
+        abs(plan - diagram),
+        ill,
+        bool(passed),
+    )

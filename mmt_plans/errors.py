@@ -17,8 +17,9 @@ def shown(text: object, limit: int = MESSAGE_PART_MAX) -> str:
     and cut to `limit` characters with "..." after it."""
     text = str(text)
     if not text.isprintable():
-        text = "".join(ch if ch.isprintable() else ch.encode("unicode_escape").decode("ascii")
-                       for ch in text)
+        text = "".join(
+            ch if ch.isprintable() else ch.encode("unicode_escape").decode("ascii") for ch in text
+        )
     if len(text) > limit:
         text = text[:limit] + "..."
     return text
@@ -61,14 +62,22 @@ class SingularPlanError(MmtError, ArithmeticError):
 
     def __init__(self, phi1_deg: float, group: str, reason: str) -> None:
         self.phi1_deg, self.group, self.reason = phi1_deg, group, reason
-        super().__init__(f"at phi1 = {phi1_deg:.10g} deg, the plan of group {group} is singular: {reason}")
+        super().__init__(
+            f"at phi1 = {phi1_deg:.10g} deg, the plan of group {group} is singular: {reason}"
+        )
 
 
 class ForceError(MmtError, ValueError):
     """The force analysis cannot be done as asked; the message says why and what to change."""
 
-    def __init__(self, problem: str, fix: str = "", *, phi1_deg: float | None = None,
-                 group: str | None = None) -> None:
+    def __init__(
+        self,
+        problem: str,
+        fix: str = "",
+        *,
+        phi1_deg: float | None = None,
+        group: str | None = None,
+    ) -> None:
         self.problem, self.fix, self.phi1_deg, self.group = problem, fix, phi1_deg, group
         where = []
         if phi1_deg is not None:
@@ -90,14 +99,15 @@ class PartialTurnError(SpecError):
     for part of it. The message names the group, the crank-angle ranges where
     the mechanism assembles and the fix."""
 
-    def __init__(self, path: str, entry: str, problem: str, fix: str,
-                 ranges: tuple[tuple[float, float], ...]) -> None:
+    def __init__(
+        self, path: str, entry: str, problem: str, fix: str, ranges: tuple[tuple[float, float], ...]
+    ) -> None:
         self.ranges = ranges
         super().__init__(path, entry, problem, fix)
 
 
 def degrees_range(lo: float, hi: float) -> str:
-    """"12.5°…171.3°": a crank-angle interval, counter-clockwise from lo to hi."""
+    """ "12.5°…171.3°": a crank-angle interval, counter-clockwise from lo to hi."""
     return f"{lo:.6g}°…{hi:.6g}°"
 
 
@@ -105,17 +115,22 @@ def partial_turn_error(mech, choice) -> PartialTurnError:
     """The refusal of a mechanism whose chosen branches do not turn fully
     (`kinematics.branches.Branches`)."""
     spans = ", ".join(degrees_range(lo, hi) for lo, hi in choice.ranges) or "no crank angle"
-    problem = (f"the crank cannot make a whole turn: {choice.failing_reason}; the mechanism "
-               f"assembles for phi1 in {spans} (counter-clockwise)")
+    problem = (
+        f"the crank cannot make a whole turn: {choice.failing_reason}; the mechanism "
+        f"assembles for phi1 in {spans} (counter-clockwise)"
+    )
     fixes = []
     if choice.rule == "sketch" and choice.full_turn:
-        combos = "; ".join(", ".join(f"group {g} {s:+d}" for g, s in c.items())
-                           for c in choice.full_turn)
+        combos = "; ".join(
+            ", ".join(f"group {g} {s:+d}" for g, s in c.items()) for c in choice.full_turn
+        )
         problem += f"; the sketched branches do not turn fully, these do: {combos}"
         fixes.append("sketch one of the combinations that turn fully")
     if choice.cure:
         fixes.append(choice.cure)
-    fixes.append("or opt in with [study] partial_turn = true (or --partial-turn) to analyse "
-                 "only the range where it assembles")
+    fixes.append(
+        "or opt in with [study] partial_turn = true (or --partial-turn) to analyse "
+        "only the range where it assembles"
+    )
     entry = f"group {choice.failing_group}" if choice.failing_group else "link"
     return PartialTurnError(mech.path, entry, problem, "; ".join(fixes), choice.ranges)

@@ -31,21 +31,37 @@ import math
 import os
 import secrets
 import stat
+from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any
 
 from .errors import MmtError, SpecError, shown
 
-__all__ = ["MAX_INPUT_BYTES", "OutputError", "NonFiniteResultError", "read_input",
-           "write_bytes_atomic", "write_text_atomic", "atomic_path", "ensure_dir", "check_output",
-           "finite_json", "first_non_finite", "document_date"]
+__all__ = [
+    "MAX_INPUT_BYTES",
+    "OutputError",
+    "NonFiniteResultError",
+    "read_input",
+    "write_bytes_atomic",
+    "write_text_atomic",
+    "atomic_path",
+    "ensure_dir",
+    "check_output",
+    "finite_json",
+    "first_non_finite",
+    "document_date",
+]
 
 MAX_INPUT_BYTES = 1_000_000
 """The largest input file read (1 MB): the largest sample is about 5 kB."""
 
-_UTF16_32_BOMS = (codecs.BOM_UTF32_LE, codecs.BOM_UTF32_BE, codecs.BOM_UTF16_LE,
-                  codecs.BOM_UTF16_BE)
+_UTF16_32_BOMS = (
+    codecs.BOM_UTF32_LE,
+    codecs.BOM_UTF32_BE,
+    codecs.BOM_UTF16_LE,
+    codecs.BOM_UTF16_BE,
+)
 
 
 class OutputError(MmtError, OSError):
@@ -67,6 +83,7 @@ class NonFiniteResultError(MmtError, ValueError):
 
 
 # --- reading ------------------------------------------------------------------------
+
 
 def _kind(mode: int) -> str:
     if stat.S_ISDIR(mode):
@@ -99,21 +116,26 @@ def read_input(path: str | os.PathLike[str], what: str = "mechanism file") -> st
     if not stat.S_ISREG(st.st_mode):
         raise fail(f"is {_kind(st.st_mode)}, not a {what}", f"give the path of the {what} itself")
     if st.st_size > MAX_INPUT_BYTES:
-        raise fail(f"is {st.st_size:,} bytes, more than the {MAX_INPUT_BYTES:,} a {what} may have",
-                   f"give the {what} itself (a mechanism file is a few kB of text)")
+        raise fail(
+            f"is {st.st_size:,} bytes, more than the {MAX_INPUT_BYTES:,} a {what} may have",
+            f"give the {what} itself (a mechanism file is a few kB of text)",
+        )
     try:
         # O_NONBLOCK: if the path became a FIFO since stat(), open() must not wait for a writer
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
         with os.fdopen(fd, "rb") as fh:
             if not stat.S_ISREG(os.fstat(fh.fileno()).st_mode):
-                raise fail(f"is not a regular file, not a {what}",
-                           f"give the path of the {what} itself")
+                raise fail(
+                    f"is not a regular file, not a {what}", f"give the path of the {what} itself"
+                )
             data = fh.read(MAX_INPUT_BYTES + 1)
     except OSError as err:
         raise fail(f"cannot be read ({err.strerror})", f"check the path of the {what}") from None
     if len(data) > MAX_INPUT_BYTES:
-        raise fail(f"is more than the {MAX_INPUT_BYTES:,} bytes a {what} may have",
-                   f"give the {what} itself (a mechanism file is a few kB of text)")
+        raise fail(
+            f"is more than the {MAX_INPUT_BYTES:,} bytes a {what} may have",
+            f"give the {what} itself (a mechanism file is a few kB of text)",
+        )
     return decode_input(data, name, what)
 
 
@@ -121,51 +143,66 @@ def decode_input(data: bytes, name: str, what: str = "mechanism file") -> str:
     """UTF-8 text (a byte-order mark allowed) of an input's bytes, or a SpecError."""
     save = "save it as UTF-8 text (in most editors: Save as, encoding UTF-8)"
     if data.startswith(_UTF16_32_BOMS) and not data.startswith(codecs.BOM_UTF8):
-        raise SpecError(name, "file", f"is UTF-16 or UTF-32 text, not UTF-8", save)
+        raise SpecError(name, "file", "is UTF-16 or UTF-32 text, not UTF-8", save)
     nul = data.find(b"\0")
     if nul >= 0:
         line = data.count(b"\n", 0, nul) + 1
-        raise SpecError(name, "file",
-                        f"contains a NUL byte (line {line}): it is binary data or "
-                        "UTF-16 text, not a UTF-8 text file", save)
+        raise SpecError(
+            name,
+            "file",
+            f"contains a NUL byte (line {line}): it is binary data or "
+            "UTF-16 text, not a UTF-8 text file",
+            save,
+        )
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as err:
         start = err.start
         line = data.count(b"\n", 0, start) + 1
         column = start - (data.rfind(b"\n", 0, start) + 1) + 1
-        raise SpecError(name, "file",
-                        f"is not UTF-8 text: byte 0x{data[start]:02X} at line {line}, column "
-                        f"{column} cannot be decoded (Latin-1 or Windows-1251 text?)",
-                        save) from None
+        raise SpecError(
+            name,
+            "file",
+            f"is not UTF-8 text: byte 0x{data[start]:02X} at line {line}, column "
+            f"{column} cannot be decoded (Latin-1 or Windows-1251 text?)",
+            save,
+        ) from None
 
 
 # --- writing ------------------------------------------------------------------------
+
 
 def _os_problem(err: OSError, target: Path) -> OutputError:
     """A clean OutputError for an OSError met while writing `target`."""
     if isinstance(err, OutputError):
         return err
     if err.errno in (errno.EACCES, errno.EPERM, errno.EROFS):
-        return OutputError(target, f"cannot be written: {err.strerror}",
-                           "choose a folder you may write to (-o / --json), or change its "
-                           "permissions")
+        return OutputError(
+            target,
+            f"cannot be written: {err.strerror}",
+            "choose a folder you may write to (-o / --json), or change its permissions",
+        )
     if err.errno == errno.ENOSPC:
-        return OutputError(target, "cannot be written: the disk is full",
-                           "free some space, or write elsewhere")
+        return OutputError(
+            target, "cannot be written: the disk is full", "free some space, or write elsewhere"
+        )
     if err.errno in (errno.ENOTDIR, errno.EEXIST):
         blocker = _file_in_the_way(target.parent)
         where = f"{shown(blocker)} is a file, not a folder" if blocker else err.strerror
-        return OutputError(target, f"cannot be written: {where}",
-                           "choose another output path, or move that file away")
+        return OutputError(
+            target,
+            f"cannot be written: {where}",
+            "choose another output path, or move that file away",
+        )
     if err.errno == errno.EISDIR:
-        return OutputError(target, "is a folder, not a file",
-                           "give a file name, e.g. out/results.json")
+        return OutputError(
+            target, "is a folder, not a file", "give a file name, e.g. out/results.json"
+        )
     if err.errno == errno.ENAMETOOLONG:
-        return OutputError(target, "cannot be written: the name is too long",
-                           "choose a shorter output path")
-    return OutputError(target, f"cannot be written: {err.strerror or err}",
-                       "check the output path")
+        return OutputError(
+            target, "cannot be written: the name is too long", "choose a shorter output path"
+        )
+    return OutputError(target, f"cannot be written: {err.strerror or err}", "check the output path")
 
 
 def _file_in_the_way(folder: Path) -> Path | None:
@@ -184,11 +221,15 @@ def check_output(path: str | os.PathLike[str], *, folder: bool = False) -> Path:
     where = target if folder else target.parent
     blocker = _file_in_the_way(where)
     if blocker is not None:
-        raise OutputError(target, f"cannot be written: {shown(blocker)} is a file, not a folder",
-                          "choose another output path, or move that file away")
+        raise OutputError(
+            target,
+            f"cannot be written: {shown(blocker)} is a file, not a folder",
+            "choose another output path, or move that file away",
+        )
     if not folder and target.is_dir():
-        raise OutputError(target, "is a folder, not a file",
-                          "give a file name, e.g. out/results.json")
+        raise OutputError(
+            target, "is a folder, not a file", "give a file name, e.g. out/results.json"
+        )
     return target
 
 
@@ -199,15 +240,20 @@ def ensure_dir(folder: str | os.PathLike[str]) -> Path:
         return folder
     blocker = _file_in_the_way(folder)
     if blocker is not None:
-        raise OutputError(folder, f"cannot be a folder: {shown(blocker)} is a file",
-                          "choose another output folder, or move that file away")
+        raise OutputError(
+            folder,
+            f"cannot be a folder: {shown(blocker)} is a file",
+            "choose another output folder, or move that file away",
+        )
     try:
         folder.mkdir(parents=True, exist_ok=True)
     except OSError as err:
         if err.errno in (errno.EACCES, errno.EPERM, errno.EROFS):
-            raise OutputError(folder, f"cannot be created: {err.strerror}",
-                              "choose a folder you may write to, or change the permissions "
-                              "of its parent") from None
+            raise OutputError(
+                folder,
+                f"cannot be created: {err.strerror}",
+                "choose a folder you may write to, or change the permissions of its parent",
+            ) from None
         raise _os_problem(err, folder / "x") from None
     return folder
 
@@ -223,8 +269,9 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
     target = Path(path)
     ensure_dir(target.parent)
     if target.is_dir():
-        raise OutputError(target, "is a folder, not a file",
-                          "give a file name, e.g. out/results.json")
+        raise OutputError(
+            target, "is a folder, not a file", "give a file name, e.g. out/results.json"
+        )
     tmp = target.with_name(f".{target.name}.tmp-{os.getpid()}-{secrets.token_hex(4)}")
     try:
         yield tmp
@@ -254,6 +301,7 @@ def write_text_atomic(path: str | os.PathLike[str], text: str) -> Path:
 
 # --- results ------------------------------------------------------------------------
 
+
 def first_non_finite(data: Any) -> tuple[str, float] | None:
     """(where, value) of the first float in `data` (dicts, lists, tuples) that
     is NaN or infinite, as `positions[3].points.B[0]`; None when all are finite."""
@@ -264,8 +312,9 @@ def first_non_finite(data: Any) -> tuple[str, float] | None:
             if not math.isfinite(value):
                 return where or "(the value)", value
         elif isinstance(value, dict):
-            stack.extend((f"{where}.{k}" if where else str(k), v)
-                         for k, v in reversed(list(value.items())))
+            stack.extend(
+                (f"{where}.{k}" if where else str(k), v) for k, v in reversed(list(value.items()))
+            )
         elif isinstance(value, (list, tuple)):
             stack.extend((f"{where}[{i}]", v) for i, v in reversed(list(enumerate(value))))
     return None
@@ -280,13 +329,14 @@ def finite_json(data: Any, source: str = "results") -> str:
         raise NonFiniteResultError(
             f"{shown(source)}: the result {shown(where, 200)} is {value}, not a finite number; "
             "nothing was written\n  fix: check the file's numbers (units are mm, kg, N, rpm); "
-            "if they are sane, please report this file")
+            "if they are sane, please report this file"
+        )
     return json.dumps(data, indent=1, allow_nan=False) + "\n"
 
 
 # --- reproducible documents ---------------------------------------------------------
 
-FIXED_DATE = _dt.datetime(2000, 1, 1, tzinfo=_dt.timezone.utc)
+FIXED_DATE = _dt.datetime(2000, 1, 1, tzinfo=_dt.UTC)
 
 
 def document_date() -> str:
@@ -297,7 +347,7 @@ def document_date() -> str:
     when = FIXED_DATE
     if epoch:
         try:
-            when = _dt.datetime.fromtimestamp(int(epoch), _dt.timezone.utc)
+            when = _dt.datetime.fromtimestamp(int(epoch), _dt.UTC)
         except (ValueError, OverflowError, OSError):
             when = FIXED_DATE
     return when.strftime("%Y-%m-%dT%H:%M:%SZ")

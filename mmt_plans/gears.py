@@ -72,8 +72,9 @@ class PlanetaryStage:
     def __post_init__(self) -> None:
         meshes = tuple(self.meshes)
         if len(meshes) < 2:
-            raise ValueError("a planetary stage needs two meshes or more (central, satellite, "
-                             "central)")
+            raise ValueError(
+                "a planetary stage needs two meshes or more (central, satellite, central)"
+            )
         object.__setattr__(self, "meshes", meshes)
         if self.exact_carrier_held_ratio == 1:
             raise ValueError("u^H = 1: the carrier cannot turn (u_1H = 0)")
@@ -162,19 +163,32 @@ class GearTrain:
     def from_toml(cls, table: Mapping[str, Any], path: str) -> GearTrain:
         """Read the ``[gears]`` table of a mechanism file (SPEC_FORMAT.md, "Gears")."""
         if not isinstance(table, Mapping):
-            raise SpecError(path, "gears", "must be a table",
-                            "write [gears] with motor_rpm and [[gears.stage]] blocks")
+            raise SpecError(
+                path,
+                "gears",
+                "must be a table",
+                "write [gears] with motor_rpm and [[gears.stage]] blocks",
+            )
         _check_keys(table, ("motor_rpm", "stage"), "gears", path)
         motor_rpm = _read_motor_rpm(table, path)
         raw_stages = table.get("stage")
         if raw_stages is None or (isinstance(raw_stages, list) and not raw_stages):
-            raise SpecError(path, "gears.stage", "no stages given",
-                            'add a [[gears.stage]] with z = [z1, z2] and mesh = "external"')
+            raise SpecError(
+                path,
+                "gears.stage",
+                "no stages given",
+                'add a [[gears.stage]] with z = [z1, z2] and mesh = "external"',
+            )
         if not isinstance(raw_stages, list):
-            raise SpecError(path, "gears.stage", "must be an array of tables",
-                            "write each stage as its own [[gears.stage]] block")
-        stages = tuple(_read_stage(raw, f"gears.stage[{i}]", path)
-                       for i, raw in enumerate(raw_stages, 1))
+            raise SpecError(
+                path,
+                "gears.stage",
+                "must be an array of tables",
+                "write each stage as its own [[gears.stage]] block",
+            )
+        stages = tuple(
+            _read_stage(raw, f"gears.stage[{i}]", path) for i, raw in enumerate(raw_stages, 1)
+        )
         return cls(motor_rpm=motor_rpm, stages=stages)
 
     def steps(self, lang: Lang = "en") -> list[Step]:
@@ -188,39 +202,67 @@ class GearTrain:
             if isinstance(stage, GearPair):
                 name = "u" + _join(gears[0], gears[1])
                 sym, num = _mesh_terms(stage, gears[0], gears[1])
-                out.append(Step(words["pair"], f"{name} = {sym}", num,
-                                _ratio(stage.exact_ratio, lang)))
+                out.append(
+                    Step(words["pair"], f"{name} = {sym}", num, _ratio(stage.exact_ratio, lang))
+                )
             else:
                 first, last = gears[0], gears[-1]
                 held = f"u{_join(first, last)}^H"
                 name = f"u{_join(first, 'H')}^{last}"
-                terms = [_mesh_terms(m, gears[2 * k], gears[2 * k + 1])
-                         for k, m in enumerate(stage.meshes)]
-                out.append(Step(words["held"],
-                                f"{held} = " + "·".join(f"({s})" for s, _ in terms),
-                                "·".join(f"({n})" for _, n in terms),
-                                _ratio(stage.exact_carrier_held_ratio, lang)))
-                out.append(Step(words["willis"], f"{name} = 1 {_MINUS} {held}",
-                                f"1 {_MINUS} {_paren(stage.exact_carrier_held_ratio, lang)}",
-                                _ratio(stage.exact_ratio, lang)))
+                terms = [
+                    _mesh_terms(m, gears[2 * k], gears[2 * k + 1])
+                    for k, m in enumerate(stage.meshes)
+                ]
+                out.append(
+                    Step(
+                        words["held"],
+                        f"{held} = " + "·".join(f"({s})" for s, _ in terms),
+                        "·".join(f"({n})" for _, n in terms),
+                        _ratio(stage.exact_carrier_held_ratio, lang),
+                    )
+                )
+                out.append(
+                    Step(
+                        words["willis"],
+                        f"{name} = 1 {_MINUS} {held}",
+                        f"1 {_MINUS} {_paren(stage.exact_carrier_held_ratio, lang)}",
+                        _ratio(stage.exact_ratio, lang),
+                    )
+                )
             stage_names.append(name)
             stage_values.append(stage.exact_ratio)
         # A single stage is the whole train: its own name stands for u_m1.
         total = words["u_total"] if len(self.stages) > 1 else stage_names[0]
         if len(self.stages) > 1:
-            out.append(Step(words["train"], f"{total} = " + "·".join(stage_names),
-                            "·".join(_paren(v, lang) for v in stage_values),
-                            _ratio(self.exact_ratio, lang)))
+            out.append(
+                Step(
+                    words["train"],
+                    f"{total} = " + "·".join(stage_names),
+                    "·".join(_paren(v, lang) for v in stage_values),
+                    _ratio(self.exact_ratio, lang),
+                )
+            )
         w_m, rad = words["omega_m"], words["rad/s"]
-        out.append(Step(words["motor"], f"{w_m} = π·{words['n_m']}/30",
-                        f"π·{_num(self.motor_rpm, None, lang)}/30",
-                        f"{_num(self.motor_omega, 2, lang)} {rad}"))
-        out.append(Step(words["crank"], f"ω1 = {w_m}/|{total}|",
-                        f"{_num(self.motor_omega, 2, lang)}/{_ratio(abs(self.exact_ratio), lang)}",
-                        f"{_num(self.omega, 2, lang)} {rad}"))
+        out.append(
+            Step(
+                words["motor"],
+                f"{w_m} = π·{words['n_m']}/30",
+                f"π·{_num(self.motor_rpm, None, lang)}/30",
+                f"{_num(self.motor_omega, 2, lang)} {rad}",
+            )
+        )
+        out.append(
+            Step(
+                words["crank"],
+                f"ω1 = {w_m}/|{total}|",
+                f"{_num(self.motor_omega, 2, lang)}/{_ratio(abs(self.exact_ratio), lang)}",
+                f"{_num(self.omega, 2, lang)} {rad}",
+            )
+        )
         # Seed 002 §1.6 closes task 1 with ε1: constant motor speed through a constant ratio.
-        out.append(Step(words["eps"], "ε1 = dω1/dt", f"d({w_m}/|{total}|)/dt",
-                        f"0 {words['rad/s2']}"))
+        out.append(
+            Step(words["eps"], "ε1 = dω1/dt", f"d({w_m}/|{total}|)/dt", f"0 {words['rad/s2']}")
+        )
         return out
 
 
@@ -295,14 +337,18 @@ def _is_teeth(x: object) -> bool:
     return isinstance(x, int) and not isinstance(x, bool) and x > 0
 
 
-def _check_keys(table: Mapping[str, Any], allowed: Sequence[str], entry: str, path: str,
-                elsewhere: Mapping[str, str] | None = None) -> None:
+def _check_keys(
+    table: Mapping[str, Any],
+    allowed: Sequence[str],
+    entry: str,
+    path: str,
+    elsewhere: Mapping[str, str] | None = None,
+) -> None:
     for key in table:
         if key in allowed:
             continue
         if elsewhere and key in elsewhere:
-            raise SpecError(path, f"{entry}.{key}", f"{key!r} does not belong here",
-                            elsewhere[key])
+            raise SpecError(path, f"{entry}.{key}", f"{key!r} does not belong here", elsewhere[key])
         close = difflib.get_close_matches(str(key), allowed, n=1)
         fix = f"did you mean {close[0]!r}?" if close else "allowed keys: " + ", ".join(allowed)
         raise SpecError(path, f"{entry}.{key}", "unknown key", fix)
@@ -310,12 +356,17 @@ def _check_keys(table: Mapping[str, Any], allowed: Sequence[str], entry: str, pa
 
 def _read_motor_rpm(table: Mapping[str, Any], path: str) -> float:
     if "motor_rpm" not in table:
-        raise SpecError(path, "gears.motor_rpm", "missing",
-                        "add motor_rpm = 1450 (the motor speed, 1/min)")
+        raise SpecError(
+            path, "gears.motor_rpm", "missing", "add motor_rpm = 1450 (the motor speed, 1/min)"
+        )
     rpm = table["motor_rpm"]
     if not _is_number(rpm) or not math.isfinite(rpm) or rpm <= 0:
-        raise SpecError(path, "gears.motor_rpm", f"must be a positive number of rpm, got {rpm!r}",
-                        "write the motor speed in 1/min, e.g. motor_rpm = 1450")
+        raise SpecError(
+            path,
+            "gears.motor_rpm",
+            f"must be a positive number of rpm, got {rpm!r}",
+            "write the motor speed in 1/min, e.g. motor_rpm = 1450",
+        )
     return float(rpm)
 
 
@@ -329,8 +380,9 @@ def _choice(value: object, allowed: Sequence[str], entry: str, path: str) -> str
     raise SpecError(path, entry, f"{value!r} is not one of {', '.join(allowed)}", fix)
 
 
-def _read_pair(raw: object, entry: str, path: str,
-               elsewhere: Mapping[str, str] | None = None) -> GearPair:
+def _read_pair(
+    raw: object, entry: str, path: str, elsewhere: Mapping[str, str] | None = None
+) -> GearPair:
     if not isinstance(raw, Mapping):
         raise SpecError(path, entry, "must be a table", 'write { z = [z1, z2], mesh = "external" }')
     allowed = ("z", "mesh") if elsewhere is None else ("kind", "z", "mesh")
@@ -339,37 +391,52 @@ def _read_pair(raw: object, entry: str, path: str,
         raise SpecError(path, f"{entry}.z", "missing", "add z = [z1, z2], driving gear first")
     z = raw["z"]
     if not (isinstance(z, (list, tuple)) and len(z) == 2 and all(_is_teeth(n) for n in z)):
-        raise SpecError(path, f"{entry}.z",
-                        f"must be a list of two positive whole numbers, got {z!r}",
-                        "write the tooth counts, driving gear first, e.g. z = [25, 50]")
+        raise SpecError(
+            path,
+            f"{entry}.z",
+            f"must be a list of two positive whole numbers, got {z!r}",
+            "write the tooth counts, driving gear first, e.g. z = [25, 50]",
+        )
     if "mesh" not in raw:
-        raise SpecError(path, f"{entry}.mesh", "missing",
-                        'add mesh = "external" or mesh = "internal"')
+        raise SpecError(
+            path, f"{entry}.mesh", "missing", 'add mesh = "external" or mesh = "internal"'
+        )
     mesh = _choice(raw["mesh"], MESH_KINDS, f"{entry}.mesh", path)
     return GearPair(z=(z[0], z[1]), mesh=mesh)  # type: ignore[arg-type]
 
 
 def _read_stage(raw: object, entry: str, path: str) -> Stage:
     if not isinstance(raw, Mapping):
-        raise SpecError(path, entry, "must be a table",
-                        "write the stage as a [[gears.stage]] block")
+        raise SpecError(
+            path, entry, "must be a table", "write the stage as a [[gears.stage]] block"
+        )
     kind = _choice(raw.get("kind", "pair"), STAGE_KINDS, f"{entry}.kind", path)
     if kind == "pair":
-        return _read_pair(raw, entry, path, elsewhere={
-            "meshes": 'meshes belong to a planetary stage: add kind = "planetary"'})
+        return _read_pair(
+            raw,
+            entry,
+            path,
+            elsewhere={"meshes": 'meshes belong to a planetary stage: add kind = "planetary"'},
+        )
     in_meshes = 'a planetary stage lists its gears in meshes = [{ z = [..], mesh = ".." }, ...]'
     _check_keys(raw, ("kind", "meshes"), entry, path, elsewhere={"z": in_meshes, "mesh": in_meshes})
     meshes = raw.get("meshes")
     if not isinstance(meshes, list) or len(meshes) < 2:
-        raise SpecError(path, f"{entry}.meshes",
-                        "a planetary stage needs a list of two meshes or more, from the input "
-                        "central gear through the satellites to the fixed central gear",
-                        'write meshes = [{ z = [20, 30], mesh = "external" }, '
-                        '{ z = [30, 80], mesh = "internal" }]')
+        raise SpecError(
+            path,
+            f"{entry}.meshes",
+            "a planetary stage needs a list of two meshes or more, from the input "
+            "central gear through the satellites to the fixed central gear",
+            'write meshes = [{ z = [20, 30], mesh = "external" }, '
+            '{ z = [30, 80], mesh = "internal" }]',
+        )
     pairs = tuple(_read_pair(m, f"{entry}.meshes[{k}]", path) for k, m in enumerate(meshes, 1))
     try:
         return PlanetaryStage(meshes=pairs)
     except ValueError as err:
-        raise SpecError(path, f"{entry}.meshes", str(err),
-                        "check the tooth counts and meshes: with the carrier held "
-                        "the train must not be 1:1") from err
+        raise SpecError(
+            path,
+            f"{entry}.meshes",
+            str(err),
+            "check the tooth counts and meshes: with the carrier held the train must not be 1:1",
+        ) from err

@@ -7,9 +7,10 @@ so everything below this module computes in SI.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from functools import cached_property
-from typing import Any, Literal, Mapping
+from typing import Any, Literal
 
 import numpy as np
 
@@ -164,11 +165,11 @@ class Mechanism:
         """The title in `lang` where the file gives one (title_uk), else `title`."""
         return self.titles.get(lang, self.title)
 
-    def with_changes(self, **kw: Any) -> "Mechanism":
+    def with_changes(self, **kw: Any) -> Mechanism:
         """A copy with some fields replaced (caches are not carried over)."""
         return replace(self, **kw)
 
-    def with_partial_turn(self) -> "Mechanism":
+    def with_partial_turn(self) -> Mechanism:
         """The same mechanism opted in to analysing a partial turn (--partial-turn)."""
         return replace(self, study=replace(self.study, partial_turn=True))
 
@@ -216,8 +217,7 @@ class Mechanism:
         """The one point the driving link shares with another moving link (A)."""
         link = self.links[self.drive.link]
         return next(
-            p for p in link.points
-            if any(o not in (FRAME, link.id) for o in self.point_owners[p])
+            p for p in link.points if any(o not in (FRAME, link.id) for o in self.point_owners[p])
         )
 
     @property

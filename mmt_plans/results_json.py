@@ -38,29 +38,40 @@ def results(solution: Solution, *, diagrams: bool = True) -> dict[str, Any]:
             positions.append({**head, "stroke": pos.stroke, "problem": str(problem)})
             kinematics.append({**head, "problem": str(problem)})
             continue
-        positions.append({**head, "stroke": pos.stroke,
-                          "points": {n: _pair(sw.points[n][k]) for n in point_names}})
+        positions.append(
+            {
+                **head,
+                "stroke": pos.stroke,
+                "points": {n: _pair(sw.points[n][k]) for n in point_names},
+            }
+        )
         if problem is not None:
             kinematics.append({**head, "problem": str(problem)})
             continue
-        kinematics.append({
-            **head,
-            "v": {n: _pair(sw.v[n][k]) for n in point_names},
-            "a": {n: _pair(sw.a[n][k]) for n in point_names},
-            "v_cm": {str(lk.id): _pair(sw.v[lk.cm_name][k]) for lk in mech.links.values()},
-            "a_cm": {str(lk.id): _pair(sw.a[lk.cm_name][k]) for lk in mech.links.values()},
-            "omega": {str(lid): float(sw.omega[lid][k]) for lid in mech.links},
-            "eps": {str(lid): float(sw.eps[lid][k]) for lid in mech.links},
-        })
+        kinematics.append(
+            {
+                **head,
+                "v": {n: _pair(sw.v[n][k]) for n in point_names},
+                "a": {n: _pair(sw.a[n][k]) for n in point_names},
+                "v_cm": {str(lk.id): _pair(sw.v[lk.cm_name][k]) for lk in mech.links.values()},
+                "a_cm": {str(lk.id): _pair(sw.a[lk.cm_name][k]) for lk in mech.links.values()},
+                "omega": {str(lid): float(sw.omega[lid][k]) for lid in mech.links},
+                "eps": {str(lid): float(sw.eps[lid][k]) for lid in mech.links},
+            }
+        )
     drive = mech.drive
     ext = solution.extremes
     return {
         "schema": SCHEMA,
         "title": mech.title,
         "structure": solution.structure.as_dict(),
-        "drive": {"link": drive.link, "omega": drive.signed_omega, "sense": drive.sense,
-                  "gear_ratio": None if drive.gear_train is None else drive.gear_train.ratio,
-                  "n1_rpm": drive.n1_rpm},
+        "drive": {
+            "link": drive.link,
+            "omega": drive.signed_omega,
+            "sense": drive.sense,
+            "gear_ratio": None if drive.gear_train is None else drive.gear_train.ratio,
+            "n1_rpm": drive.n1_rpm,
+        },
         # --- additions to the contract ------------------------------------------------------
         "branches": solution.branches.to_json(),
         "extremes_deg": None if ext is None else {"working_start": ext[0], "working_end": ext[1]},
@@ -90,20 +101,43 @@ def diagrams_json(solution: Solution) -> dict[str, Any]:
         "v_plan": [float(x) for x in dg.v_plan],
         "a_plan": [float(x) for x in dg.a_plan],
         "error_percent": {"v": list(check.v_error_percent), "a": list(check.a_error_percent)},
-        "scales": {"mu_S": construction.mu_S, "mu_t": construction.mu_t,
-                   "mu_V": construction.mu_V, "mu_a": construction.mu_a,
-                   "H1_mm": construction.H1, "H2_mm": construction.H2, "L_mm": construction.L},
+        "scales": {
+            "mu_S": construction.mu_S,
+            "mu_t": construction.mu_t,
+            "mu_V": construction.mu_V,
+            "mu_a": construction.mu_a,
+            "H1_mm": construction.H1,
+            "H2_mm": construction.H2,
+            "L_mm": construction.L,
+        },
         "limit_percent": sc.limit_percent,
         # seed 003 §1.8: the investigated positions, on the diagrams drawn
         "passed": sc.passed,
         "grid_intervals": sc.intervals,
         "investigated": [
-            {"index": v.index, "quantity": v.quantity, "plan": v.plan, "diagram": v.diagram,
-             "error_percent": v.error_percent, "absolute_error": v.absolute_error,
-             "ill_conditioned": v.ill_conditioned, "passed": v.passed} for v in sc.values],
+            {
+                "index": v.index,
+                "quantity": v.quantity,
+                "plan": v.plan,
+                "diagram": v.diagram,
+                "error_percent": v.error_percent,
+                "absolute_error": v.absolute_error,
+                "ill_conditioned": v.ill_conditioned,
+                "passed": v.passed,
+            }
+            for v in sc.values
+        ],
         "grids_tried": [{"intervals": i, "passed": p} for i, p in sc.tried],
-        "flags": [{"quantity": f.quantity, "index": f.index, "error_percent": f.error_percent,
-                   "kind": f.kind, "reason": f.reason} for f in check.flags],
+        "flags": [
+            {
+                "quantity": f.quantity,
+                "index": f.index,
+                "error_percent": f.error_percent,
+                "kind": f.kind,
+                "reason": f.reason,
+            }
+            for f in check.flags
+        ],
     }
 
 
@@ -112,8 +146,11 @@ def forces_json(solution: Solution) -> dict[str, Any]:
     instead when that position has no kinematics or no force plan)."""
     if solution.forces is None:
         k = solution.entry(solution.force_position)
-        return {"index": solution.force_position, "phi1_deg": solution.positions[k].phi1_deg,
-                "problem": solution.forces_problem}
+        return {
+            "index": solution.force_position,
+            "phi1_deg": solution.positions[k].phi1_deg,
+            "problem": solution.forces_problem,
+        }
     out = force_analysis_json(solution.forces)
     out["reduction"] = reduction_json(solution.reduction)
     return out
@@ -134,29 +171,50 @@ def force_analysis_json(fa: ForceAnalysis) -> dict[str, Any]:
         "balancing_force_vector": _pair(fa.driving_link.balancing_vector),
         "balancing_force_lever_couples": _f(fa.lever.balancing_force_couples),
         "reaction_details": {
-            name: {"by": r.by, "on": r.on, "pair": r.pair, "kind": r.kind,
-                   "magnitude": r.magnitude, "point": _pair(r.point), "couple": _f(r.couple),
-                   "components": {c.label: _f(c.value) for c in r.components}}
-            for name, r in fa.reactions.items()},
+            name: {
+                "by": r.by,
+                "on": r.on,
+                "pair": r.pair,
+                "kind": r.kind,
+                "magnitude": r.magnitude,
+                "point": _pair(r.point),
+                "couple": _f(r.couple),
+                "components": {c.label: _f(c.value) for c in r.components},
+            }
+            for name, r in fa.reactions.items()
+        },
         "loads": {
             str(lid): {
-                "mass": ll.mass, "J": ll.J, "S": _pair(ll.centre_of_mass),
-                "a_S": _pair(ll.acceleration_cm), "eps": _f(ll.eps),
-                "G": _pair(ll.weight), "F_in": _pair(ll.inertia_force),
+                "mass": ll.mass,
+                "J": ll.J,
+                "S": _pair(ll.centre_of_mass),
+                "a_S": _pair(ll.acceleration_cm),
+                "eps": _f(ll.eps),
+                "G": _pair(ll.weight),
+                "F_in": _pair(ll.inertia_force),
                 "M_in": _f(ll.inertia_moment),
-                "h": None if ll.shifted_inertia_force is None
-                else _f(ll.shifted_inertia_force.arm),
-                "h_mm": None if ll.shifted_inertia_force is None
-                or ll.shifted_inertia_force.arm_mm is None
+                "h": None if ll.shifted_inertia_force is None else _f(ll.shifted_inertia_force.arm),
+                "h_mm": None
+                if ll.shifted_inertia_force is None or ll.shifted_inertia_force.arm_mm is None
                 else _f(ll.shifted_inertia_force.arm_mm),
-                "K": None if ll.shifted_inertia_force is None
-                else _pair(ll.shifted_inertia_force.point)}
-            for lid, ll in fa.loads.links.items()},
+                "K": None
+                if ll.shifted_inertia_force is None
+                else _pair(ll.shifted_inertia_force.point),
+            }
+            for lid, ll in fa.loads.links.items()
+        },
         "external_forces": {
-            f.name: {"link": f.link, "at": f.at, "point": _pair(f.point),
-                     "force": _pair(f.force), "acting": f.acting, "at_rest": f.at_rest,
-                     "rule": f.rule}
-            for f in fa.loads.production_resistance},
+            f.name: {
+                "link": f.link,
+                "at": f.at,
+                "point": _pair(f.point),
+                "force": _pair(f.force),
+                "acting": f.acting,
+                "at_rest": f.at_rest,
+                "rule": f.rule,
+            }
+            for f in fa.loads.production_resistance
+        },
     }
 
 

@@ -22,9 +22,10 @@ The ranges of the drawn segments come from seed 003: pa not less than
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass
 from decimal import Decimal
-from typing import Iterator, Literal, get_args
+from typing import Literal, get_args
 
 from .i18n import Language, catalogue, check_language
 
@@ -195,6 +196,8 @@ def scale_for(magnitude: float, target: DrawnLength) -> float:
 Quantity = Literal[
     "length", "displacement", "velocity", "acceleration", "force", "time", "moment", "angle"
 ]
+
+
 @dataclass(frozen=True)
 class _QuantityIndex:
     index: str
@@ -277,5 +280,5 @@ def format_scale(
     *,
     decimal_comma: bool | None = None,
 ) -> str:
-    """"μV = 0.01 (m/s)/mm", "μ_l = 0.005 m/mm", "μF = 50 N/mm"; "μV = 0,01 (м/с)/мм"."""
+    """ "μV = 0.01 (m/s)/mm", "μ_l = 0.005 m/mm", "μF = 50 N/mm"; "μV = 0,01 (м/с)/мм"."""
     return str(scale_label(mu, quantity, lang, decimal_comma=decimal_comma))

@@ -17,8 +17,8 @@ assemble, diagrams of a partial turn) is kept as its problem, never as NaN.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Sequence
 
 import numpy as np
 
@@ -117,8 +117,10 @@ class Solution:
         for k, p in enumerate(self.positions):
             if p.index == index:
                 return k
-        raise ForceError(f"position {index} does not exist",
-                         f"use a position 0..{self.mechanism.study.positions - 1}")
+        raise ForceError(
+            f"position {index} does not exist",
+            f"use a position 0..{self.mechanism.study.positions - 1}",
+        )
 
     def problem(self, k: int) -> MmtError | None:
         """Why entry k of `positions` has no kinematics (None when it has)."""
@@ -136,8 +138,9 @@ class Solution:
         return output_along(self.mechanism, sweep)
 
     def stroke_of(self, phi1_deg: float) -> Stroke:
-        return _stroke_of(self.mechanism, self.chain, self.limits, self.extremes,
-                          self.working_span_deg, phi1_deg)
+        return _stroke_of(
+            self.mechanism, self.chain, self.limits, self.extremes, self.working_span_deg, phi1_deg
+        )
 
     def require_forces(self) -> ForceAnalysis:
         """The force analysis at the force position, or its problem raised."""
@@ -158,20 +161,25 @@ class Solution:
     def state(self, index: int | None = None, *, phi1_deg: float | None = None) -> PositionState:
         """Where every link is and how it moves at position `index`, or at any crank angle."""
         if (index is None) == (phi1_deg is None):
-            raise ForceError("give a position index or a crank angle, not both",
-                             "call with index or phi1_deg=...")
+            raise ForceError(
+                "give a position index or a crank angle, not both",
+                "call with index or phi1_deg=...",
+            )
         if phi1_deg is not None:
             phi = float(phi1_deg) % 360.0
             return from_sweep(self.mechanism, self.sweep_at([phi]), 0, None, self.stroke_of(phi))
         if isinstance(index, bool) or not isinstance(index, (int, np.integer)):
-            raise ForceError(f"the position index {index!r} is not a whole number",
-                             "give a position index, e.g. 2")
+            raise ForceError(
+                f"the position index {index!r} is not a whole number",
+                "give a position index, e.g. 2",
+            )
         k = self.entry(int(index))
         pos = self.positions[k]
         return from_sweep(self.mechanism, self.sweep, k, pos.index, pos.stroke)
 
-    def forces_at(self, index: int | None = None, *, phi1_deg: float | None = None
-                  ) -> ForceAnalysis:
+    def forces_at(
+        self, index: int | None = None, *, phi1_deg: float | None = None
+    ) -> ForceAnalysis:
         """The force analysis at another position or crank angle (the force
         position's is `forces`)."""
         if index is None and phi1_deg is None:
@@ -192,14 +200,19 @@ def output_along(mech: Mechanism, sweep: Sweep) -> tuple[np.ndarray, np.ndarray,
     """s, V, a of the output along the working direction (SI, signed)."""
     wd = np.conj(complex(*mech.study.working_direction))
     out = mech.study.output
-    return ((sweep.position_of(out) * wd).real, (sweep.velocity_of(out) * wd).real,
-            (sweep.acceleration_of(out) * wd).real)
+    return (
+        (sweep.position_of(out) * wd).real,
+        (sweep.velocity_of(out) * wd).real,
+        (sweep.acceleration_of(out) * wd).real,
+    )
 
 
 # --- solving -------------------------------------------------------------------------------
 
-def solve(mechanism: Mechanism, *, partial_turn: bool | None = None,
-          forces: bool = True) -> Solution:
+
+def solve(
+    mechanism: Mechanism, *, partial_turn: bool | None = None, forces: bool = True
+) -> Solution:
     """Solve `mechanism` (the order of the module docstring). A crank that
     cannot make a whole turn raises `PartialTurnError` unless the file or
     `partial_turn=True` opts in. `forces=False` leaves out the force analysis
@@ -236,15 +249,30 @@ def solve(mechanism: Mechanism, *, partial_turn: bool | None = None,
             forces_problem = str(err)
     else:
         forces_problem = "the force analysis was not asked for"
-    reduction = reduce_sweep(mech, sw, tuple(p.index for p in positions),
-                             tuple(p.stroke for p in positions))
+    reduction = reduce_sweep(
+        mech, sw, tuple(p.index for p in positions), tuple(p.stroke for p in positions)
+    )
     return Solution(
-        mechanism=mech, structure=structure, chain=chain, branches=branches,
-        limits=turn.limits, extremes=turn.extremes, working_span_deg=turn.working_span_deg,
-        positions=positions, plan_positions=plan_positions, force_position=force_position,
-        sweep=sw, mu_l=mu_l, dense=dense, s_dense=s_dense, diagrams=diagrams,
-        diagrams_problem=diagrams_problem, forces=force_analysis, forces_problem=forces_problem,
-        reduction=reduction)
+        mechanism=mech,
+        structure=structure,
+        chain=chain,
+        branches=branches,
+        limits=turn.limits,
+        extremes=turn.extremes,
+        working_span_deg=turn.working_span_deg,
+        positions=positions,
+        plan_positions=plan_positions,
+        force_position=force_position,
+        sweep=sw,
+        mu_l=mu_l,
+        dense=dense,
+        s_dense=s_dense,
+        diagrams=diagrams,
+        diagrams_problem=diagrams_problem,
+        forces=force_analysis,
+        forces_problem=forces_problem,
+        reduction=reduction,
+    )
 
 
 def _mechanism_scale(mech: Mechanism, chain: Chain) -> float:
@@ -256,15 +284,23 @@ def _mechanism_scale(mech: Mechanism, chain: Chain) -> float:
     return scale_for(float(span), DrawnLength("mechanism", 150.0, 300.0, 220.0))
 
 
-def _diagrams(mech: Mechanism, turn: "_Turn", positions: tuple[Position, ...], sw: Sweep,
-              mu_l: float, investigated: tuple[int, ...]) -> Diagrams:
+def _diagrams(
+    mech: Mechanism,
+    turn: _Turn,
+    positions: tuple[Position, ...],
+    sw: Sweep,
+    mu_l: float,
+    investigated: tuple[int, ...],
+) -> Diagrams:
     """The graphical differentiation and its 5 % check against the plans (seed
     003 §1.7–1.8), judged at the investigated positions on the diagrams drawn:
     the S diagram over n·k divisions of the turn (the positions among them),
     with the fewest k of GRID_REFINEMENTS that pass."""
     if turn.limits is not None:
-        raise MmtError("no kinematic diagrams: the crank does not make a whole turn "
-                       "(partial_turn), and the diagrams of 1.7 cover one turn")
+        raise MmtError(
+            "no kinematic diagrams: the crank does not make a whole turn "
+            "(partial_turn), and the diagrams of 1.7 cover one turn"
+        )
     n = mech.study.positions
     k = [next(j for j, p in enumerate(positions) if p.index == i) for i in range(n)]
     if not sw.ok[k].all():
@@ -293,16 +329,25 @@ def _diagrams(mech: Mechanism, turn: "_Turn", positions: tuple[Position, ...], s
         tried.append((n * refinement, passed))
         if passed:
             break
-    sheet_check = SheetCheck(n * refinement, refinement, ERROR_LIMIT_PERCENT, tuple(values),
-                             tuple(tried))
+    sheet_check = SheetCheck(
+        n * refinement, refinement, ERROR_LIMIT_PERCENT, tuple(values), tuple(tried)
+    )
     at_positions = slice(None, None, refinement)
-    check = compare_with_plans(construction.v[at_positions], construction.a[at_positions], v, a,
-                               n1=n1, s=construction.s[at_positions], candidates=())
+    check = compare_with_plans(
+        construction.v[at_positions],
+        construction.a[at_positions],
+        v,
+        a,
+        n1=n1,
+        s=construction.s[at_positions],
+        candidates=(),
+    )
     return Diagrams(construction, check, v, a, sheet_check, refinement)
 
 
-def _stroke_of(mech: Mechanism, chain: Chain, limits, extremes, working_span_deg,
-               phi1_deg: float) -> Stroke:
+def _stroke_of(
+    mech: Mechanism, chain: Chain, limits, extremes, working_span_deg, phi1_deg: float
+) -> Stroke:
     sense = 1 if mech.drive.sense == "ccw" else -1
     if limits is not None or extremes is None:
         # a partial turn: working where the output moves along the working direction
@@ -326,8 +371,11 @@ class _Turn:
             lo, hi = max(branches.ranges, key=lambda r: (r[1] - r[0]) % 360.0)
             self.limits = (lo, hi) if self.sense > 0 else (hi, lo)
         self.extremes = self._extremes()
-        self.working_span_deg = (None if self.extremes is None else
-                                 ((self.extremes[1] - self.extremes[0]) * self.sense) % 360.0)
+        self.working_span_deg = (
+            None
+            if self.extremes is None
+            else ((self.extremes[1] - self.extremes[0]) * self.sense) % 360.0
+        )
         self.phi0 = self._phi0()
 
     @property
@@ -362,7 +410,8 @@ class _Turn:
         if np.ptp(s[ok]) < 1e-12 * max(1.0, float(np.max(np.abs(s[ok])))):
             raise StructureError(
                 f"{self.mech.path}: output {self.mech.study.output} does not move along the "
-                "working direction: set study.working_direction or study.zero")
+                "working direction: set study.working_direction or study.zero"
+            )
         # brackets [φ_i, φ_i+1] of the grid where ds/dφ changes sign
         nxt = np.roll(np.arange(grid.size), -1)
         if self.limits is not None:
@@ -376,8 +425,10 @@ class _Turn:
         hi_b = lo_b + (step if self.limits is None else self.sense * step)
         roots = self._root(np.minimum(lo_b, hi_b), np.maximum(lo_b, hi_b))
         s_roots, _, _ = self.along(self.chain.sweep(roots))
-        return (float(roots[int(np.argmin(s_roots))] % 360.0),
-                float(roots[int(np.argmax(s_roots))] % 360.0))
+        return (
+            float(roots[int(np.argmin(s_roots))] % 360.0),
+            float(roots[int(np.argmax(s_roots))] % 360.0),
+        )
 
     def _root(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
         """Zeros of ds/dφ in the brackets [a, b] (deg, ds/dφ changes sign in
@@ -396,8 +447,9 @@ class _Turn:
                 newton = phi - np.degrees(f / df)
             inside = np.isfinite(newton) & (newton > a) & (newton < b)
             new = np.where(inside, newton, 0.5 * (a + b))
-            done = (f == 0) | (np.abs(new - phi)
-                               <= 4 * np.finfo(float).eps * np.maximum(1.0, np.abs(phi)))
+            done = (f == 0) | (
+                np.abs(new - phi) <= 4 * np.finfo(float).eps * np.maximum(1.0, np.abs(phi))
+            )
             phi = np.where(f == 0, phi, new)
             if done.all():
                 break
@@ -412,13 +464,15 @@ class _Turn:
             if self.extremes is None:
                 raise StructureError(
                     f"{self.mech.path}: output {self.mech.study.output} has no extreme position "
-                    "along the working direction: set study.zero or study.working_direction")
+                    "along the working direction: set study.zero or study.working_direction"
+                )
             return self.extremes[0]
         return zero % 360.0
 
     def stroke_of(self, phi1_deg: float) -> Stroke:
-        return _stroke_of(self.mech, self.chain, self.limits, self.extremes,
-                          self.working_span_deg, phi1_deg)
+        return _stroke_of(
+            self.mech, self.chain, self.limits, self.extremes, self.working_span_deg, phi1_deg
+        )
 
     def positions(self) -> tuple[Position, ...]:
         n = self.mech.study.positions
@@ -444,8 +498,11 @@ class _Turn:
         mids = [lo + self.sense * span / 2, hi + self.sense * (360.0 - span) / 2]
         picks = []
         for mid in mids:
-            dist = [abs((p.phi1_deg - mid + 180.0) % 360.0 - 180.0)
-                    for p in positions if p.index is not None]
+            dist = [
+                abs((p.phi1_deg - mid + 180.0) % 360.0 - 180.0)
+                for p in positions
+                if p.index is not None
+            ]
             picks.append(int(np.argmin(dist)))
         return tuple(picks)
 

@@ -64,10 +64,18 @@ class Structure:
 
     def as_dict(self) -> dict:
         return {
-            "n": self.n, "p5": self.p5, "p4": self.p4, "W": self.W,
+            "n": self.n,
+            "p5": self.p5,
+            "p4": self.p4,
+            "W": self.W,
             "groups": [
-                {"links": sorted(g.links), "pairs": [p.name for p in g.pairs],
-                 "class": g.group_class, "order": g.order, "kind": g.kind}
+                {
+                    "links": sorted(g.links),
+                    "pairs": [p.name for p in g.pairs],
+                    "class": g.group_class,
+                    "order": g.order,
+                    "kind": g.kind,
+                }
                 for g in self.groups
             ],
             "mechanism_class": self.mechanism_class,
@@ -92,7 +100,8 @@ def analyse_structure(mech: Mechanism) -> Structure:
         if group is None:
             raise StructureError(
                 f"links {sorted(remaining)} do not split into Assur groups "
-                f"(W = {W}); check the pairs of these links")
+                f"(W = {W}); check the pairs of these links"
+            )
         removed.append(group)
         remaining -= set(group.links)
     groups = tuple(reversed(removed))
@@ -119,8 +128,13 @@ def _distances_from(driver: int, mech: Mechanism) -> dict[int, int]:
     return dist
 
 
-def _farthest_group(remaining: set[int], driver: int, pairs: tuple[Pair, ...],
-                    higher: list[tuple[int, int]], distance: dict[int, int]) -> AssurGroup | None:
+def _farthest_group(
+    remaining: set[int],
+    driver: int,
+    pairs: tuple[Pair, ...],
+    higher: list[tuple[int, int]],
+    distance: dict[int, int],
+) -> AssurGroup | None:
     present = remaining | {driver, FRAME}
     live = [p for p in pairs if set(p.links) <= present]
     live_higher = [h for h in higher if set(h) <= present]
@@ -136,7 +150,9 @@ def _farthest_group(remaining: set[int], driver: int, pairs: tuple[Pair, ...],
     return None
 
 
-def _as_group(links: set[int], live: list[Pair], live_higher: list[tuple[int, int]]) -> AssurGroup | None:
+def _as_group(
+    links: set[int], live: list[Pair], live_higher: list[tuple[int, int]]
+) -> AssurGroup | None:
     touching = [p for p in live if set(p.links) & links]
     touching_higher = [h for h in live_higher if set(h) & links]
     if 3 * len(links) - 2 * len(touching) - len(touching_higher) != 0:
@@ -154,9 +170,13 @@ def _as_group(links: set[int], live: list[Pair], live_higher: list[tuple[int, in
     if len(links) == 2:
         return _dyad(links, inner, outer, touching_higher)
     four_contour = len(links) == 4 and len(inner) == 4
-    return AssurGroup(links=tuple(sorted(links)), pairs=tuple(inner + outer),
-                      group_class=4 if four_contour else 3,
-                      order=len(outer) + len(touching_higher), kind=None)
+    return AssurGroup(
+        links=tuple(sorted(links)),
+        pairs=tuple(inner + outer),
+        group_class=4 if four_contour else 3,
+        order=len(outer) + len(touching_higher),
+        kind=None,
+    )
 
 
 def _connected(links: set[int], inner: list[Pair]) -> bool:

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 from ..report import table
 from ..spec import load
@@ -29,8 +29,12 @@ print(best_time(lambda: sweep_everything(chain, phi), int(sys.argv[3])))
 def sweep_time(path: Path, count: int, repeat: int) -> float:
     """Best time of one sweep of `count` angles of the file at `path`, measured
     in a fresh Python process."""
-    done = subprocess.run([sys.executable, "-c", _SWEEP, str(path), str(count), str(repeat)],
-                          capture_output=True, text=True, check=True)
+    done = subprocess.run(
+        [sys.executable, "-c", _SWEEP, str(path), str(count), str(repeat)],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
     return float(done.stdout.strip().splitlines()[-1])
 
 
@@ -46,8 +50,9 @@ def run_benchmarks(sample_dir: Path, quick: bool = False, echo=print) -> None:
         rows.append([path.stem, str(n), f"{t * 1e3:.2f}", f"{t / n * 1e6:.0f}", f"{t_d * 1e3:.2f}"])
     echo("Analysis in-process: kinematics = structure, branches, extremes, positions, plans, JSON;")
     echo("with diagrams = also graphical differentiation and the 5 % check (with its trials)")
-    echo(table(["sample", "positions", "kinematics ms", "per position us", "with diagrams ms"],
-               rows))
+    echo(
+        table(["sample", "positions", "kinematics ms", "per position us", "with diagrams ms"], rows)
+    )
     echo("")
 
     rows = []

@@ -23,8 +23,12 @@ from ..spec import load
 from .timing import best_time
 
 COUNTS = (8, 12, 24, 36, 72, 360)
-METHOD_NAMES = {"plans": "plans (exact)", "textbook": "graphical (textbook)",
-                "central8": "8th-order differences", "spectral": "spectral (FFT)"}
+METHOD_NAMES = {
+    "plans": "plans (exact)",
+    "textbook": "graphical (textbook)",
+    "central8": "8th-order differences",
+    "spectral": "spectral (FFT)",
+}
 
 
 def measure(mech: Mechanism, counts=COUNTS, repeat=5):
@@ -43,6 +47,7 @@ def measure(mech: Mechanism, counts=COUNTS, repeat=5):
         vmax, amax = np.abs(v).max(), np.abs(a).max()
         rows.append(("plans", n, best_time(plans, repeat), 0.0, 0.0))
         for name, method in DIFFERENTIATION_METHODS.items():
+
             def run(method=method):
                 s_, _, _ = plans()
                 return method(s_ - s_[0], n1=n1)
@@ -51,8 +56,15 @@ def measure(mech: Mechanism, counts=COUNTS, repeat=5):
                 vd, ad = run()
             except ValueError:  # too few positions for this method
                 continue
-            rows.append((name, n, best_time(run, repeat),
-                         float(np.abs(vd - v).max() / vmax), float(np.abs(ad - a).max() / amax)))
+            rows.append(
+                (
+                    name,
+                    n,
+                    best_time(run, repeat),
+                    float(np.abs(vd - v).max() / vmax),
+                    float(np.abs(ad - a).max() / amax),
+                )
+            )
     return rows
 
 
@@ -67,9 +79,15 @@ def bench_diagrams(files, repeat, echo, out_dir: Path = Path("out")) -> None:
             continue
         all_rows += [(path.stem,) + r for r in rows]
     echo("Speed against error of V and a of the output (error = max |X - X_plan| / max |X_plan|)")
-    echo(table(["sample", "n", "method", "time us", "V error", "a error"],
-               [[s, str(n), m, f"{t * 1e6:.0f}", f"{ev:.1e}", f"{ea:.1e}"]
-                for s, m, n, t, ev, ea in all_rows]))
+    echo(
+        table(
+            ["sample", "n", "method", "time us", "V error", "a error"],
+            [
+                [s, str(n), m, f"{t * 1e6:.0f}", f"{ev:.1e}", f"{ea:.1e}"]
+                for s, m, n, t, ev, ea in all_rows
+            ],
+        )
+    )
     default = [r for r in all_rows if r[0] == "six_link_press"] or all_rows
     path = plot_speed_error(default, out_dir / "speed_vs_error.svg")
     echo(f"plot: {path}")
@@ -109,8 +127,9 @@ def plot_speed_error(rows, path: Path) -> Path:
             b.line((x0, y), (x0 - 1.5, y), "thin")
             b.text((x0 - 2.5, y), f"1e{k}", 2.5, anchor="right", valign="middle")
         b.text(((x0 + x1) / 2, 8), "time per call, s (log)", 3.0, anchor="center")
-        b.text((8, (y0 + y1) / 2), "relative error of V, a (log)", 3.0, anchor="center",
-               rotation=90)
+        b.text(
+            (8, (y0 + y1) / 2), "relative error of V, a (log)", 3.0, anchor="center", rotation=90
+        )
         b.text((x0, y1 + 8), "Speed against error: six-link press, n = 8 to 360 positions", 3.5)
     lines: dict[str, LineType] = {"textbook": "main", "central8": "dashed", "spectral": "dashdot"}
     ly = y1 - 5

@@ -8,8 +8,8 @@ as the tests and an answer key for every position do.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import Callable, Sequence
 
 from ..errors import MmtError
 from ..forces import force_analysis_at
@@ -25,8 +25,11 @@ def bench_forces(files: Sequence[Path], repeat: int, echo: Callable[[str], None]
         solution = solve(load(path))
         if not all(g.is_dyad for g in solution.structure.groups):
             continue
-        indices = [p.index for p in solution.positions
-                   if p.index is not None and solution.problem(solution.entry(p.index)) is None]
+        indices = [
+            p.index
+            for p in solution.positions
+            if p.index is not None and solution.problem(solution.entry(p.index)) is None
+        ]
         if solution.forces is None:
             rows.append([path.stem, "-", "-", f"not solved: {solution.forces_problem}"])
             continue
@@ -42,8 +45,14 @@ def bench_forces(files: Sequence[Path], repeat: int, echo: Callable[[str], None]
                     pass  # a dead position of a group: reported by analyze, not timed apart
 
         t_all = best_time(every, repeat)
-        rows.append([path.stem, f"{one * 1e3:.3f}", str(len(indices)),
-                     f"{t_all / max(1, len(indices)) * 1e3:.3f}"])
+        rows.append(
+            [
+                path.stem,
+                f"{one * 1e3:.3f}",
+                str(len(indices)),
+                f"{t_all / max(1, len(indices)) * 1e3:.3f}",
+            ]
+        )
     echo("Force analysis per position (loads, groups, driving link, Zhukovsky's lever):")
     echo(table(["sample", "force position ms", "positions", "mean per position ms"], rows))
     echo("")

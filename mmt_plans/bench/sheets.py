@@ -8,8 +8,8 @@ sheets draw), composes, writes SVG, and for PDF converts through Cairo.
 from __future__ import annotations
 
 import tempfile
+from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import Callable, Sequence
 
 from ..report import table
 from ..sheets.compose import available_sheets, write_sheets

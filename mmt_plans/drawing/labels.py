@@ -11,8 +11,8 @@ the least, so a label is never dropped.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Sequence
 from contextlib import nullcontext
-from typing import Iterable, Sequence
 
 import numpy as np
 import shapely
@@ -27,9 +27,27 @@ __all__ = ["Labels", "arc_line"]
 
 # the directions tried round an anchor, preferred first: the given side, then
 # round the compass
-_COMPASS = tuple(np.exp(1j * math.radians(a)) for a in
-                 (45, 135, -45, -135, 90, -90, 0, 180, 22.5, 67.5, 112.5, 157.5, -22.5, -67.5,
-                  -112.5, -157.5))
+_COMPASS = tuple(
+    np.exp(1j * math.radians(a))
+    for a in (
+        45,
+        135,
+        -45,
+        -135,
+        90,
+        -90,
+        0,
+        180,
+        22.5,
+        67.5,
+        112.5,
+        157.5,
+        -22.5,
+        -67.5,
+        -112.5,
+        -157.5,
+    )
+)
 _RINGS = (0.0, 2.5, 5.0, 9.0, 14.0)  # mm further out, tried in turn
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
@@ -37,8 +55,7 @@ _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, 
 class Labels:
     """Places rich-text labels on a recording sketch without collisions."""
 
-    def __init__(self, sketch: RecordingBackend, size: float, *,
-                 rings: PointLike = _RINGS) -> None:
+    def __init__(self, sketch: RecordingBackend, size: float, *, rings: PointLike = _RINGS) -> None:
         self.sketch = sketch
         self.size = size
         # how much further out than `distance` a label may go, tried in turn; past
@@ -68,8 +85,9 @@ class Labels:
     def avoid_circle(self, centre: PointLike, radius: float) -> None:
         self.avoid(Point(tuple(centre)), radius)
 
-    def avoid_drawn(self, calls: Iterable[Call], clearance: float = 0.3, *,
-                    solid: bool = False) -> None:
+    def avoid_drawn(
+        self, calls: Iterable[Call], clearance: float = 0.3, *, solid: bool = False
+    ) -> None:
         """Keep labels off everything already recorded: lines, polylines, the
         edges of polygons, arrows and circles; with `solid`, also the inside
         of polygons and the length of arcs."""
@@ -101,8 +119,7 @@ class Labels:
         probe = RecordingBackend(look=self.sketch.look)
         return probe.rich_text((0.0, 0.0), markup, self.size)
 
-    def later(self, anchor: PointLike, markup: str,
-              towards: PointLike | None = None) -> None:
+    def later(self, anchor: PointLike, markup: str, towards: PointLike | None = None) -> None:
         """A label to write with `write_later`, once every line is drawn and avoided."""
         self._later.append((tuple(float(v) for v in anchor), markup, towards))
 
@@ -112,8 +129,15 @@ class Labels:
             self.place(anchor, markup, towards=towards)
         self._later.clear()
 
-    def place(self, anchor: PointLike, markup: str, *, towards: PointLike | None = None,
-              distance: float = 1.5, group: str | None = None) -> BaseGeometry:
+    def place(
+        self,
+        anchor: PointLike,
+        markup: str,
+        *,
+        towards: PointLike | None = None,
+        distance: float = 1.5,
+        group: str | None = None,
+    ) -> BaseGeometry:
         """Write `markup` beside `anchor`, first trying the side `towards` points to;
         inside a group `group` (class "label") if one is named."""
         w, h, drop = self._extent(markup)
@@ -129,8 +153,15 @@ class Labels:
         cy = (y + dirs.imag * (ring + h / 2 * np.sqrt(np.abs(dirs.imag)))).ravel()
         return self._write_first_free(cx, cy, w, h, drop, markup, group)
 
-    def place_along(self, start: PointLike, end: PointLike, markup: str, *,
-                    distance: float = 1.0, group: str | None = None) -> BaseGeometry:
+    def place_along(
+        self,
+        start: PointLike,
+        end: PointLike,
+        markup: str,
+        *,
+        distance: float = 1.0,
+        group: str | None = None,
+    ) -> BaseGeometry:
         """Write `markup` `distance` mm beside the segment start–end (a link's
         number): at its middle if that is free, else further along, either side."""
         w, h, drop = self._extent(markup)
@@ -138,8 +169,9 @@ class Labels:
         d = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
         sides = np.array([complex(-d[1], d[0]), complex(d[1], -d[0])])
         # how far the box reaches back towards the segment from its centre (an index hangs below)
-        reach = (w / 2 * np.abs(sides.real)
-                 + np.where(sides.imag > 0, h / 2 + drop, h / 2) * np.abs(sides.imag))
+        reach = w / 2 * np.abs(sides.real) + np.where(sides.imag > 0, h / 2 + drop, h / 2) * np.abs(
+            sides.imag
+        )
         anchors = a + np.array(_ALONG)[:, None] * (b - a)
         # nearest ring first, then along the segment, then the side
         ring = (distance + self.rings)[:, None, None]
@@ -152,8 +184,9 @@ class Labels:
         # an index drops 0.3 of the letter height under the line
         return self.width(markup) + 0.4, self.size + 0.4, 0.3 * self.size if "_{" in markup else 0.0
 
-    def _obstacle_cost(self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray,
-                       y1: np.ndarray) -> np.ndarray:
+    def _obstacle_cost(
+        self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
+    ) -> np.ndarray:
         """0.25 for each avoided thing a candidate box comes within its clearance of."""
         cost = np.zeros(x0.size)
         if not self._obstacles:
@@ -164,13 +197,23 @@ class Labels:
         boxes = shapely.box(x0, y0, x1, y1)
         near = self._tree.query(boxes, predicate="dwithin", distance=float(self._reach.max()))
         if near.shape[1]:
-            gap = shapely.distance(boxes[near[0]], np.asarray(self._obstacles, dtype=object)[near[1]])
+            gap = shapely.distance(
+                boxes[near[0]], np.asarray(self._obstacles, dtype=object)[near[1]]
+            )
             hit = near[0][gap < self._reach[near[1]]]
             cost += 0.25 * np.bincount(hit, minlength=x0.size)
         return cost
 
-    def _write_first_free(self, cx: np.ndarray, cy: np.ndarray, w: float, h: float, drop: float,
-                          markup: str, group: str | None) -> BaseGeometry:
+    def _write_first_free(
+        self,
+        cx: np.ndarray,
+        cy: np.ndarray,
+        w: float,
+        h: float,
+        drop: float,
+        markup: str,
+        group: str | None,
+    ) -> BaseGeometry:
         """Write `markup` centred at the first free candidate, else at the one that covers least."""
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = np.zeros(cx.size)
@@ -195,16 +238,15 @@ class Labels:
             k = int(np.argmin(cost))
         footprint = box(x0[k], y0[k], x1[k], y1[k])
         with self.sketch.group(group, "label") if group is not None else nullcontext():
-            self.sketch.rich_text((float(cx[k]), float(cy[k])), markup, self.size, anchor="center",
-                                  valign="middle")
+            self.sketch.rich_text(
+                (float(cx[k]), float(cy[k])), markup, self.size, anchor="center", valign="middle"
+            )
         self.boxes.append(footprint)
         return footprint
 
 
-def arc_line(centre: PointLike, radius: float, start_deg: float,
-             end_deg: float) -> LineString:
+def arc_line(centre: PointLike, radius: float, start_deg: float, end_deg: float) -> LineString:
     """An arc drawn counter-clockwise from start_deg to end_deg, as a polyline."""
     span = (end_deg - start_deg) % 360.0 or 360.0
     t = np.radians(start_deg + np.linspace(0.0, span, 24))
     return LineString(np.c_[centre[0] + radius * np.cos(t), centre[1] + radius * np.sin(t)])
-

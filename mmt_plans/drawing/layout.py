@@ -10,8 +10,9 @@ pair of footprints that share area (or come closer than a clearance).
 from __future__ import annotations
 
 import itertools
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Iterable, Literal, Mapping, Sequence, Union
+from typing import Literal, Union
 
 import shapely
 from shapely.geometry import Polygon, box
@@ -34,7 +35,7 @@ __all__ = [
 
 ElementKind = Literal["drawing", "label", "table", "title_block", "note"]
 Corner = Literal["top-left", "top-right", "bottom-left", "bottom-right"]
-FootprintLike = Union[Rect, BaseGeometry, Sequence[PointLike]]
+FootprintLike = Union[Rect, BaseGeometry, Sequence[PointLike]]  # noqa: UP007 (a runtime alias)
 
 _EPS = 1e-9
 

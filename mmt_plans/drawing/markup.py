@@ -5,12 +5,18 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["image_markup", "point_markup", "component_markup", "plain_label", "force_markup",
-           "equation_markup"]
+__all__ = [
+    "image_markup",
+    "point_markup",
+    "component_markup",
+    "plain_label",
+    "force_markup",
+    "equation_markup",
+]
 
 
 def image_markup(name: str) -> str:
-    """"S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters."""
+    """ "S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters."""
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
     if m:
         return f"{m.group(1).lower()}_{{{m.group(2)}}}"
@@ -23,7 +29,7 @@ def point_markup(name: str) -> str:
 
 
 def component_markup(label: str) -> str:
-    """"a^n_BA" → "a^{n}_{BA}", "V_E/0" → "V_{E/0}"."""
+    """ "a^n_BA" → "a^{n}_{BA}", "V_E/0" → "V_{E/0}"."""
     m = re.fullmatch(r"([A-Za-z])(?:\^(\w))?_(.+)", label)
     if not m:
         return label

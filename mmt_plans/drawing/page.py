@@ -23,9 +23,10 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Any, Iterator, Literal, Mapping, NamedTuple
+from typing import Any, Literal, NamedTuple
 
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend, HAlign
@@ -94,7 +95,9 @@ class Rect:
 
     def __post_init__(self) -> None:
         if self.width < 0 or self.height < 0:
-            raise ValueError(f"a rectangle needs width, height >= 0, got {self.width}, {self.height}")
+            raise ValueError(
+                f"a rectangle needs width, height >= 0, got {self.width}, {self.height}"
+            )
 
     @classmethod
     def from_bounds(cls, left: float, bottom: float, right: float, top: float) -> Rect:
@@ -144,17 +147,18 @@ class Rect:
 
     def overlaps(self, other: Rect) -> bool:
         """True if the interiors share some area (touching edges do not count)."""
-        return (
-            min(self.right, other.right) > max(self.left, other.left)
-            and min(self.top, other.top) > max(self.bottom, other.bottom)
-        )
+        return min(self.right, other.right) > max(self.left, other.left) and min(
+            self.top, other.top
+        ) > max(self.bottom, other.bottom)
 
     def moved(self, dx: float, dy: float) -> Rect:
         return Rect(self.x + dx, self.y + dy, self.width, self.height)
 
     def inset(self, d: float) -> Rect:
         """Shrunk by d on every side (grown for negative d)."""
-        return Rect(self.x + d, self.y + d, max(self.width - 2 * d, 0.0), max(self.height - 2 * d, 0.0))
+        return Rect(
+            self.x + d, self.y + d, max(self.width - 2 * d, 0.0), max(self.height - 2 * d, 0.0)
+        )
 
 
 # --- GOST 2.104 form 1 ------------------------------------------------------
@@ -294,7 +298,10 @@ class Page:
 
     def __post_init__(self) -> None:
         m = self.margins
-        if self.width - m.left - m.right < FORM1_WIDTH or self.height - m.top - m.bottom < FORM1_HEIGHT:
+        if (
+            self.width - m.left - m.right < FORM1_WIDTH
+            or self.height - m.top - m.bottom < FORM1_HEIGHT
+        ):
             raise ValueError(f"page {self.width} x {self.height} mm is too small for a frame")
 
     @classmethod
@@ -303,7 +310,9 @@ class Page:
         try:
             w, h = PAGE_SIZES[name.upper()]
         except KeyError:
-            raise ValueError(f"unknown page size {name!r}; expected one of {', '.join(PAGE_SIZES)}") from None
+            raise ValueError(
+                f"unknown page size {name!r}; expected one of {', '.join(PAGE_SIZES)}"
+            ) from None
         return cls(w, h, margins, name.upper())
 
     @property
@@ -311,10 +320,18 @@ class Page:
         return self.width > self.height
 
     def landscape(self) -> Page:
-        return self if self.is_landscape else dataclasses.replace(self, width=self.height, height=self.width)
+        return (
+            self
+            if self.is_landscape
+            else dataclasses.replace(self, width=self.height, height=self.width)
+        )
 
     def portrait(self) -> Page:
-        return self if not self.is_landscape else dataclasses.replace(self, width=self.height, height=self.width)
+        return (
+            self
+            if not self.is_landscape
+            else dataclasses.replace(self, width=self.height, height=self.width)
+        )
 
     @property
     def rect(self) -> Rect:
@@ -477,9 +494,7 @@ def title_block_texts(
         # Middles of the lines, centred as a group on the cell's middle.
         first = cy + pitch * (len(lines) - 1) / 2.0
         for i, line in enumerate(lines):
-            out.append(
-                PlacedText(cell, line, (cx, first - i * pitch), s, "center", room)
-            )
+            out.append(PlacedText(cell, line, (cx, first - i * pitch), s, "center", room))
 
     # Printed captions.
     for key, cell in _CAPTION_CELLS.items():

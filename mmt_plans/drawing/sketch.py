@@ -35,7 +35,7 @@ class Sketch(RecordingBackend):
             return Rect(0.0, 0.0, 1.0, 1.0)
         return Rect.from_bounds(min(xs) - PAD, min(ys) - PAD, max(xs) + PAD, max(ys) + PAD)
 
-    def add_to_last_group(self, other: "Sketch", group_id: str) -> None:
+    def add_to_last_group(self, other: Sketch, group_id: str) -> None:
         """Splice `other`'s calls into this sketch's last group `group_id`, before its end."""
         end = max(i for i, c in enumerate(self.calls) if c.name == "end_group")
         self.calls[end:end] = [type(c)(c.name, c.args, (group_id,)) for c in other.calls]

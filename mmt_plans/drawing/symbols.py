@@ -18,8 +18,15 @@ def unit_vector(v: np.ndarray) -> np.ndarray:
     return v / n if n > 1e-12 else np.array([1.0, 0.0])
 
 
-def sense_arc(sk: Sketch, centre: PointLike, radius: float, sense: float,
-              start_deg: float = 20.0, end_deg: float = 250.0, line: LineType = "main") -> np.ndarray:
+def sense_arc(
+    sk: Sketch,
+    centre: PointLike,
+    radius: float,
+    sense: float,
+    start_deg: float = 20.0,
+    end_deg: float = 250.0,
+    line: LineType = "main",
+) -> np.ndarray:
     """An arc round `centre` with its arrowhead in the sense of `sense` (ccw
     positive): the direction of ω, ε or a couple. Returns the arrow's tip."""
     c = np.asarray(centre, dtype=float)

@@ -9,8 +9,9 @@ header main, the lines between rows thin. Rows at least 8 mm (GOST 2.105).
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any
 
 from ..i18n import Language, catalogue
 from ..render.backend import Backend, HAlign, PointLike, as_point
@@ -193,8 +194,14 @@ _TEXT = 3.5
 
 
 def table_sketch(
-    look: Any, gid: str, title: str, header: Sequence[str], rows: Sequence[Sequence[str]],
-    widths: Sequence[float], first_markup: Sequence[str], lang: Language = "en",
+    look: Any,
+    gid: str,
+    title: str,
+    header: Sequence[str],
+    rows: Sequence[Sequence[str]],
+    widths: Sequence[float],
+    first_markup: Sequence[str],
+    lang: Language = "en",
 ) -> Sketch:
     """A Table whose first column is set with indices (rich_text) over empty cells;
     Ukrainian tables write numbers with a decimal comma, as the scale labels do."""
@@ -205,14 +212,23 @@ def table_sketch(
 
     body = [["", *(cell(t) for t in r[1:])] for r in rows]
     row_h, head_h = 8.0, 12.0
-    table = Table(header, body, widths, text_size=3.5, row_height=row_h, header_height=head_h,
-                  title=title, title_size=_TEXT)
+    table = Table(
+        header,
+        body,
+        widths,
+        text_size=3.5,
+        row_height=row_h,
+        header_height=head_h,
+        title=title,
+        title_size=_TEXT,
+    )
     table.draw(sk, (0.0, 0.0), gid)
     # The overlay goes into the table's group: reopen it by replaying into it.
     top = -(_TEXT + 3.0) - head_h
     extra = Sketch(look)
     for r, text in enumerate(first_markup):
-        extra.rich_text((widths[0] / 2, top - (r + 0.5) * row_h), text, _TEXT,
-                        anchor="center", valign="middle")
+        extra.rich_text(
+            (widths[0] / 2, top - (r + 0.5) * row_h), text, _TEXT, anchor="center", valign="middle"
+        )
     sk.add_to_last_group(extra, gid)
     return sk

@@ -14,8 +14,8 @@ moment of inertia at every position).
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Mapping
 
 from ..model import Stroke
 from .errors import ForceError
@@ -36,10 +36,24 @@ from .reduction import Reduction
 from .state import PositionState
 
 __all__ = [
-    "force_analysis_at", "ForceAnalysis", "ForceError",
-    "Loads", "LinkLoads", "ExternalForce", "ShiftedInertiaForce", "AppliedForce",
-    "Reaction", "ReactionComponent", "ForcePolygon", "PolygonVector", "GroupForces",
-    "DrivingLinkForces", "reaction_name", "ZhukovskyLever", "LeverForce", "Reduction",
+    "force_analysis_at",
+    "ForceAnalysis",
+    "ForceError",
+    "Loads",
+    "LinkLoads",
+    "ExternalForce",
+    "ShiftedInertiaForce",
+    "AppliedForce",
+    "Reaction",
+    "ReactionComponent",
+    "ForcePolygon",
+    "PolygonVector",
+    "GroupForces",
+    "DrivingLinkForces",
+    "reaction_name",
+    "ZhukovskyLever",
+    "LeverForce",
+    "Reduction",
     "PositionState",
 ]
 
@@ -99,6 +113,7 @@ class ForceAnalysis:
                 return g.free_bodies[link]
         raise KeyError(f"link {link} is not a moving link")
 
+
 def force_analysis_at(state: PositionState, *, mu_l: float | None = None) -> ForceAnalysis:
     """The force analysis at the position of `state`: loads, the groups' force
     plans from the last attached group, the driving link, Zhukovsky's lever.
@@ -106,5 +121,13 @@ def force_analysis_at(state: PositionState, *, mu_l: float | None = None) -> For
     loads = link_loads(state, mu_l)
     groups, driver = solve_groups(loads)
     lever = zhukovsky_lever(loads)
-    return ForceAnalysis(state.index, state.phi1_deg, state.stroke, loads, groups, driver,
-                         with_reactions(groups, driver), lever)
+    return ForceAnalysis(
+        state.index,
+        state.phi1_deg,
+        state.stroke,
+        loads,
+        groups,
+        driver,
+        with_reactions(groups, driver),
+        lever,
+    )

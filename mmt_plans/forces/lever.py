@@ -15,8 +15,8 @@ F'_M = M_IN / l applied at two points of the link perpendicular to it (seed
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Mapping
 
 import numpy as np
 
@@ -89,8 +89,10 @@ class _Builder:
         d = Q - P
         l = abs(d)
         F = (M / l) * 1j * d / l  # at Q; −F at P: (Q − P) × F = M
-        return [self.force(f"F_M{link}", link, names[0], P, -F),
-                self.force(f"F'_M{link}", link, qn, Q, F)]
+        return [
+            self.force(f"F_M{link}", link, names[0], P, -F),
+            self.force(f"F'_M{link}", link, qn, Q, F),
+        ]
 
 
 def zhukovsky_lever(loads: Loads) -> ZhukovskyLever:
@@ -141,5 +143,13 @@ def zhukovsky_lever(loads: Loads) -> ZhukovskyLever:
 
     F_bal = balance(shifted)
     bal = b.force("F_bal", d, mech.crank_pin, A, F_bal * t)
-    return ZhukovskyLever(-90.0 * b.s, {k: xy(v) for k, v in b.images.items()}, tuple(shifted),
-                          bal, F_bal, abs(pa_img), tuple(couples), balance(couples))
+    return ZhukovskyLever(
+        -90.0 * b.s,
+        {k: xy(v) for k, v in b.images.items()},
+        tuple(shifted),
+        bal,
+        F_bal,
+        abs(pa_img),
+        tuple(couples),
+        balance(couples),
+    )

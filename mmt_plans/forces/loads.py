@@ -13,8 +13,9 @@ Moments are signed counter-clockwise positive, as ε is.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Literal, Mapping
+from typing import Literal
 
 import numpy as np
 
@@ -140,8 +141,10 @@ class Loads:
 
 def link_loads(state: PositionState, mu_l: float | None = None) -> Loads:
     if mu_l is not None and not (math.isfinite(mu_l) and mu_l > 0):
-        raise ForceError(f"the length scale mu_l = {mu_l!r} m/mm is not a positive number",
-                         "give the drawing's scale, e.g. mu_l = 0.005")
+        raise ForceError(
+            f"the length scale mu_l = {mu_l!r} m/mm is not a positive number",
+            "give the drawing's scale, e.g. mu_l = 0.005",
+        )
     mech = state.mech
     g = mech.g
     d = mech.drive.link
@@ -154,16 +157,26 @@ def link_loads(state: PositionState, mu_l: float | None = None) -> Loads:
         F_in = -link.mass * a_S
         M_in = -link.J * pose.eps
         links[lid] = LinkLoads(
-            link=lid, mass=link.mass, J=link.J, centre_of_mass=xy(S), acceleration_cm=xy(a_S),
-            eps=pose.eps, weight=xy(complex(0.0, -link.mass * g)), inertia_force=xy(F_in),
-            inertia_moment=M_in + 0.0, shifted_inertia_force=shifted_inertia_force(
-                lid, S, F_in, M_in, mu_l, NOISE * link.mass * a_A))
+            link=lid,
+            mass=link.mass,
+            J=link.J,
+            centre_of_mass=xy(S),
+            acceleration_cm=xy(a_S),
+            eps=pose.eps,
+            weight=xy(complex(0.0, -link.mass * g)),
+            inertia_force=xy(F_in),
+            inertia_moment=M_in + 0.0,
+            shifted_inertia_force=shifted_inertia_force(
+                lid, S, F_in, M_in, mu_l, NOISE * link.mass * a_A
+            ),
+        )
     external = tuple(external_force(f, state) for f in mech.forces)
     return Loads(state.index, state.phi1_deg, state.stroke, g, mu_l, links, external, state)
 
 
-def shifted_inertia_force(link: int, S: complex, F_in: complex, M_in: float,
-                          mu_l: float | None, zero: float = 0.0) -> ShiftedInertiaForce | None:
+def shifted_inertia_force(
+    link: int, S: complex, F_in: complex, M_in: float, mu_l: float | None, zero: float = 0.0
+) -> ShiftedInertiaForce | None:
     """Seed 003 (18), (19): K = S + r with r ⊥ F_IN and r × F_IN = M_IN.
     None when |F_IN| <= zero (no force to shift: the couple stays)."""
     F2 = F_in.real * F_in.real + F_in.imag * F_in.imag
@@ -197,8 +210,17 @@ def external_force(f: Force, state: PositionState) -> ExternalForce:
         direction = _against_motion(f, state, P)
         acting = direction != 0
     force = f.magnitude * direction if acting else 0j
-    return ExternalForce(f.name, f.link, f.at, xy(P), xy(force), f.magnitude, rule, acting,
-                         at_rest=rule == "always" and not acting)
+    return ExternalForce(
+        f.name,
+        f.link,
+        f.at,
+        xy(P),
+        xy(force),
+        f.magnitude,
+        rule,
+        acting,
+        at_rest=rule == "always" and not acting,
+    )
 
 
 def _against_motion(f: Force, state: PositionState, P: complex) -> complex:

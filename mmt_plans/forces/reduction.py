@@ -15,8 +15,9 @@ the crank's own m_1·V_S1² + J_S1·ω1² included.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -39,8 +40,9 @@ class Reduction:
     reduced_inertia: np.ndarray  # J_red, kg·m²
 
 
-def reduce_sweep(mech: Mechanism, sweep: "Sweep", index: tuple[int | None, ...],
-                 stroke: tuple[Stroke, ...]) -> Reduction:
+def reduce_sweep(
+    mech: Mechanism, sweep: Sweep, index: tuple[int | None, ...], stroke: tuple[Stroke, ...]
+) -> Reduction:
     w1 = mech.drive.omega
     working = np.array([s == "working" for s in stroke], dtype=bool)
     ok = sweep.ok
@@ -56,13 +58,20 @@ def reduce_sweep(mech: Mechanism, sweep: "Sweep", index: tuple[int | None, ...],
         state = sweep.links[lid]
         cm = complex(link.cm[0], link.cm[1])
         V_S = state.vel(state.at(cm))
-        energy = energy + link.mass * np.abs(V_S) ** 2 + link.J * state.omega ** 2
+        energy = energy + link.mass * np.abs(V_S) ** 2 + link.J * state.omega**2
     J_red = np.where(ok, energy / (w1 * w1), np.nan)
-    return Reduction(frozen_array(sweep.phi1_deg), index, stroke, w1, frozen_array(total),
-                     per_force, frozen_array(J_red))
+    return Reduction(
+        frozen_array(sweep.phi1_deg),
+        index,
+        stroke,
+        w1,
+        frozen_array(total),
+        per_force,
+        frozen_array(J_red),
+    )
 
 
-def production_power(mech: Mechanism, sweep: "Sweep", f: Force, working: np.ndarray) -> np.ndarray:
+def production_power(mech: Mechanism, sweep: Sweep, f: Force, working: np.ndarray) -> np.ndarray:
     """F·V of a `[[force]]` at every angle (SPEC_FORMAT's acts rules)."""
     state = sweep.links[f.link]
     p = mech.links[f.link].points[f.at]

@@ -84,15 +84,24 @@ class PositionState:
         return self.links[self.mech.drive.link].omega
 
 
-def from_sweep(mech: Mechanism, sweep: "Sweep", k: int, index: int | None,
-               stroke: Stroke) -> PositionState:
+def from_sweep(
+    mech: Mechanism, sweep: Sweep, k: int, index: int | None, stroke: Stroke
+) -> PositionState:
     """The state at entry k of a sweep; a position whose kinematics failed
     raises the kinematics' own error."""
     problem = sweep.problem(k)
     if problem is not None:
         raise problem
-    links = {lid: LinkPose(complex(s.e[k]), complex(s.o[k]), float(s.omega[k]), complex(s.v[k]),
-                           float(s.eps[k]), complex(s.a[k]))
-             for lid, s in sweep.links.items()}
+    links = {
+        lid: LinkPose(
+            complex(s.e[k]),
+            complex(s.o[k]),
+            float(s.omega[k]),
+            complex(s.v[k]),
+            float(s.eps[k]),
+            complex(s.a[k]),
+        )
+        for lid, s in sweep.links.items()
+    }
     groups = tuple(solver.group for solver in sweep.chain.solvers)
     return PositionState(mech, index, float(sweep.phi1_deg[k]), stroke, links, groups)

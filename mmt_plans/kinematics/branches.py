@@ -30,8 +30,9 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Literal, Mapping
+from typing import Literal
 
 import numpy as np
 
@@ -70,16 +71,23 @@ class Branches:
     @property
     def note(self) -> str:
         """One line for the text output."""
-        groups = "; ".join(f"group {g}: {s:+d} ({self.meanings.get(g, '')})"
-                           for g, s in self.signs.items() if g in self.meanings)
+        groups = "; ".join(
+            f"group {g}: {s:+d} ({self.meanings.get(g, '')})"
+            for g, s in self.signs.items()
+            if g in self.meanings
+        )
         count = len(self.full_turn)
-        rule = {"sketch": "nearest to the sketch",
-                "as drawn": "nearest to the file's coordinates as drawn",
-                "branch order": "the first in branch order (+1 before -1, group by group)",
-                "only one": "the only one",
-                "no branches": "no group has branches"}[self.rule]
-        turns = (f"{count} combination{'s' if count != 1 else ''} of branches assemble"
-                 f"{'s' if count == 1 else ''} over the whole turn")
+        rule = {
+            "sketch": "nearest to the sketch",
+            "as drawn": "nearest to the file's coordinates as drawn",
+            "branch order": "the first in branch order (+1 before -1, group by group)",
+            "only one": "the only one",
+            "no branches": "no group has branches",
+        }[self.rule]
+        turns = (
+            f"{count} combination{'s' if count != 1 else ''} of branches assemble"
+            f"{'s' if count == 1 else ''} over the whole turn"
+        )
         out = f"{groups + '; ' if groups else ''}chosen: {rule}; {turns}"
         if self.rule == "sketch" and self.sketch_turns is False:
             out += "; the sketched combination does not turn fully"
@@ -120,13 +128,22 @@ def choose(chain: Chain) -> Branches:
         signs, rule, turns = search.most_assembled(), "branch order", False
     ranges = ((0.0, 360.0),) if turns else search.ranges(signs)
     failing, reason, cure = (None, "", "") if turns else search.failure(signs)
-    meanings = {s.group.name: s.branch_meaning(sign)
-                for s, sign in zip(chain.solvers, signs) if s.has_branches}
+    meanings = {
+        s.group.name: s.branch_meaning(sign)
+        for s, sign in zip(chain.solvers, signs)
+        if s.has_branches
+    }
     return Branches(
-        signs=dict(zip(names, signs)), rule=rule,  # type: ignore[arg-type]
-        full_turn=tuple(dict(zip(names, c)) for c in full), ranges=ranges, meanings=meanings,
-        failing_group=failing, failing_reason=reason, cure=cure,
-        sketch_turns=turns if rule == "sketch" else None)
+        signs=dict(zip(names, signs)),
+        rule=rule,  # type: ignore[arg-type]
+        full_turn=tuple(dict(zip(names, c)) for c in full),
+        ranges=ranges,
+        meanings=meanings,
+        failing_group=failing,
+        failing_reason=reason,
+        cure=cure,
+        sketch_turns=turns if rule == "sketch" else None,
+    )
 
 
 class _Search:
@@ -148,8 +165,9 @@ class _Search:
         self.chain.place(phi, dict(zip(self.names, signs)), upto=len(signs), margins=margins)
         return [np.broadcast_to(np.asarray(g, dtype=float), phi.shape) for g in margins]
 
-    def _refined_minima(self, k: int, signs: Signs, grid_margin: np.ndarray
-                        ) -> tuple[np.ndarray, np.ndarray]:
+    def _refined_minima(
+        self, k: int, signs: Signs, grid_margin: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray]:
         """The angles (rad) and margins of group k's local minima between grid
         angles, found by golden-section search on each bracket [φ_i−1, φ_i+1]."""
         g = grid_margin
@@ -160,8 +178,9 @@ class _Search:
         # of its second difference there: only minima that could reach zero
         # are refined.
         dip = np.abs(prev - 2 * g + nxt)
-        idx = np.flatnonzero((g <= prev) & (g <= nxt) & ((g < prev) | (g < nxt))
-                             & (g <= 2.0 * dip + self.tol))
+        idx = np.flatnonzero(
+            (g <= prev) & (g <= nxt) & ((g < prev) | (g < nxt)) & (g <= 2.0 * dip + self.tol)
+        )
         if not idx.size:
             return np.empty(0), np.empty(0)
         step = self.grid[1] - self.grid[0]
@@ -196,7 +215,7 @@ class _Search:
             if k == len(self.solvers):
                 found.append(signs)
                 return
-            for sign in ((1, -1) if self.solvers[k].has_branches else (1,)):
+            for sign in (1, -1) if self.solvers[k].has_branches else (1,):
                 trial = signs + (sign,)
                 if self.group_turns(k, trial):
                     deeper(trial)
@@ -236,8 +255,12 @@ class _Search:
         phi = np.array([math.atan2((A - O).imag, (A - O).real)])
         signs: Signs = ()
         for solver in self.solvers:
-            names = [p for lid in (solver.L1, solver.L2)
-                     for p in mech.links[lid].points if p in mech.sketch]
+            names = [
+                p
+                for lid in (solver.L1, solver.L2)
+                for p in mech.links[lid].points
+                if p in mech.sketch
+            ]
             choice = 1
             if solver.has_branches and names:
                 best = None
@@ -249,8 +272,9 @@ class _Search:
             signs += (choice,)
         return signs
 
-    def _distance(self, phi: np.ndarray, signs: Signs, names: list[str],
-                  target: Mapping[str, np.ndarray]) -> float:
+    def _distance(
+        self, phi: np.ndarray, signs: Signs, names: list[str], target: Mapping[str, np.ndarray]
+    ) -> float:
         m = self.chain.place(phi, dict(zip(self.names, signs)), upto=len(signs))
         err = 0.0
         for p in names:
@@ -284,14 +308,23 @@ class _Search:
         crank = mech.links[mech.drive.link]
         d = crank.points[mech.crank_pin] - crank.points[mech.crank_pivot]
         phi = np.array([math.atan2(d[1], d[0])])
-        drawn = {p: xy for link in mech.links.values() for p, xy in link.points.items()
-                 if self.chain.locate[p][0] != FRAME}
+        drawn = {
+            p: xy
+            for link in mech.links.values()
+            for p, xy in link.points.items()
+            if self.chain.locate[p][0] != FRAME
+        }
         names = sorted(drawn)
         scored = [(self._distance(phi, c, names, drawn), i, c) for i, c in enumerate(candidates)]
         scale = min(s for s, _, _ in scored) if scored else 0.0
         # equal within rounding: the branch order decides
-        return min(scored, key=lambda t: (round(t[0] / max(scale, 1e-300), 9)
-                                          if math.isfinite(t[0]) else math.inf, t[1]))[2]
+        return min(
+            scored,
+            key=lambda t: (
+                round(t[0] / max(scale, 1e-300), 9) if math.isfinite(t[0]) else math.inf,
+                t[1],
+            ),
+        )[2]
 
     # --- a partial turn --------------------------------------------------------------
     def ranges(self, signs: Signs) -> tuple[tuple[float, float], ...]:
@@ -358,8 +391,11 @@ class _Search:
             _, m_min = self._refined_minima(k, signs, margins[k])
             if np.any(m_min < -self.tol):
                 solver = self.solvers[k]
-                return (solver.group.name, "it reaches a limit position between grid angles",
-                        "change the lengths of the group's links")
+                return (
+                    solver.group.name,
+                    "it reaches a limit position between grid angles",
+                    "change the lengths of the group's links",
+                )
         return "", "", ""
 
 

@@ -76,9 +76,16 @@ def _still(z: complex, n: int) -> np.ndarray:
     return np.broadcast_to(np.array([z.real, z.imag]), (n, 2))
 
 
-_STATE = (("e", "e", complex), ("o", "o", complex), ("omega", "w", float), ("v", "v", complex),
-          ("eps", "eps", float), ("a", "a", complex), ("spin", "spin", complex),
-          ("spin_acc", "spin_acc", complex))
+_STATE = (
+    ("e", "e", complex),
+    ("o", "o", complex),
+    ("omega", "w", float),
+    ("v", "v", complex),
+    ("eps", "eps", float),
+    ("a", "a", complex),
+    ("spin", "spin", complex),
+    ("spin_acc", "spin_acc", complex),
+)
 
 
 _ATTR = {name: attr for name, attr, _ in _STATE}
@@ -98,10 +105,15 @@ class _Arena:
     A quantity that is a plain number in the first chunk (the frame's, the
     crank's ω) stays one."""
 
-    def __init__(self, chain: "Chain", m: dict, failed: dict, n: int) -> None:
+    def __init__(self, chain: Chain, m: dict, failed: dict, n: int) -> None:
         self.chain, self.n = chain, n
-        wanted = [(lid, name, dtype) for lid, mo in m.items() if lid != FRAME
-                  for name, attr, dtype in _KEPT if np.ndim(getattr(mo, attr))]
+        wanted = [
+            (lid, name, dtype)
+            for lid, mo in m.items()
+            if lid != FRAME
+            for name, attr, dtype in _KEPT
+            if np.ndim(getattr(mo, attr))
+        ]
         sizes = [n * np.dtype(dtype).itemsize for _, _, dtype in wanted]
         masks = 2 * len(failed) * n
         fields = 3 * sum(1 for lid, _ in chain.locate.values() if lid != FRAME) * n * 16
@@ -109,18 +121,23 @@ class _Arena:
         self.arrays: dict[tuple[int, str], np.ndarray] = {}
         at = 0
         for (lid, name, dtype), size in zip(wanted, sizes):
-            self.arrays[lid, name] = memory[at:at + size].view(dtype)
+            self.arrays[lid, name] = memory[at : at + size].view(dtype)
             at += size
-        self.fields = memory[at:at + fields].view(complex)
+        self.fields = memory[at : at + fields].view(complex)
         at += fields
-        self.failed = {g: memory[at + 2 * k * n:at + (2 * k + 1) * n].view(bool)
-                       for k, g in enumerate(failed)}
-        self.singular = {g: memory[at + (2 * k + 1) * n:at + (2 * k + 2) * n].view(bool)
-                         for k, g in enumerate(failed)}
+        self.failed = {
+            g: memory[at + 2 * k * n : at + (2 * k + 1) * n].view(bool)
+            for k, g in enumerate(failed)
+        }
+        self.singular = {
+            g: memory[at + (2 * k + 1) * n : at + (2 * k + 2) * n].view(bool)
+            for k, g in enumerate(failed)
+        }
         # the first chunk's plain numbers (not its arrays, whose memory the next chunk reuses)
-        self.numbers = {lid: {attr: getattr(mo, attr) for _, attr, _ in _KEPT
-                              if not np.ndim(getattr(mo, attr))}
-                        for lid, mo in m.items()}
+        self.numbers = {
+            lid: {attr: getattr(mo, attr) for _, attr, _ in _KEPT if not np.ndim(getattr(mo, attr))}
+            for lid, mo in m.items()
+        }
 
     def put(self, part: slice, m: dict, failed: dict, singular: dict) -> None:
         """Keep one chunk: its links' motion, its masks, and the fields of its
@@ -134,7 +151,7 @@ class _Arena:
         points = _moving_points(self.chain)
         _work_out_fields(block, m, points, _all_known(m, self.chain.carried, points))
 
-    def sweep(self, phi1_deg: np.ndarray) -> "Sweep":
+    def sweep(self, phi1_deg: np.ndarray) -> Sweep:
         states = {}
         for lid, numbers in self.numbers.items():
             parts = {}
@@ -142,9 +159,14 @@ class _Arena:
                 arr = self.arrays.get((lid, name))
                 parts[name] = _ro(arr) if arr is not None else _full(numbers[attr], self.n, dtype)
             states[lid] = LinkState(**parts)
-        return Sweep(self.chain, _ro(phi1_deg.copy()), states,
-                     {g: _ro(x) for g, x in self.failed.items()},
-                     {g: _ro(x) for g, x in self.singular.items()}, worked_out=self.fields)
+        return Sweep(
+            self.chain,
+            _ro(phi1_deg.copy()),
+            states,
+            {g: _ro(x) for g, x in self.failed.items()},
+            {g: _ro(x) for g, x in self.singular.items()},
+            worked_out=self.fields,
+        )
 
 
 # a point's position, velocity and acceleration: the link's origin quantity
@@ -152,7 +174,7 @@ class _Arena:
 _FIELD_PARTS = (("o", "e"), ("v", "spin"), ("a", "spin_acc"))
 
 
-def _moving_points(chain: "Chain") -> list[tuple[str, int, complex]]:
+def _moving_points(chain: Chain) -> list[tuple[str, int, complex]]:
     return [(name, lid, p) for name, (lid, p) in chain.locate.items() if lid != FRAME]
 
 
@@ -177,8 +199,10 @@ def _known(links: dict, carried: dict, base: str, name: str, lid: int, p: comple
 
 def _all_known(links: dict, carried: dict, points: list) -> list[list]:
     """`_known` for every quantity and point."""
-    return [[_known(links, carried, base, name, lid, p) for name, lid, p in points]
-            for base, _ in _FIELD_PARTS]
+    return [
+        [_known(links, carried, base, name, lid, p) for name, lid, p in points]
+        for base, _ in _FIELD_PARTS
+    ]
 
 
 def _work_out_fields(block: np.ndarray, links: dict, points: list, known: list) -> None:
@@ -208,7 +232,7 @@ class Sweep:
     plan is singular (`singular`); `check()` turns those into errors.
     """
 
-    chain: "Chain"
+    chain: Chain
     phi1_deg: np.ndarray
     links: dict[int, LinkState]
     failed: dict[str, np.ndarray]  # group name -> mask of angles where it cannot assemble
@@ -252,8 +276,12 @@ class Sweep:
             field = {}
             for row, (name, lid, p), same in zip(rows, points, held):
                 field[name] = _xy(row if same is None else same)
-            fields.append({name: field[name] if lid != FRAME else _still(p if base == "o" else 0j, n)
-                           for name, (lid, p) in self.chain.locate.items()})
+            fields.append(
+                {
+                    name: field[name] if lid != FRAME else _still(p if base == "o" else 0j, n)
+                    for name, (lid, p) in self.chain.locate.items()
+                }
+            )
         return tuple(fields)
 
     @property
@@ -298,16 +326,22 @@ class Sweep:
         for solver in self.chain.solvers:
             name = solver.group.name
             if self.failed[name][i]:
-                return AssemblyError(float(self.phi1_deg[i]), name, self.chain.reason(solver, float(self.phi1_deg[i])))
+                return AssemblyError(
+                    float(self.phi1_deg[i]),
+                    name,
+                    self.chain.reason(solver, float(self.phi1_deg[i])),
+                )
         for solver in self.chain.solvers:
             name = solver.group.name
             if self.singular[name][i]:
                 return SingularPlanError(
-                    float(self.phi1_deg[i]), name,
-                    "its two direction lines are parallel (the group is at a limit position)")
+                    float(self.phi1_deg[i]),
+                    name,
+                    "its two direction lines are parallel (the group is at a limit position)",
+                )
         return None
 
-    def check(self) -> "Sweep":
+    def check(self) -> Sweep:
         """Raise the first problem, if any."""
         bad = np.flatnonzero(~self.ok)
         if len(bad):
@@ -327,7 +361,9 @@ class Chain:
         self.O = complex(*mech.frame[mech.crank_pivot])
         self.O_local = complex(*crank.points[mech.crank_pivot])
         A_local = complex(*crank.points[mech.crank_pin])
-        self.crank_local_angle = math.atan2((A_local - self.O_local).imag, (A_local - self.O_local).real)
+        self.crank_local_angle = math.atan2(
+            (A_local - self.O_local).imag, (A_local - self.O_local).real
+        )
         self.locate: dict[str, tuple[int, complex]] = {}
         for name, p in mech.frame.items():
             self.locate[name] = (FRAME, complex(*p))
@@ -344,19 +380,21 @@ class Chain:
                     self.carried.setdefault(name, L)
 
     @classmethod
-    def build(cls, mech: Mechanism, structure: Structure | None = None) -> "Chain":
+    def build(cls, mech: Mechanism, structure: Structure | None = None) -> Chain:
         structure = structure if structure is not None else analyse_structure(mech)
         if mech.higher_pairs:
             raise UnsupportedError(
                 f"{mech.path}: the mechanism has higher pairs; their kinematics is not solved: "
-                "replace each higher pair by its lower-pair equivalent in the file")
+                "replace each higher pair by its lower-pair equivalent in the file"
+            )
         solvers = []
         for group in structure.groups:
             if not group.is_dyad:
                 raise UnsupportedError(
                     f"{mech.path}: group {group.label} of links {group.name} is of class "
                     f"{group.group_class}; only class II groups (dyads) are solved. "
-                    f"Structure: {structure.formula}")
+                    f"Structure: {structure.formula}"
+                )
             assert group.kind is not None  # a dyad has a kind
             solvers.append(DYADS[group.kind](mech, group))
         return cls(mech, solvers)
@@ -379,8 +417,13 @@ class Chain:
     def place_all(self, phi_rad: np.ndarray, branches: dict[str, int]) -> dict[int, Motion]:
         return self.place(phi_rad, branches)
 
-    def place(self, phi_rad: np.ndarray, branches: dict[str, int], upto: int | None = None,
-              margins: list | None = None) -> dict[int, Motion]:
+    def place(
+        self,
+        phi_rad: np.ndarray,
+        branches: dict[str, int],
+        upto: int | None = None,
+        margins: list | None = None,
+    ) -> dict[int, Motion]:
         """Positions of the first `upto` groups (all by default) with their
         branches; `margins` receives each group's `margin` before it is placed."""
         m = {FRAME: self.frame(), self.mech.drive.link: self.crank(phi_rad)}
@@ -397,8 +440,7 @@ class Chain:
         if n <= CHUNK:
             m, failed, singular, plans = self._solve(np.radians(phi1_deg))
             states = {lid: _state(mo, n) for lid, mo in m.items()}
-            return Sweep(self, _ro(phi1_deg.copy()), states, failed, singular,
-                         solved_plans=plans)
+            return Sweep(self, _ro(phi1_deg.copy()), states, failed, singular, solved_plans=plans)
         # Many angles: solve about CHUNK at a time, so the working arrays stay
         # small (in cache, and the same memory again for every chunk), and write
         # the results into one block of memory for the whole sweep. The angles
@@ -436,5 +478,3 @@ class Chain:
     def reason(self, solver: DyadSolver, phi1_deg: float) -> str:
         m = self.place_all(np.radians(np.array([phi1_deg])), self.branches)
         return solver.failure(m, 0, phi1_deg)
-
-

@@ -8,7 +8,7 @@ a construction does not exist; it never leaves the solver (see `chain.Sweep`).
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 

@@ -67,7 +67,7 @@ def _entry(x, k: int):
     return x[k] if isinstance(x, np.ndarray) else x
 
 
-def plan_view(sweep: "Sweep", k: int, index: int | None = None) -> PlanView:
+def plan_view(sweep: Sweep, k: int, index: int | None = None) -> PlanView:
     """The plan at entry k of a sweep (position `index`)."""
     groups = []
     for plan in sweep.plans:
@@ -87,12 +87,24 @@ def plan_view(sweep: "Sweep", k: int, index: int | None = None) -> PlanView:
                 vel.append(Component(f"V_{rel}/{leg.link}", "slide", _v(V0), _v(d * x)))
                 acc.append(Component(f"a^k_{rel}/{leg.link}", "coriolis", _v(a0), _v(n)))
                 acc.append(Component(f"a^r_{rel}/{leg.link}", "slide", _v(a0 + n), _v(d * y)))
-        groups.append(GroupPlanView(plan.group.name, plan.group.kind or "", plan.X_name,
-                                    tuple(vel), tuple(acc), float(plan.sin_angle[k])))
+        groups.append(
+            GroupPlanView(
+                plan.group.name,
+                plan.group.kind or "",
+                plan.X_name,
+                tuple(vel),
+                tuple(acc),
+                float(plan.sin_angle[k]),
+            )
+        )
     v_img = {name: _v(complex(sweep.velocity_of(name)[k])) for name in sweep.chain.locate}
     a_img = {name: _v(complex(sweep.acceleration_of(name)[k])) for name in sweep.chain.locate}
     return PlanView(
-        index=index, phi1_deg=float(sweep.phi1_deg[k]), velocity_images=v_img,
-        acceleration_images=a_img, groups=tuple(groups),
+        index=index,
+        phi1_deg=float(sweep.phi1_deg[k]),
+        velocity_images=v_img,
+        acceleration_images=a_img,
+        groups=tuple(groups),
         omega={lid: float(w[k]) for lid, w in sweep.omega.items()},
-        eps={lid: float(e[k]) for lid, e in sweep.eps.items()})
+        eps={lid: float(e[k]) for lid, e in sweep.eps.items()},
+    )

@@ -27,11 +27,21 @@ from .pages import NotePage, draw_note_page, layout_note, note_page
 if TYPE_CHECKING:  # pragma: no cover
     from ..solution import Solution
 
-__all__ = ["Block", "NoteContent", "NotePage", "draw_note", "layout_note",
-           "note_content", "note_svgs", "number", "plain", "write_note"]
+__all__ = [
+    "Block",
+    "NoteContent",
+    "NotePage",
+    "draw_note",
+    "layout_note",
+    "note_content",
+    "note_svgs",
+    "number",
+    "plain",
+    "write_note",
+]
 
 
-def draw_note(analysis: "Solution", backend_factory: Any, lang: Language = "en") -> list[Any]:
+def draw_note(analysis: Solution, backend_factory: Any, lang: Language = "en") -> list[Any]:
     """Draw every page of the note on a new backend from `backend_factory(width,
     height, title)`; returns the backends (SvgBackend, RecordingBackend ...)."""
     content = note_content(analysis, lang)
@@ -51,7 +61,7 @@ def draw_note(analysis: "Solution", backend_factory: Any, lang: Language = "en")
     return backends
 
 
-def note_svgs(analysis: "Solution", lang: Language = "en") -> list[str]:
+def note_svgs(analysis: Solution, lang: Language = "en") -> list[str]:
     """The pages of the note as SVG documents (render's factory by format)."""
     titles: list[str] = []
 
@@ -63,8 +73,7 @@ def note_svgs(analysis: "Solution", lang: Language = "en") -> list[str]:
     return [render(page, "svg", title).decode("utf-8") for page, title in zip(pages, titles)]
 
 
-def write_note(analysis: "Solution", target: str | os.PathLike[str],
-               lang: Language = "en") -> Path:
+def write_note(analysis: Solution, target: str | os.PathLike[str], lang: Language = "en") -> Path:
     """Write the note as one multi-page A4 PDF at `target` (atomically, with
     fixed dates: note/pdf.py)."""
     from .pdf import svgs_to_pdf

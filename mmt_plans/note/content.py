@@ -14,8 +14,9 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Iterator, Literal, Sequence
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 
@@ -69,12 +70,13 @@ class NoteContent:
 
 
 def plain(markup: str) -> str:
-    """"V_{BA} = ω_{1}·l_{OA}" → "V_BA = ω_1·l_OA"."""
+    """ "V_{BA} = ω_{1}·l_{OA}" → "V_BA = ω_1·l_OA"."""
     return markup.replace("{", "").replace("}", "")
 
 
 # Units, and the phrases of the force solver's step lines, per language.
 # --- number formatting -----------------------------------------------------------------
+
 
 def number(x: float, lang: Language = "en", sig: int = 4) -> str:
     """At least `sig` significant digits, no exponent, no trailing zeros; a
@@ -114,8 +116,9 @@ def _equation_markup(eq: str) -> str:
 
 # --- the builder -------------------------------------------------------------------------
 
+
 class _Writer:
-    def __init__(self, analysis: "Solution", lang: Language) -> None:
+    def __init__(self, analysis: Solution, lang: Language) -> None:
         check_language(lang)
         self.a = analysis
         self.mech = analysis.mechanism
@@ -153,7 +156,7 @@ class _Writer:
         self.add("section", w["sheet1"], "sheet1")
         self.structure()
         self.positions()
-        views = {}
+        views: dict[int, PlanView | MmtError] = {}
         for i in a.plan_positions:
             try:
                 views[i] = a.plan(i)
@@ -177,9 +180,16 @@ class _Writer:
         self.eq(f"W = 3n - 2p_5 - p_4 = 3·{st.n} - 2·{st.p5} - {st.p4} = {st.W}")
         self.text(self.w["groups"].format(d=st.driver))
         for g in st.groups:
-            self.eq(self.w["group_line"].format(
-                label=g.label, links=", ".join(map(str, sorted(g.links))), cls=g.group_class,
-                order=g.order, kind=g.kind or "-", pairs=", ".join(p.name for p in g.pairs)))
+            self.eq(
+                self.w["group_line"].format(
+                    label=g.label,
+                    links=", ".join(map(str, sorted(g.links))),
+                    cls=g.group_class,
+                    order=g.order,
+                    kind=g.kind or "-",
+                    pairs=", ".join(p.name for p in g.pairs),
+                )
+            )
         self.text(self.w["class"].format(cls=st.mechanism_class, formula=st.formula))
 
     # --- 1.2 -----------------------------------------------------------------------------
@@ -195,21 +205,39 @@ class _Writer:
             if a.extremes is None:
                 raise MmtError("the output has no extreme position in the range analysed")
             lo, hi = a.extremes
-            self.text(w["extremes"].format(out=self.mech.study.output, lo=self.n(lo, 6),
-                                           hi=self.n(hi, 6), span=self.n(a.working_span_deg, 6)))
+            self.text(
+                w["extremes"].format(
+                    out=self.mech.study.output,
+                    lo=self.n(lo, 6),
+                    hi=self.n(hi, 6),
+                    span=self.n(a.working_span_deg or 0.0, 6),
+                )
+            )
         except MmtError as err:
             self.problem(err)
             return
         n = self.mech.study.positions
-        self.text(w["positions"].format(n=n, step=self.n(360.0 / n), plans=", ".join(
-            map(str, a.plan_positions)), force=a.force_position))
+        self.text(
+            w["positions"].format(
+                n=n,
+                step=self.n(360.0 / n),
+                plans=", ".join(map(str, a.plan_positions)),
+                force=a.force_position,
+            )
+        )
         s, _, _ = a.output_along(a.sweep)
         s0 = s[a.entry(0)] if np.isfinite(s[a.entry(0)]) else 0.0
         rows = [w["pos_head"]]
         for k, pos in enumerate(a.positions):
             label = str(pos.index) if pos.index is not None else "*"
-            rows.append((label, self.n(pos.phi1_deg, 5), w[pos.stroke],
-                         self.n((s[k] - s0) * 1e3) if np.isfinite(s[k]) else "-"))
+            rows.append(
+                (
+                    label,
+                    self.n(pos.phi1_deg, 5),
+                    w[pos.stroke],
+                    self.n((s[k] - s0) * 1e3) if np.isfinite(s[k]) else "-",
+                )
+            )
         self.add("table", rows=rows, widths=(16, 26, 28, 26))
 
     # --- scales of the plans ------------------------------------------------------------
@@ -228,7 +256,7 @@ class _Writer:
         mu_a = scale_for(a_a, ACCELERATION_PLAN) if a_a > 0 else 1.0
         return v_a, a_a, mu_v, mu_a
 
-    def moving_points(self, view: "PlanView") -> list[str]:
+    def moving_points(self, view: PlanView) -> list[str]:
         owners = self.mech.point_owners
         names = [p for p, o in owners.items() if 0 not in o]
         names += [p for p in view.velocity_images if p not in owners]
@@ -239,8 +267,10 @@ class _Writer:
         one's problem written."""
         for i, view in views.items():
             pos = self.a.positions[self.a.entry(i)]
-            self.add("subsection", self.w["vplan"].format(i=i, phi=self.n(pos.phi1_deg, 5),
-                                                          stroke=self.w[pos.stroke]))
+            self.add(
+                "subsection",
+                self.w["vplan"].format(i=i, phi=self.n(pos.phi1_deg, 5), stroke=self.w[pos.stroke]),
+            )
             if isinstance(view, Exception):
                 self.problem(view)
                 continue
@@ -271,7 +301,9 @@ class _Writer:
         l_oa = self.mech.crank_length
         v_a, _, mu_v, _ = self.plan_scales()
         self.text(w["VA"])
-        self.eq(f"V_A = ω_1·l_{{OA}} = {self.n(w1)}·{self.n(l_oa)} = {self.n(w1 * l_oa)} {u['m/s']};")
+        self.eq(
+            f"V_A = ω_1·l_{{OA}} = {self.n(w1)}·{self.n(l_oa)} = {self.n(w1 * l_oa)} {u['m/s']};"
+        )
         pa = v_a / mu_v
         self.eq(f"μ_V = V_A/pa = {self.n(v_a)}/{self.n(pa)} = {self.n(mu_v)} {u['v/mm']}")
         for i, view in self.plan_positions(views):
@@ -287,18 +319,23 @@ class _Writer:
                 self.eq("; ".join(lines))
                 for base in coincident:
                     m = re.fullmatch(r"(.+)\((\d+)\)", base)
-                    self.text(w["coincident"].format(X=m.group(1), k=m.group(2)))
+                    if m is not None:
+                        self.text(w["coincident"].format(X=m.group(1), k=m.group(2)))
             self.text(w["found_v"])
             for name in self.moving_points(view):
                 v = float(np.hypot(*view.velocity_images[name]))
-                self.eq(f"V_{_sub(name)} = p{_image_markup(name)}·μ_V = {self.n(v / mu_v)}·"
-                        f"{self.n(mu_v)} = {self.n(v)} {u['m/s']}")
+                self.eq(
+                    f"V_{_sub(name)} = p{_image_markup(name)}·μ_V = {self.n(v / mu_v)}·"
+                    f"{self.n(mu_v)} = {self.n(v)} {u['m/s']}"
+                )
             for g in view.groups:
                 for c in g.velocity:
                     base, rel = self.leg(c.label, g.point, "V_")
                     seg = self.segment(c.label, g.point)
-                    self.eq(f"V_{_sub(rel)} = {seg}·μ_V = {self.n(c.magnitude / mu_v)}·"
-                            f"{self.n(mu_v)} = {self.n(c.magnitude)} {u['m/s']}")
+                    self.eq(
+                        f"V_{_sub(rel)} = {seg}·μ_V = {self.n(c.magnitude / mu_v)}·"
+                        f"{self.n(mu_v)} = {self.n(c.magnitude)} {u['m/s']}"
+                    )
 
     def leg(self, label: str, X: str, prefix: str) -> tuple[str, str]:
         """The known point of a leg and the relative part: "V_BA" → ("A", "BA");
@@ -307,7 +344,7 @@ class _Writer:
         if "/" in body:
             k = body.split("/", 1)[1]
             return f"{X}({k})", body
-        return body[len(X):], body
+        return body[len(X) :], body
 
     def segment(self, label: str, X: str) -> str:
         """The segment of a relative velocity on the plan: "V_BA" → "ab"."""
@@ -337,8 +374,9 @@ class _Writer:
             return ""
         return f" ({self.w['ccw'] if x > 0 else self.w['cw']})"
 
-    def link_rates(self, views, rate: Literal["omega", "eps"]
-                   ) -> Iterator[tuple[int, Any, int, tuple[str, str]]]:
+    def link_rates(
+        self, views, rate: Literal["omega", "eps"]
+    ) -> Iterator[tuple[int, Any, int, tuple[str, str]]]:
         """Per plan position, the lines of ω (rate "omega") or ε ("eps") of every
         link: the drive's and those of links that slide along their guide (they
         turn with it) are written here; for each other link yields (i, view,
@@ -363,8 +401,10 @@ class _Writer:
                     g = self.guide_of(lid)
                     of_guide = 0.0 if g in (None, 0) else abs(rates[g])
                     note = f"  ({self.w['slides_with'].format(lid=lid, g=g)})" if omega else ""
-                    self.eq(f"{symbol}_{{{lid}}} = {symbol}_{{{g if g is not None else 0}}} = "
-                            f"{self.n(of_guide)} {unit}{self.sense(rates[lid])}{note}")
+                    self.eq(
+                        f"{symbol}_{{{lid}}} = {symbol}_{{{g if g is not None else 0}}} = "
+                        f"{self.n(of_guide)} {unit}{self.sense(rates[lid])}{note}"
+                    )
                     continue
                 yield i, view, lid, pair
 
@@ -375,8 +415,10 @@ class _Writer:
             om = view.omega[lid]
             v_pq = float(np.hypot(*(view.velocity_images[P] - view.velocity_images[Q])))
             l_pq = self.distance(i, P, Q)
-            self.eq(f"ω_{{{lid}}} = V_{{{P}{Q}}}/l_{{{P}{Q}}} = {self.n(v_pq)}/{self.n(l_pq)} = "
-                    f"{self.n(v_pq / l_pq)} {u['rad/s']}{self.sense(om)}")
+            self.eq(
+                f"ω_{{{lid}}} = V_{{{P}{Q}}}/l_{{{P}{Q}}} = {self.n(v_pq)}/{self.n(l_pq)} = "
+                f"{self.n(v_pq / l_pq)} {u['rad/s']}{self.sense(om)}"
+            )
 
     # --- 1.5 -----------------------------------------------------------------------------
     def acceleration_plans(self, views) -> None:
@@ -387,8 +429,10 @@ class _Writer:
         l_oa = self.mech.crank_length
         _, a_a, _, mu_a = self.plan_scales()
         self.text(w["aA"])
-        self.eq(f"a_A = a^n_A = ω_1^2·l_{{OA}} = {self.n(w1)}^2·{self.n(l_oa)} = "
-                f"{self.n(w1 * w1 * l_oa)} {u['m/s2']};")
+        self.eq(
+            f"a_A = a^n_A = ω_1^2·l_{{OA}} = {self.n(w1)}^2·{self.n(l_oa)} = "
+            f"{self.n(w1 * w1 * l_oa)} {u['m/s2']};"
+        )
         pia = a_a / mu_a
         self.eq(f"μ_a = a_A/πa = {self.n(a_a)}/{self.n(pia)} = {self.n(mu_a)} {u['a/mm']}")
         for i, view in self.plan_positions(views):
@@ -400,9 +444,13 @@ class _Writer:
                 for c1, c2 in zip(comps[0::2], comps[1::2]):
                     base, rel = self.leg(c1.label, X, "a")
                     if c1.kind == "normal":
-                        lines.append(f"a_{_sub(X)} = a_{_sub(base)} + a^n_{_sub(rel)} + a^τ_{_sub(rel)}")
+                        lines.append(
+                            f"a_{_sub(X)} = a_{_sub(base)} + a^n_{_sub(rel)} + a^τ_{_sub(rel)}"
+                        )
                     else:
-                        lines.append(f"a_{_sub(X)} = a_{_sub(base)} + a^k_{_sub(rel)} + a^r_{_sub(rel)}")
+                        lines.append(
+                            f"a_{_sub(X)} = a_{_sub(base)} + a^k_{_sub(rel)} + a^r_{_sub(rel)}"
+                        )
                 self.eq("; ".join(lines))
                 self.text(w["normal"])
                 for c in comps:
@@ -411,31 +459,39 @@ class _Writer:
                         vc = self.velocity_leg(g, rel)
                         l = self.distance(i, X, base)
                         val = vc * vc / l if l > 0 else c.magnitude
-                        self.eq(f"a^n_{_sub(rel)} = V_{_sub(rel)}^2/l_{_sub(rel)} = "
-                                f"{self.n(vc)}^2/{self.n(l)} = {self.n(val)} {u['m/s2']}; "
-                                f"|a^n_{_sub(rel)}| = {self.n(val)}/{self.n(mu_a)} = "
-                                f"{self.n(val / mu_a)} {u['mm']}")
+                        self.eq(
+                            f"a^n_{_sub(rel)} = V_{_sub(rel)}^2/l_{_sub(rel)} = "
+                            f"{self.n(vc)}^2/{self.n(l)} = {self.n(val)} {u['m/s2']}; "
+                            f"|a^n_{_sub(rel)}| = {self.n(val)}/{self.n(mu_a)} = "
+                            f"{self.n(val / mu_a)} {u['mm']}"
+                        )
                     elif c.kind == "coriolis":
                         k = int(rel.split("/", 1)[1])
                         om = abs(view.omega.get(k, 0.0)) if k != 0 else 0.0
                         vr = self.velocity_leg(g, rel)
                         val = 2.0 * om * vr
-                        self.eq(f"a^k_{_sub(rel)} = 2·ω_{{{k}}}·V_{_sub(rel)} = 2·{self.n(om)}·"
-                                f"{self.n(vr)} = {self.n(val)} {u['m/s2']}; |a^k_{_sub(rel)}| = "
-                                f"{self.n(val / mu_a)} {u['mm']}")
+                        self.eq(
+                            f"a^k_{_sub(rel)} = 2·ω_{{{k}}}·V_{_sub(rel)} = 2·{self.n(om)}·"
+                            f"{self.n(vr)} = {self.n(val)} {u['m/s2']}; |a^k_{_sub(rel)}| = "
+                            f"{self.n(val / mu_a)} {u['mm']}"
+                        )
             self.text(w["found_a"])
             for name in self.moving_points(view):
                 acc = float(np.hypot(*view.acceleration_images[name]))
-                self.eq(f"a_{_sub(name)} = π{_image_markup(name)}·μ_a = {self.n(acc / mu_a)}·"
-                        f"{self.n(mu_a)} = {self.n(acc)} {u['m/s2']}")
+                self.eq(
+                    f"a_{_sub(name)} = π{_image_markup(name)}·μ_a = {self.n(acc / mu_a)}·"
+                    f"{self.n(mu_a)} = {self.n(acc)} {u['m/s2']}"
+                )
             for g in view.groups:
                 for c in g.acceleration:
                     if c.kind not in ("tangential", "slide"):
                         continue
                     base, rel = self.leg(c.label, g.point, "a")
                     sym = "a^τ" if c.kind == "tangential" else "a^r"
-                    self.eq(f"{sym}_{_sub(rel)} = {self.n(c.magnitude / mu_a)}·{self.n(mu_a)} = "
-                            f"{self.n(c.magnitude)} {u['m/s2']}")
+                    self.eq(
+                        f"{sym}_{_sub(rel)} = {self.n(c.magnitude / mu_a)}·{self.n(mu_a)} = "
+                        f"{self.n(c.magnitude)} {u['m/s2']}"
+                    )
 
     def velocity_leg(self, g, rel: str) -> float:
         for c in g.velocity:
@@ -455,8 +511,10 @@ class _Writer:
             a_rel = view.acceleration_images[P] - view.acceleration_images[Q]
             a_t = float(np.hypot(*(a_rel + om * om * r)))  # a_PQ minus its normal part −ω²·r
             l = float(np.hypot(*r))
-            self.eq(f"ε_{{{lid}}} = a^τ_{{{P}{Q}}}/l_{{{P}{Q}}} = {self.n(a_t)}/{self.n(l)} = "
-                    f"{self.n(a_t / l)} {u['rad/s2']}{self.sense(e)}")
+            self.eq(
+                f"ε_{{{lid}}} = a^τ_{{{P}{Q}}}/l_{{{P}{Q}}} = {self.n(a_t)}/{self.n(l)} = "
+                f"{self.n(a_t / l)} {u['rad/s2']}{self.sense(e)}"
+            )
 
     # --- 1.7, 1.8 ------------------------------------------------------------------------
     def diagrams(self) -> None:
@@ -473,22 +531,39 @@ class _Writer:
         v_plan, a_plan = dg.v_plan, dg.a_plan
         c_v, c_a = dg.at_position(construction.v), dg.at_position(construction.a)
         c = construction
-        self.text(w["diagram_scales"].format(out=a.mechanism.study.output, L=self.n(c.L),
-                                             H1=self.n(c.H1), H2=self.n(c.H2)))
+        self.text(
+            w["diagram_scales"].format(
+                out=a.mechanism.study.output, L=self.n(c.L), H1=self.n(c.H1), H2=self.n(c.H2)
+            )
+        )
         self.eq(f"μ_S = μ_l = {self.n(c.mu_S)} {u['m/mm']};")
-        self.eq(f"μ_t = 60/(n_1·L) = 60/({self.n(c.n1)}·{self.n(c.L)}) = {self.n(c.mu_t)} {u['s/mm']};")
-        self.eq(f"μ_V = μ_S/(μ_t·OH_1) = {self.n(c.mu_S)}/({self.n(c.mu_t)}·{self.n(c.H1)}) = "
-                f"{self.n(c.mu_V)} {u['v/mm']};")
-        self.eq(f"μ_a = μ_V/(μ_t·OH_2) = {self.n(c.mu_V)}/({self.n(c.mu_t)}·{self.n(c.H2)}) = "
-                f"{self.n(c.mu_a)} {u['a/mm']}")
+        self.eq(
+            f"μ_t = 60/(n_1·L) = 60/({self.n(c.n1)}·{self.n(c.L)}) = {self.n(c.mu_t)} {u['s/mm']};"
+        )
+        self.eq(
+            f"μ_V = μ_S/(μ_t·OH_1) = {self.n(c.mu_S)}/({self.n(c.mu_t)}·{self.n(c.H1)}) = "
+            f"{self.n(c.mu_V)} {u['v/mm']};"
+        )
+        self.eq(
+            f"μ_a = μ_V/(μ_t·OH_2) = {self.n(c.mu_V)}/({self.n(c.mu_t)}·{self.n(c.H2)}) = "
+            f"{self.n(c.mu_a)} {u['a/mm']}"
+        )
         self.section("1.8", "1.8")
         plans = set(a.plan_positions)
         rows = [w["check_head"]]
         for k in range(len(c_v)):
             ev, ea = check.v_error_percent[k], check.a_error_percent[k]
-            rows.append((f"{k}{'*' if k in plans else ''}", self.n(v_plan[k]), self.n(c_v[k]),
-                         "-" if ev is None else self.n(ev, 3), self.n(a_plan[k]),
-                         self.n(c_a[k]), "-" if ea is None else self.n(ea, 3)))
+            rows.append(
+                (
+                    f"{k}{'*' if k in plans else ''}",
+                    self.n(v_plan[k]),
+                    self.n(c_v[k]),
+                    "-" if ev is None else self.n(ev, 3),
+                    self.n(a_plan[k]),
+                    self.n(c_a[k]),
+                    "-" if ea is None else self.n(ea, 3),
+                )
+            )
         self.add("table", rows=rows, widths=(13, 25, 25, 18, 27, 27, 18))
         sc = dg.sheet_check
         self.text(w["grid"].format(n=sc.intervals, step=self.n(360.0 / sc.intervals)))
@@ -498,18 +573,25 @@ class _Writer:
                 sym = "V" if val.quantity == "v" else "a"
                 if val.ill_conditioned:
                     unit = u["m/s"] if val.quantity == "v" else u["m/s2"]
-                    self.eq(f"|{sym}_{{plan}} - {sym}_{{diagr}}| = |{self.n(val.plan)} - "
-                            f"{self.np_(val.diagram)}| = {self.n(val.absolute_error, 3)} {unit}")
+                    self.eq(
+                        f"|{sym}_{{plan}} - {sym}_{{diagr}}| = |{self.n(val.plan)} - "
+                        f"{self.np_(val.diagram)}| = {self.n(val.absolute_error, 3)} {unit}"
+                    )
                     self.text(w["ill_conditioned"].format(q=sym))
                     continue
-                self.eq(f"Δ_{sym} = ({sym}_{{plan}} - {sym}_{{diagr}})/{sym}_{{plan}}·100 % = "
-                        f"({self.n(val.plan)} - {self.np_(val.diagram)})/{self.np_(val.plan)}"
-                        f"·100 % = {self.n(val.error_percent, 3)} %")
+                self.eq(
+                    f"Δ_{sym} = ({sym}_{{plan}} - {sym}_{{diagr}})/{sym}_{{plan}}·100 % = "
+                    f"({self.n(val.plan)} - {self.np_(val.diagram)})/{self.np_(val.plan)}"
+                    f"·100 % = {self.n(val.error_percent, 3)} %"
+                )
         if sc.passed:
             self.text(w["passed"])
         else:
-            bad = "; ".join(f"{'V' if x.quantity == 'v' else 'a'}, {x.index}: "
-                            f"{self.n(x.error_percent, 3)} %" for x in sc.values if not x.passed)
+            bad = "; ".join(
+                f"{'V' if x.quantity == 'v' else 'a'}, {x.index}: {self.n(x.error_percent, 3)} %"
+                for x in sc.values
+                if not x.passed
+            )
             self.text(w["failed"].format(why=bad))
 
     # --- sheet 2 -------------------------------------------------------------------------
@@ -524,26 +606,39 @@ class _Writer:
         self.groups(fa)
         self.lever(fa)
 
-    def loads(self, fa: "ForceAnalysis") -> None:
+    def loads(self, fa: ForceAnalysis) -> None:
         w, u = self.w, self.u
         self.section("2.1", "2.1")
-        self.text(w["force_at"].format(i=fa.index, phi=self.n(fa.phi1_deg, 5),
-                                       stroke=w[fa.stroke], g=self.n(fa.loads.g)))
+        self.text(
+            w["force_at"].format(
+                i=fa.index, phi=self.n(fa.phi1_deg, 5), stroke=w[fa.stroke], g=self.n(fa.loads.g)
+            )
+        )
         g = fa.loads.g
         for lid, ll in fa.loads.links.items():
             if ll.mass:
-                self.eq(f"G_{{{lid}}} = m_{{{lid}}}·g = {self.n(ll.mass)}·{self.n(g)} = "
-                        f"{self.n(ll.mass * g)} {u['N']}")
+                self.eq(
+                    f"G_{{{lid}}} = m_{{{lid}}}·g = {self.n(ll.mass)}·{self.n(g)} = "
+                    f"{self.n(ll.mass * g)} {u['N']}"
+                )
         self.section("2.2", "2.2")
         for lid, ll in fa.loads.links.items():
             if ll.mass:
                 aS = float(np.hypot(*ll.acceleration_cm))
-                self.eq(f"F_{{in{lid}}} = m_{{{lid}}}·a_{{S{lid}}} = {self.n(ll.mass)}·{self.n(aS)} = "
-                        f"{self.n(ll.mass * aS)} {u['N']}")
+                self.eq(
+                    f"F_{{in{lid}}} = m_{{{lid}}}·a_{{S{lid}}} = {self.n(ll.mass)}·{self.n(aS)} = "
+                    f"{self.n(ll.mass * aS)} {u['N']}"
+                )
         for f in fa.loads.production_resistance:
             if f.acting:
-                self.text(w["F_PR"].format(name=plain(_force_markup(f.name)), link=f.link, at=f.at,
-                                           F=self.n(float(np.hypot(*f.force)))))
+                self.text(
+                    w["F_PR"].format(
+                        name=plain(_force_markup(f.name)),
+                        link=f.link,
+                        at=f.at,
+                        F=self.n(float(np.hypot(*f.force))),
+                    )
+                )
             else:
                 self.text(w["F_PR_idle"].format(name=plain(_force_markup(f.name))))
         self.section("2.3", "2.3")
@@ -553,16 +648,23 @@ class _Writer:
                 continue
             l = link.length
             if l > 0 and math.isclose(link.J, link.k * link.mass * l * l, rel_tol=1e-9):
-                self.eq(f"J_{{S{lid}}} = k·m_{{{lid}}}·l_{{{lid}}}^2 = {self.n(link.k)}·{self.n(link.mass)}·"
-                        f"{self.n(l)}^2 = {self.n(link.J)} {u['kgm2']}")
+                self.eq(
+                    f"J_{{S{lid}}} = k·m_{{{lid}}}·l_{{{lid}}}^2 = {self.n(link.k)}·{self.n(link.mass)}·"
+                    f"{self.n(l)}^2 = {self.n(link.J)} {u['kgm2']}"
+                )
             else:
-                self.eq(w["J_given"].format(lid=lid, J=self.n(link.J)).replace(
-                    f"J_S{lid}", f"J_{{S{lid}}}"))
+                self.eq(
+                    w["J_given"]
+                    .format(lid=lid, J=self.n(link.J))
+                    .replace(f"J_S{lid}", f"J_{{S{lid}}}")
+                )
         self.section("2.4", "2.4")
         for lid, ll in fa.loads.links.items():
             if ll.J and ll.eps:
-                self.eq(f"M_{{in{lid}}} = J_{{S{lid}}}·ε_{{{lid}}} = {self.n(ll.J)}·{self.n(abs(ll.eps))} = "
-                        f"{self.n(abs(ll.inertia_moment))} {u['Nm']}")
+                self.eq(
+                    f"M_{{in{lid}}} = J_{{S{lid}}}·ε_{{{lid}}} = {self.n(ll.J)}·{self.n(abs(ll.eps))} = "
+                    f"{self.n(abs(ll.inertia_moment))} {u['Nm']}"
+                )
         self.section("2.5", "2.5")
         for lid, ll in fa.loads.links.items():
             if not ll.inertia_moment:
@@ -572,11 +674,13 @@ class _Writer:
                 self.text(w["no_shift"].format(lid=lid))
                 continue
             F = float(np.hypot(*ll.inertia_force))
-            self.eq(f"h_{{{lid}}} = M_{{in{lid}}}/F_{{in{lid}}} = {self.n(abs(ll.inertia_moment))}/"
-                    f"{self.n(F)} = {self.n(sh.arm)} {u['m']}; |h_{{{lid}}}| = h_{{{lid}}}/μ_l = "
-                    f"{self.n(sh.arm)}/{self.n(float(self.a.mu_l))} = {self.n(sh.arm_mm or 0.0)} {u['mm']}")
+            self.eq(
+                f"h_{{{lid}}} = M_{{in{lid}}}/F_{{in{lid}}} = {self.n(abs(ll.inertia_moment))}/"
+                f"{self.n(F)} = {self.n(sh.arm)} {u['m']}; |h_{{{lid}}}| = h_{{{lid}}}/μ_l = "
+                f"{self.n(sh.arm)}/{self.n(float(self.a.mu_l))} = {self.n(sh.arm_mm or 0.0)} {u['mm']}"
+            )
 
-    def groups(self, fa: "ForceAnalysis") -> None:
+    def groups(self, fa: ForceAnalysis) -> None:
         w, u = self.w, self.u
         n_groups = len(fa.groups)
         for j, g in enumerate(fa.groups):
@@ -587,8 +691,10 @@ class _Writer:
             self.eq(_equation_markup(poly.equation))
             mu_f = scale_for(poly.largest, FORCE_PLAN) if poly.largest > 0 else 1.0
             self.text(w["mu_F"])
-            self.eq(f"μ_F = F_{{max}}/|F_{{max}}| = {self.n(poly.largest)}/{self.n(poly.largest / mu_f)} = "
-                    f"{self.n(mu_f)} {u['N/mm']}")
+            self.eq(
+                f"μ_F = F_{{max}}/|F_{{max}}| = {self.n(poly.largest)}/{self.n(poly.largest / mu_f)} = "
+                f"{self.n(mu_f)} {u['N/mm']}"
+            )
             self.text(w["solve"])
             for s in g.steps:
                 self.eq(self.step_line(s))
@@ -599,10 +705,14 @@ class _Writer:
                 if len(comps) == 2:
                     c1, c2 = comps
                     # osifont has no √: the root is written as a power 1/2
-                    self.eq(f"{name} = (({_force_markup(c1.label)})^2 + ({_force_markup(c2.label)})^2)^{{1/2}} = "
-                            f"({self.np_(c1.value)}^2 + {self.np_(c2.value)}^2)^{{1/2}} = {self.n(r.magnitude)} {u['N']}")
-                self.eq(f"{name} = |{name}|·μ_F = {self.n(r.magnitude / mu_f)}·"
-                        f"{self.n(mu_f)} = {self.n(r.magnitude)} {u['N']}")
+                    self.eq(
+                        f"{name} = (({_force_markup(c1.label)})^2 + ({_force_markup(c2.label)})^2)^{{1/2}} = "
+                        f"({self.np_(c1.value)}^2 + {self.np_(c2.value)}^2)^{{1/2}} = {self.n(r.magnitude)} {u['N']}"
+                    )
+                self.eq(
+                    f"{name} = |{name}|·μ_F = {self.n(r.magnitude / mu_f)}·"
+                    f"{self.n(mu_f)} = {self.n(r.magnitude)} {u['N']}"
+                )
         step = f"2.{6 + n_groups}"
         self.add("subsection", f"{step}. {w['driver']}", step)
         dl = fa.driving_link
@@ -619,28 +729,39 @@ class _Writer:
             F = float(np.hypot(*f.force))
             if F > 0:
                 h = (M - f.couple) / F
-                self.eq(f"M_{_sub(O)}({_force_markup(f.label)}) = {self.n(F)}·{self.np_(h)} = {self.n(M)} {u['Nm']}")
+                self.eq(
+                    f"M_{_sub(O)}({_force_markup(f.label)}) = {self.n(F)}·{self.np_(h)} = {self.n(M)} {u['Nm']}"
+                )
             elif f.couple:
                 self.eq(f"M_{_sub(O)}({_force_markup(f.label)}) = {self.n(f.couple)} {u['Nm']}")
-        s = 1.0 if mech.drive.sense == "ccw" else -1.0
+        sense = 1.0 if mech.drive.sense == "ccw" else -1.0
         OA = mech.crank_length
         self.text(w["F_bal_pl"].replace("{O}", _sub(O)))
-        sign = "-" if s > 0 else ""
-        self.eq(f"F_{{bal.pl}} = {sign}ΣM_{_sub(O)}/l_{{OA}} = {sign}{self.np_(total)}/{self.n(OA)} = "
-                f"{self.n(dl.balancing_force)} {u['N']}; M_{{bal}} = F_{{bal.pl}}·l_{{OA}} = "
-                f"{self.n(dl.balancing_moment)} {u['Nm']}")
+        sign = "-" if sense > 0 else ""
+        self.eq(
+            f"F_{{bal.pl}} = {sign}ΣM_{_sub(O)}/l_{{OA}} = {sign}{self.np_(total)}/{self.n(OA)} = "
+            f"{self.n(dl.balancing_force)} {u['N']}; M_{{bal}} = F_{{bal.pl}}·l_{{OA}} = "
+            f"{self.n(dl.balancing_moment)} {u['Nm']}"
+        )
         self.text(w["R01"].format(O=O, d=dl.link))
         self.eq(f"{_force_markup(dl.reaction.name)} = {self.n(dl.reaction.magnitude)} {u['N']}")
         step = f"2.{7 + n_groups}"
         self.add("subsection", f"{step}. {w['reactions']}", step)
         rows = [w["react_head"]]
         for name, r in fa.reactions.items():
-            rows.append((_force_markup(r.name), r.pair, self.n(r.force[0]), self.n(r.force[1]),
-                         self.n(r.magnitude)))
+            rows.append(
+                (
+                    _force_markup(r.name),
+                    r.pair,
+                    self.n(r.force[0]),
+                    self.n(r.force[1]),
+                    self.n(r.magnitude),
+                )
+            )
         self.add("table", rows=rows, widths=(24, 22, 32, 32, 32))
         self.fa_steps = 8 + n_groups
 
-    def lever(self, fa: "ForceAnalysis") -> None:
+    def lever(self, fa: ForceAnalysis) -> None:
         w, u = self.w, self.u
         lv = fa.lever
         _, _, mu_v, _ = self.plan_scales()
@@ -654,26 +775,39 @@ class _Writer:
             h_mm = f.arm / mu_v
             Fh = f.moment / mu_v
             total += Fh
-            rows.append((_force_markup(f.label), _image_markup(f.point), self.n(F), self.n(h_mm),
-                         self.n(Fh)))
+            rows.append(
+                (
+                    _force_markup(f.label),
+                    _image_markup(f.point),
+                    self.n(F),
+                    self.n(h_mm),
+                    self.n(Fh),
+                )
+            )
         self.add("table", rows=rows, widths=(24, 16, 30, 30, 36))
         pa = lv.pa / mu_v
         s = 1.0 if self.mech.drive.sense == "ccw" else -1.0
-        self.eq(f"ΣM_p = ΣF_i·h_i = {self.n(total)} {u['N']}·{u['mm']}; pa = V_A/μ_V = "
-                f"{self.n(lv.pa)}/{self.n(mu_v)} = {self.n(pa)} {u['mm']}")
+        self.eq(
+            f"ΣM_p = ΣF_i·h_i = {self.n(total)} {u['N']}·{u['mm']}; pa = V_A/μ_V = "
+            f"{self.n(lv.pa)}/{self.n(mu_v)} = {self.n(pa)} {u['mm']}"
+        )
         self.text(w["F_bal_z"])
         sign = "-" if s > 0 else ""
-        self.eq(f"F_{{bal.z}} = {sign}ΣF_i·h_i/pa = {sign}{self.np_(total)}/{self.n(pa)} = "
-                f"{self.n(lv.balancing_force)} {u['N']} "
-                f"({w['drives'] if lv.balancing_force >= 0 else w['brakes']})")
+        self.eq(
+            f"F_{{bal.z}} = {sign}ΣF_i·h_i/pa = {sign}{self.np_(total)}/{self.n(pa)} = "
+            f"{self.n(lv.balancing_force)} {u['N']} "
+            f"({w['drives'] if lv.balancing_force >= 0 else w['brakes']})"
+        )
         step = f"2.{self.fa_steps + 1}"
         self.add("subsection", f"{step}. {w['match']}", step)
         self.text(w["discrepancy"])
         d = fa.discrepancy_percent
         z, pl = fa.balancing_force_lever, fa.balancing_force_plans
-        self.eq(f"Δ_F = |F_{{bal.z}} - F_{{bal.pl}}|/|F_{{bal.z}}|·100 % = |{self.n(z, 6)} - "
-                f"{self.np_(pl, 6)}|/{self.n(abs(z), 6)}·100 % = {self.n(d, 3)} % "
-                + (w["within"] if math.isfinite(d) and d <= 5.0 else w["beyond"]))
+        self.eq(
+            f"Δ_F = |F_{{bal.z}} - F_{{bal.pl}}|/|F_{{bal.z}}|·100 % = |{self.n(z, 6)} - "
+            f"{self.np_(pl, 6)}|/{self.n(abs(z), 6)}·100 % = {self.n(d, 3)} % "
+            + (w["within"] if math.isfinite(d) and d <= 5.0 else w["beyond"])
+        )
 
     def step_line(self, s: str) -> str:
         """A step line of the force solver as markup, in the note's language."""
@@ -692,7 +826,7 @@ class _Writer:
         return s
 
 
-def note_content(analysis: "Solution", lang: Language = "en") -> NoteContent:
+def note_content(analysis: Solution, lang: Language = "en") -> NoteContent:
     """The calculation note of `analysis` as blocks, in seed 003 §IV order."""
     return _Writer(analysis, lang).build()
 

@@ -11,8 +11,9 @@ with the text stopping 10 mm above either.
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any, Mapping, Sequence
+from typing import Any
 
 from ..drawing.page import FIELDS, Page, Rect, draw_frame, draw_title_block, load_title_block_look
 from ..i18n import Language
@@ -61,15 +62,18 @@ class NotePage:
 def markup_width(let: Lettering, text: str, size: float) -> float:
     """Width of a markup line as `Backend.rich_text` sets it."""
     small = let.index_size(size)
-    return sum(let.advance_width(t, size if kind == "normal" else small)
-               for t, kind in parse_markup(text)) + (0.3 * size if text else 0.0)
+    return sum(
+        let.advance_width(t, size if kind == "normal" else small) for t, kind in parse_markup(text)
+    ) + (0.3 * size if text else 0.0)
 
 
 def _wrap(let: Lettering, text: str, size: float, width: float) -> list[str]:
     return let.wrap(text, size, width, measure=lambda line, at: markup_width(let, line, at))
 
 
-def _equation_lines(let: Lettering, text: str, size: float, width: float) -> list[tuple[str, float]]:
+def _equation_lines(
+    let: Lettering, text: str, size: float, width: float
+) -> list[tuple[str, float]]:
     """An equation as (line, indent): split at "; ", then at " = " with the
     continuation starting "= ", then at spaces."""
     out: list[tuple[str, float]] = []
@@ -97,8 +101,9 @@ def _frame_box(page: Page, first: bool) -> Rect:
     return Rect.from_bounds(f.left + 5.0, bottom, f.right - 5.0, f.top - 10.0)
 
 
-def layout_note(content: NoteContent, look: Look | None = None,
-                page: Page | None = None) -> list[NotePage]:
+def layout_note(
+    content: NoteContent, look: Look | None = None, page: Page | None = None
+) -> list[NotePage]:
     """Set the blocks in lines and break them into pages."""
     look = look or load_look()
     let = look.lettering
@@ -116,8 +121,9 @@ def layout_note(content: NoteContent, look: Look | None = None,
     def room(height: float) -> bool:
         return y - height >= box.bottom - 1e-9
 
-    def put(text: str, size: float, kind: str, x: float, before: float = 0.0,
-            keep: float = 0.0) -> None:
+    def put(
+        text: str, size: float, kind: str, x: float, before: float = 0.0, keep: float = 0.0
+    ) -> None:
         """A line of `size`; `keep` more mm must fit below it (a heading keeps its next line)."""
         nonlocal y
         pitch = PITCH * size
@@ -140,8 +146,14 @@ def layout_note(content: NoteContent, look: Look | None = None,
             for j, t in enumerate(lines):
                 # the heading's first line brings the space above it and keeps
                 # the heading together with the first lines under it
-                put(t, size, block.kind, 0.0, before=(4.0 if size == HEADING else 3.0) if j == 0 else 0.0,
-                    keep=(len(lines) - 1 - j) * PITCH * size + 2 * PITCH * BODY)
+                put(
+                    t,
+                    size,
+                    block.kind,
+                    0.0,
+                    before=(4.0 if size == HEADING else 3.0) if j == 0 else 0.0,
+                    keep=(len(lines) - 1 - j) * PITCH * size + 2 * PITCH * BODY,
+                )
         elif block.kind in ("text", "problem"):
             lines = _wrap(let, block.text, BODY, width)
             for t in lines:
@@ -190,6 +202,7 @@ class _RowPutter:
 
 # --- drawing -------------------------------------------------------------------------------
 
+
 def _fields(mech: Any, title: str, pages: int, lang: Language) -> dict[str, str]:
     fields = {k: str(v) for k, v in dict(getattr(mech, "sheet", None) or {}).items() if k in FIELDS}
     fields["title"] = title
@@ -200,8 +213,9 @@ def _fields(mech: Any, title: str, pages: int, lang: Language) -> dict[str, str]
     return fields
 
 
-def draw_form2a(backend: Backend, page: Page, number: int, designation: str,
-                lang: Language) -> None:
+def draw_form2a(
+    backend: Backend, page: Page, number: int, designation: str, lang: Language
+) -> None:
     """GOST 2.104 form 2a: 185 × 15 mm at the frame's bottom right; columns
     7, 10, 23, 15, 10 | 110 | 10 mm; three 5 mm rows on the left, the lowest
     holding the captions; the page number in the right cell."""
@@ -219,19 +233,49 @@ def draw_form2a(backend: Backend, page: Page, number: int, designation: str,
         backend.line((xs[6], y0 + 8.0), (xs[7], y0 + 8.0), "main")
         keys = ("change", "change_sheet", "document", "signature", "date")
         for i, key in enumerate(keys):
-            backend.text(((xs[i] + xs[i + 1]) / 2, y0 + 2.5), tb.caption_text(lang, key), SMALL,
-                         anchor="center", valign="middle", max_width=xs[i + 1] - xs[i] - 1.0)
-        backend.text(((xs[6] + xs[7]) / 2, y0 + 11.5), tb.caption_text(lang, "sheet"), SMALL,
-                     anchor="center", valign="middle", max_width=9.0)
-        backend.text(((xs[6] + xs[7]) / 2, y0 + 4.0), str(number), BODY, anchor="center",
-                     valign="middle", max_width=9.0)
+            backend.text(
+                ((xs[i] + xs[i + 1]) / 2, y0 + 2.5),
+                tb.caption_text(lang, key),
+                SMALL,
+                anchor="center",
+                valign="middle",
+                max_width=xs[i + 1] - xs[i] - 1.0,
+            )
+        backend.text(
+            ((xs[6] + xs[7]) / 2, y0 + 11.5),
+            tb.caption_text(lang, "sheet"),
+            SMALL,
+            anchor="center",
+            valign="middle",
+            max_width=9.0,
+        )
+        backend.text(
+            ((xs[6] + xs[7]) / 2, y0 + 4.0),
+            str(number),
+            BODY,
+            anchor="center",
+            valign="middle",
+            max_width=9.0,
+        )
         if designation:
-            backend.text(((xs[5] + xs[6]) / 2, y0 + 7.5), designation, HEADING, anchor="center",
-                         valign="middle", max_width=105.0)
+            backend.text(
+                ((xs[5] + xs[6]) / 2, y0 + 7.5),
+                designation,
+                HEADING,
+                anchor="center",
+                valign="middle",
+                max_width=105.0,
+            )
 
 
-def draw_note_page(backend: Backend, note_page_: NotePage, pages: int, content: NoteContent,
-                   mech: Any = None, page: Page | None = None) -> None:
+def draw_note_page(
+    backend: Backend,
+    note_page_: NotePage,
+    pages: int,
+    content: NoteContent,
+    mech: Any = None,
+    page: Page | None = None,
+) -> None:
     """One page: its lines, the frame and the main inscription or form 2a."""
     page = page or note_page()
     with backend.group(f"page-{note_page_.number}", "note-page"):
@@ -245,8 +289,9 @@ def draw_note_page(backend: Backend, note_page_: NotePage, pages: int, content: 
     if note_page_.number == 1:
         draw_title_block(backend, page, fields, content.lang)
     else:
-        draw_form2a(backend, page, note_page_.number, fields.get("drawing_number", ""),
-                    content.lang)
+        draw_form2a(
+            backend, page, note_page_.number, fields.get("drawing_number", ""), content.lang
+        )
 
 
 def _draw_row(backend: Backend, line: Line) -> None:
@@ -259,8 +304,9 @@ def _draw_row(backend: Backend, line: Line) -> None:
     for w, cell in zip(line.widths, line.cells):
         backend.line((x + w, bottom), (x + w, top), "main")
         if cell:
-            backend.rich_text((x + w / 2, bottom + ROW / 2), cell, line.size, anchor="center",
-                              valign="middle")
+            backend.rich_text(
+                (x + w / 2, bottom + ROW / 2), cell, line.size, anchor="center", valign="middle"
+            )
         x += w
 
 

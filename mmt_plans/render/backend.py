@@ -16,7 +16,8 @@ import abc
 import contextlib
 import math
 import re
-from typing import Iterator, Literal, Sequence, Union, get_args
+from collections.abc import Iterator, Sequence
+from typing import Literal, get_args
 
 import numpy as np
 
@@ -45,7 +46,7 @@ VAlign = Literal["baseline", "middle", "top"]
 Fill = Literal["none", "black", "white"]
 
 Point = tuple[float, float]
-PointLike = Union[Sequence[float], np.ndarray]
+PointLike = Sequence[float] | np.ndarray
 
 _HALIGNS = get_args(HAlign)
 _VALIGNS = get_args(VAlign)

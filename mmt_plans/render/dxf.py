@@ -58,16 +58,17 @@ import re
 import unicodedata
 import uuid
 from collections import Counter
-from datetime import datetime, timezone
+from collections.abc import Sequence
+from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any
 
 import ezdxf
+from ezdxf.colors import RGB
 from ezdxf.document import CREATED_BY_EZDXF, WRITTEN_BY_EZDXF, Drawing
 from ezdxf.enums import TextEntityAlignment
 from ezdxf.lldxf.const import VALID_DXF_LINEWEIGHTS
 from ezdxf.tools.juliandate import juliandate
-from ezdxf.colors import RGB
 
 from .backend import LINE_TYPES, Backend, Fill, HAlign, LineType, PointLike, VAlign, as_point
 from .look import Look
@@ -84,7 +85,7 @@ TEXT_STYLE = "GOST"
 _DOT_MAX = 1.0
 _INK_ACI = 7  # black on paper, white on a dark CAD screen
 _WHITE = 0xFFFFFF
-_DEFAULT_DATE = datetime(2000, 1, 1, tzinfo=timezone.utc)
+_DEFAULT_DATE = datetime(2000, 1, 1, tzinfo=UTC)
 _GUID_NAMESPACE = uuid.uuid5(uuid.NAMESPACE_URL, "mmt_plans/render/dxf")
 
 _ALIGNMENT = {
@@ -166,9 +167,11 @@ def source_date() -> datetime:
     if not raw:
         return _DEFAULT_DATE
     try:
-        return datetime.fromtimestamp(int(raw), tz=timezone.utc)
+        return datetime.fromtimestamp(int(raw), tz=UTC)
     except (ValueError, OverflowError, OSError):
-        raise ValueError(f"SOURCE_DATE_EPOCH must be whole seconds since 1970, got {raw!r}") from None
+        raise ValueError(
+            f"SOURCE_DATE_EPOCH must be whole seconds since 1970, got {raw!r}"
+        ) from None
 
 
 class _Bounds:
@@ -282,7 +285,9 @@ class DxfBackend(Backend):
         finally:
             del doc._update_metadata  # back to the class's method
         if doc.header["$VERSIONGUID"] != _version_guid(when):
-            raise RuntimeError("this ezdxf writes its header differently: the DXF is not reproducible")
+            raise RuntimeError(
+                "this ezdxf writes its header differently: the DXF is not reproducible"
+            )
         return doc.encode(stream.getvalue())
 
     def save(self, path: str | os.PathLike[str]) -> Path:
@@ -388,7 +393,9 @@ class DxfBackend(Backend):
         start = float(start_deg) % 360.0
         end = (start + span) % 360.0
         # Extents: the ends and every axis direction the arc passes.
-        for deg in [start, start + span] + [q for q in range(0, 720, 90) if start < q < start + span]:
+        for deg in [start, start + span] + [
+            q for q in range(0, 720, 90) if start < q < start + span
+        ]:
             a = math.radians(deg)
             self._bounds.add(cx + r * math.cos(a), cy + r * math.sin(a))
         self._add(self._msp.add_arc((cx, cy), r, start, end, dxfattribs=self._attribs(line)))
@@ -472,7 +479,7 @@ def _area(points: Sequence[tuple[float, float]]) -> float:
 
 def _stamp(doc: Drawing, when: datetime) -> None:
     """Replace what ezdxf takes from the clock and the random generator."""
-    date = juliandate(when.astimezone(timezone.utc).replace(tzinfo=None))
+    date = juliandate(when.astimezone(UTC).replace(tzinfo=None))
     for var in ("$TDCREATE", "$TDUCREATE", "$TDUPDATE", "$TDUUPDATE"):
         doc.header[var] = date
     doc.header["$TDINDWG"] = 0.0

@@ -14,11 +14,19 @@ import os
 import re
 import shutil
 import subprocess
+from collections.abc import Iterable
 from pathlib import Path
-from typing import Any, Iterable
+from typing import Any
 
-__all__ = ["svg_to_pdf", "svg_to_png", "svg_to_pdf_bytes", "svg_to_png_bytes", "svgs_to_pdf",
-           "installed_families", "prefer_installed_font"]
+__all__ = [
+    "svg_to_pdf",
+    "svg_to_png",
+    "svg_to_pdf_bytes",
+    "svg_to_png_bytes",
+    "svgs_to_pdf",
+    "installed_families",
+    "prefer_installed_font",
+]
 
 SvgSource = str | bytes | os.PathLike[str]
 

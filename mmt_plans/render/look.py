@@ -13,10 +13,11 @@ import json
 import math
 import os
 import tomllib
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
-from typing import Any, Callable, Literal, Mapping, get_args
+from typing import Any, Literal, get_args
 
 __all__ = [
     "LineType",
@@ -127,8 +128,14 @@ class Lettering:
         """Height from the top of the first line's capitals to the last baseline."""
         return size + max(lines - 1, 0) * self.line_pitch * size
 
-    def wrap(self, text: str, size: float, max_width: float, *,
-             measure: Callable[[str, float], float] | None = None) -> list[str]:
+    def wrap(
+        self,
+        text: str,
+        size: float,
+        max_width: float,
+        *,
+        measure: Callable[[str, float], float] | None = None,
+    ) -> list[str]:
         """Break `text` at spaces (and at given newlines) into lines no wider than max_width,
         as `measure(line, size)` gives widths (plain text's by default).
 
@@ -218,9 +225,7 @@ def _look_from_dict(data: Mapping[str, Any]) -> Look:
         families=tuple(let["families"]),
         cap_height=float(let["cap_height"]),
         slant_deg=float(let["slant_deg"]),
-        advances=MappingProxyType(
-            {ch: float(v) / per_em for ch, v in metrics["advances"].items()}
-        ),
+        advances=MappingProxyType({ch: float(v) / per_em for ch, v in metrics["advances"].items()}),
         default_advance=float(metrics["default_advance"]) / per_em,
         min_squeeze=float(let["min_squeeze"]),
         line_pitch=float(let["line_pitch"]),

@@ -47,8 +47,9 @@ def render(recording: RecordingBackend, fmt: str, title: str | None = None) -> b
     return svg_to_pdf_bytes(svg) if fmt == "pdf" else svg_to_png_bytes(svg)
 
 
-def write_drawing(recording: RecordingBackend, target: str | os.PathLike[str], fmt: str,
-                  title: str | None = None) -> Path:
+def write_drawing(
+    recording: RecordingBackend, target: str | os.PathLike[str], fmt: str, title: str | None = None
+) -> Path:
     """Write the recorded drawing to `target` in format `fmt`, atomically (a
     temporary name in the same folder, renamed when complete); returns the path."""
     from ..files import write_bytes_atomic

@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any
 
 from .backend import Backend, Fill, HAlign, LineType, Point, PointLike, VAlign, as_point
 
@@ -163,13 +164,16 @@ class RecordingBackend(Backend):
 
     def _begin_group(self, id: str, cls: str | None) -> None:
         # Recorded with the groups as they were before this one opened.
-        self.calls.append(Call("begin_group", {"id": id, "cls": cls}, tuple(self._open_groups[:-1])))
+        self.calls.append(
+            Call("begin_group", {"id": id, "cls": cls}, tuple(self._open_groups[:-1]))
+        )
 
     def _end_group(self) -> None:
         self._record("end_group")
 
     def replay(self, backend: Backend, dx: float = 0.0, dy: float = 0.0) -> None:
         """Draw every recorded call again on `backend`, shifted by (dx, dy) mm."""
+
         def t(p: Sequence[float]) -> tuple[float, float]:
             return (p[0] + dx, p[1] + dy)
 
@@ -191,13 +195,21 @@ class RecordingBackend(Backend):
                 backend.arc(t(a["center"]), a["radius"], a["start_deg"], a["end_deg"], a["line"])
             elif c.name == "arrow":
                 backend.arrow(
-                    t(a["start"]), t(a["end"]), a["line"],
-                    head_length=a["head_length"], head_width=a["head_width"],
+                    t(a["start"]),
+                    t(a["end"]),
+                    a["line"],
+                    head_length=a["head_length"],
+                    head_width=a["head_width"],
                 )
             elif c.name == "text":
                 backend.text(
-                    t(a["pos"]), a["content"], a["size"], anchor=a["anchor"],
-                    valign=a["valign"], rotation=a["rotation"], max_width=a["max_width"],
+                    t(a["pos"]),
+                    a["content"],
+                    a["size"],
+                    anchor=a["anchor"],
+                    valign=a["valign"],
+                    rotation=a["rotation"],
+                    max_width=a["max_width"],
                 )
             else:  # pragma: no cover - a new primitive must be added here
                 raise ValueError(f"cannot replay {c.name!r}")

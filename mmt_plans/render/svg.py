@@ -13,8 +13,9 @@ import math
 import os
 import re
 from collections import Counter
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any
 
 import svgwrite
 
@@ -50,9 +51,7 @@ class SvgBackend(Backend):
         if title:
             self._dwg.set_desc(title=title)
         self._dwg.add(
-            self._dwg.rect(
-                insert=("0", "0"), size=(w, h), fill=self.look.background, id="paper"
-            )
+            self._dwg.rect(insert=("0", "0"), size=(w, h), fill=self.look.background, id="paper")
         )
         lettering = self.look.lettering
         root = self._dwg.g(
@@ -143,7 +142,10 @@ class SvgBackend(Backend):
             raise ValueError(f"circle radius must be positive, got {radius}")
         self._add(
             self._dwg.circle(
-                center=self._xy(center), r=self._num(radius), **self._stroke(line), **self._fill(fill)
+                center=self._xy(center),
+                r=self._num(radius),
+                **self._stroke(line),
+                **self._fill(fill),
             )
         )
 

@@ -6,8 +6,9 @@ half-written sheet. PDFs carry a fixed date, so two runs give the same bytes."""
 from __future__ import annotations
 
 import os
+from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
-from typing import Any, Callable, Iterable, Sequence
+from typing import Any
 
 from ..drawing.page import Page
 from ..errors import MmtError
@@ -20,7 +21,6 @@ from .sheet1 import compose_sheet1
 from .sheet2 import compose_sheet2
 
 __all__ = ["FORMATS", "SheetNotAvailable", "available_sheets", "write_sheets"]
-
 
 
 class SheetNotAvailable(MmtError, ValueError):
@@ -44,7 +44,9 @@ def write_sheets(
     formats = tuple(formats)
     unknown = [f for f in formats if f not in FORMATS]
     if unknown:
-        raise ValueError(f"unknown format {', '.join(unknown)}; expected some of {', '.join(FORMATS)}")
+        raise ValueError(
+            f"unknown format {', '.join(unknown)}; expected some of {', '.join(FORMATS)}"
+        )
     composers = available_sheets()
     wanted = list(sheets)
     missing = [n for n in wanted if n not in composers]

@@ -21,17 +21,34 @@ def _formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[st
 
 @click.command()
 @click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
-@click.option("-o", "--out", "out_dir", default="out", show_default=True,
-              type=click.Path(file_okay=False, path_type=Path), help="Directory for the sheets.")
-@click.option("--format", "formats", default="svg,pdf,png", show_default=True, callback=_formats,
-              help="Comma-separated: svg, pdf, png, dxf.")
+@click.option(
+    "-o",
+    "--out",
+    "out_dir",
+    default="out",
+    show_default=True,
+    type=click.Path(file_okay=False, path_type=Path),
+    help="Directory for the sheets.",
+)
+@click.option(
+    "--format",
+    "formats",
+    default="svg,pdf,png",
+    show_default=True,
+    callback=_formats,
+    help="Comma-separated: svg, pdf, png, dxf.",
+)
 @click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
 @click.option("--sheet", type=click.Choice(["1", "2", "all"]), default="all", show_default=True)
-@click.option("--partial-turn", is_flag=True,
-              help="A crank that cannot make a whole turn: draw the range where it assembles.")
+@click.option(
+    "--partial-turn",
+    is_flag=True,
+    help="A crank that cannot make a whole turn: draw the range where it assembles.",
+)
 @reports_errors
-def draw(file: Path, out_dir: Path, formats: tuple[str, ...], lang: str, sheet: str,
-         partial_turn: bool) -> None:
+def draw(
+    file: Path, out_dir: Path, formats: tuple[str, ...], lang: str, sheet: str, partial_turn: bool
+) -> None:
     """Draw the A1 sheets of FILE."""
     from ..files import check_output
     from ..solution import solve

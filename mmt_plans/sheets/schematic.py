@@ -17,9 +17,10 @@ from __future__ import annotations
 import math
 import os
 import re
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Iterable, Sequence
+from typing import Any
 
 import numpy as np
 from shapely.geometry import LineString
@@ -94,19 +95,25 @@ def _pose(solution: Solution, k: int) -> tuple[dict[str, np.ndarray], list[_Guid
 
         def line(sweep: Any, idx: Any) -> tuple[np.ndarray, np.ndarray]:
             if pair.guide == FRAME:
-                return np.full_like(sweep.phi1_deg[idx], t_local, dtype=complex), \
-                    np.full_like(sweep.phi1_deg[idx], d_local, dtype=complex)
+                return np.full_like(sweep.phi1_deg[idx], t_local, dtype=complex), np.full_like(
+                    sweep.phi1_deg[idx], d_local, dtype=complex
+                )
             state = sweep.links[pair.guide]
             return state.at(t_local)[idx], state.e[idx] * d_local
 
         g, u = line(dense, ok)
         s = ((dense.position_of(pair.slider_point)[ok] - g) * np.conj(u)).real
-        g0, u0 = line(sw, [k])
-        g0, u0 = complex(g0[0]), complex(u0[0])
+        g_k, u_k = line(sw, [k])
+        g0, u0 = complex(g_k[0]), complex(u_k[0])
         ends = (g0 + float(s.min()) * u0, g0 + float(s.max()) * u0)
-        guides.append(_Guide(pair, np.array([u0.real, u0.imag]),
-                             tuple(np.array([e.real, e.imag]) for e in ends),  # type: ignore[arg-type]
-                             pts[pair.slider_point]))
+        guides.append(
+            _Guide(
+                pair,
+                np.array([u0.real, u0.imag]),
+                tuple(np.array([e.real, e.imag]) for e in ends),  # type: ignore[arg-type]
+                pts[pair.slider_point],
+            )
+        )
     return pts, guides
 
 
@@ -114,19 +121,34 @@ def _free_direction(directions: Iterable[np.ndarray]) -> np.ndarray:
     """The middle of the widest gap between directions leaving a point."""
     # in [0, 2π), rounded: a direction along an axis must not come out as +π
     # or -π by the sign of a rounding error
-    angles = sorted({round(math.atan2(d[1], d[0]) % (2 * math.pi), 6) % round(2 * math.pi, 6)
-                     for d in directions if float(np.hypot(*d)) > 1e-9})
+    angles = sorted(
+        {
+            round(math.atan2(d[1], d[0]) % (2 * math.pi), 6) % round(2 * math.pi, 6)
+            for d in directions
+            if float(np.hypot(*d)) > 1e-9
+        }
+    )
     if not angles:
         return np.array([math.cos(math.radians(45)), math.sin(math.radians(45))])
-    gaps = [((angles[(i + 1) % len(angles)] - a) % (2 * math.pi) or 2 * math.pi, a)
-            for i, a in enumerate(angles)]
+    gaps = [
+        ((angles[(i + 1) % len(angles)] - a) % (2 * math.pi) or 2 * math.pi, a)
+        for i, a in enumerate(angles)
+    ]
     gap, a = max(gaps)
     mid = a + gap / 2.0
     return np.array([math.cos(mid), math.sin(mid)])
 
 
-def _clear_of_pivots(lo: float, hi: float, at: np.ndarray, u: np.ndarray, n: np.ndarray,
-                     grow: float, pivots: Sequence[np.ndarray], hatched: bool = True) -> tuple[float, float]:
+def _clear_of_pivots(
+    lo: float,
+    hi: float,
+    at: np.ndarray,
+    u: np.ndarray,
+    n: np.ndarray,
+    grow: float,
+    pivots: Sequence[np.ndarray],
+    hatched: bool = True,
+) -> tuple[float, float]:
     """Shorten a guide (lo..hi along u from the slider at `at`) that would run
     through the symbol of a frame pivot, keeping the side the slider is on."""
     for p in pivots:
@@ -154,7 +176,13 @@ def _block(sk: Sketch, c: np.ndarray, u: np.ndarray, grow: float = 1.0) -> list[
     return corners
 
 
-def _draw(solution: Solution, k: int, scale: float, look: Any, pose: tuple[dict[str, np.ndarray], list[_Guide]]) -> Sketch:
+def _draw(
+    solution: Solution,
+    k: int,
+    scale: float,
+    look: Any,
+    pose: tuple[dict[str, np.ndarray], list[_Guide]],
+) -> Sketch:
     """The scheme at `scale` mm per m, in local mm."""
     mech = solution.mechanism
     pts_m, guides = pose
@@ -216,7 +244,11 @@ def _draw(solution: Solution, k: int, scale: float, look: Any, pose: tuple[dict[
         for name, o in owners.items():
             if FRAME in o and len(o) > 1:
                 hatched_base(sk, P[name], *_BASE)
-                lines_at[name] += [np.array([-1.0, -1.5]), np.array([1.0, -1.5]), np.array([0.0, -1.0])]
+                lines_at[name] += [
+                    np.array([-1.0, -1.5]),
+                    np.array([1.0, -1.5]),
+                    np.array([0.0, -1.0]),
+                ]
 
         # What the ω1 arc, the output's arrow and the lettering keep clear of.
         labels = Labels(sk, _LETTER, rings=_RINGS)
@@ -227,8 +259,14 @@ def _draw(solution: Solution, k: int, scale: float, look: Any, pose: tuple[dict[
         crank_mm = float(np.hypot(*(pin - centre)))
         r = min(7.0, max(4.0, 0.45 * crank_mm))
         # rounded, so that the last bits of the solution cannot flip a near tie
-        mid = float(min(range(0, 360, 10), key=lambda m: round(
-            labels.covered(arc_line(centre, r, m - 50, m + 50).buffer(1.2)), 2)))
+        mid = float(
+            min(
+                range(0, 360, 10),
+                key=lambda m: round(
+                    labels.covered(arc_line(centre, r, m - 50, m + 50).buffer(1.2)), 2
+                ),
+            )
+        )
         head = math.degrees(2.0 / r)  # the arrowhead takes about 2 mm of the arc
         ccw = mech.drive.sense == "ccw"
         a0, a1 = mid - 50.0, mid + 50.0
@@ -261,21 +299,31 @@ def _draw(solution: Solution, k: int, scale: float, look: Any, pose: tuple[dict[
         labels.avoid_drawn(sk.calls[drawn:], _CLEAR, solid=True)
 
         # Letters of the points, then the numbers of the links.
-        labels.place(omega_at, "ω_{1}", towards=unit_vector(omega_dir), distance=1.0,
-                     group="omega-1")
+        labels.place(
+            omega_at, "ω_{1}", towards=unit_vector(omega_dir), distance=1.0, group="omega-1"
+        )
         # the letter of a slider's point goes outside its block
         gap = {name: _POINT_GAP for name in P}
         for g in guides:
             grow = _RAM if g.pair.guide == FRAME and g.pair.slider_point in carried else 1.0
             gap[g.pair.slider_point] = max(gap[g.pair.slider_point], _BLOCK[1] * grow + 0.5)
         for name in sorted(P, key=lambda n: (FRAME not in owners[n], n)):
-            labels.place(P[name], point_markup(name), towards=_free_direction(lines_at[name]),
-                         distance=gap[name], group=f"{LABEL_GROUP}{name}")
+            labels.place(
+                P[name],
+                point_markup(name),
+                towards=_free_direction(lines_at[name]),
+                distance=gap[name],
+                group=f"{LABEL_GROUP}{name}",
+            )
         guide_of = {g.pair.slider: g for g in guides}
         for lid, link in mech.links.items():
             group = f"{NUMBER_GROUP}{lid}"
             names = [p for p in link.points if p in P]
-            segs = [(P[names[i]], P[names[j]]) for i in range(len(names)) for j in range(i + 1, len(names))]
+            segs = [
+                (P[names[i]], P[names[j]])
+                for i in range(len(names))
+                for j in range(i + 1, len(names))
+            ]
             segs = [s for s in segs if float(np.hypot(*(s[1] - s[0]))) > 1e-6]
             if segs:
                 # beside the link's longest line, at its middle if that is free
@@ -286,19 +334,32 @@ def _draw(solution: Solution, k: int, scale: float, look: Any, pose: tuple[dict[
                 g = guide_of[lid]
                 grow = _RAM if g.pair.guide == FRAME and g.pair.slider_point in carried else 1.0
                 c, half = P[g.pair.slider_point], (_BLOCK[0] * grow + 1.0) * g.u
-                labels.place_along(c - half, c + half, str(lid), distance=_BLOCK[1] * grow + 0.4,
-                                   group=group)
+                labels.place_along(
+                    c - half, c + half, str(lid), distance=_BLOCK[1] * grow + 0.4, group=group
+                )
             elif names:
-                labels.place(P[names[0]], str(lid), towards=np.array([0.0, 1.0]),
-                             distance=_POINT_GAP, group=group)
+                labels.place(
+                    P[names[0]],
+                    str(lid),
+                    towards=np.array([0.0, 1.0]),
+                    distance=_POINT_GAP,
+                    group=group,
+                )
     return sk
 
 
-def _geometry_bounds(pose: tuple[dict[str, np.ndarray], list[_Guide]]) -> tuple[float, float, float, float]:
+def _geometry_bounds(
+    pose: tuple[dict[str, np.ndarray], list[_Guide]],
+) -> tuple[float, float, float, float]:
     pts_m, guides = pose
     xy = list(pts_m.values()) + [e for g in guides for e in g.ends]
     arr = np.array(xy, dtype=float)
-    return (float(arr[:, 0].min()), float(arr[:, 1].min()), float(arr[:, 0].max()), float(arr[:, 1].max()))
+    return (
+        float(arr[:, 0].min()),
+        float(arr[:, 1].min()),
+        float(arr[:, 0].max()),
+        float(arr[:, 1].max()),
+    )
 
 
 def _shifted(sk: Sketch, dx: float, dy: float) -> Sketch:
@@ -340,7 +401,9 @@ def sketch_schematic(
         sk = _draw(solution, k, scale, look, pose)
     ext = sk.extent()
     if ext.width > width_mm + 1e-6 or ext.height > height_mm + 1e-6:
-        raise ValueError(f"{solution.mechanism.path}: the scheme does not fit {width_mm:g} x {height_mm:g} mm")
+        raise ValueError(
+            f"{solution.mechanism.path}: the scheme does not fit {width_mm:g} x {height_mm:g} mm"
+        )
     dx = (width_mm - ext.width) / 2.0 - ext.x
     dy = (height_mm - ext.height) / 2.0 - ext.y
     return _shifted(sk, dx, dy)
@@ -361,15 +424,26 @@ def _formula(sk: Sketch, pos: tuple[float, float], formula: str, size: float) ->
     start = x
     for i, part in enumerate(str(formula).split("<-")):
         if i:
-            sk.arrow((x + 4.5, y + size * 0.35), (x + 1.0, y + size * 0.35), "thin",
-                     head_length=1.5, head_width=1.0)
+            sk.arrow(
+                (x + 4.5, y + size * 0.35),
+                (x + 1.0, y + size * 0.35),
+                "thin",
+                head_length=1.5,
+                head_width=1.0,
+            )
             x += 5.5
         x += sk.rich_text((x, y), part.strip(), size)
     return x - start
 
 
-def sketch_caption(solution: Solution, path: str | os.PathLike[str], look: Any, lang: Language,
-                   width: float, size: float = _CAPTION) -> Sketch:
+def sketch_caption(
+    solution: Solution,
+    path: str | os.PathLike[str],
+    look: Any,
+    lang: Language,
+    width: float,
+    size: float = _CAPTION,
+) -> Sketch:
     """Two lines centred on x = 0 under y = 0: "Task 3, variant 2, φ1 = …" and the formula."""
     words = catalogue(lang).words("schematic")
     tv = task_of(path)
@@ -384,7 +458,9 @@ def sketch_caption(solution: Solution, path: str | os.PathLike[str], look: Any, 
     return sk
 
 
-def _grid(page: Page, rows: int, cols: int, head: float, caption: float) -> tuple[Page, float, float]:
+def _grid(
+    page: Page, rows: int, cols: int, head: float, caption: float
+) -> tuple[Page, float, float]:
     best = None
     for p in (page.landscape(), page.portrait()):
         f = p.frame.inset(4.0)
@@ -427,15 +503,21 @@ def write_task_schematics(
     look = backend.look
     seed = Path(task_dir).name
     with backend.group("heading", "heading"):
-        backend.text((frame.left, frame.top - 5.0), catalogue(lang).words("schematic")["heading"].format(seed=seed), 3.5,
-                     valign="middle")
+        backend.text(
+            (frame.left, frame.top - 5.0),
+            catalogue(lang).words("schematic")["heading"].format(seed=seed),
+            3.5,
+            valign="middle",
+        )
     top = frame.top - head
     for f in files:
         tv = task_of(f) or (0, 0)
         row, col = tasks.index(tv[0]), variants.index(tv[1])
         cell = Rect(frame.left + col * cw, top - (row + 1) * ch, cw, ch)
         solution = solve(load(f))
-        sk = sketch_schematic(solution, look, lang, width_mm=cw - 2.0, height_mm=ch - caption_h - 1.0)
+        sk = sketch_schematic(
+            solution, look, lang, width_mm=cw - 2.0, height_mm=ch - caption_h - 1.0
+        )
         with backend.group(f"cell-{f.stem}", "cell"):
             backend.rectangle((cell.x, cell.y), cell.width, cell.height, "thin")
             sk.replay(backend, cell.x + 1.0, cell.y + caption_h)
@@ -483,7 +565,9 @@ def write_task_files(
                 y -= look.lettering.line_pitch * size
         sk = sketch_schematic(solution, look, lang, width_mm=width_mm, height_mm=height_mm)
         sk.replay(backend, margin, margin + cap_h)
-        sketch_caption(solution, f, look, lang, width_mm).replay(backend, margin + width_mm / 2.0, margin + cap_h)
+        sketch_caption(solution, f, look, lang, width_mm).replay(
+            backend, margin + width_mm / 2.0, margin + cap_h
+        )
         path = out_dir / f"task_{task:02d}.svg"
         written.append(write_drawing(backend, path, "svg", str(solution.mechanism.title)))
     return written

@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Callable, Mapping, Sequence
+from typing import Any
 
 import numpy as np
 
@@ -25,7 +26,8 @@ from ..drawing.symbols import hatched_base, hatched_guide, sense_arc, unit_vecto
 from ..drawing.table import table_sketch
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend
-from ..scales import ACCELERATION_PLAN, VELOCITY_PLAN, scale_for, scale_label
+from ..render.look import LineType
+from ..scales import ACCELERATION_PLAN, VELOCITY_PLAN, Quantity, scale_for, scale_label
 from ..solution import Solution
 from .common import next_scale as _next_scale
 from .common import scale_step, title_fields
@@ -48,7 +50,9 @@ _TEXT = 3.5
 _SMALL = 2.5
 _TITLE = 5.0
 _DENSE = 181
-_NUMBER = re.compile(r"[-−]?\d+\.\d+(e[-+]?\d+)?")  # positions of the dense sweep for the trajectories
+_NUMBER = re.compile(
+    r"[-−]?\d+\.\d+(e[-+]?\d+)?"
+)  # positions of the dense sweep for the trajectories
 
 
 def _words(lang: Language):
@@ -101,7 +105,11 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         # Trajectories from a dense sweep: thin polylines.
         dense = solution.dense
         ok = np.asarray(dense.ok, dtype=bool)
-        frame_links = {lid for lid, link in mech.links.items() if any(owners.get(p, (None,))[0] == 0 for p in link.points)}
+        frame_links = {
+            lid
+            for lid, link in mech.links.items()
+            if any(owners.get(p, (None,))[0] == 0 for p in link.points)
+        }
         traced = [p for p, (l0, _) in owners.items() if l0 != 0]
         for lid, link in mech.links.items():
             s = f"S{lid}"
@@ -117,7 +125,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
 
         # Links in every position.
         for k in range(n):
-            kind = "main" if k in main else "thin"
+            kind: LineType = "main" if k in main else "thin"
             for link in mech.links.values():
                 names = [p for p in link.points if p in pts]
                 for i in range(len(names)):
@@ -132,13 +140,22 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             name = slider.slider_point
             if slider.guide != 0:
                 for k in sorted(main):
-                    d = complex(solution.sweep.links[slider.guide].e[k]) * complex(*slider.direction)
+                    d = complex(solution.sweep.links[slider.guide].e[k]) * complex(
+                        *slider.direction
+                    )
                     u = unit_vector(np.array([d.real, d.imag]))
                     c = at(name, k)
-                    ts = [float(np.dot(at(p, k) - c, u)) for p in mech.links[slider.guide].points if p in pts]
+                    ts = [
+                        float(np.dot(at(p, k) - c, u))
+                        for p in mech.links[slider.guide].points
+                        if p in pts
+                    ]
                     sk.line(c + min(-12.0, *ts) * u, c + max(12.0, *ts) * u, "main")
                     nrm = np.array([-u[1], u[0]])
-                    corners = [c + sx * 6.0 * u + sy * 3.5 * nrm for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+                    corners = [
+                        c + sx * 6.0 * u + sy * 3.5 * nrm
+                        for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
+                    ]
                     sk.polygon([tuple(p) for p in corners], "main", "white")
                 continue
             u = unit_vector(np.asarray(slider.direction, dtype=float))
@@ -151,8 +168,15 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             nrm = np.array([-u[1], u[0]])
             for k in sorted(main):
                 c = at(name, k)
-                corners = [c + sx * 6.0 * u + sy * 3.5 * nrm for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-                sk.polygon([tuple(p) for p in corners], "main" if k in main else "thin", "white" if k in main else "none")
+                corners = [
+                    c + sx * 6.0 * u + sy * 3.5 * nrm
+                    for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
+                ]
+                sk.polygon(
+                    [tuple(p) for p in corners],
+                    "main" if k in main else "thin",
+                    "white" if k in main else "none",
+                )
 
         # Joints of the main positions, the frame pivots.
         for k in sorted(main):
@@ -177,7 +201,11 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                 if lid == mech.drive.link or len(names) < 2 or abs(w) < 1e-9 * w1:
                     continue
                 mid = (at(names[0], k) + at(names[1], k)) / 2
-                for value, radius, sym, line in ((w, 4.0, "ω", "main"), (e, 7.0, "ε", "thin")):
+                arcs: tuple[tuple[float, float, str, LineType], ...] = (
+                    (w, 4.0, "ω", "main"),
+                    (e, 7.0, "ε", "thin"),
+                )
+                for value, radius, sym, line in arcs:
                     if abs(value) < 1e-9 * w1 * w1 and sym == "ε":
                         continue
                     tip = sense_arc(sk, mid, radius, value, 200.0, 340.0, line)
@@ -189,14 +217,21 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         for name in owners:
             if name in pts:
                 p = at(name, 0)
-                d = unit_vector(p - centre) if name != mech.crank_pivot else np.array([-1.0, 0.0])
-                labels.place(p, point_markup(name), towards=unit_vector(d + np.array([0.3, 0.6])),
-                             distance=2.0)
+                away = (
+                    unit_vector(p - centre) if name != mech.crank_pivot else np.array([-1.0, 0.0])
+                )
+                labels.place(
+                    p,
+                    point_markup(name),
+                    towards=unit_vector(away + np.array([0.3, 0.6])),
+                    distance=2.0,
+                )
         # Numbered positions of the crank pin.
         for k in range(n):
             p = at(mech.crank_pin, k)
-            labels.place(p, str(solution.positions[k].index), towards=unit_vector(p - centre),
-                         distance=2.0)
+            labels.place(
+                p, str(solution.positions[k].index), towards=unit_vector(p - centre), distance=2.0
+            )
 
         ext = sk.extent()
         label = scale_label(mu_l, "length", lang)
@@ -258,7 +293,9 @@ def sketch_plan(
                 if float(np.hypot(*(e - s))) < 0.5:
                     continue
                 at_pole = float(np.hypot(*s)) < 1e-6
-                if at_pole and any(float(np.hypot(*(e - images[p]))) < 1e-6 for p in moving if p in images):
+                if at_pole and any(
+                    float(np.hypot(*(e - images[p]))) < 1e-6 for p in moving if p in images
+                ):
                     continue  # coincides with an absolute vector
                 sk.arrow(s, e, "dashed", head_length=3.0, head_width=1.0)
                 if c.kind in ("normal", "coriolis"):
@@ -297,9 +334,13 @@ def sketch_plan(
         placer.size = _SMALL
         placer.write_later()
         ext = sk.extent()
-        q = "velocity" if kind == "velocity" else "acceleration"
-        sk.rich_text(((ext.left + ext.right) / 2, ext.bottom - 5.0),
-                     scale_label(mu, q, lang).markup(), _TEXT, anchor="center")
+        q: Quantity = "velocity" if kind == "velocity" else "acceleration"
+        sk.rich_text(
+            ((ext.left + ext.right) / 2, ext.bottom - 5.0),
+            scale_label(mu, q, lang).markup(),
+            _TEXT,
+            anchor="center",
+        )
         title = _words(lang)[f"{kind}_plan"].format(i=index)
         sk.text(((ext.left + ext.right) / 2, ext.top + 3.0), title, _TEXT, anchor="center")
     return sk, images
@@ -315,8 +356,14 @@ def _axes(sk: Sketch, x0: float, x1: float, y0: float, y1: float, ylabel: str, x
     sk.text((x1, -5.0), xlabel, _TEXT, anchor="right", valign="top")
 
 
-def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
-                   s_dense: np.ndarray | None = None, refinement: int = 1) -> Sketch:
+def sketch_diagram(
+    construction: Any,
+    which: str,
+    look: Any,
+    lang: Language,
+    s_dense: np.ndarray | None = None,
+    refinement: int = 1,
+) -> Sketch:
     """One of the S, V, a diagrams with its construction. `s_dense` (m, at equal
     crank steps from position 0) draws S as the smooth curve through the
     positions' ordinates, as a draughtsman draws it with a French curve."""
@@ -333,8 +380,10 @@ def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
                 curve = np.column_stack([np.linspace(0.0, L, len(y)), y])
             deriv = c.velocity
             label = axes["s"]
-            scales = [scale_label(_tidy(c.mu_S), "displacement", lang),
-                      scale_label(_tidy(c.mu_t), "time", lang)]
+            scales = [
+                scale_label(_tidy(c.mu_S), "displacement", lang),
+                scale_label(_tidy(c.mu_t), "time", lang),
+            ]
         elif which == "v":
             deriv = c.velocity
             pts = np.asarray(deriv.mid_points, dtype=float)
@@ -355,8 +404,13 @@ def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
         grid = np.asarray(c.abscissae, dtype=float).tolist() + [L]
         for i, x in enumerate(grid):
             if i % refinement == 0:  # the positions are numbered, the finer grid is not
-                sk.text((x, -1.5), str((i // refinement) % (len(grid) // refinement)), _SMALL,
-                        anchor="center", valign="top")
+                sk.text(
+                    (x, -1.5),
+                    str((i // refinement) % (len(grid) // refinement)),
+                    _SMALL,
+                    anchor="center",
+                    valign="top",
+                )
             if which == "s":
                 y = float(c.s_points[i][1])
                 if abs(y) > 0.5:
@@ -367,7 +421,7 @@ def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
             H = np.asarray(deriv.pole, dtype=float)
             sk.circle(H, 0.8, "main", "black")
             sk.text((H[0], -1.5), "H", _TEXT, anchor="center", valign="top")
-            for (s, e) in np.asarray(deriv.rays, dtype=float):
+            for s, e in np.asarray(deriv.rays, dtype=float):
                 sk.line(s, e, "thin")
             for kp, mp in zip(np.asarray(deriv.k_points, dtype=float), pts):
                 sk.line(kp, (mp[0], kp[1]), "thin")
@@ -379,7 +433,7 @@ def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
         elif which == "v":
             chords = c.acceleration.chords
         if chords is not None:
-            for (s, e) in np.asarray(chords, dtype=float):
+            for s, e in np.asarray(chords, dtype=float):
                 sk.line(s, e, "dashed")
         ext = sk.extent()
         y = ext.bottom - 5.0
@@ -387,8 +441,8 @@ def sketch_diagram(construction: Any, which: str, look: Any, lang: Language,
         for lab in scales:
             x += sk.rich_text((x, y), lab.markup(), _TEXT) + 8.0
         if which != "s":
-            H = f"{float(-deriv.pole[0]):.2f}".rstrip("0").rstrip(".")
-            sk.rich_text((x, y), str(axes["pole"]).format(H=catalogue(lang).localise(H)), _TEXT)
+            pole = f"{float(-deriv.pole[0]):.2f}".rstrip("0").rstrip(".")
+            sk.rich_text((x, y), str(axes["pole"]).format(H=catalogue(lang).localise(pole)), _TEXT)
         sk.text((ext.x + _PAD, ext.top + 3.0), _words(lang)[f"diagram_{which}"], _TEXT)
     return sk
 
@@ -438,22 +492,28 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
             marks.append(f"{sym}_{{{name}}}")
         labels: list[str] = []
         for g in views[0].groups:
-            for c in (g.velocity if kind == "velocity" else g.acceleration):
+            for c in g.velocity if kind == "velocity" else g.acceleration:
                 if c.kind in ("slide",) or c.label in labels:
                     continue
                 labels.append(c.label)
         for lab in labels:
             vals = []
             for v in views:
-                found = [c for g in v.groups for c in (g.velocity if kind == "velocity" else g.acceleration) if c.label == lab]
+                found = [
+                    c
+                    for g in v.groups
+                    for c in (g.velocity if kind == "velocity" else g.acceleration)
+                    if c.label == lab
+                ]
                 vals.append(_fmt(float(np.hypot(*found[0].vector))) if found else "—")
             if all(x in ("0", "—") for x in vals):
                 continue  # a component that vanishes at every planned position (Coriolis on a still guide)
             rows.append([lab, *vals])
             marks.append(component_markup(lab))
         header = [w["quantity"], *(f"{w['position']} {i}" for i in idx)]
-        out[gid] = table_sketch(look, gid, title, header, rows, [22.0] + [20.0] * len(idx), marks,
-                                lang)
+        out[gid] = table_sketch(
+            look, gid, title, header, rows, [22.0] + [20.0] * len(idx), marks, lang
+        )
 
     rows = []
     marks = []
@@ -461,15 +521,25 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
     for lid in links:
         vals = []
         for v in views:
-            vals += [_fmt(float(v.omega.get(lid, float("nan")))), _fmt(float(v.eps.get(lid, float("nan"))))]
+            vals += [
+                _fmt(float(v.omega.get(lid, float("nan")))),
+                _fmt(float(v.eps.get(lid, float("nan")))),
+            ]
         rows.append([str(lid), *vals])
         marks.append(str(lid))
     header = [w["link"]]
     for i in idx:
         header += [f"ω, 1/s ({i})", f"ε, 1/s² ({i})"]
     out["table-omega-eps"] = table_sketch(
-        look, "table-omega-eps", w["omega_eps"], header, rows, [14.0] + [20.0] * (2 * len(idx)), marks,
-        lang)
+        look,
+        "table-omega-eps",
+        w["omega_eps"],
+        header,
+        rows,
+        [14.0] + [20.0] * (2 * len(idx)),
+        marks,
+        lang,
+    )
 
     dg = solution.require_diagrams()
     sc = dg.sheet_check
@@ -481,31 +551,54 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
         row = [str(i)]
         for q in ("v", "a"):
             val = next(x for x in sc.values if x.index == i and x.quantity == q)
-            err = (f"±{_fmt(val.absolute_error, 2)}*" if val.ill_conditioned
-                   else f"{val.error_percent:.1f}")
+            err = (
+                f"±{_fmt(val.absolute_error, 2)}*"
+                if val.ill_conditioned
+                else f"{val.error_percent:.1f}"
+            )
             row += [_fmt(val.plan), _fmt(val.diagram), err]
         rows.append(row)
         marks.append(str(i))
-    header = [w["position"], f"V {w['plan']}", f"V {w['diagram']}", "δV, %",
-              f"a {w['plan']}", f"a {w['diagram']}", "δa, %"]
-    sk = table_sketch(look, "table-check", w["check"], header, rows, [12.0] + [18.0] * 6, marks,
-                      lang)
+    header = [
+        w["position"],
+        f"V {w['plan']}",
+        f"V {w['diagram']}",
+        "δV, %",
+        f"a {w['plan']}",
+        f"a {w['diagram']}",
+        "δa, %",
+    ]
+    sk = table_sketch(
+        look, "table-check", w["check"], header, rows, [12.0] + [18.0] * 6, marks, lang
+    )
     step = 360.0 / sc.intervals
     notes = [w["grid"].format(n=sc.intervals, step=f"{step:g}")]
     for val in sc.values:
         if val.ill_conditioned:
             sym = "V" if val.quantity == "v" else "a"
-            notes.append(w["ill_conditioned"].format(
-                q=sym, i=val.index, share=f"{ILL_CONDITIONED * 100:g}",
-                abs=_fmt(val.absolute_error, 2),
-                unit=catalogue(lang).unit("m/s" if val.quantity == "v" else "m/s2")))
+            notes.append(
+                w["ill_conditioned"].format(
+                    q=sym,
+                    i=val.index,
+                    share=f"{ILL_CONDITIONED * 100:g}",
+                    abs=_fmt(val.absolute_error, 2),
+                    unit=catalogue(lang).unit("m/s" if val.quantity == "v" else "m/s2"),
+                )
+            )
     for val in sc.values:
         if not val.passed:
             sym = "V" if val.quantity == "v" else "a"
-            notes.append(w["over_plain"].format(q=sym, i=val.index, e=f"{abs(val.error_percent):.1f}",
-                                                lim=f"{sc.limit_percent:g}"))
-    notes.append(w["verdict_passed" if sc.passed else "verdict_failed"].format(
-        lim=f"{sc.limit_percent:g}"))
+            notes.append(
+                w["over_plain"].format(
+                    q=sym,
+                    i=val.index,
+                    e=f"{abs(val.error_percent):.1f}",
+                    lim=f"{sc.limit_percent:g}",
+                )
+            )
+    notes.append(
+        w["verdict_passed" if sc.passed else "verdict_failed"].format(lim=f"{sc.limit_percent:g}")
+    )
     notes = [catalogue(lang).localise(n) if lang != "en" else n for n in notes]
     extra = Sketch(look)
     y = sk.extent().bottom - 2.0
@@ -545,8 +638,14 @@ def _plan_scales(solution: Solution) -> tuple[float, float]:
     return scale_for(v_a, VELOCITY_PLAN), scale_for(a_a, ACCELERATION_PLAN)
 
 
-def _sketch_all(solution: Solution, look: Any, lang: Language, shrink: int, stacked: bool,
-                cache: dict[tuple[str, float], Any]) -> tuple[dict[str, Sketch], dict[str, float]]:
+def _sketch_all(
+    solution: Solution,
+    look: Any,
+    lang: Language,
+    shrink: int,
+    stacked: bool,
+    cache: dict[tuple[str, float], Any],
+) -> tuple[dict[str, Sketch], dict[str, float]]:
     """Every drawing but the mechanism, the plans `shrink` series steps from
     their textbook scales; `cache` keeps what was drawn at a scale for the next try."""
 
@@ -558,20 +657,29 @@ def _sketch_all(solution: Solution, look: Any, lang: Language, shrink: int, stac
     mu_v, mu_a = _plan_scales(solution)
     mu_v, mu_a = _next_scale(mu_v, shrink), _next_scale(mu_a, shrink)
     sketches: dict[str, Sketch] = {}
-    sketches["structural-formula"] = memo("structural-formula", 0.0,
-                                          lambda: sketch_formula(solution, look, lang))
+    sketches["structural-formula"] = memo(
+        "structural-formula", 0.0, lambda: sketch_formula(solution, look, lang)
+    )
     for i in solution.plan_positions:
-        sketches[f"velocity-plan-{i}"] = memo(f"velocity-plan-{i}", mu_v, lambda: sketch_plan(
-            solution, i, mu_v, "velocity", look, lang)[0])
-        sketches[f"acceleration-plan-{i}"] = memo(f"acceleration-plan-{i}", mu_a, lambda: sketch_plan(
-            solution, i, mu_a, "acceleration", look, lang)[0])
+        sketches[f"velocity-plan-{i}"] = memo(
+            f"velocity-plan-{i}",
+            mu_v,
+            lambda: sketch_plan(solution, i, mu_v, "velocity", look, lang)[0],
+        )
+        sketches[f"acceleration-plan-{i}"] = memo(
+            f"acceleration-plan-{i}",
+            mu_a,
+            lambda: sketch_plan(solution, i, mu_a, "acceleration", look, lang)[0],
+        )
 
     def diagrams() -> list[Sketch]:
         dg = solution.require_diagrams()
         construction = dg.construction
         s_dense = solution.s_dense
-        return [sketch_diagram(construction, which, look, lang, s_dense, dg.refinement)
-                for which in ("s", "v", "a")]
+        return [
+            sketch_diagram(construction, which, look, lang, s_dense, dg.refinement)
+            for which in ("s", "v", "a")
+        ]
 
     parts = memo("diagrams", 0.0, diagrams)
     if stacked:
@@ -583,8 +691,9 @@ def _sketch_all(solution: Solution, look: Any, lang: Language, shrink: int, stac
     return sketches, {"mu_V": mu_v, "mu_a": mu_a}
 
 
-def compose_sheet1(solution: Solution, backend: Backend, lang: Language = "en", *,
-                   page: Page | None = None) -> Sheet1:
+def compose_sheet1(
+    solution: Solution, backend: Backend, lang: Language = "en", *, page: Page | None = None
+) -> Sheet1:
     """Draw sheet 1 of `solution` on `backend`; returns the layout and scales used.
 
     Scales from the textbook's (seed 003: pa, πa) raised a step at a time until
@@ -595,8 +704,13 @@ def compose_sheet1(solution: Solution, backend: Backend, lang: Language = "en", 
     check_language(lang)
     last: Exception | None = None
     cache: dict[tuple[str, float], Any] = {}
-    attempts = [(shrink, stacked, bigger, gap) for shrink in range(5) for stacked in (True, False)
-                for bigger in (2, 1, 0) for gap in (8.0, 5.0)]
+    attempts = [
+        (shrink, stacked, bigger, gap)
+        for shrink in range(5)
+        for stacked in (True, False)
+        for bigger in (2, 1, 0)
+        for gap in (8.0, 5.0)
+    ]
     for shrink, stacked, bigger, gap in attempts:
         sketches, scales = _sketch_all(solution, backend.look, lang, shrink, stacked, cache)
         mu_l = scale_step(float(solution.mu_l), max(0, shrink - 1) - bigger)
@@ -611,9 +725,18 @@ def compose_sheet1(solution: Solution, backend: Backend, lang: Language = "en", 
             # diagrams bottom left, the tables from the top right; the plans
             # then take the free middle.
             columns = ["diagrams"] if stacked else ["diagram-s", "diagram-v", "diagram-a"]
-            order = ["mechanism", *columns, "table-velocities", "table-accelerations",
-                     "table-omega-eps", "table-check", "structural-formula"] + [
-                n for n in sketches if n.startswith("velocity-plan") or n.startswith("acceleration-plan")
+            order = [
+                "mechanism",
+                *columns,
+                "table-velocities",
+                "table-accelerations",
+                "table-omega-eps",
+                "table-check",
+                "structural-formula",
+            ] + [
+                n
+                for n in sketches
+                if n.startswith("velocity-plan") or n.startswith("acceleration-plan")
             ]
             for name in order:
                 ext = sketches[name].extent()

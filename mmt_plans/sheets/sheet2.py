@@ -18,8 +18,9 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Iterable, Sequence
+from typing import Any
 
 import numpy as np
 
@@ -36,6 +37,7 @@ from ..forces.state import PositionState
 from ..i18n import Language, catalogue, check_language
 from ..model import FRAME
 from ..render.backend import Backend
+from ..render.look import LineType
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label
 from ..solution import Solution
 from .common import scale_step, title_fields
@@ -48,8 +50,17 @@ _PAD = 2.0
 _ARROW = dict(head_length=3.5, head_width=1.2)
 _FAR_MM = 40.0  # a reaction applied farther than this from its group's points moves to them
 
-GROUPS = ("force-mechanism", "driving-link", "force-polygon-1", "zhukovsky-lever",
-          "table-loads", "table-reactions", "table-lever", "table-balancing")
+GROUPS = (
+    "force-mechanism",
+    "driving-link",
+    "force-polygon-1",
+    "zhukovsky-lever",
+    "table-loads",
+    "table-reactions",
+    "table-lever",
+    "table-balancing",
+)
+
 
 @dataclass
 class Sheet2:
@@ -64,7 +75,6 @@ class Sheet2:
     shrink: int = 0
 
 
-
 def _words(lang: Language):
     return catalogue(lang).words("sheet2")
 
@@ -72,6 +82,7 @@ def _words(lang: Language):
 # --- lettering ------------------------------------------------------------------------
 
 # --- primitives -------------------------------------------------------------------------
+
 
 def _c(v: Any) -> complex:
     return v if isinstance(v, complex) else complex(float(v[0]), float(v[1]))
@@ -112,7 +123,7 @@ class _Drawing:
     def mm(self, P: Any) -> np.ndarray:
         return _xy(_c(P)) / self.mu_l
 
-    def line(self, a: np.ndarray, b: np.ndarray, kind: str = "main") -> None:
+    def line(self, a: np.ndarray, b: np.ndarray, kind: LineType = "main") -> None:
         self.sk.line(a, b, kind)
         self.labels.avoid_line(a, b)
 
@@ -120,15 +131,19 @@ class _Drawing:
         """A label written after every line, so that it can avoid them all."""
         self.labels.later(anchor, markup, towards)
 
-    def force(self, at: np.ndarray, F: np.ndarray, label: str, largest: float,
-              line: str = "main") -> None:
+    def force(
+        self, at: np.ndarray, F: np.ndarray, label: str, largest: float, line: str = "main"
+    ) -> None:
         size = float(np.hypot(*F))
         if size <= 1e-9 * max(largest, 1e-300):
             return
         u = np.asarray(F, float) / size
         # forces at one point along one line (F_PR and F_in on a slider) side by side
         for start, v in self._arrows:
-            if float(np.hypot(*(start - at))) < 1.0 and abs(float(v[0] * u[1] - v[1] * u[0])) < 0.05:
+            if (
+                float(np.hypot(*(start - at))) < 1.0
+                and abs(float(v[0] * u[1] - v[1] * u[0])) < 0.05
+            ):
                 at = at + 2.5 * np.array([-u[1], u[0]])
         self._arrows.append((at, u))
         end = at + _arrow_length(size, largest) * u
@@ -169,7 +184,9 @@ class _Drawing:
             names = list(mech.links[lid].points)
             for i in range(len(names)):
                 for j in range(i + 1, len(names)):
-                    self.line(self.mm(state.point(lid, names[i])), self.mm(state.point(lid, names[j])))
+                    self.line(
+                        self.mm(state.point(lid, names[i])), self.mm(state.point(lid, names[j]))
+                    )
         for pair in mech.sliders:
             if pair.slider not in lids and pair.guide not in lids:
                 continue
@@ -180,39 +197,49 @@ class _Drawing:
                     hatched_guide(self.sk, Q - 22.0 * u, Q + 22.0 * u, u, 3.5)
             elif pair.guide in lids:
                 # the slot runs from the block along the guide link, as far as its points reach
-                ts = [float(np.dot(self.mm(state.point(pair.guide, n)) - Q, u))
-                      for n in mech.links[pair.guide].points]
+                ts = [
+                    float(np.dot(self.mm(state.point(pair.guide, n)) - Q, u))
+                    for n in mech.links[pair.guide].points
+                ]
                 self.line(Q + min(-16.0, *ts) * u, Q + max(16.0, *ts) * u)
             if pair.slider in lids:
                 n = np.array([-u[1], u[0]])
-                corners = [Q + sx * 6.0 * u + sy * 3.5 * n for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+                corners = [
+                    Q + sx * 6.0 * u + sy * 3.5 * n
+                    for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
+                ]
                 self.sk.polygon([tuple(p) for p in corners], "main", "white")
                 for a, b in zip(corners, corners[1:] + corners[:1]):
                     self.labels.avoid_line(a, b)
         written: set[str] = set()
-        for pair in mech.revolutes:
-            moving = [lk for lk in pair.links if lk != FRAME]
+        for pin in mech.revolutes:
+            moving = [lk for lk in pin.links if lk != FRAME]
             if not any(lk in lids for lk in moving):
                 continue
-            P = self.mm(state.point(moving[0], pair.point))
-            if FRAME in pair.links and frame:
+            P = self.mm(state.point(moving[0], pin.point))
+            if FRAME in pin.links and frame:
                 hatched_base(self.sk, P)
                 self.labels.avoid_line(P, P - np.array([0.0, 6.0]), 4.5)
             self.sk.circle(P, 1.2, "main", "white")
             self.labels.avoid_circle(P, 1.6)
-            if pair.point not in written:
-                written.add(pair.point)
-                self.later(P, point_markup(pair.point), np.array([-0.6, 0.8]))
+            if pin.point not in written:
+                written.add(pin.point)
+                self.later(P, point_markup(pin.point), np.array([-0.6, 0.8]))
         for pair in mech.sliders:
             if pair.slider in lids and pair.slider_point not in written:
                 written.add(pair.slider_point)
-                self.later(self.mm(state.point(pair.slider, pair.slider_point)),
-                           point_markup(pair.slider_point), np.array([0.0, 1.0]))
+                self.later(
+                    self.mm(state.point(pair.slider, pair.slider_point)),
+                    point_markup(pair.slider_point),
+                    np.array([0.0, 1.0]),
+                )
         for lid in sorted(lids):  # the output point and other named points
             for name in mech.links[lid].points:
                 if name not in written and len(mech.point_owners[name]) == 1:
                     written.add(name)
-                    self.later(self.mm(state.point(lid, name)), point_markup(name), np.array([0.6, 0.8]))
+                    self.later(
+                        self.mm(state.point(lid, name)), point_markup(name), np.array([0.6, 0.8])
+                    )
 
     def loads(self, fa: ForceAnalysis, lids: Iterable[int], largest: float) -> None:
         """G at S, F_IN shifted to K (or at S with M_IN as a couple), h, F_PR."""
@@ -253,17 +280,22 @@ class _Drawing:
         return self.sk
 
 
-def _largest_load(fa: ForceAnalysis, lids: Iterable[int], extra: Iterable[np.ndarray] = ()) -> float:
+def _largest_load(
+    fa: ForceAnalysis, lids: Iterable[int], extra: Iterable[np.ndarray] = ()
+) -> float:
     sizes = [0.0]
     for lid in lids:
         ll = fa.loads.links[lid]
         sizes += [float(np.hypot(*ll.weight)), float(np.hypot(*ll.inertia_force))]
-    sizes += [float(np.hypot(*f.force)) for f in fa.loads.production_resistance if f.link in set(lids)]
+    sizes += [
+        float(np.hypot(*f.force)) for f in fa.loads.production_resistance if f.link in set(lids)
+    ]
     sizes += [float(np.hypot(*v)) for v in extra]
     return max(sizes)
 
 
 # --- the drawings -----------------------------------------------------------------------
+
 
 def sketch_loaded_mechanism(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
     state = fa.loads.state
@@ -278,8 +310,9 @@ def sketch_loaded_mechanism(fa: ForceAnalysis, mu_l: float, look: Any, lang: Lan
         O = d.mm(state.point(mech.drive.link, mech.crank_pivot))
         d.moment(O, state.omega1, "ω_{1}", radius=9.0)
         label = scale_label(mu_l, "length", lang).markup()
-        sk = d.finish(_words(lang)["mechanism"].format(i=fa.index),
-                      [label, _words(lang)["not_to_scale"]])
+        sk = d.finish(
+            _words(lang)["mechanism"].format(i=fa.index), [label, _words(lang)["not_to_scale"]]
+        )
     return sk
 
 
@@ -303,8 +336,9 @@ def _group_forces(fa: ForceAnalysis, g: Any) -> list[tuple[str, np.ndarray, np.n
     return out
 
 
-def sketch_group(fa: ForceAnalysis, g: Any, mu_l: float, look: Any, lang: Language,
-                 arm_names: list[str]) -> Sketch:
+def sketch_group(
+    fa: ForceAnalysis, g: Any, mu_l: float, look: Any, lang: Language, arm_names: list[str]
+) -> Sketch:
     state = fa.loads.state
     mech = state.mech
     d = _Drawing(look, state, mu_l)
@@ -359,7 +393,9 @@ def sketch_driving_link(fa: ForceAnalysis, mu_l: float, look: Any, lang: Languag
     d = _Drawing(look, state, mu_l)
     with d.sk.group("driving-link", "driving-link"):
         d.links([dl.link], frame=False)
-        forces = [(f.label, f.force, f.point) for f in dl.free_body if f.label.startswith(("R", "F_bal"))]
+        forces = [
+            (f.label, f.force, f.point) for f in dl.free_body if f.label.startswith(("R", "F_bal"))
+        ]
         largest = _largest_load(fa, [dl.link], [f for _, f, _ in forces])
         d.loads(fa, [dl.link], largest)
         for label, F, P in forces:
@@ -375,8 +411,9 @@ def _polygon_title(title: str, lang: Language) -> str:
     return title
 
 
-def sketch_force_polygons(polygons: Sequence[ForcePolygon], mu_F: float, look: Any,
-                          lang: Language, gid: str, title: str) -> Sketch:
+def sketch_force_polygons(
+    polygons: Sequence[ForcePolygon], mu_F: float, look: Any, lang: Language, gid: str, title: str
+) -> Sketch:
     """The polygons of one group (or of the driving link) to μF, head to tail
     from their origin. A polygon that starts with the sides of one already
     drawn (a link's polygon inside its group's) adds only its new sides, as
@@ -389,8 +426,14 @@ def sketch_force_polygons(polygons: Sequence[ForcePolygon], mu_F: float, look: A
     offset = np.zeros(2)
     with sk.group(gid, "force-polygon"):
         for n, poly in enumerate(polygons):
-            keys = [(v.label, round(float(v.start[0]) / mu_F * 100), round(float(v.start[1]) / mu_F * 100))
-                    for v in poly.vectors]
+            keys = [
+                (
+                    v.label,
+                    round(float(v.start[0]) / mu_F * 100),
+                    round(float(v.start[1]) / mu_F * 100),
+                )
+                for v in poly.vectors
+            ]
             shares = any(k in drawn for k in keys)
             if n and not shares:
                 # beside what is drawn, clear of it whichever way its sides run
@@ -413,8 +456,12 @@ def sketch_force_polygons(polygons: Sequence[ForcePolygon], mu_F: float, look: A
                 labels.later((s + e) / 2, force_markup(v.label), np.array([-u[1], u[0]]))
             # R = R^n + R^t: the resultant of two consecutive components, main line
             for a, b in zip(poly.vectors, poly.vectors[1:]):
-                if a.label.endswith("^n") and b.label == a.label[:-2] + "^t" or \
-                        a.label.endswith("^t") and b.label == a.label[:-2] + "^n":
+                if (
+                    a.label.endswith("^n")
+                    and b.label == a.label[:-2] + "^t"
+                    or a.label.endswith("^t")
+                    and b.label == a.label[:-2] + "^n"
+                ):
                     s = offset + np.asarray(a.start, float) / mu_F
                     e = offset + np.asarray(b.end, float) / mu_F
                     key = (a.label[:-2], round(s[0] * 100), round(s[1] * 100))
@@ -432,16 +479,22 @@ def sketch_force_polygons(polygons: Sequence[ForcePolygon], mu_F: float, look: A
             sk.rich_text((ext.left + _PAD, y), _equation_markup(poly.equation), _TEXT)
             y -= 6.0
         if short:
-            sk.rich_text((ext.left + _PAD, y), _words(lang)["short"].format(names=", ".join(short)), _TEXT)
+            sk.rich_text(
+                (ext.left + _PAD, y), _words(lang)["short"].format(names=", ".join(short)), _TEXT
+            )
             y -= 6.0
         sk.rich_text((ext.left + _PAD, y), scale_label(mu_F, "force", lang).markup(), _TEXT)
-        sk.text((ext.left + _PAD, ext.top + 3.0), _words(lang)["polygon"].format(
-            title=_polygon_title(title, lang)), _TITLE)
+        sk.text(
+            (ext.left + _PAD, ext.top + 3.0),
+            _words(lang)["polygon"].format(title=_polygon_title(title, lang)),
+            _TITLE,
+        )
     return sk
 
 
-def sketch_lever(fa: ForceAnalysis, mu_V: float, look: Any, lang: Language,
-                 arms: list[tuple[str, float]]) -> Sketch:
+def sketch_lever(
+    fa: ForceAnalysis, mu_V: float, look: Any, lang: Language, arms: list[tuple[str, float]]
+) -> Sketch:
     """The turned velocity plan to μV, every force at the image of its point
     and its arm about the pole p; `arms` receives (label, h mm) in order."""
     lever = fa.lever
@@ -499,12 +552,17 @@ def sketch_lever(fa: ForceAnalysis, mu_V: float, look: Any, lang: Language,
         labels.write_later()
         ext = sk.extent()
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
-        sk.rich_text((ext.left + _PAD, ext.bottom - 11.0), scale_label(mu_V, "velocity", lang).markup(), _TEXT)
+        sk.rich_text(
+            (ext.left + _PAD, ext.bottom - 11.0),
+            scale_label(mu_V, "velocity", lang).markup(),
+            _TEXT,
+        )
         sk.text((ext.left + _PAD, ext.top + 3.0), _words(lang)["lever"], _TITLE)
     return sk
 
 
 # --- tables -----------------------------------------------------------------------------
+
 
 def sketch_loads_table(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
     """G, F_IN, M_IN and the arm h of every link; h in mm of the drawing at μ_l (19)."""
@@ -512,50 +570,108 @@ def sketch_loads_table(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language
     rows, marks = [], []
     for lid, ll in fa.loads.links.items():
         sh = ll.shifted_inertia_force
-        rows.append([str(lid), _num(ll.mass), _num(float(np.hypot(*ll.weight))),
-                     _num(float(np.hypot(*ll.acceleration_cm))), _num(float(np.hypot(*ll.inertia_force))),
-                     _num(ll.J), _num(ll.eps), _num(ll.inertia_moment),
-                     "—" if sh is None else _num(sh.arm / mu_l)])
+        rows.append(
+            [
+                str(lid),
+                _num(ll.mass),
+                _num(float(np.hypot(*ll.weight))),
+                _num(float(np.hypot(*ll.acceleration_cm))),
+                _num(float(np.hypot(*ll.inertia_force))),
+                _num(ll.J),
+                _num(ll.eps),
+                _num(ll.inertia_moment),
+                "—" if sh is None else _num(sh.arm / mu_l),
+            ]
+        )
         marks.append(str(lid))
     header = [w["link"], *w["loads_header"]]
-    return table_sketch(look, "table-loads", w["loads"].format(i=fa.index), header, rows,
-                        [12.0, 14.0, 16.0, 16.0, 16.0, 16.0, 16.0, 16.0, 14.0], marks, lang)
+    return table_sketch(
+        look,
+        "table-loads",
+        w["loads"].format(i=fa.index),
+        header,
+        rows,
+        [12.0, 14.0, 16.0, 16.0, 16.0, 16.0, 16.0, 16.0, 14.0],
+        marks,
+        lang,
+    )
 
 
-def _sketch_tables(fa: ForceAnalysis, arms: Sequence[tuple[str, float]], look: Any,
-                   lang: Language) -> dict[str, Sketch]:
+def _sketch_tables(
+    fa: ForceAnalysis, arms: Sequence[tuple[str, float]], look: Any, lang: Language
+) -> dict[str, Sketch]:
     w = _words(lang)
     out: dict[str, Sketch] = {}
     rows, marks = [], []
     for name, r in fa.reactions.items():
         comps = {c.label[-1]: c.value for c in r.components}
-        rows.append([name, _num(r.magnitude), _num(float(r.force[0])), _num(float(r.force[1])),
-                     _num(abs(comps["n"])) if "n" in comps else "—",
-                     _num(abs(comps["t"])) if "t" in comps else "—"])
+        rows.append(
+            [
+                name,
+                _num(r.magnitude),
+                _num(float(r.force[0])),
+                _num(float(r.force[1])),
+                _num(abs(comps["n"])) if "n" in comps else "—",
+                _num(abs(comps["t"])) if "t" in comps else "—",
+            ]
+        )
         marks.append(force_markup(name))
     out["table-reactions"] = table_sketch(
-        look, "table-reactions", w["reactions"], [w["pair"], "|R|", "Rx", "Ry", "|Rn|", "|Rt|"],
-        rows, [16.0, 18.0, 18.0, 18.0, 18.0, 18.0], marks, lang)
+        look,
+        "table-reactions",
+        w["reactions"],
+        [w["pair"], "|R|", "Rx", "Ry", "|Rn|", "|Rt|"],
+        rows,
+        [16.0, 18.0, 18.0, 18.0, 18.0, 18.0],
+        marks,
+        lang,
+    )
     rows, marks = [], []
     by_label = {f.label: f for f in (*fa.lever.forces, fa.lever.balancing)}
     for k, (label, h) in enumerate(arms, 1):
         f = by_label[label]
-        rows.append([label, str(k), _num(float(np.hypot(*f.force))), _num(h),
-                     _num(float(np.hypot(*f.force)) * h * math.copysign(1.0, f.moment))])
+        rows.append(
+            [
+                label,
+                str(k),
+                _num(float(np.hypot(*f.force))),
+                _num(h),
+                _num(float(np.hypot(*f.force)) * h * math.copysign(1.0, f.moment)),
+            ]
+        )
         marks.append(force_markup(label))
     out["table-lever"] = table_sketch(
-        look, "table-lever", w["lever_table"], [w["force"], *w["lever_header"]],
-        rows, [16.0, 12.0, 18.0, 16.0, 22.0], marks, lang)
+        look,
+        "table-lever",
+        w["lever_table"],
+        [w["force"], *w["lever_header"]],
+        rows,
+        [16.0, 12.0, 18.0, 16.0, 22.0],
+        marks,
+        lang,
+    )
     d = fa.discrepancy_percent
-    rows = [["", _num(fa.balancing_force_plans, 6)], ["", _num(fa.balancing_force_lever, 6)],
-            ["", "—" if math.isnan(d) else f"{d:.2f}"], ["", _num(fa.balancing_moment, 6)]]
+    rows = [
+        ["", _num(fa.balancing_force_plans, 6)],
+        ["", _num(fa.balancing_force_lever, 6)],
+        ["", "—" if math.isnan(d) else f"{d:.2f}"],
+        ["", _num(fa.balancing_moment, 6)],
+    ]
     out["table-balancing"] = table_sketch(
-        look, "table-balancing", w["balancing"], [w["quantity"], w["value"]], rows, [66.0, 24.0],
-        [w["plans"], w["by_lever"], w["delta"], w["moment"]], lang)
+        look,
+        "table-balancing",
+        w["balancing"],
+        [w["quantity"], w["value"]],
+        rows,
+        [66.0, 24.0],
+        [w["plans"], w["by_lever"], w["delta"], w["moment"]],
+        lang,
+    )
     return out
 
 
 # --- composing --------------------------------------------------------------------------
+
 
 def _force_scale(polygons: Sequence[ForcePolygon]) -> float:
     """μF so that the largest side of the polygons is 150 … 300 mm (seed 003 §2.6)."""
@@ -563,7 +679,7 @@ def _force_scale(polygons: Sequence[ForcePolygon]) -> float:
     return scale_for(largest, FORCE_PLAN) if largest > 0 else 1.0
 
 
-  # indices of the textbook's symbols that differ by language
+# indices of the textbook's symbols that differ by language
 
 
 def _translated(sketch: Sketch, lang: Language) -> Sketch:
@@ -573,13 +689,20 @@ def _translated(sketch: Sketch, lang: Language) -> Sketch:
         return sketch
     for i, c in enumerate(sketch.calls):
         if c.name == "text" and c.args["content"] in runs:
-            sketch.calls[i] = type(c)(c.name, {**c.args, "content": runs[c.args["content"]]}, c.groups)
+            sketch.calls[i] = type(c)(
+                c.name, {**c.args, "content": runs[c.args["content"]]}, c.groups
+            )
     return sketch
 
 
-def _sketch_all(fa: ForceAnalysis, solution: Solution, look: Any, lang: Language, shrink: int,
-                cache: dict[tuple[str, float], Any]
-                ) -> tuple[dict[str, Sketch], dict[str, float], list[tuple[str, float]]]:
+def _sketch_all(
+    fa: ForceAnalysis,
+    solution: Solution,
+    look: Any,
+    lang: Language,
+    shrink: int,
+    cache: dict[tuple[str, float], Any],
+) -> tuple[dict[str, Sketch], dict[str, float], list[tuple[str, float]]]:
     """Every drawing but the loaded mechanism at `shrink` series steps from its
     textbook scale; `cache` keeps a drawing made at a scale for the next try."""
 
@@ -590,7 +713,9 @@ def _sketch_all(fa: ForceAnalysis, solution: Solution, look: Any, lang: Language
 
     def groups_at(mu_g: float) -> dict[str, Sketch]:
         arm_names: list[str] = []  # the arms are numbered on through the groups
-        out = {f"group-{g.name}": sketch_group(fa, g, mu_g, look, lang, arm_names) for g in fa.groups}
+        out = {
+            f"group-{g.name}": sketch_group(fa, g, mu_g, look, lang, arm_names) for g in fa.groups
+        }
         out["driving-link"] = sketch_driving_link(fa, mu_g, look, lang)
         return out
 
@@ -598,13 +723,16 @@ def _sketch_all(fa: ForceAnalysis, solution: Solution, look: Any, lang: Language
     scales: dict[str, float] = {"mu_l_groups": mu_g}
     sketches: dict[str, Sketch] = dict(memo("groups", mu_g, lambda: groups_at(mu_g)))
     dl = fa.driving_link
-    for name, polygons, title in [*((g.name, g.polygons, f"group {g.name}") for g in fa.groups),
-                                  (str(dl.link), (dl.polygon,), f"link {dl.link}")]:
+    for name, polygons, title in [
+        *((g.name, g.polygons, f"group {g.name}") for g in fa.groups),
+        (str(dl.link), (dl.polygon,), f"link {dl.link}"),
+    ]:
         mu_F = scale_step(_force_scale(polygons), max(0, shrink))
         scales[f"mu_F {name}"] = mu_F
         gid = f"force-polygon-{name}"
-        sketches[gid] = memo(gid, mu_F, lambda: sketch_force_polygons(
-            polygons, mu_F, look, lang, gid, title))
+        sketches[gid] = memo(
+            gid, mu_F, lambda: sketch_force_polygons(polygons, mu_F, look, lang, gid, title)
+        )
     mu_V = scale_step(scale_for(fa.lever.pa, VELOCITY_PLAN), max(0, shrink))
     scales["mu_V"] = mu_V
 
@@ -618,8 +746,14 @@ def _sketch_all(fa: ForceAnalysis, solution: Solution, look: Any, lang: Language
     return sketches, scales, arms
 
 
-def compose_sheet2(solution: Solution, backend: Backend, lang: Language = "en", *,
-                   page: Page | None = None, forces: ForceAnalysis | None = None) -> Sheet2:
+def compose_sheet2(
+    solution: Solution,
+    backend: Backend,
+    lang: Language = "en",
+    *,
+    page: Page | None = None,
+    forces: ForceAnalysis | None = None,
+) -> Sheet2:
     """Draw sheet 2 of `solution` on `backend`: the force solution at its force
     position (computed here unless `forces` is given)."""
     page = page if page is not None else Page.of("A1")
@@ -641,7 +775,8 @@ def compose_sheet2(solution: Solution, backend: Backend, lang: Language = "en", 
             if ("force-mechanism", mu_l) not in cache:
                 cache[("force-mechanism", mu_l)] = (
                     sketch_loaded_mechanism(fa, mu_l, backend.look, lang),
-                    sketch_loads_table(fa, mu_l, backend.look, lang))
+                    sketch_loads_table(fa, mu_l, backend.look, lang),
+                )
             sketches["force-mechanism"], sketches["table-loads"] = cache[("force-mechanism", mu_l)]
             scales["mu_l"] = mu_l
             for gap in (8.0, 5.0):
@@ -650,8 +785,9 @@ def compose_sheet2(solution: Solution, backend: Backend, lang: Language = "en", 
                 try:
                     for name in tables:
                         ext = sketches[name].extent()
-                        placed[name] = layout.place(name, ext.width, ext.height, kind="table",
-                                                    corner="top-right")
+                        placed[name] = layout.place(
+                            name, ext.width, ext.height, kind="table", corner="top-right"
+                        )
                     for name in drawings:
                         ext = sketches[name].extent()
                         placed[name] = layout.place(name, ext.width, ext.height, corner="top-left")

@@ -54,9 +54,19 @@ from .rpr import RPR
 from .rrp import RRP
 from .rrr import RRR
 
-__all__ = ["GROUPS", "GroupSolver", "Reaction", "ReactionComponent", "PolygonVector",
-           "ForcePolygon", "GroupForces", "DrivingLinkForces", "solve_groups", "reaction_name",
-           "with_reactions"]
+__all__ = [
+    "GROUPS",
+    "GroupSolver",
+    "Reaction",
+    "ReactionComponent",
+    "PolygonVector",
+    "ForcePolygon",
+    "GroupForces",
+    "DrivingLinkForces",
+    "solve_groups",
+    "reaction_name",
+    "with_reactions",
+]
 
 GROUPS: dict[str, type[GroupSolver]] = {"RRR": RRR, "RRP": RRP, "RPR": RPR, "PRP": PRP, "RPP": RPP}
 
@@ -69,9 +79,12 @@ def solve_groups(loads: Loads) -> tuple[tuple[GroupForces, ...], DrivingLinkForc
     results = []
     for group in reversed(state.groups):
         if not group.is_dyad or group.kind not in GROUPS:
-            raise ForceError(f"group {group.label} of links {group.name} is not a class II group",
-                             "only dyads have force plans here", phi1_deg=state.phi1_deg,
-                             group=group.name)
+            raise ForceError(
+                f"group {group.label} of links {group.name} is not a class II group",
+                "only dyads have force plans here",
+                phi1_deg=state.phi1_deg,
+                group=group.name,
+            )
         L1, L2 = group.links
         bodies = {lid: loads.on_link(lid) + tuple(passed.get(lid, ())) for lid in (L1, L2)}
         solver = GROUPS[group.kind](state, group, bodies)
@@ -86,8 +99,10 @@ def solve_groups(loads: Loads) -> tuple[tuple[GroupForces, ...], DrivingLinkForc
 
 # --- the driving link ---------------------------------------------------------------------
 
-def _driving_link(state: PositionState, loads: Loads, passed: tuple[AppliedForce, ...]
-                  ) -> DrivingLinkForces:
+
+def _driving_link(
+    state: PositionState, loads: Loads, passed: tuple[AppliedForce, ...]
+) -> DrivingLinkForces:
     """ΣM_O = 0: M_O(G1, F_IN1, M_IN1, R21, …) + F_bal·OA·s = 0, F_bal along
     s·i·(A − O)/OA (s = +1 for a counter-clockwise crank): positive drives."""
     mech = state.mech
@@ -100,8 +115,10 @@ def _driving_link(state: PositionState, loads: Loads, passed: tuple[AppliedForce
     body = loads.on_link(d) + passed
     M_O = sum((cross(_c(f.point) - O, _c(f.force)) + f.couple for f in body), 0.0)
     F_bal = -M_O / (s * OA)
-    steps = [f"Sum M_{o}(link {d}) = 0: {fmt(M_O)} + F_bal * {o}{a} = 0 (positive in the sense "
-             f"of rotation) -> F_bal = {fmt(F_bal)} N, M_bal = F_bal * {o}{a} = {fmt(F_bal * OA)} N*m"]
+    steps = [
+        f"Sum M_{o}(link {d}) = 0: {fmt(M_O)} + F_bal * {o}{a} = 0 (positive in the sense "
+        f"of rotation) -> F_bal = {fmt(F_bal)} N, M_bal = F_bal * {o}{a} = {fmt(F_bal * OA)} N*m"
+    ]
     F = sum((_c(f.force) for f in body), 0j)
     R01 = -(F + F_bal * t)
     pair = next(p for p in mech.revolutes if p.point == o and set(p.links) == {FRAME, d})
@@ -109,22 +126,25 @@ def _driving_link(state: PositionState, loads: Loads, passed: tuple[AppliedForce
     name = reaction.name
     steps.append(f"link {d} polygon: {name} = {fmt(abs(R01))} N")
     sides: list[tuple[str, complex, bool]] = [
-        (f.label, _c(f.force), True) for f in body
-        if not (f.force[0] == 0.0 and f.force[1] == 0.0 and f.couple)]
+        (f.label, _c(f.force), True)
+        for f in body
+        if not (f.force[0] == 0.0 and f.force[1] == 0.0 and f.couple)
+    ]
     sides += [("F_bal", F_bal * t, True), (name, R01, False)]
     vectors, start = [], 0j
     for label, vec, known in sides:
         vectors.append(PolygonVector(label, xy(vec), xy(start), known))
         start += vec
-    polygon = ForcePolygon(f"link {d}", " + ".join(s_[0] for s_ in sides) + " = 0",
-                           tuple(vectors))
+    polygon = ForcePolygon(f"link {d}", " + ".join(s_[0] for s_ in sides) + " = 0", tuple(vectors))
     free = body + (AppliedForce("F_bal", xy(F_bal * t), xy(A)), reaction.applied())
-    return DrivingLinkForces(d, o, a, F_bal, xy(F_bal * t), F_bal * OA, reaction, polygon, free,
-                             tuple(steps))
+    return DrivingLinkForces(
+        d, o, a, F_bal, xy(F_bal * t), F_bal * OA, reaction, polygon, free, tuple(steps)
+    )
 
 
-def with_reactions(groups: tuple[GroupForces, ...], driver: DrivingLinkForces
-                   ) -> dict[str, Reaction]:
+def with_reactions(
+    groups: tuple[GroupForces, ...], driver: DrivingLinkForces
+) -> dict[str, Reaction]:
     """Each pair's reaction once, in the order found: the groups' outer and
     inner reactions, then R01."""
     out: dict[str, Reaction] = {}
@@ -135,5 +155,3 @@ def with_reactions(groups: tuple[GroupForces, ...], driver: DrivingLinkForces
     r = driver.reaction
     out[r.name if r.name not in out else f"{r.name}@{r.pair}"] = r
     return out
-
-

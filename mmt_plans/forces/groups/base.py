@@ -5,8 +5,9 @@ of a kind (`GroupSolver`: moment equations, 2×2 polygons, prismatic pairs)."""
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any, Literal, Mapping
+from typing import Any, Literal
 
 import numpy as np
 
@@ -69,12 +70,22 @@ class Reaction:
     def magnitude(self) -> float:
         return float(math.hypot(self.force[0], self.force[1]))
 
-    def reversed(self) -> "Reaction":
+    def reversed(self) -> Reaction:
         """R_ji = −R_ij, at the same point."""
-        comps = tuple(ReactionComponent(_swap_label(c.label, self.by, self.on), c.direction,
-                                        -c.value) for c in self.components)
-        return Reaction(self.on, self.by, self.pair, self.kind, xy(-_c(self.force)), self.point,
-                        -self.couple + 0.0, comps)
+        comps = tuple(
+            ReactionComponent(_swap_label(c.label, self.by, self.on), c.direction, -c.value)
+            for c in self.components
+        )
+        return Reaction(
+            self.on,
+            self.by,
+            self.pair,
+            self.kind,
+            xy(-_c(self.force)),
+            self.point,
+            -self.couple + 0.0,
+            comps,
+        )
 
     def applied(self) -> AppliedForce:
         return AppliedForce(self.name, self.force, self.point, self.couple)
@@ -147,8 +158,9 @@ class DrivingLinkForces:
 
 
 class GroupSolver:
-    def __init__(self, state: PositionState, group: AssurGroup,
-                 bodies: dict[int, tuple[AppliedForce, ...]]) -> None:
+    def __init__(
+        self, state: PositionState, group: AssurGroup, bodies: dict[int, tuple[AppliedForce, ...]]
+    ) -> None:
         self.state = state
         self.group = group
         self.L1, self.L2 = group.links
@@ -176,25 +188,33 @@ class GroupSolver:
         """x1, x2 of d1·x1 + d2·x2 = rhs (a force polygon closed by two known directions)."""
         norm = abs(d1) * abs(d2)
         if norm == 0.0 or abs(cross(d1, d2)) <= SINGULAR_SIN * norm:
-            raise ForceError(f"the directions of {what} are parallel: the force plan does not "
-                             "close (the group is at a dead position)",
-                             "choose another force position", phi1_deg=self.state.phi1_deg,
-                             group=self.group.name)
-        x = np.linalg.solve(np.array([[d1.real, d2.real], [d1.imag, d2.imag]]),
-                            np.array([rhs.real, rhs.imag]))
+            raise ForceError(
+                f"the directions of {what} are parallel: the force plan does not "
+                "close (the group is at a dead position)",
+                "choose another force position",
+                phi1_deg=self.state.phi1_deg,
+                group=self.group.name,
+            )
+        x = np.linalg.solve(
+            np.array([[d1.real, d2.real], [d1.imag, d2.imag]]), np.array([rhs.real, rhs.imag])
+        )
         return float(x[0]), float(x[1])
 
     def unit_along(self, A: complex, B: complex, link: int) -> tuple[complex, float]:
         d = B - A
         length = abs(d)
         if length == 0.0:
-            raise ForceError(f"link {link} has its two pairs at one point: its reaction has no "
-                             "normal direction", "give the link a length",
-                             phi1_deg=self.state.phi1_deg, group=self.group.name)
+            raise ForceError(
+                f"link {link} has its two pairs at one point: its reaction has no normal direction",
+                "give the link a length",
+                phi1_deg=self.state.phi1_deg,
+                group=self.group.name,
+            )
         return d / length, length
 
-    def tangential(self, pair: Revolute, link: int, K: int, B: complex, b: str
-                   ) -> tuple[complex, complex, float, float]:
+    def tangential(
+        self, pair: Revolute, link: int, K: int, B: complex, b: str
+    ) -> tuple[complex, complex, float, float]:
         """R_KL^t from ΣM_B(link) = 0 (seed 003 §2.6–2.7; seed 000 (1.32)): with
         n along the link from its outer pin A to B and t = i·n,
         ΣM_B = M_B(loads) + (A − B) × R^t·t = M_B(loads) − R^t·AB = 0."""
@@ -203,32 +223,46 @@ class GroupSolver:
         MB = self.M(link, B)
         Rt = MB / AB
         name = reaction_name(K, link)
-        self.steps.append(f"Sum M_{b}(link {link}) = 0: {fmt(MB)} - {name}^t * {pair.point}{b} = 0 "
-                          f"-> {name}^t = {fmt(MB)} / {fmt(AB)} = {fmt(Rt)} N")
+        self.steps.append(
+            f"Sum M_{b}(link {link}) = 0: {fmt(MB)} - {name}^t * {pair.point}{b} = 0 "
+            f"-> {name}^t = {fmt(MB)} / {fmt(AB)} = {fmt(Rt)} N"
+        )
         return A, n, AB, Rt
 
-    def prismatic_reaction(self, pair: Prismatic, by: int, on: int, N: float, P: complex,
-                           M_P: float, why: str) -> Reaction:
+    def prismatic_reaction(
+        self, pair: Prismatic, by: int, on: int, N: float, P: complex, M_P: float, why: str
+    ) -> Reaction:
         """The reaction N·(i·u) of a prismatic pair whose moment about P is M_P,
         placed on the sliding line (or kept as a couple when N vanishes)."""
         u, Q0 = self.state.guide(pair)
         nn = 1j * u
         force = N * nn
         M_Q0 = M_P + cross(P - Q0, force)  # moment about the slider's point
-        scale = max(abs(N), *(abs(_c(f.force)) for lid in self.bodies for f in self.bodies[lid]),
-                    1e-300)
+        scale = max(
+            abs(N), *(abs(_c(f.force)) for lid in self.bodies for f in self.bodies[lid]), 1e-300
+        )
         name = reaction_name(by, on)
         if abs(N) > 1e-9 * scale:
             x = M_Q0 / N
             point, couple = Q0 + x * u, 0.0
-            self.steps.append(f"{why}: {name} acts {fmt(x * 1e3)} mm from {pair.slider_point} "
-                              f"along the guide")
+            self.steps.append(
+                f"{why}: {name} acts {fmt(x * 1e3)} mm from {pair.slider_point} along the guide"
+            )
         else:
             point, couple = Q0, M_Q0
-            self.steps.append(f"{why}: {name} has no normal force; the pair carries a couple "
-                              f"{fmt(M_Q0)} N*m")
-        return Reaction(by, on, pair.name, "P", xy(force), xy(point), couple,
-                        (ReactionComponent(f"{name}^n", xy(nn), N),))
+            self.steps.append(
+                f"{why}: {name} has no normal force; the pair carries a couple {fmt(M_Q0)} N*m"
+            )
+        return Reaction(
+            by,
+            on,
+            pair.name,
+            "P",
+            xy(force),
+            xy(point),
+            couple,
+            (ReactionComponent(f"{name}^n", xy(nn), N),),
+        )
 
     def polygon(self, title: str, sides: list[tuple[str, complex, bool]]) -> ForcePolygon:
         vectors, start = [], 0j
@@ -240,18 +274,29 @@ class GroupSolver:
 
     def load_sides(self, link: int) -> list[tuple[str, complex, bool]]:
         """The known forces of a link's free body, in the order they were applied."""
-        return [(f.label, _c(f.force), True) for f in self.bodies[link]
-                if not (f.force[0] == 0.0 and f.force[1] == 0.0 and f.couple)]
+        return [
+            (f.label, _c(f.force), True)
+            for f in self.bodies[link]
+            if not (f.force[0] == 0.0 and f.force[1] == 0.0 and f.couple)
+        ]
 
-    def result(self, reactions: tuple[Reaction, Reaction, Reaction],
-               polygons: tuple[ForcePolygon, ...]) -> GroupForces:
+    def result(
+        self, reactions: tuple[Reaction, Reaction, Reaction], polygons: tuple[ForcePolygon, ...]
+    ) -> GroupForces:
         bodies = {lid: self.bodies[lid] for lid in (self.L1, self.L2)}
         for r in reactions:
             for lid, rr in ((r.on, r), (r.by, r.reversed())):
                 if lid in bodies:
                     bodies[lid] = bodies[lid] + (rr.applied(),)
-        return GroupForces(self.group.name, self.group.kind or "", (self.L1, self.L2), reactions,
-                           polygons, bodies, tuple(self.steps))
+        return GroupForces(
+            self.group.name,
+            self.group.kind or "",
+            (self.L1, self.L2),
+            reactions,
+            polygons,
+            bodies,
+            tuple(self.steps),
+        )
 
     def solve(self) -> GroupForces:  # pragma: no cover - abstract
         raise NotImplementedError
@@ -259,16 +304,15 @@ class GroupSolver:
 
 # --- helpers ----------------------------------------------------------------------------
 
+
 def _c(v: np.ndarray) -> complex:
     return complex(v[0], v[1])
 
 
 def _swap_label(label: str, by: int, on: int) -> str:
     old, new = reaction_name(by, on), reaction_name(on, by)
-    return new + label[len(old):] if label.startswith(old) else label
+    return new + label[len(old) :] if label.startswith(old) else label
 
 
 def fmt(x: float) -> str:
     return f"{x + 0.0:.6g}"  # + 0.0: no "-0"
-
-

@@ -17,19 +17,29 @@ class PRP(GroupSolver):
         F1, F2 = self.F(L1), self.F(L2)
         r1, r2 = reaction_name(K1, L1), reaction_name(K2, L2)
         N1, N2 = self.solve2(nn1, nn2, -(F1 + F2), f"{r1} and {r2}")
-        self.steps.append(f"group polygon: {r1} = {fmt(N1)} N, {r2} = {fmt(N2)} N "
-                          f"(normal to their guides)")
+        self.steps.append(
+            f"group polygon: {r1} = {fmt(N1)} N, {r2} = {fmt(N2)} N (normal to their guides)"
+        )
         R_inner = -(N1 * nn1 + F1)
         ri = reaction_name(L2, L1)
         self.steps.append(f"link {L1} polygon: {ri} = {fmt(abs(R_inner))} N")
-        R1 = self.prismatic_reaction(self.outer1, K1, L1, N1, B, -self.M(L1, B),
-                                     f"Sum M_{b}(link {L1}) = 0")
-        R2 = self.prismatic_reaction(self.outer2, K2, L2, N2, B, -self.M(L2, B),
-                                     f"Sum M_{b}(link {L2}) = 0")
+        R1 = self.prismatic_reaction(
+            self.outer1, K1, L1, N1, B, -self.M(L1, B), f"Sum M_{b}(link {L1}) = 0"
+        )
+        R2 = self.prismatic_reaction(
+            self.outer2, K2, L2, N2, B, -self.M(L2, B), f"Sum M_{b}(link {L2}) = 0"
+        )
         reactions = (R1, R2, Reaction(L2, L1, self.inner.name, "R", xy(R_inner), xy(B)))
-        group = self.polygon(f"group {self.group.name}", [
-            (r1, N1 * nn1, False), *self.load_sides(L1), *self.load_sides(L2),
-            (r2, N2 * nn2, False)])
-        link = self.polygon(f"link {L1}", [
-            (r1, N1 * nn1, True), *self.load_sides(L1), (ri, R_inner, False)])
+        group = self.polygon(
+            f"group {self.group.name}",
+            [
+                (r1, N1 * nn1, False),
+                *self.load_sides(L1),
+                *self.load_sides(L2),
+                (r2, N2 * nn2, False),
+            ],
+        )
+        link = self.polygon(
+            f"link {L1}", [(r1, N1 * nn1, True), *self.load_sides(L1), (ri, R_inner, False)]
+        )
         return self.result(reactions, (group, link))

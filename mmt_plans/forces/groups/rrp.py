@@ -18,25 +18,51 @@ class RRP(GroupSolver):
         F1, F2 = self.F(L1), self.F(L2)
         r1, r2 = reaction_name(K1, L1), reaction_name(K2, L2)
         Rn1, N2 = self.solve2(n1, nn2, -(Rt1 * t1 + F1 + F2), f"{r1}^n and {r2}")
-        self.steps.append(f"group polygon: {r1}^n = {fmt(Rn1)} N, {r2} = {fmt(N2)} N "
-                          f"(normal to the guide)")
+        self.steps.append(
+            f"group polygon: {r1}^n = {fmt(Rn1)} N, {r2} = {fmt(N2)} N (normal to the guide)"
+        )
         R1 = Rn1 * n1 + Rt1 * t1
         R_inner = -(R1 + F1)
         ri = reaction_name(L2, L1)
         self.steps.append(f"link {L1} polygon: {ri} = {fmt(abs(R_inner))} N")
         # ΣM_B(L2) = 0: R_{L1 L2} passes through B, so M_B(R_{K2 L2}) = −M_B(loads of L2)
-        R2 = self.prismatic_reaction(self.outer2, K2, L2, N2, B, -self.M(L2, B),
-                                     f"Sum M_{b}(link {L2}) = 0")
+        R2 = self.prismatic_reaction(
+            self.outer2, K2, L2, N2, B, -self.M(L2, B), f"Sum M_{b}(link {L2}) = 0"
+        )
         reactions = (
-            Reaction(K1, L1, self.outer1.name, "R", xy(R1), xy(A), 0.0,
-                     (ReactionComponent(f"{r1}^n", xy(n1), Rn1),
-                      ReactionComponent(f"{r1}^t", xy(t1), Rt1))),
+            Reaction(
+                K1,
+                L1,
+                self.outer1.name,
+                "R",
+                xy(R1),
+                xy(A),
+                0.0,
+                (
+                    ReactionComponent(f"{r1}^n", xy(n1), Rn1),
+                    ReactionComponent(f"{r1}^t", xy(t1), Rt1),
+                ),
+            ),
             R2,
-            Reaction(L2, L1, self.inner.name, "R", xy(R_inner), xy(B)))
-        group = self.polygon(f"group {self.group.name}", [
-            (f"{r1}^n", Rn1 * n1, False), (f"{r1}^t", Rt1 * t1, True),
-            *self.load_sides(L1), *self.load_sides(L2), (r2, N2 * nn2, False)])
-        link = self.polygon(f"link {L1}", [
-            (f"{r1}^n", Rn1 * n1, True), (f"{r1}^t", Rt1 * t1, True),
-            *self.load_sides(L1), (ri, R_inner, False)])
+            Reaction(L2, L1, self.inner.name, "R", xy(R_inner), xy(B)),
+        )
+        group = self.polygon(
+            f"group {self.group.name}",
+            [
+                (f"{r1}^n", Rn1 * n1, False),
+                (f"{r1}^t", Rt1 * t1, True),
+                *self.load_sides(L1),
+                *self.load_sides(L2),
+                (r2, N2 * nn2, False),
+            ],
+        )
+        link = self.polygon(
+            f"link {L1}",
+            [
+                (f"{r1}^n", Rn1 * n1, True),
+                (f"{r1}^t", Rt1 * t1, True),
+                *self.load_sides(L1),
+                (ri, R_inner, False),
+            ],
+        )
         return self.result(reactions, (group, link))

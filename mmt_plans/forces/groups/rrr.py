@@ -24,18 +24,52 @@ class RRR(GroupSolver):
         ri = reaction_name(L2, L1)
         self.steps.append(f"link {L1} polygon: {ri} = {fmt(abs(R_inner))} N")
         reactions = (
-            Reaction(K1, L1, self.outer1.name, "R", xy(R1), xy(A), 0.0,
-                     (ReactionComponent(f"{r1}^n", xy(n1), Rn1),
-                      ReactionComponent(f"{r1}^t", xy(t1), Rt1))),
-            Reaction(K2, L2, self.outer2.name, "R", xy(R2), xy(C), 0.0,
-                     (ReactionComponent(f"{r2}^n", xy(n2), Rn2),
-                      ReactionComponent(f"{r2}^t", xy(t2), Rt2))),
-            Reaction(L2, L1, self.inner.name, "R", xy(R_inner), xy(B)))
-        group = self.polygon(f"group {self.group.name}", [
-            (f"{r1}^n", Rn1 * n1, False), (f"{r1}^t", Rt1 * t1, True),
-            *self.load_sides(L1), *self.load_sides(L2),
-            (f"{r2}^t", Rt2 * t2, True), (f"{r2}^n", Rn2 * n2, False)])
-        link = self.polygon(f"link {L1}", [
-            (f"{r1}^n", Rn1 * n1, True), (f"{r1}^t", Rt1 * t1, True),
-            *self.load_sides(L1), (ri, R_inner, False)])
+            Reaction(
+                K1,
+                L1,
+                self.outer1.name,
+                "R",
+                xy(R1),
+                xy(A),
+                0.0,
+                (
+                    ReactionComponent(f"{r1}^n", xy(n1), Rn1),
+                    ReactionComponent(f"{r1}^t", xy(t1), Rt1),
+                ),
+            ),
+            Reaction(
+                K2,
+                L2,
+                self.outer2.name,
+                "R",
+                xy(R2),
+                xy(C),
+                0.0,
+                (
+                    ReactionComponent(f"{r2}^n", xy(n2), Rn2),
+                    ReactionComponent(f"{r2}^t", xy(t2), Rt2),
+                ),
+            ),
+            Reaction(L2, L1, self.inner.name, "R", xy(R_inner), xy(B)),
+        )
+        group = self.polygon(
+            f"group {self.group.name}",
+            [
+                (f"{r1}^n", Rn1 * n1, False),
+                (f"{r1}^t", Rt1 * t1, True),
+                *self.load_sides(L1),
+                *self.load_sides(L2),
+                (f"{r2}^t", Rt2 * t2, True),
+                (f"{r2}^n", Rn2 * n2, False),
+            ],
+        )
+        link = self.polygon(
+            f"link {L1}",
+            [
+                (f"{r1}^n", Rn1 * n1, True),
+                (f"{r1}^t", Rt1 * t1, True),
+                *self.load_sides(L1),
+                (ri, R_inner, False),
+            ],
+        )
         return self.result(reactions, (group, link))

@@ -51,7 +51,7 @@ class Motion:
         self._set(w, v, eps, a)
 
     @classmethod
-    def of(cls, state) -> "Motion":
+    def of(cls, state) -> Motion:
         """The working state again from a solved one (a `chain.LinkState`;
         a long sweep's does not keep iω·e and (iε - ω²)·e: made again here,
         by the same operations on the same numbers)."""
@@ -279,10 +279,18 @@ class DyadSolver:
         """Link `link` turning about its pair P with the known link K."""
         p = self.loc(K, P_name)
         P = m[K].at(p)
-        return Leg("rotation", P_name.lower(), f"ω{link}", 1j * (X - P), m[K].vel_at(p),
-                   m[K].acc_at(p), link, P=P)
+        return Leg(
+            "rotation",
+            P_name.lower(),
+            f"ω{link}",
+            1j * (X - P),
+            m[K].vel_at(p),
+            m[K].acc_at(p),
+            link,
+            P=P,
+        )
 
-    def slide(self, link: int, on: int, X, u, K: "Motion", start: str) -> Leg:
+    def slide(self, link: int, on: int, X, u, K: Motion, start: str) -> Leg:
         return Leg("slide", start, f"V{link}/{on}", u, K.vel(X), K.acc(X), on)
 
     def turn_about(self, m: dict, leg: Leg, P_name: str) -> None:

@@ -27,8 +27,12 @@ class PRP(DyadSolver):
         B = m[self.L1].at(self.loc(self.L1, b))
         u1 = m[self.L1].e * complex(*self.outer1.direction)
         u2 = m[self.L2].e * complex(*self.outer2.direction)
-        return b, B, self.slide(self.L1, self.K1, B, u1, K1, f"{b}{self.K1}"), self.slide(
-            self.L2, self.K2, B, u2, K2, f"{b}{self.K2}")
+        return (
+            b,
+            B,
+            self.slide(self.L1, self.K1, B, u1, K1, f"{b}{self.K1}"),
+            self.slide(self.L2, self.K2, B, u2, K2, f"{b}{self.K2}"),
+        )
 
     def place(self, m, plan):
         b = self.inner.point

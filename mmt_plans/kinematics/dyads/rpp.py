@@ -28,8 +28,12 @@ class RPP(DyadSolver):
         L1.move_with(self.loc(self.L1, a), K1.vel_at(p), K1.acc_at(p), K2.w, K2.eps)
         u1 = m[self.inner.guide].e * complex(*self.inner.direction)
         u2 = m[self.L2].e * complex(*self.outer2.direction)
-        return f"{a}{self.L2}", A, self.slide(self.L2, self.L1, A, u1, L1, a.lower()), self.slide(
-            self.L2, self.K2, A, u2, K2, f"{a}{self.K2}")
+        return (
+            f"{a}{self.L2}",
+            A,
+            self.slide(self.L2, self.L1, A, u1, L1, a.lower()),
+            self.slide(self.L2, self.K2, A, u2, K2, f"{a}{self.K2}"),
+        )
 
     def place(self, m, plan):
         K2, L2 = m[self.K2], m[self.L2]
@@ -40,7 +44,9 @@ class RPP(DyadSolver):
 
     def margin(self, m):
         e = m[self.K2].e
-        return np.abs(cross(e * complex(*self.inner.direction), e * complex(*self.outer2.direction)))
+        return np.abs(
+            cross(e * complex(*self.inner.direction), e * complex(*self.outer2.direction))
+        )
 
     def cure(self, m, bad):
         return f"turn the guides of link {self.L2} so that they are not parallel"

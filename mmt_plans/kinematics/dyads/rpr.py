@@ -45,13 +45,15 @@ class RPR(DyadSolver):
         A = K1.at(p)
         u = m[self.inner.guide].e * complex(*self.inner.direction)
         # X is the point of L2 that coincides with A (the textbook's A3)
-        slide = Leg("slide", a.lower(), f"V{a}{self.L2}{a}{self.L1}", u, K1.vel_at(p), K1.acc_at(p),
-                    self.L1)
+        slide = Leg(
+            "slide", a.lower(), f"V{a}{self.L2}{a}{self.L1}", u, K1.vel_at(p), K1.acc_at(p), self.L1
+        )
         return f"{a}{self.L2}", A, slide, self.rotation(self.L2, c, A, self.K2, m)
 
     def carried(self):
-        return self._at_origin((self.L1, self.K1, self.outer1.point),
-                               (self.L2, self.K2, self.outer2.point))
+        return self._at_origin(
+            (self.L1, self.K1, self.outer1.point), (self.L2, self.K2, self.outer2.point)
+        )
 
     def after_velocities(self, m, leg1, leg2):
         # the slide's Coriolis term needs ω of L1, which is ω of L2, found by
@@ -66,8 +68,10 @@ class RPR(DyadSolver):
     def failure(self, m, i, phi):
         s, g, Ps, Pg, ps, pg, d, offset = self._parts(m)
         w = abs(entry(Ps - Pg, i))
-        return (f"the guide of link {g} passes {abs(offset):.6g} m from link {s}'s point, "
-                f"but the pivots are only {w:.6g} m apart")
+        return (
+            f"the guide of link {g} passes {abs(offset):.6g} m from link {s}'s point, "
+            f"but the pivots are only {w:.6g} m apart"
+        )
 
     def margin(self, m):
         s, g, Ps, Pg, ps, pg, d, offset = self._parts(m)
@@ -77,8 +81,10 @@ class RPR(DyadSolver):
         s, g, Ps, Pg, ps, pg, d, offset = self._parts(m)
         w = np.broadcast_to(np.abs(Ps - Pg), np.shape(bad))[bad]
         if w.size:
-            return (f"make the offset of link {g}'s guide at most the least distance of the "
-                    f"pivots, {float(np.nanmin(w)):.6g} m (now {abs(offset):.6g} m)")
+            return (
+                f"make the offset of link {g}'s guide at most the least distance of the "
+                f"pivots, {float(np.nanmin(w)):.6g} m (now {abs(offset):.6g} m)"
+            )
         return super().cure(m, bad)
 
     def branch_meaning(self, sign):

@@ -32,8 +32,12 @@ class RRP(DyadSolver):
         K2 = m[self.K2]
         B = m[self.L1].at(self.loc(self.L1, b))
         u = m[self.L2].e * complex(*self.outer2.direction)
-        return b, B, self.rotation(self.L1, a, B, self.K1, m), self.slide(
-            self.L2, self.K2, B, u, K2, f"{b}{self.K2}")
+        return (
+            b,
+            B,
+            self.rotation(self.L1, a, B, self.K1, m),
+            self.slide(self.L2, self.K2, B, u, K2, f"{b}{self.K2}"),
+        )
 
     def place(self, m, plan):
         l1, _ = plan.legs
@@ -48,8 +52,10 @@ class RRP(DyadSolver):
         P0, u = self.prism_line(self.outer2, m, self.L2, self.loc(self.L2, b), m[self.K2].e)
         P0, u = entry(P0, i), entry(u, i)
         dist = abs(cross(u, A - P0))
-        return (f"link {self.L1} (l = {l1:.6g} m) cannot reach the guide of link {self.L2}: "
-                f"{b}'s line is {dist:.6g} m from {a}")
+        return (
+            f"link {self.L1} (l = {l1:.6g} m) cannot reach the guide of link {self.L2}: "
+            f"{b}'s line is {dist:.6g} m from {a}"
+        )
 
     def _reach(self, m):
         a, b = self.outer1.point, self.inner.point
@@ -66,11 +72,15 @@ class RRP(DyadSolver):
         dist, l1 = self._reach(m)
         dist = np.broadcast_to(dist, np.shape(bad))[bad]
         if dist.size:
-            return (f"make l{self.L1} at least the greatest distance of {self.outer1.point} from "
-                    f"{self.inner.point}'s line, {float(np.nanmax(dist)):.6g} m (now {l1:.6g} m), "
-                    "or move the guide closer")
+            return (
+                f"make l{self.L1} at least the greatest distance of {self.outer1.point} from "
+                f"{self.inner.point}'s line, {float(np.nanmax(dist)):.6g} m (now {l1:.6g} m), "
+                "or move the guide closer"
+            )
         return super().cure(m, bad)
 
     def branch_meaning(self, sign):
-        return (f"{self.inner.point} at the {'far' if sign > 0 else 'near'} intersection "
-                "along the guide")
+        return (
+            f"{self.inner.point} at the {'far' if sign > 0 else 'near'} intersection "
+            "along the guide"
+        )

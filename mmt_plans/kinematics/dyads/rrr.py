@@ -25,13 +25,19 @@ class RRR(DyadSolver):
         m[self.L2] = Motion(e2, origin(C, e2, C2))
 
     def carried(self):
-        return self._at_origin((self.L1, self.K1, self.outer1.point),
-                               (self.L2, self.K2, self.outer2.point))
+        return self._at_origin(
+            (self.L1, self.K1, self.outer1.point), (self.L2, self.K2, self.outer2.point)
+        )
 
     def legs(self, m):
         a, b, c = self.outer1.point, self.inner.point, self.outer2.point
         B = m[self.L1].at(self.loc(self.L1, b))
-        return b, B, self.rotation(self.L1, a, B, self.K1, m), self.rotation(self.L2, c, B, self.K2, m)
+        return (
+            b,
+            B,
+            self.rotation(self.L1, a, B, self.K1, m),
+            self.rotation(self.L2, c, B, self.K2, m),
+        )
 
     def place(self, m, plan):
         l1, l2 = plan.legs
@@ -46,10 +52,14 @@ class RRR(DyadSolver):
         l2 = abs(self.loc(self.L2, b) - self.loc(self.L2, c))
         d = abs(C - A)
         if d > l1 + l2:
-            return (f"links {self.L1} and {self.L2} cannot reach: |{a}{c}| = {d:.6g} m > "
-                    f"l{self.L1} + l{self.L2} = {l1 + l2:.6g} m")
-        return (f"links {self.L1} and {self.L2} cannot close: |{a}{c}| = {d:.6g} m < "
-                f"|l{self.L1} - l{self.L2}| = {abs(l1 - l2):.6g} m")
+            return (
+                f"links {self.L1} and {self.L2} cannot reach: |{a}{c}| = {d:.6g} m > "
+                f"l{self.L1} + l{self.L2} = {l1 + l2:.6g} m"
+            )
+        return (
+            f"links {self.L1} and {self.L2} cannot close: |{a}{c}| = {d:.6g} m < "
+            f"|l{self.L1} - l{self.L2}| = {abs(l1 - l2):.6g} m"
+        )
 
     def _reach(self, m):
         a, b, c = self.outer1.point, self.inner.point, self.outer2.point
@@ -70,11 +80,15 @@ class RRR(DyadSolver):
         L1, L2 = self.L1, self.L2
         cures = []
         if d.size and float(np.nanmax(d)) > l1 + l2:
-            cures.append(f"make l{L1} + l{L2} at least max |{a}{c}| = {float(np.nanmax(d)):.6g} m "
-                         f"(now {l1 + l2:.6g} m)")
+            cures.append(
+                f"make l{L1} + l{L2} at least max |{a}{c}| = {float(np.nanmax(d)):.6g} m "
+                f"(now {l1 + l2:.6g} m)"
+            )
         if d.size and float(np.nanmin(d)) < abs(l1 - l2):
-            cures.append(f"make |l{L1} - l{L2}| at most min |{a}{c}| = {float(np.nanmin(d)):.6g} m "
-                         f"(now {abs(l1 - l2):.6g} m)")
+            cures.append(
+                f"make |l{L1} - l{L2}| at most min |{a}{c}| = {float(np.nanmin(d)):.6g} m "
+                f"(now {abs(l1 - l2):.6g} m)"
+            )
         return " and ".join(cures) or super().cure(m, bad)
 
     def branch_meaning(self, sign):
