@@ -208,8 +208,7 @@ class _Reader:
                             "check the value and its unit (mechanism files use mm, kg, N, "
                             "rpm or rad/s); README lists the input limits")
 
-    def integer(self, table: dict, key: str, entry: str, default: Any = ..., *,
-                minimum: int | None = None, maximum: int | None = None) -> int:
+    def integer(self, table: dict, key: str, entry: str, default: Any = ...) -> int:
         if key not in table:
             if default is ...:
                 raise self.fail(f"{entry}.{key}", "is required", f"add {key} = <integer>")
@@ -218,9 +217,6 @@ class _Reader:
         if isinstance(value, bool) or not isinstance(value, int):
             raise self.fail(f"{entry}.{key}", f"must be an integer, not {show_value(value)}",
                             f"write {key} = <integer>")
-        if (minimum is not None and value < minimum) or (maximum is not None and value > maximum):
-            raise self.fail(f"{entry}.{key}", f"is {show_value(value)}, out of the range "
-                            f"{minimum} .. {maximum}", "README lists the input limits")
         return value
 
     def vector(self, value: Any, entry: str, *, what: str = "a point [x, y] in mm",
@@ -230,10 +226,13 @@ class _Reader:
             raise self.fail(entry, f"must be {what}, not {show_value(value)}",
                             "write two numbers, e.g. [120, 0]")
         for x in xs:
-            if abs(x) > limit:
+            if abs(x) > limit and limit == COORDINATE_MAX_MM:
                 raise self.fail(entry, f"has a coordinate of {x:g} mm, beyond the "
                                 f"{limit:,.0f} mm this tool accepts",
                                 "check the unit: mechanism files give lengths in mm")
+            if abs(x) > limit:
+                raise self.fail(entry, f"has a component of {x:g}, beyond {limit:g}",
+                                "give a direction like [1, 0] or [-0.5, 0.87]")
         return np.array(xs, dtype=float)
 
     def direction(self, value: Any, entry: str, fix: str) -> np.ndarray:
@@ -258,7 +257,7 @@ class _Reader:
                             f"(at most {NAME_MAX})", "use a short name, e.g. B or S2")
         if not value.isprintable():
             raise self.fail(entry, f"{what} '{shown(value)}' has a control or invisible "
-                            "character", "use letters, digits and _ only")
+                            "character", "write the name with visible characters only, e.g. B2")
         return value
 
     def text(self, value: Any, entry: str, *, numbers: bool = False) -> str:
