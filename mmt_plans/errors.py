@@ -1,7 +1,8 @@
 """One root exception; each subclass also inherits the builtin it resembles.
 
 The CLI catches `MmtError`, prints `str(err)` and exits with code 2. Anything
-else reaching the CLI is a bug and keeps its traceback.
+else reaching the CLI is a bug: exit code 3 and one line, the traceback only
+with `mmt-plans --debug` (cli_errors.reports_errors).
 """
 
 from __future__ import annotations

@@ -273,16 +273,7 @@ class _Reader:
                 "rpm or rad/s); README lists the input limits",
             )
 
-    def integer(
-        self,
-        table: dict,
-        key: str,
-        entry: str,
-        default: Any = ...,
-        *,
-        minimum: int | None = None,
-        maximum: int | None = None,
-    ) -> int:
+    def integer(self, table: dict, key: str, entry: str, default: Any = ...) -> int:
         if key not in table:
             if default is ...:
                 raise self.fail(f"{entry}.{key}", "is required", f"add {key} = <integer>")
@@ -293,12 +284,6 @@ class _Reader:
                 f"{entry}.{key}",
                 f"must be an integer, not {show_value(value)}",
                 f"write {key} = <integer>",
-            )
-        if (minimum is not None and value < minimum) or (maximum is not None and value > maximum):
-            raise self.fail(
-                f"{entry}.{key}",
-                f"is {show_value(value)}, out of the range {minimum} .. {maximum}",
-                "README lists the input limits",
             )
         return value
 
@@ -318,11 +303,19 @@ class _Reader:
                 "write two numbers, e.g. [120, 0]",
             )
         for x in xs:
-            if x is None or abs(x) > limit:
+            if x is None:
+                continue  # _real refused it above
+            if abs(x) > limit and limit == COORDINATE_MAX_MM:
                 raise self.fail(
                     entry,
                     f"has a coordinate of {x:g} mm, beyond the {limit:,.0f} mm this tool accepts",
                     "check the unit: mechanism files give lengths in mm",
+                )
+            if abs(x) > limit:
+                raise self.fail(
+                    entry,
+                    f"has a component of {x:g}, beyond {limit:g}",
+                    "give a direction like [1, 0] or [-0.5, 0.87]",
                 )
         return np.array(xs, dtype=float)
 
@@ -356,7 +349,7 @@ class _Reader:
             raise self.fail(
                 entry,
                 f"{what} '{shown(value)}' has a control or invisible character",
-                "use letters, digits and _ only",
+                "write the name with visible characters only, e.g. B2",
             )
         return value
 

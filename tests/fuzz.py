@@ -7,7 +7,10 @@ of another type, an extreme number (0, -0.0, ±1e308, 5e-324, nan, ±inf,
 (control characters, right-to-left marks, astral characters), a point, link
 or force named twice, a link that refers to itself, a key added; or the
 file's bytes damaged (truncated, bytes flipped or inserted, a line dropped or
-doubled, another encoding, deep nesting, binary junk).
+doubled, another encoding, deep nesting, binary junk). About a third of the
+mutants are plausible instead (points moved a little, other masses, speeds,
+positions, plans, forces, gears): valid in form, they reach the solver, the
+diagrams and the force analysis.
 
 The property: `mmt_plans.load(file)`, mmt_plans.solve(`).to_json()` and
 `json.dumps(..., allow_nan=False)` either succeed with every number finite,
@@ -409,6 +412,83 @@ def m_many(rng: random.Random, data: dict) -> str:
     return "many (nothing)"
 
 
+def m_plausible(rng: random.Random, data: dict) -> str:
+    """A change a student might make that keeps the file valid in form: a
+    point moved a little, another mass, speed, study setting or force; these
+    reach the solver, the diagrams and the force analysis."""
+    study = data.get("study") if isinstance(data.get("study"), dict) else None
+    forces = [f for f in _list(data.get("force")) if isinstance(f, dict)]
+    how = rng.randrange(10)
+    if how <= 2:
+        coords = [p for p in _numbers(data)
+                  if any(k in ("points", "frame", "sketch", "through", "cm") for k in p
+                         if isinstance(k, str))]
+        if coords:
+            changed = []
+            for p in rng.sample(coords, min(len(coords), rng.randint(1, 3))):
+                v = get(data, p)
+                new = round(v + rng.gauss(0, 0.15 * (abs(v) + 50)), rng.choice((0, 1, 3)))
+                put(data, p, new)
+                changed.append(f"{p} = {new}")
+            return "moved " + ", ".join(changed)
+    if how == 3 and study is not None:
+        n = rng.choice([4, 5, 6, 8, 9, 12, 16, 24, 36, 72, 360])
+        study["positions"] = n
+        for key in ("plans", "force_position"):
+            study.pop(key, None)
+        if rng.random() < 0.5:
+            study["plans"] = sorted(rng.sample(range(n), rng.randint(1, min(3, n))))
+        if rng.random() < 0.5:
+            study["force_position"] = rng.randrange(n)
+        return f"positions = {n}, plans {study.get('plans')}, force at {study.get('force_position')}"
+    if how == 4 and study is not None:
+        key = rng.choice(["zero", "angles", "working_direction", "partial_turn"])
+        value = {"zero": rng.choice([rng.uniform(-720, 720), 0, 90, 180, "extreme"]),
+                 "angles": [round(rng.uniform(-400, 400), 2) for _ in range(rng.randint(0, 5))],
+                 "working_direction": [rng.choice([1, -1, 0, 0.3]), rng.choice([0, 1, -1, 0.7])],
+                 "partial_turn": True}[key]
+        study[key] = value
+        return f"study.{key} = {value!r}"
+    if how == 5 and isinstance(data.get("drive"), dict):
+        drive = data["drive"]
+        drive["sense"] = rng.choice(["cw", "ccw"])
+        for key in ("rpm", "omega"):
+            if key in drive:
+                drive[key] = rng.choice([0.001, 0.5, 1, 60, 1450, 1e4, 1e5])
+        return f"drive = {drive}"
+    if how == 6:
+        links = [l for l in _list(data.get("link")) if isinstance(l, dict)]
+        if links:
+            link = rng.choice(links)
+            key = rng.choice(["mass", "J", "k", "cm"])
+            value = {"mass": rng.choice([0, 0.001, 1, 1e3, 1e6]), "J": rng.choice([0, 1e-6, 1, 1e6]),
+                     "k": rng.choice([0, 1 / 12, 1, 10]),
+                     "cm": [rng.uniform(-500, 1500), rng.uniform(-300, 300)]}[key]
+            link[key] = value
+            return f"link {link.get('id')}.{key} = {value!r}"
+    if how == 7 and forces:
+        f = rng.choice(forces)
+        key = rng.choice(["magnitude", "acts", "direction"])
+        value = {"magnitude": rng.choice([0, 1, 1e9, 123.4]),
+                 "acts": rng.choice(["working", "always"]),
+                 "direction": [rng.uniform(-1, 1), rng.uniform(-1, 1)]}[key]
+        f[key] = value
+        if key == "direction":
+            f.pop("acts", None)
+        return f"force {f.get('name')}.{key} = {value!r}"
+    if how == 8:
+        data["env"] = {"g": rng.choice([0, 1.62, 9.81, 1000]), "gravity": rng.random() < 0.8}
+        return f"env = {data['env']}"
+    if isinstance(data.get("drive"), dict):
+        data["drive"].pop("rpm", None)
+        data["drive"].pop("omega", None)
+        data["gears"] = {"motor_rpm": rng.choice([960, 1450, 2900]), "stage": [
+            {"z": [rng.randint(12, 40), rng.randint(20, 120)],
+             "mesh": rng.choice(["external", "internal"])} for _ in range(rng.randint(1, 3))]}
+        return f"gears = {_short(data['gears'], 80)}"
+    return "plausible (nothing)"
+
+
 STRUCTURAL = (m_delete, m_swap, m_retype, m_extreme, m_extreme, m_scale, m_scale, m_string,
               m_duplicate, m_self_reference, m_add, m_add, m_many)
 
@@ -484,8 +564,9 @@ def mutant(seed: int, case: int) -> Mutant:
         m.steps.append(why)
         return m
     data = json.loads(json.dumps(parsed))  # a deep copy (TOML data is JSON data here)
+    plausible = rng.random() < 0.35  # valid in form: these reach the solver
     for _ in range(rng.choice((1, 1, 1, 2, 2, 3))):
-        op = rng.choice(STRUCTURAL)
+        op = m_plausible if plausible else rng.choice(STRUCTURAL)
         try:
             m.steps.append(op(rng, data))
         except (IndexError, KeyError, TypeError, ValueError) as err:
@@ -631,24 +712,34 @@ def check(data: bytes, path: str | None = None, timeout: float = HANG_S,
 # text, counted as "known bug" rather than failing the suite. Each names the
 # bug; the reproducers are in the report of the `reliability` branch.
 KNOWN_BUGS: tuple[tuple[str, str], ...] = (
-    # A mechanism that assembles at every position of the grid but not over
-    # the whole turn: the 5 % check samples s at n*m positions and diagrams.py
-    # raises a bare ValueError instead of the AssemblyError of the angle
-    # (analysis.diagrams / diagrams._reference). E.g. seed 1, cases 1292, 7861.
+    # 1. A driving link that cannot turn through a window narrower than the
+    # grid: the whole-turn check passes, every position assembles, then the 5 %
+    # check samples s between them and diagrams.py raises a bare ValueError
+    # (analysis.diagrams -> diagrams.compare_with_plans -> _reference), not the
+    # AssemblyError / partial-turn refusal of SPEC_FORMAT. Reproducer:
+    # samples/tasks/seed002/task1_v07.toml with link 3's C = [116, 0] (fails
+    # to assemble for phi1 in 4.7..9.7 deg); or seed003/task02_v5.toml with
+    # link 2's B = [-1, 0].
     (r"ValueError at mmt_plans/diagrams\.py:\d+ \(_check_samples\): s_of_n\(\d+\) must be "
      r"finite", "diagrams: s_of_n not finite between grid positions (bare ValueError)"),
-    # A dyad whose outer pairs are both on the frame (a link's point renamed to
-    # a frame pivot): geometry.turn_between gets numpy scalars and np.divide(out=)
-    # raises TypeError (kinematics/dyads.py positions). E.g. seed 1, cases 1350, 9057.
+    # 2. A dyad fixed to the frame only (both outer pairs on the frame):
+    # geometry.turn_between gets numpy scalars and np.divide(out=) raises
+    # TypeError (kinematics/dyads.py positions). Reproducer:
+    # samples/tasks/seed003/task04_v1.toml with link 4's points
+    # { O2 = [0, 0], D = [600, 0] } (B renamed to the frame pivot O2).
     (r"TypeError at mmt_plans/kinematics/geometry\.py:\d+ \(turn_between\)",
      "dyads: a group fixed to the frame only (turn_between on scalars)"),
-    # The same with two sliders on the frame (a PRP group on the frame only, e.g.
-    # slider.on deleted): its failure mask is 0-dimensional and Sweep.problem
-    # raises IndexError. E.g. seed 2, cases 3667, 19521.
+    # 3. The same with two sliders on the frame (a PRP group on the frame
+    # only): its failure mask is 0-dimensional and Sweep.problem raises
+    # IndexError (kinematics/chain.py). Reproducer:
+    # samples/tasks/seed002/task6_v07.toml without `on = 3` in the second
+    # [[slider]] (link 4 then slides on the frame).
     (r"IndexError at mmt_plans/kinematics/chain\.py:\d+ \(problem\): too many indices",
      "chain: a group fixed to the frame only (0-d failure mask in Sweep.problem)"),
-    # A [sketch] entry for a point of the frame: chain._branch_by_sketch indexes
-    # the frame's complex scalar (TypeError). E.g. seed 1, cases 4109, 6636, 19867.
+    # 4. A [sketch] entry for a point of the frame, even at its true place:
+    # chain._branch_by_sketch indexes the frame's complex scalar ('complex'
+    # object is not subscriptable). Reproducer: samples/six_link_press.toml
+    # with `C = [750, -80]` added to [sketch].
     (r"TypeError at mmt_plans/kinematics/chain\.py:\d+ \(_branch_by_sketch\)",
      "chain: a sketched frame point ('complex' object is not subscriptable)"),
 )
@@ -662,11 +753,13 @@ def known_bug(outcome: Outcome) -> str | None:
 
 
 def run(seed: int, cases: int, start: int = 0, echo=print, save: Path | None = None,
-        every: int = 0, draw_every: int = 0) -> tuple[Counter, list[tuple[Mutant, Outcome]]]:
+        every: int = 0, draw_every: int = 0, known: list | None = None
+        ) -> tuple[Counter, list[tuple[Mutant, Outcome]]]:
     """Run `cases` mutants; (counts, findings). Counts: clean errors, analysed,
     unexpected, non-finite, bad messages, hung, known bugs, slow (> SLOW_S, or
     drawing > DRAW_SLOW_S); with `draw_every` k, every k-th analysed mutant's
-    sheets are drawn too ("drawn", "draw: clean error")."""
+    sheets are drawn too ("drawn", "draw: clean error"). The mutants of known
+    bugs are appended to `known` as (mutant, outcome, bug) when it is given."""
     counts: Counter = Counter()
     findings: list[tuple[Mutant, Outcome]] = []
     fd, path = tempfile.mkstemp(suffix=".toml", prefix="mutant-")
@@ -682,6 +775,8 @@ def run(seed: int, cases: int, start: int = 0, echo=print, save: Path | None = N
             kind = outcome.kind
             if kind in ("unexpected", "non-finite", "bad message", "hung") and known_bug(outcome):
                 kind = "known bug"
+                if known is not None:
+                    known.append((m, outcome, known_bug(outcome)))
             counts[kind] += 1
             if outcome.slow:
                 counts["slow"] += 1
@@ -720,13 +815,18 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     t0 = time.perf_counter()
     print(f"fuzzing {args.cases} mutants of {len(SOURCES)} sample files (seed {args.seed}) ...")
+    known: list = []
     counts, findings = run(args.seed, args.cases, args.start, save=args.save, every=1000,
-                           draw_every=args.draw_every)
+                           draw_every=args.draw_every, known=known)
     total = time.perf_counter() - t0
     print(f"\n{args.cases} mutants in {total:.0f} s:")
     for kind in ("clean error", "analysed", "unexpected", "non-finite", "bad message", "hung",
                  "known bug", "slow", "drawn", "draw: clean error"):
         print(f"  {kind:17s} {counts.get(kind, 0)}")
+    if known:
+        print("\nknown bugs (in modules this fuzzer's owner may not edit; KNOWN_BUGS):")
+        for m, o, bug in known:
+            print(f"  {m.describe()}\n      -> {bug}")
     if findings:
         print("\nfindings (reproduce with --case N --show):")
         for m, o in findings[:200]:
