@@ -115,11 +115,13 @@ def degrees_range(lo: float, hi: float) -> str:
 def partial_turn_error(mech, choice) -> PartialTurnError:
     """The refusal of a mechanism whose chosen branches do not turn fully
     (`kinematics.branches.Branches`)."""
-    spans = ", ".join(degrees_range(lo, hi) for lo, hi in choice.ranges) or "no crank angle"
-    problem = (
-        f"the crank cannot make a whole turn: {choice.failing_reason}; the mechanism "
+    spans = ", ".join(degrees_range(lo, hi) for lo, hi in choice.ranges)
+    where = (
         f"assembles for phi1 in {spans} (counter-clockwise)"
+        if spans
+        else "assembles at no crank angle"
     )
+    problem = f"the crank cannot make a whole turn: {choice.failing_reason}; the mechanism {where}"
     fixes = []
     if choice.rule == "sketch" and choice.full_turn:
         combos = "; ".join(

@@ -711,38 +711,10 @@ def check(data: bytes, path: str | None = None, timeout: float = HANG_S,
 # (analysis, kinematics/chain, forces, diagrams): matched by the finding's
 # text, counted as "known bug" rather than failing the suite. Each names the
 # bug; the reproducers are in the report of the `reliability` branch.
-KNOWN_BUGS: tuple[tuple[str, str], ...] = (
-    # 1. A driving link that cannot turn through a window narrower than the
-    # grid: the whole-turn check passes, every position assembles, then the 5 %
-    # check samples s between them and diagrams.py raises a bare ValueError
-    # (analysis.diagrams -> diagrams.compare_with_plans -> _reference), not the
-    # AssemblyError / partial-turn refusal of SPEC_FORMAT. Reproducer:
-    # samples/tasks/seed002/task1_v07.toml with link 3's C = [116, 0] (fails
-    # to assemble for phi1 in 4.7..9.7 deg); or seed003/task02_v5.toml with
-    # link 2's B = [-1, 0].
-    (r"ValueError at mmt_plans/diagrams\.py:\d+ \(_check_samples\): s_of_n\(\d+\) must be "
-     r"finite", "diagrams: s_of_n not finite between grid positions (bare ValueError)"),
-    # 2. A dyad fixed to the frame only (both outer pairs on the frame):
-    # geometry.turn_between gets numpy scalars and np.divide(out=) raises
-    # TypeError (kinematics/dyads.py positions). Reproducer:
-    # samples/tasks/seed003/task04_v1.toml with link 4's points
-    # { O2 = [0, 0], D = [600, 0] } (B renamed to the frame pivot O2).
-    (r"TypeError at mmt_plans/kinematics/geometry\.py:\d+ \(turn_between\)",
-     "dyads: a group fixed to the frame only (turn_between on scalars)"),
-    # 3. The same with two sliders on the frame (a PRP group on the frame
-    # only): its failure mask is 0-dimensional and Sweep.problem raises
-    # IndexError (kinematics/chain.py). Reproducer:
-    # samples/tasks/seed002/task6_v07.toml without `on = 3` in the second
-    # [[slider]] (link 4 then slides on the frame).
-    (r"IndexError at mmt_plans/kinematics/chain\.py:\d+ \(problem\): too many indices",
-     "chain: a group fixed to the frame only (0-d failure mask in Sweep.problem)"),
-    # 4. A [sketch] entry for a point of the frame, even at its true place:
-    # chain._branch_by_sketch indexes the frame's complex scalar ('complex'
-    # object is not subscriptable). Reproducer: samples/six_link_press.toml
-    # with `C = [750, -80]` added to [sketch].
-    (r"TypeError at mmt_plans/kinematics/chain\.py:\d+ \(_branch_by_sketch\)",
-     "chain: a sketched frame point ('complex' object is not subscriptable)"),
-)
+# The bugs the fuzzer found are fixed, each with its regression test in
+# tests/test_fuzz_regressions.py; a new one would be listed here as
+# (pattern of the outcome's detail, name of the bug) until it is fixed.
+KNOWN_BUGS: tuple[tuple[str, str], ...] = ()
 
 
 def known_bug(outcome: Outcome) -> str | None:

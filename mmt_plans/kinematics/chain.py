@@ -469,9 +469,14 @@ class Chain:
             name = solver.group.name
             L1, L2 = m[solver.L1], m[solver.L2]
             # one sum is finite exactly where all four are (NaN and ±inf carry)
-            failed[name] = _ro(~np.isfinite(L1.o + L2.o + L1.e + L2.e))
+            # broadcast: a group fixed to the frame only has plain numbers
+            failed[name] = _ro(
+                np.broadcast_to(~np.isfinite(L1.o + L2.o + L1.e + L2.e), phi_rad.shape).copy()
+            )
             plan = solver.plan(m)
-            singular[name] = _ro(~failed[name] & ~(plan.sin_angle > SINGULAR_SIN))
+            singular[name] = _ro(
+                ~failed[name] & ~np.broadcast_to(plan.sin_angle > SINGULAR_SIN, phi_rad.shape)
+            )
             plans.append(plan)
         return m, failed, singular, tuple(plans)
 

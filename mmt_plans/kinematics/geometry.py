@@ -83,6 +83,9 @@ def turn_between(p_local: complex, q_local: complex, P: np.ndarray, Q: np.ndarra
     link's local x axis, the usual case."""
     c = q_local - p_local
     q = (Q - P) * (1.0 / c.real) if c.imag == 0 and c.real else (Q - P) / c
+    if not isinstance(q, np.ndarray) or not q.ndim:  # a group fixed to the frame: numbers
+        q = complex(q)
+        return q / abs(q) if q else complex("nan")
     with np.errstate(invalid="ignore", divide="ignore"):
         size = np.abs(q)
         np.divide(1.0, size, out=size)

@@ -33,6 +33,10 @@ from ..geometry import cross
 LegKind = Literal["rotation", "slide"]
 
 
+# the sine of the angle between two guides below which they count as parallel
+PARALLEL = 1e-6
+
+
 class Motion:
     """Working state of one link over N crank angles: pose e^{iθ}, origin o,
     ω, velocity and acceleration of the origin, ε.

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..geometry import cross, line_line
-from .base import DyadSolver, Motion
+from .base import PARALLEL, DyadSolver, Motion
 
 
 class PRP(DyadSolver):
@@ -45,7 +45,8 @@ class PRP(DyadSolver):
     def margin(self, m):
         u1 = m[self.K1].e * complex(*self.outer1.direction)
         u2 = m[self.K2].e * complex(*self.outer2.direction)
-        return np.abs(cross(u1, u2))
+        # parallel guides never meet: the sine of their angle must stay above zero
+        return np.abs(cross(u1, u2)) - PARALLEL
 
     def cure(self, m, bad):
         return f"turn the guides of links {self.L1} and {self.L2} so that they never run parallel"

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..geometry import cross, line_line
-from .base import DyadSolver, Motion
+from .base import PARALLEL, DyadSolver, Motion
 
 
 class RPP(DyadSolver):
@@ -44,9 +44,9 @@ class RPP(DyadSolver):
 
     def margin(self, m):
         e = m[self.K2].e
-        return np.abs(
-            cross(e * complex(*self.inner.direction), e * complex(*self.outer2.direction))
-        )
+        u_in, u_out = e * complex(*self.inner.direction), e * complex(*self.outer2.direction)
+        # parallel guides never meet: the sine of their angle must stay above zero
+        return np.abs(cross(u_in, u_out)) - PARALLEL
 
     def cure(self, m, bad):
         return f"turn the guides of link {self.L2} so that they are not parallel"
