@@ -73,7 +73,7 @@ def line_line(P1: np.ndarray, u1: np.ndarray, P2: np.ndarray, u2: np.ndarray) ->
     return P1 + t * u1
 
 
-def turn_between(p_local: complex, q_local: complex, P: np.ndarray, Q: np.ndarray) -> np.ndarray:
+def turn_between(p_local: complex, q_local: complex, P: Any, Q: Any) -> Any:
     """e^{iθ} of a link whose local points p, q sit at global P, Q: the
     direction of (Q - P)/(q - p).
 
