@@ -9,6 +9,7 @@ a construction does not exist; it never leaves the solver (see `chain.Sweep`).
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
