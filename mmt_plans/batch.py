@@ -255,7 +255,7 @@ def process_file(
 
     Never raises: an `MmtError` becomes the result's message; anything else
     (a bug) too, named by its type, so one file cannot stop the batch."""
-    from .cli_errors import quiet_numerics
+    from .numerics import quiet_numerics
 
     with quiet_numerics():
         return _process_file(str(path), Path(out_dir), lang, force)

@@ -41,10 +41,12 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Literal, cast
+from typing import TYPE_CHECKING, Literal, cast
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+
+if TYPE_CHECKING:  # numpy.typing costs ~10 ms to import: only the type checker reads it
+    from numpy.typing import ArrayLike
 
 from mmt_plans.scales import MANTISSAS, DrawnLength, series
 
@@ -67,7 +69,7 @@ __all__ = [
     "textbook_derivatives",
 ]
 
-Array = NDArray[np.float64]
+Array = np.ndarray  # NDArray[np.float64] to the type checker (annotations are strings)
 
 DEFAULT_TIME_AXIS_MM = 240.0
 # one turn of the crank on the time axis of a sheet: μ_t from the standard

@@ -2,7 +2,7 @@
 
 The CLI catches `MmtError`, prints `str(err)` and exits with code 2. Anything
 else reaching the CLI is a bug: exit code 3 and one line, the traceback only
-with `mmt-plans --debug` (cli_errors.reports_errors).
+with `mmt-plans --debug` (cli/errors.reports_errors).
 """
 
 from __future__ import annotations

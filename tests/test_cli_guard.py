@@ -1,4 +1,4 @@
-"""The one guard at the CLI boundary (cli_errors.reports_errors): MmtError →
+"""The one guard at the CLI boundary (cli/errors.reports_errors): MmtError →
 exit 2, a bug → exit 3 and one line (the traceback with --debug),
 Ctrl-C → 130, no numpy warning on the terminal, no non-finite number
 written, outputs that cannot be written → exit 2."""

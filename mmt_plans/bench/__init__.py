@@ -75,5 +75,6 @@ def _extra_sections() -> list[Callable]:
     from .diagrams import bench_diagrams
     from .forces import bench_forces
     from .sheets import bench_sheets
+    from .startup import bench_startup
 
-    return [bench_forces, bench_diagrams, bench_sheets, bench_batch]
+    return [bench_startup, bench_forces, bench_diagrams, bench_sheets, bench_batch]

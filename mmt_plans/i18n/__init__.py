@@ -18,7 +18,7 @@ import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass
 from decimal import Decimal
-from importlib import resources
+from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Literal, get_args
 
@@ -101,5 +101,5 @@ def _freeze(data: dict) -> Mapping[str, Mapping[str, Any]]:
 def catalogue(lang: str) -> Catalogue:
     """The catalogue of `lang` ("en" or "uk"), read once."""
     lang = check_language(lang)
-    text = resources.files(__package__).joinpath(f"{lang}.toml").read_text(encoding="utf-8")
+    text = Path(__file__).with_name(f"{lang}.toml").read_text(encoding="utf-8")
     return Catalogue(lang, _freeze(tomllib.loads(text)))

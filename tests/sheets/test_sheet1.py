@@ -177,7 +177,7 @@ def test_write_sheets_svg(press, tmp_path):
 def test_draw_command(tmp_path):
     from click.testing import CliRunner
 
-    from mmt_plans.sheets.draw_cmd import draw
+    from mmt_plans.cli.draw import draw
 
     runner = CliRunner()
     ok = runner.invoke(draw, [str(PRESS), "-o", str(tmp_path), "--format", "svg", "--sheet", "1"])

@@ -21,13 +21,12 @@ from __future__ import annotations
 import os
 import sys
 import traceback
-import warnings
 from functools import wraps
-from typing import Any
 
 import click
 
-from .errors import MmtError, shown
+from ..errors import MmtError, shown
+from ..numerics import quiet_numerics
 
 __all__ = [
     "reports_errors",
@@ -60,24 +59,6 @@ def debug_enabled() -> bool:
             return True
         ctx = ctx.parent
     return False
-
-
-class quiet_numerics:
-    """numpy's floating-point errors and RuntimeWarnings silenced within."""
-
-    def __enter__(self) -> quiet_numerics:
-        import numpy as np
-
-        self._errstate = np.errstate(all="ignore")
-        self._errstate.__enter__()
-        self._warnings = warnings.catch_warnings()
-        self._warnings.__enter__()
-        warnings.simplefilter("ignore", RuntimeWarning)
-        return self
-
-    def __exit__(self, *exc: Any) -> None:
-        self._warnings.__exit__(*exc)
-        self._errstate.__exit__(*exc)
 
 
 def _subject(kwargs: dict) -> str:

@@ -1,6 +1,6 @@
 """`mmt-plans`: click commands. An `MmtError` becomes one clean message and
 exit code 2; anything else is a bug: exit code 3 and one line, the traceback
-only with --debug (cli_errors.reports_errors)."""
+only with --debug (cli/errors.reports_errors)."""
 
 from __future__ import annotations
 
@@ -8,7 +8,10 @@ from pathlib import Path
 
 import click
 
-from .cli_errors import reports_errors
+from .batch import batch
+from .check import check
+from .draw import draw
+from .errors import reports_errors
 
 
 @click.group()
@@ -43,11 +46,11 @@ def main(debug: bool) -> None:
 @reports_errors
 def analyze(file: Path, json_out: Path | None, quiet: bool, partial_turn: bool) -> None:
     """Structural, kinematic (and force) analysis of FILE."""
-    from .files import check_output, finite_json, write_text_atomic
-    from .report import text_report
-    from .results_json import results as results_json
-    from .solution import solve
-    from .spec import load
+    from ..files import check_output, finite_json, write_text_atomic
+    from ..report import text_report
+    from ..results_json import results as results_json
+    from ..solution import solve
+    from ..spec import load
 
     if json_out is not None:
         check_output(json_out)
@@ -74,20 +77,11 @@ def analyze(file: Path, json_out: Path | None, quiet: bool, partial_turn: bool) 
 @reports_errors
 def bench(sample_dir: Path, quick: bool) -> None:
     """Time the analysis of every sample and the vectorised sweep."""
-    from .bench import run_benchmarks
+    from ..bench import run_benchmarks
 
     run_benchmarks(sample_dir, quick=quick, echo=click.echo)
 
 
-# registered last: the draw command uses reports_errors from this module
-from .sheets.draw_cmd import draw  # noqa: E402
-
 main.add_command(draw)
-
-from .check_cmd import check  # noqa: E402
-
 main.add_command(check)
-
-from .batch_cmd import batch  # noqa: E402
-
 main.add_command(batch)

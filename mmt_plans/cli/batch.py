@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from .cli_errors import reports_errors
+from .errors import reports_errors
 
 
 @click.command()
@@ -37,9 +37,9 @@ def batch(
     stems clash); directories are searched recursively for *.toml. A file an
     earlier run finished (same input, outputs there) is kept unless --force.
     Exit code 1 if some file failed."""
-    from .batch import find_files, run_batch, summary_table, write_summary_csv
-    from .errors import shown
-    from .files import ensure_dir
+    from ..batch import find_files, run_batch, summary_table, write_summary_csv
+    from ..errors import shown
+    from ..files import ensure_dir
 
     files = find_files(inputs)
     ensure_dir(out_dir)

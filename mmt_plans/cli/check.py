@@ -10,12 +10,12 @@ from pathlib import Path
 
 import click
 
-from .cli_errors import reports_errors
+from .errors import reports_errors
 
 
 def _tolerance(ctx: click.Context, param: click.Parameter, value: float | None) -> float | None:
     """A finite percentage in (0, 100] (click's FloatRange lets nan through)."""
-    from .check import TOLERANCE_MAX
+    from ..check import TOLERANCE_MAX
 
     if value is not None and not (0 < value <= TOLERANCE_MAX):  # False for nan
         raise click.BadParameter(
@@ -39,7 +39,7 @@ def _tolerance(ctx: click.Context, param: click.Parameter, value: float | None) 
 @reports_errors
 def check(file: Path, answers: Path, tolerance: float | None) -> None:
     """Check the values of ANSWERS (a student's hand drawing) against FILE's exact ones."""
-    from .check import check_file
+    from ..check import check_file
 
     result = check_file(file, answers, tolerance)
     click.echo(result.text())

@@ -6,11 +6,11 @@ from pathlib import Path
 
 import click
 
-from ..cli_errors import reports_errors
+from .errors import reports_errors
 
 
 def _formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[str, ...]:
-    from .compose import FORMATS
+    from ..render.output import FORMATS
 
     items = tuple(v.strip().lower() for v in value.split(",") if v.strip())
     bad = [v for v in items if v not in FORMATS]
@@ -51,9 +51,9 @@ def draw(
 ) -> None:
     """Draw the A1 sheets of FILE."""
     from ..files import check_output
+    from ..sheets.compose import available_sheets, write_sheets
     from ..solution import solve
     from ..spec import load
-    from .compose import available_sheets, write_sheets
 
     check_output(out_dir, folder=True)
     numbers = sorted(available_sheets()) if sheet == "all" else [int(sheet)]

@@ -1,0 +1,46 @@
+"""The cost of `mmt-plans analyze` beyond the interpreter, numpy and click:
+the median of 7 runs of each, in the same bench run (target: under 150 ms)."""
+
+from __future__ import annotations
+
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+from typing import Callable, Sequence
+
+from ..report import table
+
+RUNS = 7
+
+
+def _median_time(args: list[str]) -> float:
+    times = []
+    for _ in range(RUNS):
+        t0 = time.perf_counter()
+        subprocess.run(args, check=True, capture_output=True)
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+def bench_startup(files: Sequence[Path], repeat: int, echo: Callable[[str], None]) -> None:
+    sample = next((p for p in files if p.stem == "six_link_press"), files[0])
+    base = _median_time([sys.executable, "-c", "import numpy, click"])
+    analyze = _median_time([sys.executable, "-m", "mmt_plans", "analyze", str(sample), "--quiet"])
+    echo(
+        f"Start-up: mmt-plans analyze against `python -c 'import numpy, click'` "
+        f"(median of {RUNS} runs each):"
+    )
+    echo(
+        table(
+            ["command", "median s"],
+            [
+                ["import numpy, click", f"{base:.3f}"],
+                [f"analyze {sample.name}", f"{analyze:.3f}"],
+                ["difference", f"{analyze - base:.3f}"],
+            ],
+        )
+    )
+    echo("target: the difference under 0.150 s")
+    echo("")
