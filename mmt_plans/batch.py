@@ -55,6 +55,7 @@ __all__ = [
 MANIFEST_NAME = ".mmt-batch.json"
 MANIFEST_SCHEMA = "mmt_plans/batch-item@1"
 SUMMARY_NAME = "summary.csv"
+SHEET_FORMATS = ("svg", "pdf")  # the sheets a batch writes unless --format says otherwise
 
 SUMMARY_HEADERS = [
     "file",
@@ -198,17 +199,19 @@ def read_manifest(out_dir: str | os.PathLike[str]) -> dict | None:
     return data if isinstance(data, dict) and data.get("schema") == MANIFEST_SCHEMA else None
 
 
-def _settings(lang: str) -> dict:
+def _settings(lang: str, formats: Sequence[str] = SHEET_FORMATS) -> dict:
     from . import __version__
 
-    return {"lang": lang, "version": __version__}
+    return {"lang": lang, "version": __version__, "formats": list(formats)}
 
 
-def _kept(path: str, out: Path, lang: str) -> FileResult | None:
+def _kept(
+    path: str, out: Path, lang: str, formats: Sequence[str] = SHEET_FORMATS
+) -> FileResult | None:
     """The result of an earlier run when its manifest matches the input and
     its outputs are all there, as they were written; else None."""
     manifest = read_manifest(out)
-    if manifest is None or manifest.get("settings") != _settings(lang):
+    if manifest is None or manifest.get("settings") != _settings(lang, formats):
         return None
     digest = _sha256(path)
     if digest is None or manifest.get("input_sha256") != digest:
@@ -249,6 +252,7 @@ def process_file(
     out_dir: str | os.PathLike[str],
     lang: str = "en",
     force: bool = True,
+    formats: Sequence[str] = ("svg", "pdf"),
 ) -> FileResult:
     """Analyse one file and write its sheets, results.json and note.pdf, then
     its manifest; with `force` False, a file whose manifest matches is kept.
@@ -258,10 +262,12 @@ def process_file(
     from .numerics import quiet_numerics
 
     with quiet_numerics():
-        return _process_file(str(path), Path(out_dir), lang, force)
+        return _process_file(str(path), Path(out_dir), lang, force, tuple(formats))
 
 
-def _process_file(path: str, out: Path, lang: str, force: bool) -> FileResult:
+def _process_file(
+    path: str, out: Path, lang: str, force: bool, formats: tuple[str, ...] = ("svg", "pdf")
+) -> FileResult:
     from .files import ensure_dir, finite_json, write_text_atomic
     from .note import write_note
     from .results_json import results as results_json
@@ -270,7 +276,7 @@ def _process_file(path: str, out: Path, lang: str, force: bool) -> FileResult:
     from .spec import load
 
     if not force:
-        kept = _kept(path, out, lang)
+        kept = _kept(path, out, lang, formats)
         if kept is not None:
             return kept
     t0 = time.perf_counter()
@@ -326,7 +332,7 @@ def _process_file(path: str, out: Path, lang: str, force: bool) -> FileResult:
         paths = write_sheets(
             solution,
             out,
-            formats=("svg", "pdf"),
+            formats=formats,
             lang=lang,  # type: ignore[arg-type]
             sheets=sorted(available_sheets()),
         )
@@ -359,7 +365,7 @@ def _process_file(path: str, out: Path, lang: str, force: bool) -> FileResult:
                 "schema": MANIFEST_SCHEMA,
                 "input": path,
                 "input_sha256": digest,
-                "settings": _settings(lang),
+                "settings": _settings(lang, formats),
                 "outputs": {Path(w).name: Path(w).stat().st_size for w in written},
                 "summary": summary,
             }
@@ -378,7 +384,7 @@ def _process_file(path: str, out: Path, lang: str, force: bool) -> FileResult:
     )
 
 
-def _run(args: tuple[str, str, str, bool]) -> FileResult:
+def _run(args: tuple[str, str, str, bool, tuple[str, ...]]) -> FileResult:
     return process_file(*args)
 
 
@@ -395,6 +401,7 @@ def run_batch(
     lang: str = "en",
     progress: Callable[[FileResult], None] | None = None,
     force: bool = True,
+    formats: Sequence[str] = ("svg", "pdf"),
 ) -> list[FileResult]:
     """Process `files` with `jobs` processes (default: every core); results in
     the order of `files`. `progress(result)` is called as each file finishes.
@@ -405,7 +412,7 @@ def run_batch(
     out = ensure_dir(out)
     targets = plan_outputs(list(files), out)
     results: list[FileResult | None] = [None] * len(targets)
-    tasks: list[tuple[str, str, str, bool]] = []
+    tasks: list[tuple[str, str, str, bool, tuple[str, ...]]] = []
     index: list[int] = []
     for i, (f, t) in enumerate(zip(files, targets)):
         if not _inside(t, out):  # OUT/x is a symbolic link to elsewhere
@@ -419,7 +426,7 @@ def run_batch(
             if progress:
                 progress(results[i])  # type: ignore[arg-type]
             continue
-        tasks.append((str(f), str(t), lang, force))
+        tasks.append((str(f), str(t), lang, force, tuple(formats)))
         index.append(i)
     jobs = max(1, jobs or os.cpu_count() or 1)
     if jobs == 1 or len(tasks) <= 1:

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import click
 
+from .draw import sheet_formats
 from .errors import reports_errors
 
 
@@ -28,9 +29,22 @@ from .errors import reports_errors
 )
 @click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
 @click.option("--force", is_flag=True, help="Redo every file, also those an earlier run finished.")
+@click.option(
+    "--format",
+    "formats",
+    default="svg,pdf",
+    show_default=True,
+    callback=sheet_formats,
+    help="The sheets' formats, comma-separated: svg, pdf, png, dxf.",
+)
 @reports_errors
 def batch(
-    inputs: tuple[Path, ...], out_dir: Path, jobs: int | None, lang: str, force: bool
+    inputs: tuple[Path, ...],
+    out_dir: Path,
+    jobs: int | None,
+    lang: str,
+    force: bool,
+    formats: tuple[str, ...],
 ) -> None:
     """Answer keys for many mechanism files: each file's sheets (SVG, PDF),
     results.json and note.pdf into OUT/<file stem>/ (OUT/<relative path>/ when
@@ -47,7 +61,13 @@ def batch(
         length=len(files), label=f"{len(files)} files", file=sys.stderr, show_pos=True
     ) as bar:
         results = run_batch(
-            files, out_dir, jobs=jobs, lang=lang, force=force, progress=lambda result: bar.update(1)
+            files,
+            out_dir,
+            jobs=jobs,
+            lang=lang,
+            force=force,
+            formats=formats,
+            progress=lambda result: bar.update(1),
         )
     for r in results:
         if not r.ok:

@@ -9,7 +9,7 @@ import click
 from .errors import reports_errors
 
 
-def _formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[str, ...]:
+def sheet_formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[str, ...]:
     from ..render.output import FORMATS
 
     items = tuple(v.strip().lower() for v in value.split(",") if v.strip())
@@ -35,7 +35,7 @@ def _formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[st
     "formats",
     default="svg,pdf,png",
     show_default=True,
-    callback=_formats,
+    callback=sheet_formats,
     help="Comma-separated: svg, pdf, png, dxf.",
 )
 @click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
