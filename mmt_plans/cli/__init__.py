@@ -12,6 +12,7 @@ from .batch import batch
 from .check import check
 from .draw import draw
 from .errors import reports_errors
+from .variants import variants
 
 
 @click.group()
@@ -85,3 +86,4 @@ def bench(sample_dir: Path, quick: bool) -> None:
 main.add_command(draw)
 main.add_command(check)
 main.add_command(batch)
+main.add_command(variants)

@@ -405,3 +405,11 @@ def build_chain(mech: Mechanism, structure: Structure | None = None) -> Chain:
     chain.choice = choose(chain)
     chain.branches = dict(chain.choice.signs)
     return chain
+
+
+def turns_fully(chain: Chain, signs: Mapping[str, int]) -> bool:
+    """Whether `chain` assembles over the whole turn with the branch `signs`
+    (group name -> sign), by the search's own test."""
+    search = _Search(chain)
+    order = tuple(signs[s.group.name] for s in chain.solvers)
+    return all(search.group_turns(k, order[: k + 1]) for k in range(len(order)))
