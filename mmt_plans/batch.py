@@ -35,6 +35,7 @@ from .errors import MmtError, shown
 from .report import table
 
 if TYPE_CHECKING:  # pragma: no cover
+    from .i18n import Language
     from .solution import Solution
 
 __all__ = [
@@ -199,19 +200,25 @@ def read_manifest(out_dir: str | os.PathLike[str]) -> dict | None:
     return data if isinstance(data, dict) and data.get("schema") == MANIFEST_SCHEMA else None
 
 
-def _settings(lang: str, formats: Sequence[str] = SHEET_FORMATS) -> dict:
+def _settings(
+    lang: str, formats: Sequence[str] = SHEET_FORMATS, extras: Sequence[str] = ()
+) -> dict:
     from . import __version__
 
-    return {"lang": lang, "version": __version__, "formats": list(formats)}
+    return {"lang": lang, "version": __version__, "formats": list(formats), "extras": list(extras)}
 
 
 def _kept(
-    path: str, out: Path, lang: str, formats: Sequence[str] = SHEET_FORMATS
+    path: str,
+    out: Path,
+    lang: str,
+    formats: Sequence[str] = SHEET_FORMATS,
+    extras: Sequence[str] = (),
 ) -> FileResult | None:
     """The result of an earlier run when its manifest matches the input and
     its outputs are all there, as they were written; else None."""
     manifest = read_manifest(out)
-    if manifest is None or manifest.get("settings") != _settings(lang, formats):
+    if manifest is None or manifest.get("settings") != _settings(lang, formats, extras):
         return None
     digest = _sha256(path)
     if digest is None or manifest.get("input_sha256") != digest:
@@ -253,6 +260,7 @@ def process_file(
     lang: str = "en",
     force: bool = True,
     formats: Sequence[str] = ("svg", "pdf"),
+    extras: Sequence[str] = (),
 ) -> FileResult:
     """Analyse one file and write its sheets, results.json and note.pdf, then
     its manifest; with `force` False, a file whose manifest matches is kept.
@@ -262,11 +270,16 @@ def process_file(
     from .numerics import quiet_numerics
 
     with quiet_numerics():
-        return _process_file(str(path), Path(out_dir), lang, force, tuple(formats))
+        return _process_file(str(path), Path(out_dir), lang, force, tuple(formats), tuple(extras))
 
 
 def _process_file(
-    path: str, out: Path, lang: str, force: bool, formats: tuple[str, ...] = ("svg", "pdf")
+    path: str,
+    out: Path,
+    lang: str,
+    force: bool,
+    formats: tuple[str, ...] = ("svg", "pdf"),
+    extras: tuple[str, ...] = (),
 ) -> FileResult:
     from .files import ensure_dir, finite_json, write_text_atomic
     from .note import write_note
@@ -276,7 +289,7 @@ def _process_file(
     from .spec import load
 
     if not force:
-        kept = _kept(path, out, lang, formats)
+        kept = _kept(path, out, lang, formats, extras)
         if kept is not None:
             return kept
     t0 = time.perf_counter()
@@ -341,9 +354,24 @@ def _process_file(
     def note() -> None:
         written.append(str(write_note(solution, out / "note.pdf", lang=lang)))  # type: ignore[arg-type]
 
+    def scheme() -> None:
+        # the variant's kinematic scheme, for the quiz (batch --moodle)
+        from .lms.keys import SCHEME_NAME
+        from .render.output import write_drawing
+        from .render.recording import RecordingBackend
+        from .sheets.schematic import sketch_schematic
+
+        recording = RecordingBackend(110.0, 80.0)
+        sketch_schematic(
+            solution, recording.look, cast("Language", lang), width_mm=110.0, height_mm=80.0
+        ).replay(recording)
+        written.append(str(write_drawing(recording, out / SCHEME_NAME, "png")))
+
     stage("results", results)
     stage("sheets", sheets)
     stage("note", note)
+    if "scheme" in extras:
+        stage("scheme", scheme)
     data = info.get("json", {})
     st = data.get("structure", {})
     forces = data.get("forces", {})
@@ -365,7 +393,7 @@ def _process_file(
                 "schema": MANIFEST_SCHEMA,
                 "input": path,
                 "input_sha256": digest,
-                "settings": _settings(lang, formats),
+                "settings": _settings(lang, formats, extras),
                 "outputs": {Path(w).name: Path(w).stat().st_size for w in written},
                 "summary": summary,
             }
@@ -384,7 +412,7 @@ def _process_file(
     )
 
 
-def _run(args: tuple[str, str, str, bool, tuple[str, ...]]) -> FileResult:
+def _run(args: tuple[str, str, str, bool, tuple[str, ...], tuple[str, ...]]) -> FileResult:
     return process_file(*args)
 
 
@@ -402,6 +430,7 @@ def run_batch(
     progress: Callable[[FileResult], None] | None = None,
     force: bool = True,
     formats: Sequence[str] = ("svg", "pdf"),
+    extras: Sequence[str] = (),
 ) -> list[FileResult]:
     """Process `files` with `jobs` processes (default: every core); results in
     the order of `files`. `progress(result)` is called as each file finishes.
@@ -412,7 +441,7 @@ def run_batch(
     out = ensure_dir(out)
     targets = plan_outputs(list(files), out)
     results: list[FileResult | None] = [None] * len(targets)
-    tasks: list[tuple[str, str, str, bool, tuple[str, ...]]] = []
+    tasks: list[tuple[str, str, str, bool, tuple[str, ...], tuple[str, ...]]] = []
     index: list[int] = []
     for i, (f, t) in enumerate(zip(files, targets)):
         if not _inside(t, out):  # OUT/x is a symbolic link to elsewhere
@@ -426,7 +455,7 @@ def run_batch(
             if progress:
                 progress(results[i])  # type: ignore[arg-type]
             continue
-        tasks.append((str(f), str(t), lang, force, tuple(formats)))
+        tasks.append((str(f), str(t), lang, force, tuple(formats), tuple(extras)))
         index.append(i)
     jobs = max(1, jobs or os.cpu_count() or 1)
     if jobs == 1 or len(tasks) <= 1:

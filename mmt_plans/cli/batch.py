@@ -37,6 +37,19 @@ from .errors import reports_errors
     callback=sheet_formats,
     help="The sheets' formats, comma-separated: svg, pdf, png, dxf.",
 )
+@click.option(
+    "--moodle",
+    is_flag=True,
+    help="Also write OUT/quiz.xml (Moodle XML, a cloze question per variant) and OUT/quiz.gift.",
+)
+@click.option(
+    "--tolerance",
+    type=click.FloatRange(0.0, 100.0, min_open=True),
+    default=5.0,
+    show_default=True,
+    metavar="PERCENT",
+    help="The quiz answers' tolerance.",
+)
 @reports_errors
 def batch(
     inputs: tuple[Path, ...],
@@ -45,6 +58,8 @@ def batch(
     lang: str,
     force: bool,
     formats: tuple[str, ...],
+    moodle: bool,
+    tolerance: float,
 ) -> None:
     """Answer keys for many mechanism files: each file's sheets (SVG, PDF),
     results.json and note.pdf into OUT/<file stem>/ (OUT/<relative path>/ when
@@ -67,6 +82,7 @@ def batch(
             lang=lang,
             force=force,
             formats=formats,
+            extras=("scheme",) if moodle else (),
             progress=lambda result: bar.update(1),
         )
     for r in results:
@@ -80,5 +96,14 @@ def batch(
     click.echo(
         f"{len(results) - failed} done{kept_note}, {failed} failed; summary written to {csv_path}"
     )
+    if moodle:
+        from ..files import write_bytes_atomic, write_text_atomic
+        from ..lms import gift, moodle_xml
+        from ..lms.keys import quiz_from_keys
+
+        done = [(Path(r.path), Path(r.out_dir)) for r in results if r.ok]
+        quiz = quiz_from_keys(done, lang, tolerance, out_dir.name or "mmt_plans")  # type: ignore[arg-type]
+        click.echo(f"quiz written to {write_bytes_atomic(out_dir / 'quiz.xml', moodle_xml(quiz))}")
+        click.echo(f"quiz written to {write_text_atomic(out_dir / 'quiz.gift', gift(quiz))}")
     if failed:
         sys.exit(1)
