@@ -176,3 +176,24 @@ def test_batch_leaves_no_temporary_file(tmp_path):
     run_batch([SMALL], out, jobs=1)
     names = [p.name for p in out.rglob("*")]
     assert not [n for n in names if ".tmp-" in n], names
+
+
+def test_one_batch_item_runs_the_solver_once(tmp_path, monkeypatch):
+    """Sheets, note, results.json and the quiz's scheme all read one Solution."""
+    import mmt_plans.solution
+    from mmt_plans.batch import process_file
+
+    real = mmt_plans.solution.solve
+    calls = []
+
+    def counting(*args, **kwargs):
+        calls.append(args)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(mmt_plans.solution, "solve", counting)
+    sample = Path(__file__).resolve().parents[1] / "samples" / "offset_slider_crank.toml"
+    result = process_file(sample, tmp_path / "item", formats=("svg", "pdf"), extras=("scheme",))
+    assert result.ok, result.message
+    assert len(calls) == 1
+    names = {Path(p).name for p in result.written}
+    assert {"results.json", "sheet1.svg", "sheet2.pdf", "note.pdf", "scheme.png"} <= names
