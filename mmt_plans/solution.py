@@ -221,7 +221,8 @@ def solve(
     structure = analyse_structure(mech)
     chain = build_chain(mech, structure)
     branches = chain.choice
-    if not branches.whole_turn and not mech.study.partial_turn:
+    if not branches.whole_turn and (not mech.study.partial_turn or not branches.ranges):
+        # refused; also when opted in, if it assembles at no crank angle at all
         raise partial_turn_error(mech, branches)
     turn = _Turn(mech, chain, branches)
     positions = turn.positions()

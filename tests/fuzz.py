@@ -187,7 +187,9 @@ def _retyped(rng: random.Random, v: Any) -> Any:
 
 def m_retype(rng: random.Random, data: dict) -> str:
     p = rng.choice(paths(data))
-    new = _retyped(rng, get(data, p))
+    # a tree of its own (no object shared with the data or within itself), so
+    # that a later swap cannot put a table inside itself
+    new = json.loads(json.dumps(_retyped(rng, get(data, p))))
     put(data, p, new)
     return f"retype {p} = {_short(new)}"
 

@@ -58,3 +58,12 @@ def test_a_sketched_frame_point_is_accepted():
     solution = mmt_plans.solve(mmt_plans.loads(text, "sketch.toml"))
     assert solution.branches.rule == "sketch" and solution.branches.whole_turn
     assert re.fullmatch(r"I\(0,1\) <- II\(2,3\) <- II\(4,5\)", solution.structure.formula)
+
+
+def test_partial_turn_opted_in_but_assembling_nowhere_is_refused():
+    # fuzz case 13658 (seed 1): seed-003 task 10 v3 with partial_turn and O2 renamed A
+    text = (TASKS / "seed003" / "task10_v3.toml").read_text()
+    text = text.replace("[study]\n", "[study]\npartial_turn = true\n", 1)
+    text = with_points(text, 3, "{ A = [0, 0], B = [550, 0] }")
+    message = refused(text, "nowhere.toml")
+    assert "assembles at no crank angle" in message
