@@ -52,6 +52,11 @@ __all__ = [
 # becomes the float nearest to the decimal (0.0125, not 0.012500000000000001).
 _MANTISSA_TEXT = ("1", "1.25", "2", "2.5", "4", "5", "8")
 MANTISSAS: tuple[float, ...] = tuple(float(m) for m in _MANTISSA_TEXT)
+# The scales of a drawing of the mechanism itself (μ_l): seed 003's 1, 2, 2.5,
+# 4, 5 × 10^k, which are the ratios of GOST 2.302 (1:2, 1:2.5, 1:4, 1:5, 1:10,
+# 1:20, 1:25, 1:40, 1:50 ... and 2:1, 2.5:1, 4:1, 5:1, 10:1 ...).
+LENGTH_MANTISSA_TEXT = ("1", "2", "2.5", "4", "5")
+LENGTH_MANTISSAS: tuple[float, ...] = tuple(float(m) for m in LENGTH_MANTISSA_TEXT)
 
 # Relative tolerance for deciding that a float is a series value.
 _REL_TOL = 1e-9
@@ -100,18 +105,19 @@ def _decade(value: float) -> int:
     return k
 
 
-def _value(mantissa_index: int, k: int) -> float:
-    return float(Decimal(_MANTISSA_TEXT[mantissa_index]).scaleb(k))
+def _value(text: str, k: int) -> float:
+    return float(Decimal(text).scaleb(k))
 
 
-def series(low: float, high: float) -> Iterator[float]:
-    """Every series value μ with low <= μ <= high, ascending."""
+def series(low: float, high: float, mantissas: tuple[str, ...] = _MANTISSA_TEXT) -> Iterator[float]:
+    """Every series value μ with low <= μ <= high, ascending (`mantissas`:
+    the decade's values as decimal text; LENGTH_MANTISSA_TEXT for μ_l)."""
     if not (0 < low <= high) or not math.isfinite(high):
         raise ValueError(f"series needs 0 < low <= high < inf, got {low!r}, {high!r}")
     k = _decade(low)
     while True:
-        for i in range(len(MANTISSAS)):
-            mu = _value(i, k)
+        for text in mantissas:
+            mu = _value(text, k)
             if mu > high * (1 + _REL_TOL):
                 return
             if mu >= low * (1 - _REL_TOL):
@@ -127,14 +133,14 @@ def is_standard(mu: float) -> bool:
     return any(math.isclose(m, s, rel_tol=_REL_TOL) for s in MANTISSAS)
 
 
-def _next_up(raw: float) -> float:
+def _next_up(raw: float, mantissas: tuple[str, ...] = _MANTISSA_TEXT) -> float:
     """The smallest series value >= raw."""
-    return next(series(raw, raw * 10.0))
+    return next(series(raw, raw * 10.0, mantissas))
 
 
-def _next_down(raw: float) -> float:
+def _next_down(raw: float, mantissas: tuple[str, ...] = _MANTISSA_TEXT) -> float:
     """The largest series value <= raw."""
-    return list(series(raw / 10.0, raw))[-1]
+    return list(series(raw / 10.0, raw, mantissas))[-1]
 
 
 def standard_scale(
@@ -142,6 +148,7 @@ def standard_scale(
     target: DrawnLength | None = None,
     *,
     nominal_mm: float | None = None,
+    mantissas: tuple[str, ...] = _MANTISSA_TEXT,
 ) -> float:
     """Round a raw scale (quantity per mm, e.g. V_A / 120 mm) to the series.
 
@@ -160,16 +167,16 @@ def standard_scale(
     if not (isinstance(raw, (int, float)) and math.isfinite(raw) and raw > 0):
         raise ValueError(f"a scale must be a finite positive number, got {raw!r}")
     if target is None:
-        return _next_up(raw)
+        return _next_up(raw, mantissas)
     nominal = target.nominal if nominal_mm is None else nominal_mm
     if not (math.isfinite(nominal) and nominal > 0):
         raise ValueError(f"nominal_mm must be a finite positive length, got {nominal!r}")
     magnitude = raw * nominal
     # Every series value whose drawn length can be in range, with one value
     # beyond each end so that the fallback has neighbours to choose from.
-    lo_mu = _next_down(magnitude / target.high)
-    hi_mu = _next_up(magnitude / target.low)
-    candidates = list(series(lo_mu, hi_mu))
+    lo_mu = _next_down(magnitude / target.high, mantissas)
+    hi_mu = _next_up(magnitude / target.low, mantissas)
+    candidates = list(series(lo_mu, hi_mu, mantissas))
 
     fitting = [mu for mu in candidates if target.contains(magnitude / mu)]
     if fitting:
@@ -180,7 +187,9 @@ def standard_scale(
     return max(mu for mu in candidates if magnitude / mu > target.high)
 
 
-def scale_for(magnitude: float, target: DrawnLength) -> float:
+def scale_for(
+    magnitude: float, target: DrawnLength, mantissas: tuple[str, ...] = _MANTISSA_TEXT
+) -> float:
     """The series scale that draws `magnitude` with a length in `target`.
 
     magnitude is the quantity drawn by the reference segment: V_A for pa,
@@ -188,7 +197,7 @@ def scale_for(magnitude: float, target: DrawnLength) -> float:
     """
     if not (isinstance(magnitude, (int, float)) and math.isfinite(magnitude) and magnitude > 0):
         raise ValueError(f"the drawn quantity must be finite and positive, got {magnitude!r}")
-    return standard_scale(magnitude / target.nominal, target)
+    return standard_scale(magnitude / target.nominal, target, mantissas=mantissas)
 
 
 # --- labels -----------------------------------------------------------------

@@ -42,7 +42,7 @@ from .kinematics.branches import Branches, build_chain
 from .kinematics.chain import Chain, Sweep
 from .kinematics.plans import PlanView, plan_view
 from .model import Mechanism, Stroke
-from .scales import DrawnLength, scale_for, series
+from .scales import LENGTH_MANTISSA_TEXT, DrawnLength, scale_for, series
 from .structure import Structure, analyse_structure
 
 __all__ = ["Position", "Diagrams", "Solution", "solve", "sweep", "EXTREME_TOL_DEG"]
@@ -282,7 +282,9 @@ def _mechanism_scale(mech: Mechanism, chain: Chain) -> float:
     grid = chain.sweep(np.linspace(0.0, 360.0, 72, endpoint=False))
     pts = np.concatenate([grid.position_of(n)[grid.ok] for n in mech.point_owners])
     span = max(np.ptp(pts.real), np.ptp(pts.imag), mech.crank_length)
-    return scale_for(float(span), DrawnLength("mechanism", 150.0, 300.0, 220.0))
+    return scale_for(
+        float(span), DrawnLength("mechanism", 150.0, 300.0, 220.0), LENGTH_MANTISSA_TEXT
+    )
 
 
 def _diagrams(

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 from ..drawing.page import FIELDS
-from ..scales import series
+from ..scales import LENGTH_MANTISSA_TEXT, series
 from ..solution import Solution
 
-__all__ = ["drawing_scale", "next_scale", "scale_step", "title_fields"]
+__all__ = ["drawing_scale", "length_scale_step", "next_scale", "scale_step", "title_fields"]
 
 
 def next_scale(mu: float, steps: int) -> float:
@@ -42,3 +42,12 @@ def scale_step(mu: float, steps: int) -> float:
     if steps >= 0:
         return next_scale(mu, steps)
     return list(series(mu * 1e-4, mu * (1 - 1e-6)))[steps]
+
+
+def length_scale_step(mu_l: float, steps: int) -> float:
+    """μ_l `steps` places up (down for negative) the series of the mechanism's
+    drawings, 1, 2, 2.5, 4, 5 × 10^k: the GOST 2.302 ratios of the title block."""
+    if steps >= 0:
+        up = list(series(mu_l * (1 - 1e-6), mu_l * 1e4, LENGTH_MANTISSA_TEXT))
+        return up[steps]
+    return list(series(mu_l * 1e-4, mu_l * (1 - 1e-6), LENGTH_MANTISSA_TEXT))[steps]

@@ -29,8 +29,8 @@ from ..render.backend import Backend
 from ..render.look import LineType
 from ..scales import ACCELERATION_PLAN, VELOCITY_PLAN, Quantity, scale_for, scale_label
 from ..solution import Solution
+from .common import length_scale_step, title_fields
 from .common import next_scale as _next_scale
-from .common import scale_step, title_fields
 
 __all__ = ["Sheet1", "compose_sheet1", "GROUPS"]
 
@@ -713,7 +713,7 @@ def compose_sheet1(
     ]
     for shrink, stacked, bigger, gap in attempts:
         sketches, scales = _sketch_all(solution, backend.look, lang, shrink, stacked, cache)
-        mu_l = scale_step(float(solution.mu_l), max(0, shrink - 1) - bigger)
+        mu_l = length_scale_step(float(solution.mu_l), max(0, shrink - 1) - bigger)
         if ("mechanism", mu_l) not in cache:
             cache[("mechanism", mu_l)] = sketch_mechanism(solution, mu_l, backend.look, lang)
         sketches["mechanism"] = cache[("mechanism", mu_l)]

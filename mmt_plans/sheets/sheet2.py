@@ -40,7 +40,7 @@ from ..render.backend import Backend
 from ..render.look import LineType
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label
 from ..solution import Solution
-from .common import scale_step, title_fields
+from .common import length_scale_step, scale_step, title_fields
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "GROUPS"]
 
@@ -719,7 +719,7 @@ def _sketch_all(
         out["driving-link"] = sketch_driving_link(fa, mu_g, look, lang)
         return out
 
-    mu_g = scale_step(float(solution.mu_l), shrink)
+    mu_g = length_scale_step(float(solution.mu_l), shrink)
     scales: dict[str, float] = {"mu_l_groups": mu_g}
     sketches: dict[str, Sketch] = dict(memo("groups", mu_g, lambda: groups_at(mu_g)))
     dl = fa.driving_link
@@ -771,7 +771,7 @@ def compose_sheet2(
     for shrink in range(-2, 6):
         sketches, scales, arms = _sketch_all(fa, solution, backend.look, lang, shrink, cache)
         for bigger in (2, 1, 0):
-            mu_l = scale_step(float(solution.mu_l), shrink - bigger)
+            mu_l = length_scale_step(float(solution.mu_l), shrink - bigger)
             if ("force-mechanism", mu_l) not in cache:
                 cache[("force-mechanism", mu_l)] = (
                     sketch_loaded_mechanism(fa, mu_l, backend.look, lang),
