@@ -15,6 +15,12 @@ __all__ = [
 ]
 
 
+def _sup(tag: str) -> str:
+    """The textbook's superscripts: τ for the tangential component (the
+    solver's labels write t), n normal, k Coriolis, r relative."""
+    return "τ" if tag == "t" else tag
+
+
 def image_markup(name: str) -> str:
     """ "S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters."""
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
@@ -33,7 +39,7 @@ def component_markup(label: str) -> str:
     m = re.fullmatch(r"([A-Za-z])(?:\^(\w))?_(.+)", label)
     if not m:
         return label
-    sup = f"^{{{m.group(2)}}}" if m.group(2) else ""
+    sup = f"^{{{_sup(m.group(2))}}}" if m.group(2) else ""
     return f"{m.group(1)}{sup}_{{{m.group(3)}}}"
 
 
@@ -47,11 +53,11 @@ def force_markup(label: str) -> str:
     "R0_11" → "R_{0,11}", "G2" → "G_{2}", "F_bal" → "F_{bal}"."""
     m = re.fullmatch(r"R(\d+)_(\d+)(?:\^(\w))?", label)
     if m:
-        sup = f"^{{{m.group(3)}}}" if m.group(3) else ""
+        sup = f"^{{{_sup(m.group(3))}}}" if m.group(3) else ""
         return f"R{sup}_{{{m.group(1)},{m.group(2)}}}"
     m = re.fullmatch(r"([A-Z])(\d+)(?:\^(\w))?", label)
     if m:
-        sup = f"^{{{m.group(3)}}}" if m.group(3) else ""
+        sup = f"^{{{_sup(m.group(3))}}}" if m.group(3) else ""
         return f"{m.group(1)}{sup}_{{{m.group(2)}}}"
     m = re.fullmatch(r"([A-Z])'?_(\w+)", label.replace("'", ""))
     if m:

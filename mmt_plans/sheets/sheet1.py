@@ -298,9 +298,16 @@ def sketch_plan(
                 ):
                     continue  # coincides with an absolute vector
                 sk.arrow(s, e, "dashed", head_length=3.0, head_width=1.0)
-                if c.kind in ("normal", "coriolis"):
-                    tag = "n" if c.kind == "normal" else "k"
-                    placer.later(e, f"{tag}_{{{c.label.split('_', 1)[-1]}}}", unit_vector(e - s))
+                # every component of the acceleration plan named as the textbook
+                # names it: a^n, a^τ, a^k (Coriolis), a^r (relative)
+                tags = {"normal": "n", "coriolis": "k", "tangential": "τ", "slide": "r"}
+                if kind == "acceleration" and c.kind in tags:
+                    where = e if c.kind in ("normal", "coriolis") else (s + e) / 2
+                    placer.later(
+                        where,
+                        f"a^{{{tags[c.kind]}}}_{{{c.label.split('_', 1)[-1]}}}",
+                        unit_vector(e - s),
+                    )
         # The image of each link: its joints' images joined by thin lines (the
         # relative vectors ab, de, and the similarity triangles of three-point links).
         owners = solution.mechanism.point_owners

@@ -620,7 +620,7 @@ def _sketch_tables(
         look,
         "table-reactions",
         w["reactions"],
-        [w["pair"], "|R|", "Rx", "Ry", "|Rn|", "|Rt|"],
+        [w["pair"], "|R|", "Rx", "Ry", "|Rn|", "|Rτ|"],
         rows,
         [16.0, 18.0, 18.0, 18.0, 18.0, 18.0],
         marks,
