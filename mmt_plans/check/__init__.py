@@ -21,14 +21,14 @@ from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 
-from .errors import MmtError, SpecError, shown
-from .scales import format_number, series
-from .spec import NAME_MAX, parse_toml, read_text, show_value
+from ..errors import MmtError, SpecError, shown
+from ..scales import format_number, series
+from ..spec import NAME_MAX, parse_toml, read_text, show_value
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .forces import ForceAnalysis
-    from .kinematics.plans import PlanView
-    from .solution import Solution
+    from ..forces import ForceAnalysis
+    from ..kinematics.plans import PlanView
+    from ..solution import Solution
 
 DEFAULT_TOLERANCE_PERCENT = 5.0
 
@@ -234,7 +234,7 @@ class CheckResult:
         return tuple(v for v in self.values if not v.passed)
 
     def text(self) -> str:
-        from .report import table
+        from ..report import table
 
         rows = []
         for v in self.values:
@@ -795,8 +795,8 @@ def check_file(
     mechanism_path: str | Path, answers_path: str | Path, tolerance_percent: float | None = None
 ) -> CheckResult:
     """`mmt-plans check FILE ANSWERS` as a function."""
-    from .solution import solve
-    from .spec import load
+    from ..solution import solve
+    from ..spec import load
 
     analysis = solve(load(mechanism_path))
     answers = load_answers(answers_path, analysis)
