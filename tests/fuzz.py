@@ -573,6 +573,9 @@ def mutant(seed: int, case: int) -> Mutant:
             m.steps.append(op(rng, data))
         except (IndexError, KeyError, TypeError, ValueError) as err:
             m.steps.append(f"{op.__name__} (skipped: {type(err).__name__})")
+        # a tree again: an operation may leave one object in two places (a
+        # shallow copy), and a later swap must not put a table inside itself
+        data = json.loads(json.dumps(data))
     m.data = dumps(data).encode("utf-8", errors="surrogatepass")
     if rng.random() < 0.05:
         m.data, why = damage(rng, m.data)
