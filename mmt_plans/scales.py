@@ -227,16 +227,9 @@ assert set(QUANTITIES) == set(get_args(Quantity))
 
 
 def format_number(value: float, *, decimal_comma: bool = False) -> str:
-    """Plain positional decimal, no exponent, no trailing zeros: 0.0125, 50, 2000."""
-    if not math.isfinite(value):
-        raise ValueError(f"cannot format {value!r}")
-    # repr gives the shortest decimal that round-trips: 0.005 stays 0.005.
-    text = format(Decimal(repr(float(value))).normalize(), "f")
-    if "." in text:
-        text = text.rstrip("0").rstrip(".")
-    if text in ("-0", ""):
-        text = "0"
-    return text.replace(".", ",") if decimal_comma else text
+    """Plain positional decimal, no exponent, no trailing zeros: 0.0125, 50, 2000
+    (the catalogue's plain_number; a decimal comma as the Ukrainian one writes it)."""
+    return catalogue("uk" if decimal_comma else "en").plain_number(value)
 
 
 @dataclass(frozen=True)
