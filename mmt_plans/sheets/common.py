@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from ..drawing.page import FIELDS
+from ..i18n import Language
 from ..scales import LENGTH_MANTISSA_TEXT, series
 from ..solution import Solution
 
@@ -24,14 +25,16 @@ def drawing_scale(mu_l: float) -> str:
     return f"1:{text}" if k >= 1 else f"{text}:1"
 
 
-def title_fields(solution: Solution, mu_l: float | None = None) -> dict[str, str]:
+def title_fields(
+    solution: Solution, mu_l: float | None = None, lang: Language = "en"
+) -> dict[str, str]:
     """The title block's fields: the file's [sheet] entries, its title, the sheet
     numbers, and the scale of the mechanism's drawing (μ_l) unless the file gives one."""
     mech = solution.mechanism
     fields = {k: str(v) for k, v in dict(mech.sheet or {}).items() if k in FIELDS}
     if mu_l is not None:
         fields.setdefault("scale", drawing_scale(mu_l))
-    fields.setdefault("title", str(mech.title))
+    fields.setdefault("title", mech.title_in(lang))
     fields.setdefault("sheet", "1")
     fields.setdefault("sheets", "2")
     return fields

@@ -559,7 +559,7 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
         for q in ("v", "a"):
             val = next(x for x in sc.values if x.index == i and x.quantity == q)
             err = (
-                f"±{_fmt(val.absolute_error, 2)}*"
+                catalogue(lang).localise(f"±{_fmt(val.absolute_error, 2)}*")
                 if val.ill_conditioned
                 else f"{val.error_percent:.1f}"
             )
@@ -760,6 +760,6 @@ def compose_sheet1(
             sketches[name].replay(backend, dx, dy)
             result.origins[name] = (dx, dy)
             result.placed[name] = rect
-        draw_page(backend, page, title_fields(solution, mu_l), lang)
+        draw_page(backend, page, title_fields(solution, mu_l, lang), lang)
         return result
     raise LayoutError(f"sheet 1 does not fit on {page.name or 'the page'}: {last}")

@@ -801,7 +801,7 @@ def compose_sheet2(
                     _translated(sketches[name], lang).replay(backend, dx, dy)
                     result.origins[name] = (dx, dy)
                     result.placed[name] = rect
-                fields = title_fields(solution, mu_l)
+                fields = title_fields(solution, mu_l, lang)
                 fields["sheet"] = "2"
                 draw_page(backend, page, fields, lang)
                 return result
