@@ -20,6 +20,39 @@ Stroke = Literal["working", "idle"]
 
 FRAME = 0
 
+# The [sheet] table's fields (and `--field KEY=VALUE`): what the title block of
+# the sheets (GOST 2.104 form 1) and the note's title page and small title
+# blocks (forms 2/2a) letter. Every one is optional; the outputs give defaults.
+SHEET_FIELDS: tuple[str, ...] = (
+    # the main inscription
+    "drawing_number",  # the designation, e.g. "ТММ.КП.05.00.00"
+    "sheet_name",  # overrides the catalogue's name of each sheet
+    "organisation",  # the organisation cell (also "school" and "group")
+    "school",
+    "group",
+    "author",  # the student: "developed"
+    "date",
+    "checked_by",  # the supervisor: "checked"
+    "checked_date",
+    "tech_control",
+    "norm_control",
+    "approved_by",
+    "approved",  # legacy spelling of approved_by
+    "material",
+    "letter",
+    "mass",
+    "scale",
+    # the note's title page
+    "university",
+    "department",
+    "discipline",
+    "variant",
+    "supervisor",  # overrides checked_by on the title page
+    "city",
+    "year",
+    "lang",
+)
+
 
 def frozen_array(values: Any) -> np.ndarray:
     """A float array that cannot be written to (results are values, not buffers)."""

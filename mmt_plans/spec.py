@@ -24,6 +24,7 @@ from .errors import SpecError, shown
 from .files import read_input
 from .model import (
     FRAME,
+    SHEET_FIELDS,
     Acts,
     Drive,
     Force,
@@ -148,7 +149,7 @@ KEYS: dict[str, tuple[str, ...]] = {
     "force": ("name", "link", "at", "magnitude", "acts", "direction"),
     "env": ("g", "gravity"),
     "higher_pair": ("links",),
-    "sheet": ("author", "group", "checked_by", "school", "drawing_number", "approved", "lang"),
+    "sheet": SHEET_FIELDS,
 }
 
 

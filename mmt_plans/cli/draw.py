@@ -7,6 +7,7 @@ from pathlib import Path
 import click
 
 from .errors import reports_errors
+from .fields import field_option, with_fields
 
 
 def sheet_formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[str, ...]:
@@ -45,9 +46,16 @@ def sheet_formats(ctx: click.Context, param: click.Parameter, value: str) -> tup
     is_flag=True,
     help="A crank that cannot make a whole turn: draw the range where it assembles.",
 )
+@field_option
 @reports_errors
 def draw(
-    file: Path, out_dir: Path, formats: tuple[str, ...], lang: str, sheet: str, partial_turn: bool
+    file: Path,
+    out_dir: Path,
+    formats: tuple[str, ...],
+    lang: str,
+    sheet: str,
+    partial_turn: bool,
+    fields: dict[str, str],
 ) -> None:
     """Draw the A1 sheets of FILE."""
     from ..files import check_output
@@ -57,6 +65,8 @@ def draw(
 
     check_output(out_dir, folder=True)
     numbers = sorted(available_sheets()) if sheet == "all" else [int(sheet)]
-    solution = solve(load(file), partial_turn=partial_turn, forces=2 in numbers)
+    solution = solve(
+        with_fields(load(file), fields), partial_turn=partial_turn, forces=2 in numbers
+    )
     for path in write_sheets(solution, out_dir, formats, lang, numbers):  # type: ignore[arg-type]
         click.echo(f"written {path}")
