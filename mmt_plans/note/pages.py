@@ -731,9 +731,10 @@ def draw_note_page(
         if note_page_.number > 1:
             box = text_box(page, "none")
             size = cap(BODY_PT, backend.look.lettering)
-            backend.text(
-                (box.right, page.height - 15.0), str(note_page_.number), size, anchor="right"
-            )
+            with backend.group("page-number", "page-number"):
+                backend.text(
+                    (box.right, page.height - 15.0), str(note_page_.number), size, anchor="right"
+                )
         return
     draw_frame(backend, page)
     if note_page_.form == "2":
