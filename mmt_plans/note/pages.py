@@ -55,6 +55,7 @@ PARAGRAPH = 12.5  # paragraph indent, mm (five characters)
 INDENT = PARAGRAPH  # of equations
 CONTINUATION = 2 * PARAGRAPH  # of an equation's continuation lines
 CELL_PAD = 1.0  # text to the lines of a table cell, mm
+WORDY = 60.0  # a table column this wide (mm) holds words: set from the left
 FORM2_HEIGHT = 40.0
 FORM2A_HEIGHT = 15.0
 FORM_WIDTH = 185.0
@@ -532,7 +533,11 @@ def _draw_row(backend: Backend, line: Line) -> None:
         backend.line((x + w, bottom), (x + w, top), kind)
         if cell:
             size = sizes[i] if i < len(sizes) else line.size
-            draw_markup(backend, (x + w / 2, (bottom + top) / 2 - size / 2), cell, size, "center")
+            y = (bottom + top) / 2 - size / 2
+            if w >= WORDY and not line.header:  # a column of words reads from the left
+                draw_markup(backend, (x + CELL_PAD + 0.5, y), cell, size, "left")
+            else:
+                draw_markup(backend, (x + w / 2, y), cell, size, "center")
         x += w
 
 

@@ -319,3 +319,17 @@ def test_pdf_text_is_real_and_in_one_language(tmp_path, lang):
             assert english not in out
     else:
         assert re.findall(UNITS_EN, out)
+
+
+def test_glyphs_the_serif_lacks_are_drawn_as_lines():
+    from mmt_plans.note.pages import draw_markup, note_look
+
+    backend = RecordingBackend(210.0, 297.0, note_look())
+    width = draw_markup(backend, (30.0, 100.0), "V_{BA} ⊥ AB, V_{B} ∥ x", 3.2)
+    texts = backend.texts()
+    assert texts and not any(ch in t for t in texts for ch in "⊥∥")
+    assert "AB," in " ".join(texts)
+    # the perpendicular's foot and stem, the parallel's two strokes
+    assert len(backend.named("line")) == 4
+    xs = [x for c in backend.named("line") for x, _ in c.points()]
+    assert 30.0 < min(xs) and max(xs) < 30.0 + width
