@@ -12,6 +12,7 @@ from .batch import batch
 from .check import check
 from .draw import draw
 from .errors import reports_errors
+from .note import note
 from .variants import variants
 
 
@@ -87,3 +88,4 @@ main.add_command(draw)
 main.add_command(check)
 main.add_command(batch)
 main.add_command(variants)
+main.add_command(note)

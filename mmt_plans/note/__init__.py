@@ -1,5 +1,5 @@
-"""The A4 calculation and explanatory note (seed 003 §IV; seed 002's way of
-writing each step: formula = numbers = result).
+"""The A4 calculation and explanatory note (seed 003 §III-§IV; seed 002's way
+of writing each step: formula = numbers = result).
 
     >>> import mmt_plans
     >>> from mmt_plans.note import note_content, write_note
@@ -8,21 +8,36 @@ writing each step: formula = numbers = result).
     ['sheet1', '1.1', '1.2']
     >>> write_note(a, "out/note.pdf", lang="uk")          # doctest: +SKIP
 
-`content` writes the blocks from the solver's data, `pages` sets them on A4
-pages through the drawing interface, `pdf` joins the pages' SVG into one PDF.
+`content` writes the calculation's blocks from the solver's data, `front`
+the title page, task sheet, abstract, contents and references around them
+(`note_document`), `pages` sets them on A4 pages through the drawing
+interface (two passes: the contents and the abstract quote the first pass's
+pages and counts), `pdf` joins the pages' SVG into one PDF.
 """
 
 from __future__ import annotations
 
 import os
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..i18n import Language
+from ..i18n import Language, check_language
 from ..render.output import render
 from ..render.recording import RecordingBackend
 from .content import Block, NoteContent, note_content, number, plain
-from .pages import NotePage, draw_note_page, layout_note, note_page
+from .front import (
+    Counts,
+    abstract,
+    contents,
+    reference_items,
+    references,
+    stamp_fields,
+    task_sheet,
+    title_info,
+    title_page,
+)
+from .pages import NotePage, Stamp, draw_note_page, heading_pages, layout_note, note_look, note_page
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..solution import Solution
@@ -31,9 +46,11 @@ __all__ = [
     "Block",
     "NoteContent",
     "NotePage",
+    "NoteDocument",
     "draw_note",
     "layout_note",
     "note_content",
+    "note_document",
     "note_svgs",
     "number",
     "plain",
@@ -41,23 +58,88 @@ __all__ = [
 ]
 
 
+@dataclass(frozen=True)
+class NoteDocument:
+    """The whole note: its blocks, its pages, and what the abstract counts."""
+
+    content: NoteContent
+    pages: tuple[NotePage, ...]
+    counts: Counts
+    stamp: Stamp
+
+
+def _count(content: NoteContent, pages: int, refs: int) -> Counts:
+    return Counts(
+        pages=pages,
+        figures=sum(b.kind == "figure" for b in content.blocks),
+        tables=sum(b.kind == "table" for b in content.blocks),
+        references=refs,
+    )
+
+
+def note_document(analysis: Solution, lang: Language = "en") -> NoteDocument:
+    """The note with its front and back matter, laid out: title page, task
+    sheet, abstract (form 2), contents, the calculation, references."""
+    check_language(lang)
+    written = note_content(analysis, lang)
+    # the title page names the document: the calculation starts at its first section
+    body = NoteContent(written.title, lang, tuple(b for b in written.blocks if b.kind != "title"))
+    info = title_info(analysis, lang)
+    back = references(lang)
+    refs = len(reference_items(lang))
+    toc: dict[str, int] = {}
+    counts = Counts()
+    doc = body
+    pages: list[NotePage] = []
+    for _ in range(5):  # the contents and the abstract quote the last pass
+        blocks = [
+            *title_page(info, lang),
+            *task_sheet(analysis, info, lang),
+            *abstract(analysis, info, counts, lang),
+            *contents([*body.blocks, *back], lang),
+            Block("pagebreak", "2a"),
+            *body.blocks,
+            *back,
+        ]
+        doc = NoteContent(body.title, lang, tuple(blocks))
+        pages = layout_note(doc, first_form="none", toc=toc)
+        new_toc = heading_pages(pages)
+        new_counts = _count(doc, len(pages), refs)
+        if new_toc == toc and new_counts == counts:
+            break
+        toc, counts = new_toc, new_counts
+    s = stamp_fields(info, lang)
+    stamp = Stamp(pages=len(pages), **s)
+    return NoteDocument(doc, tuple(pages), counts, stamp)
+
+
 def draw_note(analysis: Solution, backend_factory: Any, lang: Language = "en") -> list[Any]:
     """Draw every page of the note on a new backend from `backend_factory(width,
-    height, title)`; returns the backends (SvgBackend, RecordingBackend ...)."""
-    content = note_content(analysis, lang)
+    height, title)`; returns the backends (SvgBackend, RecordingBackend ...).
+    The pages are drawn in the note's look (templates/note_look.toml)."""
+    from .figures import figure_drawers
+
+    document = note_document(analysis, lang)
     page = note_page()
-    look = None
+    look = note_look()
+    figures = figure_drawers(analysis)
     backends = []
-    pages = None
-    for i in range(10**6):
-        backend = backend_factory(page.width, page.height, f"{content.title}, page {i + 1}")
-        if pages is None:
-            look = backend.look
-            pages = layout_note(content, look, page)
-        draw_note_page(backend, pages[i], len(pages), content, analysis.mechanism, page)
+    for p in document.pages:
+        backend = backend_factory(
+            page.width, page.height, f"{document.content.title}, page {p.number}"
+        )
+        backend.look = look
+        draw_note_page(
+            backend,
+            p,
+            len(document.pages),
+            document.content,
+            analysis.mechanism,
+            page,
+            stamp=document.stamp,
+            figures=figures,
+        )
         backends.append(backend)
-        if i + 1 == len(pages):
-            break
     return backends
 
 
@@ -67,7 +149,7 @@ def note_svgs(analysis: Solution, lang: Language = "en") -> list[str]:
 
     def factory(width: float, height: float, title: str) -> RecordingBackend:
         titles.append(title)
-        return RecordingBackend(width, height)
+        return RecordingBackend(width, height, note_look())
 
     pages = draw_note(analysis, factory, lang)
     return [render(page, "svg", title).decode("utf-8") for page, title in zip(pages, titles)]

@@ -30,7 +30,22 @@ if TYPE_CHECKING:  # pragma: no cover
     from ..kinematics.plans import PlanView
     from ..solution import Solution
 
-BlockKind = Literal["title", "section", "subsection", "text", "equation", "table", "problem"]
+BlockKind = Literal[
+    "title",
+    "section",
+    "subsection",
+    "text",
+    "equation",
+    "table",
+    "problem",
+    # the document's frame (note/front.py, note/pages.py)
+    "heading",  # a structural element's name, centred: CONTENTS, CONCLUSIONS, REFERENCES
+    "figure",  # a drawing `figure` (note/figures.py) `height` mm tall, `text` its caption
+    "pagebreak",  # the next block starts a page of form `text` ("none", "2", "2a")
+    "center",  # a centred line of text
+    "space",  # `height` mm of white space
+    "toc",  # a line of the contents: `text` and the page of the heading `step`
+]
 
 __all__ = ["Block", "NoteContent", "note_content", "plain", "Language"]
 
@@ -38,13 +53,19 @@ __all__ = ["Block", "NoteContent", "note_content", "plain", "Language"]
 @dataclass(frozen=True)
 class Block:
     """One piece of the note. `step` is seed 003's item number ("1.3") of a
-    (sub)section heading; a table has `rows` (the header first) and `widths` (mm)."""
+    (sub)section heading; a table has `rows` (the header first) and `widths`
+    (mm), and `text` is its caption (numbered "Table N - text" by the layout).
+    A figure draws `figure` (a key of note/figures.py) `height` mm tall, with
+    `text` as its caption; `indent` (mm) moves a text line right."""
 
     kind: BlockKind
     text: str = ""
     step: str = ""
     rows: tuple[tuple[str, ...], ...] = ()
     widths: tuple[float, ...] = ()
+    figure: str = ""
+    height: float = 0.0
+    indent: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -62,7 +83,10 @@ class NoteContent:
         """The whole note as plain text (markup braces dropped)."""
         out = []
         for b in self.blocks:
+            if b.kind in ("pagebreak", "space"):
+                continue
             if b.kind == "table":
+                out += [plain(b.text)] if b.text else []
                 out += ["  ".join(plain(c) for c in row) for row in b.rows]
             else:
                 out.append(plain(b.text))

@@ -1,47 +1,98 @@
-"""The note's A4 pages: the blocks of `content` set in lines, paginated, and
-drawn through the drawing interface (`render.backend.Backend`).
+"""The note's A4 pages: the blocks set in lines, paginated, and drawn through
+the drawing interface (`render.backend.Backend`).
 
-Page geometry follows seed 003 §III: A4 portrait with the GOST frame (20 mm
-binding margin, 5 mm elsewhere), text 5 mm inside the frame on the left and
-right and 10 mm below its top; the first page carries the main inscription
-(form 1 of `sheets.page`, the one this package draws), the others a
-15 mm strip after GOST 2.104 form 2a (changes, designation, page number),
-with the text stopping 10 mm above either.
+Page geometry and type follow seed 003 §III (DSTU 3008:2015, GOST 2.104):
+A4 portrait with the GOST frame (20 mm binding margin, 5 mm elsewhere); the
+text keeps margins of 25 mm on the left, 15 mm on the right, 25 mm at the top
+and the bottom, at least 5 mm inside the frame and 10 mm above its stamp. The
+first page of the text carries form 2 (185 × 40 mm), the following pages form
+2a (185 × 15 mm); the title page and the task sheet have no frame. The main
+font is a serif at 14 pt (Liberation Serif, metric-compatible with Times New
+Roman: templates/note_look.toml) with 1.5 line spacing and a 12.5 mm
+paragraph indent; tables are set at 12 pt with single spacing. Tables are
+numbered above them, figures below them, in the order they come.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+import functools
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Literal
 
-from ..drawing.page import FIELDS, Page, Rect, draw_frame, draw_title_block, load_title_block_look
-from ..i18n import Language
+from ..drawing.page import Page, Rect, draw_frame
+from ..i18n import Language, catalogue
 from ..render.backend import Backend, parse_markup
-from ..render.look import Lettering, LineType, Look, load_look
+from ..render.look import Lettering, LineType, Look, load_look, templates_dir
 from .content import Block, NoteContent
 
-__all__ = ["NotePage", "Line", "layout_note", "draw_note_page", "FORM2A_HEIGHT", "note_page"]
+__all__ = [
+    "NotePage",
+    "Line",
+    "layout_note",
+    "draw_note_page",
+    "note_look",
+    "note_page",
+    "heading_pages",
+    "text_box",
+    "FORM2_HEIGHT",
+    "FORM2A_HEIGHT",
+    "Form",
+]
 
-BODY = 3.5  # lettering size of the text, mm
-SMALL = 2.5  # of tables
-HEADING = 5.0
-PITCH = 1.7  # line pitch in lettering sizes (GOST 2.304: at least 1.7 h)
-INDENT = 10.0  # of equations
-CONTINUATION = 20.0  # of an equation's continuation lines
-ROW = 6.0  # table row height, mm
-FORM1_HEIGHT = 55.0
+Form = Literal["none", "2", "2a"]
+FORMS: tuple[str, ...] = ("none", "2", "2a")
+
+PT = 25.4 / 72.0  # mm per point
+SINGLE = 1.149  # single line spacing of Times New Roman / Liberation Serif, em
+BODY_PT = 14.0
+TABLE_PT = 12.0
+CAPTION_PT = 12.0
+FORM_PT = 10.0  # the filled cells of forms 2 and 2a
+CAPTION_FORM_PT = 8.0  # their printed captions
+SPACING = 1.5  # of the main text
+PARAGRAPH = 12.5  # paragraph indent, mm (five characters)
+INDENT = PARAGRAPH  # of equations
+CONTINUATION = 2 * PARAGRAPH  # of an equation's continuation lines
+CELL_PAD = 1.0  # text to the lines of a table cell, mm
+WORDY = 60.0  # a table column this wide (mm) holds words: set from the left
+FORM2_HEIGHT = 40.0
 FORM2A_HEIGHT = 15.0
+FORM_WIDTH = 185.0
+# distances of the text from the paper's edges (seed 003 §III)
+MARGIN_LEFT, MARGIN_RIGHT, MARGIN_TOP, MARGIN_BOTTOM = 25.0, 15.0, 25.0, 25.0
+STAMP_GAP = 10.0  # text to the top of form 2 or 2a
+
+# Glyphs that Liberation Serif lacks: drawn as lines (_draw_symbol).
+SYMBOLS = frozenset("⊥∥⇒")
 
 
 def note_page() -> Page:
     return Page.of("A4")
 
 
+@functools.cache
+def note_look() -> Look:
+    """The note's look: templates/note_look.toml (serif lettering)."""
+    return load_look(templates_dir() / "note_look.toml")
+
+
+def cap(pt: float, let: Lettering) -> float:
+    """The lettering size (capital height, mm) of a font of `pt` points."""
+    return pt * PT * let.cap_height
+
+
+def pitch(pt: float, spacing: float = 1.0) -> float:
+    """Baseline to baseline of lines of `pt` points at `spacing`, mm."""
+    return spacing * SINGLE * pt * PT
+
+
 @dataclass(frozen=True)
 class Line:
-    """One line of the note placed on a page: `y` is its baseline (mm, y up);
-    a table row has `cells` and `widths` instead of `text`."""
+    """One line of the note placed on a page: `y` is its baseline (mm, y up).
+    A table row has `cells` and `widths` and fills `height` mm above `y`; a
+    figure fills the rectangle (x, y, sum(widths), height); a contents line
+    has its page number in `cells`. `anchor` names the heading a line starts."""
 
     y: float
     x: float
@@ -51,24 +102,43 @@ class Line:
     cells: tuple[str, ...] = ()
     widths: tuple[float, ...] = ()
     header: bool = False
+    align: str = "left"
+    anchor: str = ""
+    figure: str = ""
+    height: float = 0.0
+    sizes: tuple[float, ...] = ()  # of a table row's cells
 
 
 @dataclass(frozen=True)
 class NotePage:
     number: int  # from 1
     lines: tuple[Line, ...]
+    form: Form = "2a"
 
 
 def markup_width(let: Lettering, text: str, size: float) -> float:
-    """Width of a markup line as `Backend.rich_text` sets it."""
+    """Width of a markup line as `_draw_markup` sets it."""
     small = let.index_size(size)
     return sum(
         let.advance_width(t, size if kind == "normal" else small) for t, kind in parse_markup(text)
-    ) + (0.3 * size if text else 0.0)
+    )
 
 
-def _wrap(let: Lettering, text: str, size: float, width: float) -> list[str]:
-    return let.wrap(text, size, width, measure=lambda line, at: markup_width(let, line, at))
+def _wrap(let: Lettering, text: str, size: float, width: float, first: float = 0.0) -> list[str]:
+    """Break at spaces into lines no wider than `width`, the first `first` mm narrower."""
+    lines: list[str] = []
+    for paragraph in text.split("\n"):
+        current = ""
+        for word in paragraph.split(" "):
+            trial = f"{current} {word}" if current else word
+            room = width - (first if not lines else 0.0)
+            if current and markup_width(let, trial, size) > room:
+                lines.append(current)
+                current = word
+            else:
+                current = trial
+        lines.append(current)
+    return lines
 
 
 def _equation_lines(
@@ -94,123 +164,501 @@ def _equation_lines(
     return out
 
 
-def _frame_box(page: Page, first: bool) -> Rect:
-    """Where text may go on a page."""
+def text_box(page: Page, form: str) -> Rect:
+    """Where text may go on a page of `form` (capitals' tops at most at its top)."""
     f = page.frame
-    bottom = f.bottom + (FORM1_HEIGHT if first else FORM2A_HEIGHT) + 10.0
-    return Rect.from_bounds(f.left + 5.0, bottom, f.right - 5.0, f.top - 10.0)
+    left = max(MARGIN_LEFT, f.left + 5.0)
+    right = min(page.width - MARGIN_RIGHT, f.right - 5.0)
+    top = min(page.height - MARGIN_TOP, f.top - 10.0)
+    stamp = {"none": 0.0, "2": FORM2_HEIGHT, "2a": FORM2A_HEIGHT}[form]
+    bottom = MARGIN_BOTTOM if form == "none" else max(MARGIN_BOTTOM, f.bottom + stamp + STAMP_GAP)
+    return Rect.from_bounds(left, bottom, right, top)
+
+
+class _Layout:
+    """Sets blocks in lines, page by page."""
+
+    def __init__(self, look: Look, page: Page, lang: Language, first_form: str) -> None:
+        self.let = look.lettering
+        self.page = page
+        self.w = catalogue(lang).words("note_front")
+        self.pages: list[list[Line]] = [[]]
+        self.forms: list[str] = [first_form]
+        self.box = text_box(page, first_form)
+        self.y = self.box.top
+        self.body = cap(BODY_PT, self.let)
+        self.pitch = pitch(BODY_PT, SPACING)
+        self.tables = 0
+        self.figures = 0
+
+    # --- placing --------------------------------------------------------------------
+    def new_page(self, form: str = "2a") -> None:
+        self.pages.append([])
+        self.forms.append(form)
+        self.box = text_box(self.page, form)
+        self.y = self.box.top
+
+    @property
+    def next_form(self) -> str:
+        """The form of a page the text runs on to: 2a after form 2."""
+        return "2a" if self.forms[-1] == "2" else self.forms[-1]
+
+    @property
+    def empty(self) -> bool:
+        return not self.pages[-1]
+
+    def room(self, height: float) -> bool:
+        return self.y - height >= self.box.bottom - 1e-9
+
+    def advance(self, height: float, keep: float = 0.0, before: float = 0.0) -> None:
+        """Move down by `height` to the next baseline, on a new page if it and
+        `keep` more mm do not fit; `before` is dropped at a page's top, where
+        the first line's capitals touch the text's top."""
+        if not self.empty and not self.room(before + height + keep):
+            self.new_page(self.next_form)
+        if self.empty:
+            self.y = self.box.top - self.body
+        else:
+            self.y -= before + height
+
+    def put(self, line: Line) -> None:
+        self.pages[-1].append(line)
+
+    def text_line(
+        self,
+        text: str,
+        x: float = 0.0,
+        kind: str = "text",
+        *,
+        align: str = "left",
+        keep: float = 0.0,
+        before: float = 0.0,
+        anchor: str = "",
+        size: float | None = None,
+        step: float | None = None,
+    ) -> None:
+        size = size or self.body
+        self.advance(step or self.pitch, keep, before)
+        self.put(Line(self.y, self.box.left + x, text, size, kind, align=align, anchor=anchor))
+
+    # --- blocks ---------------------------------------------------------------------
+    def block(self, block: Block, toc: Mapping[str, int]) -> None:
+        kind = block.kind
+        width = self.box.width
+        let = self.let
+        if kind == "pagebreak":
+            form = block.text if block.text in FORMS else "2a"
+            if self.empty and len(self.pages) == 1:
+                self.forms[0] = form
+                self.box = text_box(self.page, form)
+                self.y = self.box.top
+            else:
+                self.new_page(form)
+        elif kind == "space":
+            # a negative height: down to where -height lines are left on the page
+            if block.height < 0:
+                self.y = min(self.y, self.box.bottom - block.height * self.pitch)
+            elif not self.empty:
+                self.y -= block.height
+        elif kind in ("title", "heading", "center"):
+            if kind == "heading" and not self.empty:
+                self.new_page("2a" if self.forms[-1] != "none" else "none")
+            lines = _wrap(let, block.text, self.body, width - 2 * PARAGRAPH)
+            for j, t in enumerate(lines):
+                self.text_line(
+                    t,
+                    width / 2 + block.indent,
+                    kind,
+                    align="center",
+                    keep=(len(lines) - 1 - j) * self.pitch
+                    + (self.pitch if kind != "center" else 0),
+                    anchor=block.step if j == 0 else "",
+                )
+            if kind != "center":
+                self.y -= self.pitch / 2
+        elif kind in ("section", "subsection"):
+            if kind == "section" and not self.empty and block.step:
+                self.new_page("2a" if self.forms[-1] != "none" else "none")
+            text = block.text.upper() if kind == "section" else block.text
+            lines = _wrap(let, text, self.body, width, PARAGRAPH)
+            for j, t in enumerate(lines):
+                self.text_line(
+                    t,
+                    PARAGRAPH if j == 0 else 0.0,
+                    kind,
+                    before=self.pitch / 2 if j == 0 else 0.0,
+                    keep=(len(lines) - 1 - j) * self.pitch + 2 * self.pitch,
+                    anchor=block.step if j == 0 else "",
+                )
+            self.y -= self.pitch / 4
+        elif kind in ("text", "problem"):
+            first = PARAGRAPH if not block.indent else 0.0
+            lines = _wrap(let, block.text, self.body, width - block.indent, first)
+            for j, t in enumerate(lines):
+                self.text_line(t, block.indent + (first if j == 0 else 0.0), kind)
+        elif kind == "equation":
+            for t, indent in _equation_lines(let, block.text, self.body, width):
+                self.text_line(t, indent, "equation")
+        elif kind == "toc":
+            self.toc_line(block, toc.get(block.step))
+        elif kind == "table":
+            self.table(block)
+        elif kind == "figure":
+            self.figure(block)
+        else:  # pragma: no cover - a new block kind must be set here
+            raise ValueError(f"cannot set a block of kind {block.kind!r}")
+
+    def toc_line(self, block: Block, number: int | None) -> None:
+        page_col = 12.0
+        indent = block.indent
+        lines = _wrap(self.let, block.text, self.body, self.box.width - page_col - 4.0 - indent)
+        for j, t in enumerate(lines):
+            last = j == len(lines) - 1
+            self.text_line(t, indent + (0.0 if j == 0 else 5.0), "toc")
+            if last:
+                line = self.pages[-1].pop()
+                self.put(
+                    Line(
+                        line.y,
+                        line.x,
+                        line.text,
+                        line.size,
+                        "toc",
+                        cells=(str(number) if number else "",),
+                        widths=(self.box.right - line.x,),
+                        anchor=block.step,
+                    )
+                )
+
+    def caption_lines(self, text: str, size: float, width: float) -> list[str]:
+        return _wrap(self.let, text, size, width)
+
+    def table(self, block: Block) -> None:
+        let = self.let
+        self.tables += 1
+        n = self.tables
+        size = cap(TABLE_PT, let)
+        row_h = pitch(TABLE_PT) + CELL_PAD
+        scale = min(1.0, self.box.width / sum(block.widths)) if block.widths else 1.0
+        widths = tuple(w * scale for w in block.widths)
+        sizes = tuple(s for s in let.sizes if s >= cap(7.0, let) - 1e-9 and s <= size + 1e-9)
+        title = self.w["table"].format(n=n) + (f" – {block.text}" if block.text else "")
+        head = self.caption_lines(title, self.body, self.box.width)
+        header, body = block.rows[0], block.rows[1:]
+
+        def cells(row: Sequence[str]) -> tuple[float, ...]:
+            return tuple(
+                max([s for s in sizes if markup_width(let, c, s) <= w - 2 * CELL_PAD] or [sizes[0]])
+                for c, w in zip(row, widths)
+            )
+
+        # the title keeps the header and the first row with it
+        keep = 2 * row_h + (len(head) - 1) * pitch(BODY_PT)
+        for j, t in enumerate(head):
+            self.text_line(
+                t,
+                0.0,
+                "caption",
+                before=self.pitch / 4 if j == 0 else 0.0,
+                keep=keep - j * pitch(BODY_PT),
+                step=self.pitch if j == 0 else pitch(BODY_PT),
+            )
+        top = self.y - 0.4 * self.body
+
+        def row(cells_: Sequence[str], is_header: bool) -> None:
+            nonlocal top
+            if top - row_h < self.box.bottom:
+                self.new_page(self.next_form)
+                self.y = self.box.top - self.body
+                self.put(
+                    Line(
+                        self.y,
+                        self.box.left,
+                        self.w["table_continued"].format(n=n),
+                        self.body,
+                        "caption",
+                    )
+                )
+                top = self.y - 0.4 * self.body
+                if not is_header:
+                    row(header, True)
+            self.put(
+                Line(
+                    top - row_h,
+                    self.box.left,
+                    "",
+                    size,
+                    "table",
+                    tuple(cells_),
+                    widths,
+                    is_header,
+                    height=row_h,
+                    sizes=cells(cells_),
+                )
+            )
+            top -= row_h
+
+        row(header, True)
+        for r in body:
+            row(r, False)
+        self.y = top - 0.5 * self.pitch
+
+    def figure(self, block: Block) -> None:
+        self.figures += 1
+        size = cap(CAPTION_PT, self.let)
+        text = self.w["figure"].format(n=self.figures) + (f" – {block.text}" if block.text else "")
+        lines = self.caption_lines(text, size, self.box.width - 2 * PARAGRAPH)
+        cap_h = len(lines) * pitch(CAPTION_PT)
+        height = min(block.height, self.box.height - cap_h - self.pitch)
+        need = height + cap_h + self.pitch / 2
+        if not self.empty and not self.room(need):
+            self.new_page(self.next_form)
+        top = self.y if not self.empty else self.box.top
+        if not self.empty:
+            top -= self.pitch / 2
+        self.put(
+            Line(
+                top - height,
+                self.box.left,
+                "",
+                0.0,
+                "figure",
+                widths=(self.box.width,),
+                figure=block.figure,
+                height=height,
+            )
+        )
+        self.y = top - height - 1.0
+        for t in lines:
+            self.y -= pitch(CAPTION_PT)
+            self.put(
+                Line(self.y, self.box.left + self.box.width / 2, t, size, "caption", align="center")
+            )
+        self.y -= self.pitch / 4
 
 
 def layout_note(
-    content: NoteContent, look: Look | None = None, page: Page | None = None
+    content: NoteContent,
+    look: Look | None = None,
+    page: Page | None = None,
+    *,
+    toc: Mapping[str, int] | None = None,
+    first_form: str = "2",
 ) -> list[NotePage]:
-    """Set the blocks in lines and break them into pages."""
-    look = look or load_look()
-    let = look.lettering
+    """Set the blocks in lines and break them into pages. `toc` gives the
+    page of each heading named by a contents line (the second pass)."""
+    look = look or note_look()
     page = page or note_page()
-    pages: list[list[Line]] = [[]]
-    box = _frame_box(page, True)
-    y = box.top
-
-    def new_page() -> None:
-        nonlocal box, y
-        pages.append([])
-        box = _frame_box(page, False)
-        y = box.top
-
-    def room(height: float) -> bool:
-        return y - height >= box.bottom - 1e-9
-
-    def put(
-        text: str, size: float, kind: str, x: float, before: float = 0.0, keep: float = 0.0
-    ) -> None:
-        """A line of `size`; `keep` more mm must fit below it (a heading keeps its next line)."""
-        nonlocal y
-        pitch = PITCH * size
-        if pages[-1] and not room(before + pitch + keep):
-            new_page()
-        elif pages[-1]:
-            y -= before
-        y -= pitch if pages[-1] else size + 1.0
-        pages[-1].append(Line(y, box.left + x, text, size, kind))
-
+    lay = _Layout(look, page, content.lang, first_form)
     for block in content.blocks:
-        width = box.width
-        if block.kind == "title":
-            for t in _wrap(let, block.text, HEADING, width):
-                put(t, HEADING, "title", 0.0, keep=PITCH * BODY)
-            y -= 3.0
-        elif block.kind in ("section", "subsection"):
-            size = HEADING if block.kind == "section" else BODY
-            lines = _wrap(let, block.text, size, width)
-            for j, t in enumerate(lines):
-                # the heading's first line brings the space above it and keeps
-                # the heading together with the first lines under it
-                put(
-                    t,
-                    size,
-                    block.kind,
-                    0.0,
-                    before=(4.0 if size == HEADING else 3.0) if j == 0 else 0.0,
-                    keep=(len(lines) - 1 - j) * PITCH * size + 2 * PITCH * BODY,
-                )
-        elif block.kind in ("text", "problem"):
-            lines = _wrap(let, block.text, BODY, width)
-            for t in lines:
-                put(t, BODY, block.kind, 0.0)
-        elif block.kind == "equation":
-            for t, indent in _equation_lines(let, block.text, BODY, width):
-                put(t, BODY, "equation", indent)
-        elif block.kind == "table":
-            putter = _RowPutter(lambda: (box, y), new_page)
-            putter.rows(block, pages)
-            y = putter.y
-        else:  # pragma: no cover - a new block kind must be set here
-            raise ValueError(f"cannot set a block of kind {block.kind!r}")
-    return [NotePage(i + 1, tuple(lines)) for i, lines in enumerate(pages)]
+        lay.block(block, toc or {})
+    pages = [(lines, form) for lines, form in zip(lay.pages, lay.forms)]
+    while len(pages) > 1 and not pages[-1][0]:
+        pages.pop()
+    return [NotePage(i + 1, tuple(lines), form) for i, (lines, form) in enumerate(pages)]  # type: ignore[arg-type]
 
 
-class _RowPutter:
-    """Places table rows, repeating the header row on a new page."""
-
-    def __init__(self, state, new_page) -> None:
-        self.state = state
-        self.new_page = new_page
-        self.y = state()[1]
-
-    def rows(self, block: Block, pages: list[list[Line]]) -> None:
-        header, body = block.rows[0], block.rows[1:]
-        box, y = self.state()
-        y -= 2.0
-        scale = min(1.0, box.width / sum(block.widths))
-        widths = tuple(w * scale for w in block.widths)
-        if y - 2 * ROW < box.bottom:
-            self.new_page()
-            box, y = self.state()
-        pages[-1].append(Line(y - ROW, box.left, "", SMALL, "table", header, widths, True))
-        y -= ROW
-        for row in body:
-            if y - ROW < box.bottom:
-                self.new_page()
-                box, y = self.state()
-                pages[-1].append(Line(y - ROW, box.left, "", SMALL, "table", header, widths, True))
-                y -= ROW
-            pages[-1].append(Line(y - ROW, box.left, "", SMALL, "table", row, widths))
-            y -= ROW
-        self.y = y - 2.0
+def heading_pages(pages: Sequence[NotePage]) -> dict[str, int]:
+    """The page each named heading starts on."""
+    out: dict[str, int] = {}
+    for p in pages:
+        for line in p.lines:
+            if line.anchor and line.kind != "toc" and line.kind != "table":
+                out.setdefault(line.anchor, p.number)
+    return out
 
 
 # --- drawing -------------------------------------------------------------------------------
 
+FigureDrawer = Callable[[Backend, Rect, str], None]
 
-def _fields(mech: Any, title: str, pages: int, lang: Language) -> dict[str, str]:
-    fields = {k: str(v) for k, v in dict(getattr(mech, "sheet", None) or {}).items() if k in FIELDS}
-    fields["title"] = title
-    fields["sheet"] = "1"
-    fields["sheets"] = str(pages)
-    if "drawing_number" in fields:
-        fields["drawing_number"] += " ПЗ" if lang == "uk" else " EN"
-    return fields
+
+def _draw_symbol(backend: Backend, ch: str, x: float, y: float, w: float, size: float) -> None:
+    """A glyph the font lacks, in lines of the lettering's weight."""
+    if ch == "⊥":
+        backend.line((x + 0.12 * w, y), (x + 0.88 * w, y), "thin")
+        backend.line((x + w / 2, y), (x + w / 2, y + size), "thin")
+    elif ch == "∥":
+        for f in (0.35, 0.65):
+            backend.line((x + f * w, y - 0.15 * size), (x + f * w, y + size), "thin")
+    elif ch == "⇒":
+        for f in (0.3, 0.7):
+            backend.line((x + 0.1 * w, y + f * size), (x + 0.75 * w, y + f * size), "thin")
+        backend.polyline(
+            [(x + 0.6 * w, y + size), (x + 0.9 * w, y + 0.5 * size), (x + 0.6 * w, y)], "thin"
+        )
+
+
+def draw_markup(
+    backend: Backend, pos: tuple[float, float], text: str, size: float, align: str = "left"
+) -> float:
+    """A line of markup at `pos` (its baseline), the glyphs the font lacks drawn
+    as lines; returns its width."""
+    let = backend.look.lettering
+    total = markup_width(let, text, size)
+    x = pos[0] - {"left": 0.0, "center": total / 2, "right": total}[align]
+    y = pos[1]
+    start = 0
+    parts: list[str] = []
+    for i, ch in enumerate(text):
+        if ch in SYMBOLS:
+            parts += [text[start:i], ch]
+            start = i + 1
+    parts.append(text[start:])
+    for part in parts:
+        if not part:
+            continue
+        if part in SYMBOLS:
+            w = let.advance_width(part, size)
+            _draw_symbol(backend, part, x, y, w, size)
+            x += w
+            continue
+        # spaces at the ends of a run are offsets (renderers drop them)
+        lead = len(part) - len(part.lstrip(" "))
+        if part.strip(" "):
+            backend.rich_text((x + let.advance_width(" " * lead, size), y), part.lstrip(" "), size)
+        x += markup_width(let, part, size)
+    return total
+
+
+def _draw_row(backend: Backend, line: Line) -> None:
+    x = line.x
+    bottom, top = line.y, line.y + line.height
+    kind: LineType = "thin"
+    backend.line((x, top), (x + sum(line.widths), top), kind)
+    backend.line((x, bottom), (x + sum(line.widths), bottom), kind)
+    backend.line((x, bottom), (x, top), kind)
+    sizes = line.sizes
+    for i, (w, cell) in enumerate(zip(line.widths, line.cells)):
+        backend.line((x + w, bottom), (x + w, top), kind)
+        if cell:
+            size = sizes[i] if i < len(sizes) else line.size
+            y = (bottom + top) / 2 - size / 2
+            if w >= WORDY and not line.header:  # a column of words reads from the left
+                draw_markup(backend, (x + CELL_PAD + 0.5, y), cell, size, "left")
+            else:
+                draw_markup(backend, (x + w / 2, y), cell, size, "center")
+        x += w
+
+
+@dataclass(frozen=True)
+class Stamp:
+    """What forms 2 and 2a print: the designation, the document's name, the
+    student and the supervisor, the organisation, the page count."""
+
+    designation: str = ""
+    title: str = ""
+    author: str = ""
+    checked_by: str = ""
+    organisation: str = ""
+    pages: int = 0
+
+
+def _cell_text(
+    backend: Backend,
+    rect: tuple[float, float, float, float],
+    text: str,
+    pt: float,
+    align: str = "center",
+) -> None:
+    """One line centred on a cell's middle, narrowed to fit it."""
+    x0, y0, x1, y1 = rect
+    let = backend.look.lettering
+    size = cap(pt, let)
+    x = {"left": x0 + 1.0, "center": (x0 + x1) / 2, "right": x1 - 1.0}[align]
+    backend.text(
+        (x, (y0 + y1) / 2),
+        text,
+        size,
+        anchor=align,  # type: ignore[arg-type]
+        valign="middle",
+        max_width=x1 - x0 - 2.0,
+    )
+
+
+def _block_text(
+    backend: Backend, rect: tuple[float, float, float, float], text: str, pt: float
+) -> None:
+    """Centred lines, wrapped and made smaller until they fit the cell."""
+    x0, y0, x1, y1 = rect
+    let = backend.look.lettering
+    for p in (pt, pt - 2, pt - 4, 8.0, 7.0):
+        size = cap(p, let)
+        lines = [ln for part in text.split("\n") for ln in let.wrap(part, size, x1 - x0 - 4.0)]
+        step = pitch(p)
+        if len(lines) * step <= y1 - y0 - 1.0 and all(
+            let.width(ln, size) <= x1 - x0 - 4.0 for ln in lines
+        ):
+            break
+    first = (y0 + y1) / 2 + step * (len(lines) - 1) / 2
+    for i, ln in enumerate(lines):
+        backend.text(
+            ((x0 + x1) / 2, first - i * step),
+            ln,
+            size,
+            anchor="center",
+            valign="middle",
+            max_width=x1 - x0 - 2.0,
+        )
+
+
+def draw_form2(backend: Backend, page: Page, number: int, stamp: Stamp, lang: Language) -> None:
+    """GOST 2.104 form 2, the first page of a text document: 185 × 40 mm;
+    on the left two rows of changes, the caption row and five rows of
+    signatures (5 mm each; columns 7, 10, 23, 15, 10 mm); on the right the
+    designation (120 × 15), the document's name (70 × 25), Літ. / Арк. /
+    Аркушів (15, 15, 20 mm; a caption row and a value row) and the
+    organisation (50 × 15)."""
+    w = catalogue(lang).words("title_block")
+    f = page.frame
+    x0, y0 = f.right - FORM_WIDTH, f.bottom
+    L = [x0 + d for d in (0.0, 7.0, 17.0, 40.0, 55.0, 65.0)]
+    R = x0 + 135.0
+    right = f.right
+    with backend.group("title-block", "title-block"):
+        for y in (y0 + 5, y0 + 10, y0 + 15, y0 + 20, y0 + 35):
+            backend.line((L[0], y), (L[5], y), "thin")
+        backend.line((x0, y0 + 40), (right, y0 + 40), "main")
+        backend.line((x0, y0), (x0, y0 + 40), "main")
+        for y in (y0 + 25, y0 + 30):
+            backend.line((L[0], y), (L[5], y), "main")
+        backend.line((L[1], y0 + 25), (L[1], y0 + 40), "main")
+        for x in L[2:]:
+            backend.line((x, y0), (x, y0 + 40), "main")
+        backend.line((L[5], y0 + 25), (right, y0 + 25), "main")
+        backend.line((R, y0), (R, y0 + 25), "main")
+        for y in (y0 + 20, y0 + 15):
+            backend.line((R, y), (right, y), "main")
+        for x in (R + 15, R + 30):
+            backend.line((x, y0 + 15), (x, y0 + 25), "main")
+        for x in (R + 5, R + 10):
+            backend.line((x, y0 + 15), (x, y0 + 20), "thin")
+        keys = ("change", "change_sheet", "document", "signature", "date")
+        for i, key in enumerate(keys):
+            _cell_text(backend, (L[i], y0 + 25, L[i + 1], y0 + 30), w[key], CAPTION_FORM_PT)
+        roles = ("developed", "checked", "", "norm_control", "approved")
+        names = (stamp.author, stamp.checked_by, "", "", "")
+        for j, (role, name) in enumerate(zip(roles, names)):
+            ya, yb = y0 + 20 - 5 * j, y0 + 25 - 5 * j
+            if role:
+                _cell_text(backend, (L[0], ya, L[2], yb), w[role], CAPTION_FORM_PT, "left")
+            if name:
+                _cell_text(backend, (L[2], ya, L[3], yb), name, FORM_PT, "left")
+        for key, (xa, xb) in (
+            ("letter", (R, R + 15)),
+            ("sheet", (R + 15, R + 30)),
+            ("sheets", (R + 30, right)),
+        ):
+            _cell_text(backend, (xa, y0 + 20, xb, y0 + 25), w[key], CAPTION_FORM_PT)
+        _cell_text(backend, (R + 15, y0 + 15, R + 30, y0 + 20), str(number), FORM_PT)
+        if stamp.pages:
+            _cell_text(backend, (R + 30, y0 + 15, right, y0 + 20), str(stamp.pages), FORM_PT)
+        if stamp.designation:
+            _cell_text(backend, (L[5], y0 + 25, right, y0 + 40), stamp.designation, 16.0)
+        if stamp.title:
+            _block_text(backend, (L[5], y0, R, y0 + 25), stamp.title, 12.0)
+        if stamp.organisation:
+            _block_text(backend, (R, y0, right, y0 + 15), stamp.organisation, 12.0)
 
 
 def draw_form2a(
@@ -219,13 +667,12 @@ def draw_form2a(
     """GOST 2.104 form 2a: 185 × 15 mm at the frame's bottom right; columns
     7, 10, 23, 15, 10 | 110 | 10 mm; three 5 mm rows on the left, the lowest
     holding the captions; the page number in the right cell."""
-    tb = load_title_block_look()
+    w = catalogue(lang).words("title_block")
     f = page.frame
-    x0, y0 = f.right - 185.0, f.bottom
+    x0, y0 = f.right - FORM_WIDTH, f.bottom
     xs = [x0 + d for d in (0.0, 7.0, 17.0, 40.0, 55.0, 65.0, 175.0, 185.0)]
     with backend.group("form-2a", "title-block"):
-        for y in (y0 + 5.0, y0 + 10.0):
-            backend.line((xs[0], y), (xs[5], y), "thin")
+        backend.line((xs[0], y0 + 10.0), (xs[5], y0 + 10.0), "thin")
         backend.line((xs[0], y0 + 5.0), (xs[5], y0 + 5.0), "main")
         backend.line((xs[0], y0 + 15.0), (xs[7], y0 + 15.0), "main")
         for x in xs[:7]:
@@ -233,39 +680,11 @@ def draw_form2a(
         backend.line((xs[6], y0 + 8.0), (xs[7], y0 + 8.0), "main")
         keys = ("change", "change_sheet", "document", "signature", "date")
         for i, key in enumerate(keys):
-            backend.text(
-                ((xs[i] + xs[i + 1]) / 2, y0 + 2.5),
-                tb.caption_text(lang, key),
-                SMALL,
-                anchor="center",
-                valign="middle",
-                max_width=xs[i + 1] - xs[i] - 1.0,
-            )
-        backend.text(
-            ((xs[6] + xs[7]) / 2, y0 + 11.5),
-            tb.caption_text(lang, "sheet"),
-            SMALL,
-            anchor="center",
-            valign="middle",
-            max_width=9.0,
-        )
-        backend.text(
-            ((xs[6] + xs[7]) / 2, y0 + 4.0),
-            str(number),
-            BODY,
-            anchor="center",
-            valign="middle",
-            max_width=9.0,
-        )
+            _cell_text(backend, (xs[i], y0, xs[i + 1], y0 + 5.0), w[key], CAPTION_FORM_PT)
+        _cell_text(backend, (xs[6], y0 + 8.0, xs[7], y0 + 15.0), w["sheet"], CAPTION_FORM_PT)
+        _cell_text(backend, (xs[6], y0, xs[7], y0 + 8.0), str(number), 12.0)
         if designation:
-            backend.text(
-                ((xs[5] + xs[6]) / 2, y0 + 7.5),
-                designation,
-                HEADING,
-                anchor="center",
-                valign="middle",
-                max_width=105.0,
-            )
+            _cell_text(backend, (xs[5], y0, xs[6], y0 + 15.0), designation, 16.0)
 
 
 def draw_note_page(
@@ -275,43 +694,58 @@ def draw_note_page(
     content: NoteContent,
     mech: Any = None,
     page: Page | None = None,
+    *,
+    stamp: Stamp | None = None,
+    figures: Mapping[str, FigureDrawer] | None = None,
 ) -> None:
-    """One page: its lines, the frame and the main inscription or form 2a."""
+    """One page: its lines, the frame and form 2 or 2a (none on the title
+    page and the task sheet, which show their number at the top right but
+    for the first)."""
     page = page or note_page()
+    stamp = stamp or Stamp(title=content.title, pages=pages)
     with backend.group(f"page-{note_page_.number}", "note-page"):
         for line in note_page_.lines:
             if line.kind == "table":
                 _draw_row(backend, line)
+            elif line.kind == "figure":
+                drawer = (figures or {}).get(line.figure)
+                if drawer is not None:
+                    rect = Rect(line.x, line.y, sum(line.widths), line.height)
+                    with backend.group(f"figure-{line.figure}", "figure"):
+                        drawer(backend, rect, content.lang)
             else:
-                backend.rich_text((line.x, line.y), line.text, line.size)
+                draw_markup(backend, (line.x, line.y), line.text, line.size, line.align)
+                if line.kind == "toc":
+                    let = backend.look.lettering
+                    end = line.x + line.widths[0]
+                    number = line.cells[0] if line.cells else ""
+                    num_w = let.advance_width(number, line.size)
+                    text_end = line.x + markup_width(let, line.text, line.size)
+                    dots_w = end - num_w - 1.5 - text_end - 1.5
+                    dot = let.advance_width(" .", line.size)
+                    if dots_w > dot:
+                        backend.text(
+                            (end - num_w - 1.5, line.y),
+                            " ." * int(dots_w / dot),
+                            line.size,
+                            anchor="right",
+                        )
+                    if number:
+                        backend.text((end, line.y), number, line.size, anchor="right")
+    if note_page_.form == "none":
+        if note_page_.number > 1:
+            box = text_box(page, "none")
+            size = cap(BODY_PT, backend.look.lettering)
+            with backend.group("page-number", "page-number"):
+                backend.text(
+                    (box.right, page.height - 15.0), str(note_page_.number), size, anchor="right"
+                )
+        return
     draw_frame(backend, page)
-    fields = _fields(mech, content.title, pages, content.lang)
-    if note_page_.number == 1:
-        draw_title_block(backend, page, fields, content.lang)
+    if note_page_.form == "2":
+        draw_form2(backend, page, note_page_.number, stamp, content.lang)
     else:
-        draw_form2a(
-            backend, page, note_page_.number, fields.get("drawing_number", ""), content.lang
-        )
-
-
-def _draw_row(backend: Backend, line: Line) -> None:
-    x = line.x
-    bottom, top = line.y, line.y + ROW
-    kind: LineType = "main" if line.header else "thin"
-    backend.line((x, top), (x + sum(line.widths), top), "main" if line.header else "thin")
-    backend.line((x, bottom), (x + sum(line.widths), bottom), kind)
-    backend.line((x, bottom), (x, top), "main")
-    for w, cell in zip(line.widths, line.cells):
-        backend.line((x + w, bottom), (x + w, top), "main")
-        if cell:
-            backend.rich_text(
-                (x + w / 2, bottom + ROW / 2), cell, line.size, anchor="center", valign="middle"
-            )
-        x += w
-
-
-def page_fields(mech: Any, content: NoteContent, pages: int) -> Mapping[str, str]:
-    return _fields(mech, content.title, pages, content.lang)
+        draw_form2a(backend, page, note_page_.number, stamp.designation, content.lang)
 
 
 def all_lines(pages: Sequence[NotePage]) -> list[Line]:

@@ -1,0 +1,49 @@
+"""`mmt-plans note`: the A4 calculation and explanatory note of a mechanism
+file as one PDF (title page, task sheet, abstract, contents, the calculation,
+references)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from .errors import reports_errors
+from .fields import field_option, with_fields
+
+
+@click.command()
+@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.option(
+    "-o",
+    "--out",
+    "target",
+    default="note.pdf",
+    show_default=True,
+    type=click.Path(dir_okay=False, path_type=Path),
+    help="The PDF to write.",
+)
+@click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
+@click.option(
+    "--partial-turn",
+    is_flag=True,
+    help="A crank that cannot make a whole turn: analyse the range where it assembles.",
+)
+@field_option
+@reports_errors
+def note(file: Path, target: Path, lang: str, partial_turn: bool, fields: dict[str, str]) -> None:
+    """Write the calculation and explanatory note of FILE as a PDF.
+
+    The title page and the task sheet take the names from the file's [sheet]
+    table and from --field (author, group, supervisor, university,
+    department, discipline, variant, city, year, drawing_number ...); blanks
+    to fill in by hand where neither gives them."""
+    from ..files import check_output
+    from ..note import write_note
+    from ..solution import solve
+    from ..spec import load
+
+    check_output(target)
+    solution = solve(with_fields(load(file), fields), partial_turn=partial_turn)
+    path = write_note(solution, target, lang=lang)  # type: ignore[arg-type]
+    click.echo(f"written {path}")
