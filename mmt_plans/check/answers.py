@@ -27,7 +27,7 @@ VALUE_MAX = 1e15
 VALUES_MAX = 2000
 
 LIMITS: dict[str, str] = {  # the answers file's rows of README's "Input limits"
-    "answers: mu_V, mu_a, mu_F, mu_S, mu_l": f"{MU_MIN:g} to {MU_MAX:g}",
+    "answers: mu_V, mu_a": f"{MU_MIN:g} to {MU_MAX:g}",  # and mu_F, mu_S, mu_l
     "answers: tolerance_percent, --tolerance": f"above 0, at most {TOLERANCE_MAX:g}",
     "answers: any value": f"finite, at most {VALUE_MAX:g} in size",
     "answers: values in one file": f"at most {VALUES_MAX:,}",

@@ -32,6 +32,10 @@ if TYPE_CHECKING:  # pragma: no cover
 # that another implies (the crank's radial inertia force moves no F_bal).
 SAME = 1e-9
 
+# A value read off a drawing to 3 significant figures is good to about 0.5 %:
+# two candidates nearer each other than that cannot be told apart.
+READING = 0.005
+
 KINEMATIC = {
     "velocity",
     "acceleration",
@@ -165,10 +169,6 @@ def force_candidates(a: Answer, exact: Exact, x: float) -> Iterator[Candidate]:
     fa = exact.forces(w)
     if a.kind == "reaction":
         r = _reaction_of(fa, a.name)
-        comps = {c.label[-1]: c for c in r.components}
-        if "n" in comps and "t" in comps:
-            v = np.asarray(comps["n"].vector) - np.asarray(comps["t"].vector)
-            yield Candidate(size(v), Cause("cause_component_reversed", (("what", f"{r.name}τ"),)))
         for other in fa.reactions.values():
             if {other.by, other.on} != {r.by, r.on}:
                 yield Candidate(
@@ -406,12 +406,15 @@ def rank(value: float, exact_value: float, candidates: list[Candidate]) -> list[
 
 
 def clear(ranked: list[Ranked], tol: float) -> Ranked | None:
-    """The best candidate when it is within a quarter of the tolerance and no
-    other is: the one mistake that reproduces the value."""
+    """The best candidate when it is within a quarter of the tolerance and
+    clearly better than the next: that one is not, or it is farther by more
+    than a reading's precision (READING)."""
     if not ranked or ranked[0].miss > tol / 4:
         return None
-    if len(ranked) > 1 and ranked[1].miss <= tol / 4:
-        return None
+    if len(ranked) > 1:
+        second = ranked[1].miss
+        if second <= tol / 4 and second - ranked[0].miss <= READING:
+            return None
     return ranked[0]
 
 
