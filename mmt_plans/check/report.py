@@ -93,7 +93,7 @@ class CheckResult:
             rows.append(
                 [
                     _where(cat, a),
-                    a.label,
+                    label(cat, a),
                     cat.unit(UNITS[a.kind][0]),
                     _num(cat, v.exact),
                     _num(cat, a.value),
@@ -122,7 +122,9 @@ class CheckResult:
         if shared:
             out += ["", w["shared"]]
             for t in shared:
-                labels = ", ".join(v.answer.label for v, tt in zip(self.values, texts) if tt == t)
+                labels = ", ".join(
+                    label(cat, v.answer) for v, tt in zip(self.values, texts) if tt == t
+                )
                 out.append(f"  {marks[t]} {t}: {labels}")
         n, bad = len(self.values), len(self.failures)
         out += [
@@ -156,6 +158,28 @@ class CheckResult:
 
     def json(self, lang: Language = "en") -> str:
         return json.dumps(self.json_data(lang), ensure_ascii=False, indent=2) + "\n"
+
+
+# The words in a label (answers.py writes them in English for the JSON's
+# "what"): the catalogue's [check] key of each.
+_LABEL_WORDS = {
+    "(plans)": "l_plans",
+    "(lever)": "l_lever",
+    "(V plan)": "l_v_plan",
+    "(a plan)": "l_a_plan",
+    "(force plan)": "l_force_plan",
+    "ordinate": "l_ordinate",
+    "(mm)": "l_mm",
+}
+
+
+def label(cat: Any, a: Answer) -> str:
+    """The answer's label in the catalogue's language."""
+    text = a.label
+    for word, key in _LABEL_WORDS.items():
+        if word in text:
+            text = text.replace(word, cat.word("check", key))
+    return text
 
 
 def _where(cat: Any, a: Answer) -> str:
