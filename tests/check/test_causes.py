@@ -471,3 +471,21 @@ def test_every_quantity_of_the_sheets_can_be_entered(example):
 
 def cross(a: complex, b) -> float:
     return float(a.real * b[1] - a.imag * b[0])
+
+
+def test_angle_where_the_mechanism_does_not_assemble(tmp_path):
+    # D's guide 619 mm below O1: CD (500 mm) reaches it only near phi1 = 0 and 180.
+    text = EXAMPLE.read_text(encoding="utf-8")
+    text = text.replace("through = [0, -140]", "through = [0, -619]")
+    text = text.replace("angles = [210.862]", "angles = []\npartial_turn = true")
+    text = text[: text.index("[sketch]")] + text[text.index("[[force]]"):]
+    mech = tmp_path / "partial.toml"
+    mech.write_text(text, encoding="utf-8")
+    answers = tmp_path / "a.toml"
+    answers.write_text("[[position]]\nphi1_deg = 90\nvelocity = { B = 1 }\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["check", str(mech), str(answers)])
+    assert result.exit_code == 2, result.output
+    assert "position[1].phi1_deg: the mechanism does not assemble at phi1 = 90°" in result.output
+    assert "give a crank angle where it does: 139.898°…220.102°" in result.output
+    answers.write_text("[[position]]\nphi1_deg = 180\nvelocity = { B = 1 }\n", encoding="utf-8")
+    assert CliRunner().invoke(main, ["check", str(mech), str(answers)]).exit_code == 1
