@@ -162,20 +162,21 @@ def test_segment_multiplied_by_the_wrong_mu(analysis):
     # V_B = pb·μa instead of pb·μV.
     bad = only_failure(spoil(analysis, "position", "velocity", "B", lambda v: v / MU_V * MU_A),
                        "V_B")
-    assert bad.cause.startswith("wrong scale")
+    assert bad.cause_key == "cause_mu_multiplied"
     assert "mu_a = 0.125 instead of mu_V = 0.02" in bad.cause
 
 
-def test_value_off_by_ten(analysis):
+def test_value_off_by_ten_is_no_named_cause(analysis):
+    # No generic ratio diagnoses: ten times a reaction is no mistake recomputed.
     bad = only_failure(spoil(analysis, "forces", "reactions", "R12", lambda v: v * 10), "R12")
-    assert bad.cause.startswith("wrong scale: 10 times")
+    assert bad.cause is None
 
 
 def test_plan_drawn_at_the_neighbouring_scale(analysis):
     # The plan was drawn at μV = 0.025 (the next standard value) but 0.02 is stated.
     bad = only_failure(spoil(analysis, "position", "velocity_plan_mm", "pb",
                              lambda mm: mm * MU_V / 0.025), "pb (V plan)")
-    assert bad.cause.startswith("wrong scale") and "drawn at 0.025" in bad.cause
+    assert bad.cause_key == "cause_series_drawn" and "drawn at 0.025" in bad.cause
 
 
 def test_segment_divided_by_the_other_mu(analysis):
@@ -204,7 +205,7 @@ def test_velocity_read_off_the_acceleration_plan(tmp_path, analysis):
     answers = exact_answers(analysis)
     answers["position"][0]["velocity"]["B"] = a_b
     out = run(tmp_path, to_toml(answers)).output
-    assert "read off the acceleration plan: |a_B|" in out
+    assert "read off the acceleration plan: " in out
 
 
 def test_value_from_another_position(analysis):
@@ -216,7 +217,7 @@ def test_value_from_another_position(analysis):
 def test_another_points_image(analysis):
     a = size(analysis.plan(2).velocity_images["A"])
     bad = only_failure(spoil(analysis, "position", "velocity", "B", lambda v: a), "V_B")
-    assert bad.cause.startswith("another point's image") and "|V_A|" in bad.cause
+    assert bad.cause.startswith("another point's image") and ": A, " in bad.cause
 
 
 def test_another_pairs_reaction(analysis):
@@ -308,4 +309,4 @@ def test_segment_of_the_other_plan_at_this_plans_scale(analysis):
     a_b = size(analysis.plan(2).acceleration_images["B"])
     bad = only_failure(spoil(analysis, "position", "velocity", "B", lambda v: a_b / MU_A * MU_V),
                        "V_B")
-    assert bad.cause.startswith("the segment pib of the acceleration plan")
+    assert bad.cause.startswith("the segment pib of the other plan")

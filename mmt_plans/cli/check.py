@@ -1,7 +1,8 @@
 """`mmt-plans check`: a student's answers file against the exact values.
 
 Exit code 0 when every value is within the tolerance, 1 when some is not, 2
-for a bad mechanism or answers file (reports_errors)."""
+for a bad mechanism or answers file (reports_errors). `--json REPORT` writes
+the verdict as JSON too; `--lang uk` prints the table in Ukrainian."""
 
 from __future__ import annotations
 
@@ -36,12 +37,26 @@ def _tolerance(ctx: click.Context, param: click.Parameter, value: float | None) 
     help="Pass/fail limit in percent (default: the answers file's "
     "check.tolerance_percent, else 5).",
 )
+@click.option(
+    "--json",
+    "json_path",
+    type=click.Path(dir_okay=False, path_type=Path),
+    default=None,
+    metavar="REPORT",
+    help="Also write the verdict as JSON: passed, and every value with its cause.",
+)
+@click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
 @reports_errors
-def check(file: Path, answers: Path, tolerance: float | None) -> None:
+def check(
+    file: Path, answers: Path, tolerance: float | None, json_path: Path | None, lang: str
+) -> None:
     """Check the values of ANSWERS (a student's hand drawing) against FILE's exact ones."""
     from ..check import check_file
+    from ..files import write_text_atomic
 
     result = check_file(file, answers, tolerance)
-    click.echo(result.text())
+    if json_path is not None:
+        write_text_atomic(json_path, result.json(lang))  # type: ignore[arg-type]
+    click.echo(result.text(lang))  # type: ignore[arg-type]
     if not result.passed:
         sys.exit(1)

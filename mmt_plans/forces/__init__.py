@@ -14,7 +14,7 @@ moment of inertia at every position).
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 
 from ..model import Stroke
@@ -114,13 +114,33 @@ class ForceAnalysis:
         raise KeyError(f"link {link} is not a moving link")
 
 
-def force_analysis_at(state: PositionState, *, mu_l: float | None = None) -> ForceAnalysis:
+def force_analysis_at(
+    state: PositionState,
+    *,
+    mu_l: float | None = None,
+    inertia_forces: Collection[int] | None = None,
+    inertia_moments: Collection[int] | None = None,
+    gravity: bool = True,
+    balancing_in_r0d: bool = True,
+    lever_turn_deg: float | None = None,
+) -> ForceAnalysis:
     """The force analysis at the position of `state`: loads, the groups' force
     plans from the last attached group, the driving link, Zhukovsky's lever.
-    `mu_l` (m/mm) gives the shifted inertia forces' arms in mm of the drawing."""
-    loads = link_loads(state, mu_l)
-    groups, driver = solve_groups(loads)
-    lever = zhukovsky_lever(loads)
+    `mu_l` (m/mm) gives the shifted inertia forces' arms in mm of the drawing.
+
+    The other keywords make one mistake on purpose, so that the student check
+    can recompute it (defaults: the textbook's calculation): the links whose
+    inertia forces / moments are kept (None: all), gravity, F_bal in the
+    driving link's polygon (False: R0d without it), the lever's turn."""
+    loads = link_loads(
+        state,
+        mu_l,
+        inertia_forces=inertia_forces,
+        inertia_moments=inertia_moments,
+        gravity=gravity,
+    )
+    groups, driver = solve_groups(loads, balancing_in_r0d=balancing_in_r0d)
+    lever = zhukovsky_lever(loads, turn_deg=lever_turn_deg)
     return ForceAnalysis(
         state.index,
         state.phi1_deg,

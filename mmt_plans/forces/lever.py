@@ -55,11 +55,12 @@ class ZhukovskyLever:
 
 
 class _Builder:
-    def __init__(self, state: PositionState) -> None:
+    def __init__(self, state: PositionState, turn: complex | None = None) -> None:
         self.state = state
         mech = state.mech
         self.s = 1.0 if mech.drive.sense == "ccw" else -1.0
-        self.turn = -1j * self.s  # 90° against the crank's rotation
+        # 90° against the crank's rotation (another turn: a mistake recomputed)
+        self.turn = -1j * self.s if turn is None else turn
         self.images: dict[str, complex] = {}
 
     def image(self, link: int, name: str, P: complex) -> complex:
@@ -95,10 +96,14 @@ class _Builder:
         ]
 
 
-def zhukovsky_lever(loads: Loads) -> ZhukovskyLever:
+def zhukovsky_lever(loads: Loads, *, turn_deg: float | None = None) -> ZhukovskyLever:
+    """The lever; `turn_deg` another turn of the plan than 90° against the
+    crank's rotation (0: not turned, the wrong way: a mistake recomputed), with
+    F_bal still at a, perpendicular to pa."""
     state = loads.state
     mech = state.mech
-    b = _Builder(state)
+    turn = None if turn_deg is None else complex(np.exp(1j * np.radians(turn_deg)))
+    b = _Builder(state, turn)
     for lid in mech.links:  # every point's image, for the drawing
         for name in mech.links[lid].points:
             b.image(lid, name, state.point(lid, name))
@@ -136,6 +141,8 @@ def zhukovsky_lever(loads: Loads) -> ZhukovskyLever:
     A = state.point(d, mech.crank_pin)
     t = b.s * 1j * (A - O) / abs(A - O)  # the sense of rotation at A
     pa_img = b.image(d, mech.crank_pin, A)
+    if turn is not None:  # F_bal perpendicular to pa on the plan turned by turn_deg
+        t = b.s * 1j * pa_img / abs(pa_img)
     lever_arm = cross(pa_img, t)  # = s·|pa|
 
     def balance(forces: list[LeverForce]) -> float:
@@ -144,7 +151,7 @@ def zhukovsky_lever(loads: Loads) -> ZhukovskyLever:
     F_bal = balance(shifted)
     bal = b.force("F_bal", d, mech.crank_pin, A, F_bal * t)
     return ZhukovskyLever(
-        -90.0 * b.s,
+        -90.0 * b.s if turn_deg is None else turn_deg,
         {k: xy(v) for k, v in b.images.items()},
         tuple(shifted),
         bal,

@@ -13,7 +13,7 @@ Moments are signed counter-clockwise positive, as ε is.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -139,7 +139,18 @@ class Loads:
         return self.links[link].inertia_moment
 
 
-def link_loads(state: PositionState, mu_l: float | None = None) -> Loads:
+def link_loads(
+    state: PositionState,
+    mu_l: float | None = None,
+    *,
+    inertia_forces: Collection[int] | None = None,
+    inertia_moments: Collection[int] | None = None,
+    gravity: bool = True,
+) -> Loads:
+    """Every link's loads. The keywords make a mistake on purpose, for the
+    student check to recompute it: `inertia_forces` / `inertia_moments` the
+    links whose F_IN / M_IN are kept (None: all), `gravity` False leaves out
+    every G. The defaults are the textbook's calculation."""
     if mu_l is not None and not (math.isfinite(mu_l) and mu_l > 0):
         raise ForceError(
             f"the length scale mu_l = {mu_l!r} m/mm is not a positive number",
@@ -156,6 +167,10 @@ def link_loads(state: PositionState, mu_l: float | None = None) -> Loads:
         a_S = pose.acc(S)
         F_in = -link.mass * a_S
         M_in = -link.J * pose.eps
+        if inertia_forces is not None and lid not in inertia_forces:
+            F_in = 0j
+        if inertia_moments is not None and lid not in inertia_moments:
+            M_in = 0.0
         links[lid] = LinkLoads(
             link=lid,
             mass=link.mass,
@@ -163,7 +178,7 @@ def link_loads(state: PositionState, mu_l: float | None = None) -> Loads:
             centre_of_mass=xy(S),
             acceleration_cm=xy(a_S),
             eps=pose.eps,
-            weight=xy(complex(0.0, -link.mass * g)),
+            weight=xy(complex(0.0, -link.mass * g if gravity else 0.0)),
             inertia_force=xy(F_in),
             inertia_moment=M_in + 0.0,
             shifted_inertia_force=shifted_inertia_force(

@@ -71,8 +71,12 @@ __all__ = [
 GROUPS: dict[str, type[GroupSolver]] = {"RRR": RRR, "RRP": RRP, "RPR": RPR, "PRP": PRP, "RPP": RPP}
 
 
-def solve_groups(loads: Loads) -> tuple[tuple[GroupForces, ...], DrivingLinkForces]:
-    """Every group, last attached first, then the driving link."""
+def solve_groups(
+    loads: Loads, *, balancing_in_r0d: bool = True
+) -> tuple[tuple[GroupForces, ...], DrivingLinkForces]:
+    """Every group, last attached first, then the driving link.
+    `balancing_in_r0d` False closes the driving link's polygon without F_bal
+    (a mistake recomputed for the student check)."""
     state = loads.state
     mech = state.mech
     passed: dict[int, list[AppliedForce]] = {}
@@ -93,7 +97,7 @@ def solve_groups(loads: Loads) -> tuple[tuple[GroupForces, ...], DrivingLinkForc
         for r in result.reactions[:2]:  # the outer reactions act on the links before
             if r.by != FRAME:
                 passed.setdefault(r.by, []).append(r.reversed().applied())
-    driver = _driving_link(state, loads, tuple(passed.get(mech.drive.link, ())))
+    driver = _driving_link(state, loads, tuple(passed.get(mech.drive.link, ())), balancing_in_r0d)
     return tuple(results), driver
 
 
@@ -101,7 +105,10 @@ def solve_groups(loads: Loads) -> tuple[tuple[GroupForces, ...], DrivingLinkForc
 
 
 def _driving_link(
-    state: PositionState, loads: Loads, passed: tuple[AppliedForce, ...]
+    state: PositionState,
+    loads: Loads,
+    passed: tuple[AppliedForce, ...],
+    balancing_in_r0d: bool = True,
 ) -> DrivingLinkForces:
     """ΣM_O = 0: M_O(G1, F_IN1, M_IN1, R21, …) + F_bal·OA·s = 0, F_bal along
     s·i·(A − O)/OA (s = +1 for a counter-clockwise crank): positive drives."""
@@ -120,7 +127,7 @@ def _driving_link(
         f"of rotation) -> F_bal = {fmt(F_bal)} N, M_bal = F_bal * {o}{a} = {fmt(F_bal * OA)} N*m"
     ]
     F = sum((_c(f.force) for f in body), 0j)
-    R01 = -(F + F_bal * t)
+    R01 = -(F + F_bal * t) if balancing_in_r0d else -F
     pair = next(p for p in mech.revolutes if p.point == o and set(p.links) == {FRAME, d})
     reaction = Reaction(FRAME, d, pair.name, "R", xy(R01), xy(O))
     name = reaction.name
