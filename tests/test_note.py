@@ -20,8 +20,23 @@ PRESS = ROOT / "samples" / "six_link_press.toml"
 SMALL = ROOT / "samples" / "offset_slider_crank.toml"
 SAMPLES = sorted((ROOT / "samples").glob("*.toml"))
 
-SEED003_ORDER = ["sheet1", "1.1", "1.2", "1.3", "1.4", "1.5", "1.6", "1.7", "1.8",
-                 "sheet2", "2.1", "2.2", "2.3", "2.4", "2.5"]
+SEED003_ORDER = [
+    "sheet1",
+    "1.1",
+    "1.2",
+    "1.3",
+    "1.4",
+    "1.5",
+    "1.6",
+    "1.7",
+    "1.8",
+    "sheet2",
+    "2.1",
+    "2.2",
+    "2.3",
+    "2.4",
+    "2.5",
+]
 
 
 @pytest.fixture(scope="module")

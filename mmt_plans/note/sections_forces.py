@@ -205,7 +205,7 @@ def _moment_terms(
     and the terms (markup, with numbers) for the equation."""
     u = wr.u
     mu_l = float(wr.solution.mu_l)
-    total, parts = 0.0, []
+    total, parts = 0.0, list[str]()
     for label, force, point, couple, s in terms:
         r = np.asarray(point) - P
         F = float(np.hypot(*force))
@@ -350,6 +350,7 @@ def driving_link(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     _step(wr, step, w["driver"])
     dl = fa.driving_link
     O = dl.pivot
+    OA_ = f"{O}{dl.pin}"
     fp = fa.index if fa.index is not None else a.force_position
     P = np.asarray(next(f.point for f in dl.free_body if f.label == dl.reaction.name))
     P_src = src.point(a, fp, O, "points")
@@ -363,17 +364,17 @@ def driving_link(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     lhs = " + ".join(parts) if parts else "0"
     sign = "+" if s > 0 else "-"
     wr.text(w["F_bal_pl"])
-    wr.eq(f"ΣM_{sub(O)}({dl.link}) = {lhs} {sign} F_{{bal.pl}}·l_{{OA}} = 0;")
+    wr.eq(f"ΣM_{sub(O)}({dl.link}) = {lhs} {sign} F_{{bal.pl}}·l_{{{OA_}}} = 0;")
     minus = "-" if s > 0 else ""
     FB = "J['forces']['balancing_force_plans']"
     MB = "J['forces']['balancing_moment']"
     wr.eq(
-        f"F_{{bal.pl}} = {minus}ΣM_{sub(O)}/l_{{OA}} = {minus}{wr.vp(total, sum_src)}/"
+        f"F_{{bal.pl}} = {minus}ΣM_{sub(O)}/l_{{{OA_}}} = {minus}{wr.vp(total, sum_src)}/"
         f"{wr.v(OA, 'M.crank_length')} = {wr.v(dl.balancing_force, FB)} {u['N']} "
         f"({w['drives'] if dl.balancing_force >= 0 else w['brakes']});"
     )
     wr.eq(
-        f"M_{{bal}} = F_{{bal.pl}}·l_{{OA}} = {wr.vp(dl.balancing_force, FB)}·"
+        f"M_{{bal}} = F_{{bal.pl}}·l_{{{OA_}}} = {wr.vp(dl.balancing_force, FB)}·"
         f"{wr.v(OA, 'M.crank_length')} = "
         f"{wr.v(dl.balancing_moment, MB)} {u['Nm']}"
     )

@@ -34,7 +34,7 @@ def gear_train(wr: Writer) -> None:
     w, u = wr.w, wr.u
     wr.add("section", w["gears_title"], "gears")
     labels = train.gear_labels
-    teeth = []
+    teeth: list[str] = []
     for si, (stage, gears) in enumerate(zip(train.stages, labels)):
         meshes = stage.meshes if isinstance(stage, PlanetaryStage) else (stage,)
         base = f"{GT}.stages[{si}]" + (".meshes" if isinstance(stage, PlanetaryStage) else "")
@@ -104,12 +104,12 @@ def gear_train(wr: Writer) -> None:
     N1 = "J['drive']['n1_rpm']"
     wr.text(w["gears_speed"])
     wr.eq(
-        f"ω_m = π·n_m/30 = π·{wr.v(train.motor_rpm, f'{GT}.motor_rpm')}/30 = {wr.v(wm, WM)} "
+        f"ω_{{m}} = π·n_{{m}}/30 = π·{wr.v(train.motor_rpm, f'{GT}.motor_rpm')}/30 = {wr.v(wm, WM)} "
         f"{u['rad/s']};"
     )
     wr.eq(
-        f"ω_1 = ω_m/|{total}| = {wr.v(wm, WM)}/{wr.v(abs(train.ratio), f'abs({U})')} = "
-        f"{wr.v(train.omega, W1)} {u['rad/s']}; n_1 = n_m/|{total}| = "
+        f"ω_1 = ω_{{m}}/|{total}| = {wr.v(wm, WM)}/{wr.v(abs(train.ratio), f'abs({U})')} = "
+        f"{wr.v(train.omega, W1)} {u['rad/s']}; n_1 = n_{{m}}/|{total}| = "
         f"{wr.v(train.motor_rpm, f'{GT}.motor_rpm')}/{wr.v(abs(train.ratio), f'abs({U})')} = "
         f"{wr.v(abs(train.crank_rpm), N1)} {u['rpm']}"
     )

@@ -190,7 +190,7 @@ def distance(wr: Writer, i: int, P: str, Q: str) -> tuple[float, str]:
 
 def _legs(g: GroupPlanView, X: str) -> list[tuple[str, str, str | None]]:
     """(base point, relative name, guide link or None) of each leg of a group."""
-    out = []
+    out: list[tuple[str, str, str | None]] = []
     for c in g.velocity:
         body = c.label.split("_", 1)[1]
         if "/" in body:

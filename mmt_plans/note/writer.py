@@ -92,6 +92,8 @@ class Writer:
         self.cat = cat
         self.w = cat.words("note")
         self.u = cat.words("units")
+        # the language's indices of the textbook's symbols: F_{bal.pl} is F_{зр.пл} in Ukrainian
+        self.symbols = tuple(dict(self.w["symbols"]).items())
         self.mech = self.solution.mechanism
 
     # --- numbers ------------------------------------------------------------------------
@@ -129,6 +131,11 @@ class Writer:
         out.append(text[pos:])
         return "".join(out)
 
+    def symbol(self, markup: str) -> str:
+        for en, local in self.symbols:
+            markup = markup.replace(en, local)
+        return markup
+
     # --- blocks -------------------------------------------------------------------------
     def add(
         self,
@@ -139,9 +146,9 @@ class Writer:
         widths: Any = (),
     ) -> None:
         b = len(self.blocks)
-        text = self._resolve(text, b, -1, -1)
+        text = self._resolve(self.symbol(text), b, -1, -1)
         cells = tuple(
-            tuple(self._resolve(str(c), b, r, k) for k, c in enumerate(row))
+            tuple(self._resolve(self.symbol(str(c)), b, r, k) for k, c in enumerate(row))
             for r, row in enumerate(rows)
         )
         self.blocks.append(RawBlock(kind, text, step, cells, tuple(widths)))
