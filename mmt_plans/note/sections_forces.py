@@ -274,11 +274,49 @@ def group(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, step: str) -> N
             f"{wr.v(l_AB, l_src)} = {wr.v(comp.value, RT)} {u['N']}"
             + (" " + w["reverse"] if comp.value < 0 else "")
         )
+    if g.kind == "RPR":
+        _slot_reaction(wr, fa, j, g, own)
     for p_ix, poly in enumerate(g.polygons):
         _polygon(wr, poly, f"F.groups[{j}].polygons[{p_ix}]", p_ix == 0)
     wr.text(w["found_R"])
     for r in g.reactions:
         _reaction_line(wr, r, _mu_f(g.polygons), f"mu_F(F.groups[{j}].polygons)")
+
+
+def _slot_reaction(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: set[str]) -> None:
+    """RPR: the reaction normal to the slot from ΣM of link L2 about its pivot
+    (the shaper's ΣM_C(3) = 0): the outer reaction there has no arm."""
+    a, w, u = wr.solution, wr.w, wr.u
+    r, outer = g.reactions[2], g.reactions[1]
+    if r.couple or not r.components or r.magnitude == 0:
+        return
+    comp = r.components[0]
+    lid, C = outer.on, outer.pair
+    fp = fa.index if fa.index is not None else a.force_position
+    P = np.asarray(outer.point)
+    P_src = src.point(a, fp, C, "points")
+    name = force_markup(r.name)
+    wr.text(w["slot_eq"].format(R=name, C=C, lid=lid, n=force_markup(outer.name)))
+    terms = _terms(wr, fa, g.free_bodies[lid], own, f"F.groups[{j}].free_bodies[{lid}]")
+    total, parts = _moment_terms(wr, fa, terms, P, P_src, C)
+    D = f"J['forces']['reaction_details'][{r.name!r}]"
+    N_src = f"{D}['components'][{comp.label!r}]"
+    rp = np.asarray(r.point) - P
+    h = float(rp[0] * comp.direction[1] - rp[1] * comp.direction[0])
+    H = f"moment(({D}['point'], J['forces']['reactions'][{r.name!r}], 0), {P_src})/{N_src}"
+    mu_l = float(a.mu_l)
+    hn = f"h_{{{len(parts) + 1}}}"
+    wr.eq(
+        f"{hn} = {wr.v(h / mu_l, f'{H}/S.mu_l')} {u['mm']}·μ_l = {wr.v(h, H)} {u['m']} "
+        + w["slot_arm"].format(R=name)
+    )
+    sum_src = "+".join(f"moment({t[4]}, {P_src})" for t in terms) or "0"
+    lhs = " + ".join(parts + [f"{name}·{hn}"])
+    wr.eq(f"ΣM_{sub(C)}({lid}) = {lhs} = 0;")
+    wr.eq(
+        f"{name} = -ΣM_{sub(C)}/{hn} = -{wr.vp(total, sum_src)}/{wr.vp(h, H)} = "
+        f"{wr.v(comp.value, N_src)} {u['N']}" + (" " + w["reverse"] if comp.value < 0 else "")
+    )
 
 
 def _mu_f(polygons: tuple[ForcePolygon, ...]) -> float:
