@@ -329,7 +329,7 @@ def _polygon(
 ) -> None:
     """The vector equation (the polygon's order) and every side as F/μ_F = mm."""
     w, u = wr.w, wr.u
-    wr.text(head or w["vector_eq" if first else "link_eq"].format(title=_title(wr, poly)))
+    wr.text(head or w["link_eq"].format(title=_title(wr, poly)))
     wr.eq(equation_markup(poly.equation))
     unknown = [force_markup(v.label) for v in poly.vectors if not v.known]
     if unknown:
