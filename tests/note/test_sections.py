@@ -270,3 +270,31 @@ def test_ukrainian_note_has_no_english_unit_or_decimal_point(case):
         assert word not in text, word
     for p in note(path, "uk").numbers:
         assert "." not in p.text
+
+
+@pytest.mark.parametrize("case", CASES, ids=_id)
+def test_one_sign_convention_and_a_verdict_that_agrees(case):
+    path, lang = case
+    a, content = solved(path), note(path, lang)
+    text = content.text()
+    w = mmt_plans.i18n.catalogue(lang).words("note")
+    if a.forces is not None:
+        assert text.count(w["sign_convention"]) == 1
+    if a.diagrams is not None:
+        sc = a.diagrams.sheet_check
+        lim = mmt_plans.i18n.catalogue(lang).number(sc.limit_percent)
+        assert (w["passed"].format(lim=lim) in text) == sc.passed
+        assert (w["failed"].split("{")[0] in text) == (not sc.passed)
+
+
+def test_moment_equations_name_every_arm():
+    """Seed 003 §2.7: ΣM_B = 0 of link 3 with the arms of G3, F_in3 and R43."""
+    a = solved(ROOT / "samples/six_link_press.toml")
+    text = note(ROOT / "samples/six_link_press.toml", "en").text()
+    assert "ΣM_B(3) = G_3·h_1 + F_in3·h_2 + R_43·h_3 - R^τ_03·l_CB = 0;" in text
+    assert "ΣM_E(4) = G_4·h_1 + F_in4·h_2 - R^τ_34·l_DE = 0;" in text
+    # every arm in mm of the drawing and in m
+    assert len(re.findall(r"h_\d = -?[\d.]+ mm·μ_l = .* m; M_", text)) >= 7
+    # the driving link's polygon in the textbook's order
+    assert "G_1 + F_in1 + R_21 + F_bal.pl + R_01 = 0" in text
+    assert a.forces is not None
