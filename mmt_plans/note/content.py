@@ -1,10 +1,14 @@
 """The calculation note as blocks of text, in the order of seed 003 §IV.
 
 Every step is written as seed 002 writes it: formula = numbers substituted =
-result unit, with the numbers taken from the solver (`Analysis`,
-`PlanView`, `ForceAnalysis`), never re-derived here by another method. A
-segment of a plan (pb, πb, |R|) is the solver's magnitude divided by the
-plan's scale, so "segment·μ" gives back the solver's value.
+result unit, with the numbers taken from the Solution, never re-derived by
+another method; a segment of a plan or a force polygon is the solver's
+magnitude divided by the plan's scale, so "segment·μ" gives back the value.
+
+The sections are written by writer.Writer (every printed number recorded with
+its source, `NoteContent.numbers`): sections_kinematics (1.1–1.8),
+sections_forces (2.1–2.11, one sign convention), sections_gears (the gear
+train by Willis, the reduction to the crank, the conclusions).
 
 Lines are `Backend.rich_text` markup: `_x` / `_{xy}` a subscript, `^x` a
 superscript; `plain()` drops the braces for tests and text output.
