@@ -298,3 +298,25 @@ def test_moment_equations_name_every_arm():
     # the driving link's polygon in the textbook's order
     assert "G_1 + F_in1 + R_21 + F_bal.pl + R_01 = 0" in text
     assert a.forces is not None
+
+
+def test_analyze_prints_the_gear_train_and_the_reduction():
+    """`mmt-plans analyze` (report.py): Willis' steps and M_red, J_red at every position."""
+    from mmt_plans.report import text_report
+
+    a = solved(SEED002_GEARS)
+    text = text_report(a)
+    train = a.mechanism.drive.gear_train
+    assert "Willis" in text and "u35^H" in text and "u3H^5 = 1 − u35^H" in text
+    assert f"u_m1 = u12·u3H^5 = (−4.000)·{float(train.stages[1].exact_ratio):.3f}" in text
+    assert "Reduction to the crank" in text
+    k = a.entry(a.force_position)
+    J = results(a)
+    kin = J["kinematics"][k]
+    w1 = a.mechanism.drive.omega
+    energy = sum(
+        lk.mass * _hyp(kin["v_cm"][str(lid)]) ** 2 + lk.J * kin["omega"][str(lid)] ** 2
+        for lid, lk in a.mechanism.links.items()
+    )
+    assert f"{energy / w1**2:.6g}" in text
+    assert "Gear train" not in text_report(solved(ROOT / "samples/six_link_press.toml"))
