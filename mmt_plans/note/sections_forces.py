@@ -392,7 +392,12 @@ def driving_link(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     fp = fa.index if fa.index is not None else a.force_position
     P = np.asarray(next(f.point for f in dl.free_body if f.label == dl.reaction.name))
     P_src = src.point(a, fp, O, "points")
-    wr.text(w["driver_loads"].format(d=dl.link, A=dl.pin, O=O))
+    passed = [
+        force_markup(f.label)
+        for f in dl.free_body
+        if f.label.startswith("R") and f.label != dl.reaction.name
+    ]
+    wr.text(w["driver_loads"].format(d=dl.link, A=dl.pin, O=O, R=", ".join(passed)))
     skip = {"F_bal", dl.reaction.name}
     terms = _terms(wr, fa, dl.free_body, skip, "F.driving_link.free_body")
     total, parts = _moment_terms(wr, fa, terms, P, P_src, O)
