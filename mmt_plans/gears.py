@@ -145,6 +145,11 @@ class GearTrain:
         return float(self.exact_ratio)
 
     @property
+    def gear_labels(self) -> list[list[str]]:
+        """The gears of each stage as seed 002 numbers them: [["1", "2"], ["3", "4", "4'", "5"]]."""
+        return _gear_labels(self.stages)
+
+    @property
     def crank_rpm(self) -> float:
         """n1 = n_m/u_m1, signed: negative when the crank turns against the motor."""
         return self.motor_rpm / self.ratio

@@ -50,6 +50,7 @@ def text_report(analysis: Solution) -> str:
         f"({d.n1_rpm:.6g} rpm, {d.sense})"
         + (f", gear ratio u = {d.gear_train.ratio:.6g}" if d.gear_train else "")
     )
+    out += gears_report(analysis)
     out.append(f"Assembly: {analysis.branches.note}")
     if analysis.limits is not None:
         spans = ", ".join(degrees_range(a, b) for a, b in analysis.assembly_ranges)
@@ -126,7 +127,47 @@ def text_report(analysis: Solution) -> str:
         out.append("")
     out += diagrams_report(analysis)
     out.append(_forces(analysis))
+    out += reduction_report(analysis)
     return "\n".join(out)
+
+
+def gears_report(analysis: Solution) -> list[str]:
+    """The gear train (seed 002 task 1): each stage's ratio, Willis' formula
+    for a planetary stage (u^H first, then u), the total ratio, the crank's speed."""
+    train = analysis.mechanism.drive.gear_train
+    if train is None:
+        return []
+    out = [f"Gear train: motor {train.motor_rpm:.6g} rpm, {len(train.stages)} stage(s)"]
+    out += [f"  {step.title}: {step}" for step in train.steps("en")]
+    out.append(f"  crank: n1 = {abs(train.crank_rpm):.6g} rpm")
+    return out
+
+
+def reduction_report(analysis: Solution) -> list[str]:
+    """Reduction to the crank (seed 002 tasks 5 and 6) at every position:
+    M_red·ω1 = Σ F·V·cos(F, V), J_red·ω1² = Σ (m·V_S² + J_S·ω²)."""
+    red = analysis.reduction
+    rows = []
+    for k, pos in enumerate(analysis.positions):
+        if analysis.problem(k) is not None:
+            continue
+        label = str(pos.index) if pos.index is not None else "*"
+        rows.append(
+            [
+                label,
+                f"{pos.phi1_deg:.6f}",
+                pos.stroke,
+                _n(red.reduced_moment[k]),
+                _n(red.reduced_inertia[k]),
+            ]
+        )
+    out = [
+        "",
+        "Reduction to the crank (equal powers: M_red*omega1 = sum F*V*cos; "
+        "equal kinetic energies: J_red*omega1^2 = sum m*V_S^2 + J_S*omega^2)",
+        _indent(table(["pos", "phi1 deg", "stroke", "M_red N*m", "J_red kg*m2"], rows)),
+    ]
+    return out
 
 
 def diagrams_report(analysis: Solution) -> list[str]:

@@ -1,0 +1,173 @@
+"""The note's writer: blocks of text whose every number says where it came from.
+
+A section module writes a line as markup with its numbers put in through
+`Writer.v` (a value, the source it was read from, significant digits). The
+number is formatted in the note's language (the catalogue's number format: 3–4
+significant figures, the decimal comma in Ukrainian, no negative zero) and
+recorded as a `Printed`: where it sits in the block and its `source`, a Python
+expression over the solved mechanism that a reader (tests/note) evaluates on
+its own to check the number:
+
+    J      the results JSON of the solution (results_json.results)
+    S, M   the Solution and its Mechanism (inputs: masses, lengths, teeth)
+    plan(i), F   the plan at position i, the force analysis at the force position
+    hyp, dist, cross, moment, scale_for, VELOCITY_PLAN ...   small helpers
+
+so a number in the note is never taken on the writer's word.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from ..i18n import Language, catalogue, check_language
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..solution import Solution
+
+__all__ = ["Printed", "Writer", "sub", "paren_markup"]
+
+_OPEN, _CLOSE = "\ue000", "\ue001"
+_MARK = re.compile(_OPEN + r"(\d+)" + _CLOSE)
+
+
+@dataclass(frozen=True)
+class Printed:
+    """One number printed in the note: in block `block` (in a table: cell
+    `row`, `col`; else -1, -1), at text[start:end]; `sig` significant figures
+    (0: a whole number written exactly); `source` an expression of its value."""
+
+    block: int
+    row: int
+    col: int
+    start: int
+    end: int
+    text: str
+    value: float
+    sig: int
+    source: str
+
+
+@dataclass
+class RawBlock:
+    kind: str
+    text: str = ""
+    step: str = ""
+    rows: tuple[tuple[str, ...], ...] = ()
+    widths: tuple[float, ...] = ()
+
+
+@dataclass
+class _Pending:
+    text: str
+    value: float
+    sig: int
+    source: str
+
+
+def sub(name: str) -> str:
+    """A point or link name as a subscript group: "S2" → "{S2}"."""
+    return "{" + name + "}"
+
+
+def paren_markup(text: str) -> str:
+    return f"({text})" if text.startswith("-") else text
+
+
+@dataclass
+class Writer:
+    """Blocks and their printed numbers, in one language."""
+
+    solution: Solution
+    lang: Language
+    blocks: list[RawBlock] = field(default_factory=list)
+    printed: list[Printed] = field(default_factory=list)
+    _pending: dict[int, _Pending] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        check_language(self.lang)
+        cat = catalogue(self.lang)
+        self.cat = cat
+        self.w = cat.words("note")
+        self.u = cat.words("units")
+        # the language's indices of the textbook's symbols: F_{bal.pl} is F_{зр.пл} in Ukrainian
+        self.symbols = tuple(dict(self.w["symbols"]).items())
+        self.mech = self.solution.mechanism
+
+    # --- numbers ------------------------------------------------------------------------
+    def v(self, x: float, source: str, sig: int = 4) -> str:
+        """A number read from `source`, formatted, as a marker the block resolves."""
+        text = self.cat.number(float(x), sig)
+        key = len(self._pending)
+        self._pending[key] = _Pending(text, float(x), sig, source)
+        return f"{_OPEN}{key}{_CLOSE}"
+
+    def vp(self, x: float, source: str, sig: int = 4) -> str:
+        """A number substituted into a formula: a negative one in parentheses."""
+        mark = self.v(x, source, sig)
+        return f"({mark})" if self.cat.number(float(x), sig).startswith("-") else mark
+
+    def i(self, k: int, source: str) -> str:
+        """A whole number (a count, a position) written exactly."""
+        key = len(self._pending)
+        self._pending[key] = _Pending(str(int(k)), float(k), 0, source)
+        return f"{_OPEN}{key}{_CLOSE}"
+
+    def _resolve(self, text: str, block: int, row: int, col: int) -> str:
+        out, pos = [], 0
+        for m in _MARK.finditer(text):
+            out.append(text[pos : m.start()])
+            p = self._pending[int(m.group(1))]
+            start = sum(len(s) for s in out)
+            self.printed.append(
+                Printed(
+                    block, row, col, start, start + len(p.text), p.text, p.value, p.sig, p.source
+                )
+            )
+            out.append(p.text)
+            pos = m.end()
+        out.append(text[pos:])
+        return "".join(out)
+
+    def symbol(self, markup: str) -> str:
+        for en, local in self.symbols:
+            markup = markup.replace(en, local)
+        return markup
+
+    # --- blocks -------------------------------------------------------------------------
+    def add(
+        self,
+        kind: str,
+        text: str = "",
+        step: str = "",
+        rows: Any = (),
+        widths: Any = (),
+    ) -> None:
+        b = len(self.blocks)
+        text = self._resolve(self.symbol(text), b, -1, -1)
+        cells = tuple(
+            tuple(self._resolve(self.symbol(str(c)), b, r, k) for k, c in enumerate(row))
+            for r, row in enumerate(rows)
+        )
+        self.blocks.append(RawBlock(kind, text, step, cells, tuple(widths)))
+
+    def text(self, t: str) -> None:
+        self.add("text", t)
+
+    def eq(self, t: str) -> None:
+        self.add("equation", t)
+
+    def heading(self, step: str) -> None:
+        """A seed 003 item's heading: "1.3. Velocity plans"."""
+        self.add("subsection", f"{step}. {self.w[step]}", step)
+
+    def sub_heading(self, text: str) -> None:
+        self.add("subsection", text)
+
+    def problem(self, err: Exception | str) -> None:
+        self.add("problem", self.w["problem"].format(msg=str(err)))
+
+    def unit(self, key: str) -> str:
+        return str(self.u[key])
