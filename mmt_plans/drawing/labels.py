@@ -83,7 +83,7 @@ class Labels:
         self._clearance: list[float] = []
         self._tree: STRtree | None = None
         self._grown: BaseGeometry | None = None
-        self._later: list[tuple[Sequence[float], str, PointLike | None]] = []
+        self._later: list[tuple[str, Sequence[float], str, PointLike | None]] = []
 
     def avoid(self, shape: BaseGeometry, clearance: float) -> None:
         """Keep labels `clearance` mm off any shape (a filled polygon is avoided whole)."""
@@ -153,12 +153,22 @@ class Labels:
 
     def later(self, anchor: PointLike, markup: str, towards: PointLike | None = None) -> None:
         """A label to write with `write_later`, once every line is drawn and avoided."""
-        self._later.append((tuple(float(v) for v in anchor), markup, towards))
+        self._later.append(("at", tuple(float(v) for v in anchor), markup, towards))
+
+    def later_along(self, start: PointLike, end: PointLike, markup: str) -> None:
+        """A label to write beside the segment start–end (`place_along`) with `write_later`."""
+        self._later.append(
+            ("along", tuple(float(v) for v in start), markup, tuple(float(v) for v in end))
+        )
 
     def write_later(self) -> None:
-        """Write the labels kept by `later`, in the order they came."""
-        for anchor, markup, towards in self._later:
-            self.place(anchor, markup, towards=towards)
+        """Write the labels kept by `later` and `later_along`, in the order they came."""
+        for kind, anchor, markup, other in self._later:
+            if kind == "along":
+                assert other is not None
+                self.place_along(anchor, other, markup)
+            else:
+                self.place(anchor, markup, towards=other)
         self._later.clear()
 
     def place(
