@@ -166,7 +166,7 @@ class Labels:
         for kind, anchor, markup, other in self._later:
             if kind == "along":
                 assert other is not None
-                self.place_along(anchor, other, markup)
+                self.place_along(anchor, other, markup, around=True)
             else:
                 self.place(anchor, markup, towards=other)
         self._later.clear()
@@ -203,9 +203,11 @@ class Labels:
         *,
         distance: float = 1.0,
         group: str | None = None,
+        around: bool = False,
     ) -> BaseGeometry:
         """Write `markup` `distance` mm beside the segment start–end (a link's
-        number): at its middle if that is free, else further along, either side."""
+        number): at its middle if that is free, else further along, either side;
+        with `around`, else round the middle further out (an arm h among others)."""
         w, h, drop = self._extent(markup)
         a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
         d = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
@@ -219,6 +221,15 @@ class Labels:
         ring = (distance + self.rings)[:, None, None]
         cx = (anchors[:, 0][:, None] + sides.real * (ring + reach)).ravel()
         cy = (anchors[:, 1][:, None] + sides.imag * (ring + reach)).ravel()
+        if not around:
+            return self._write_first_free(cx, cy, w, h, drop, markup, group)
+        # where the segment's sides are taken: round its middle, further out
+        mx, my = (a + b) / 2
+        dirs = np.array(_COMPASS)
+        far = (distance + np.concatenate([self.rings, self.rings[-1] + np.array([6.0, 12.0])]))
+        far = far[:, None]
+        cx = np.concatenate([cx, (mx + dirs.real * (far + w / 2 * np.abs(dirs.real))).ravel()])
+        cy = np.concatenate([cy, (my + dirs.imag * (far + h / 2 * np.abs(dirs.imag))).ravel()])
         return self._write_first_free(cx, cy, w, h, drop, markup, group)
 
     def _extent(self, markup: str) -> tuple[float, float, float]:

@@ -562,12 +562,19 @@ def sketch_lever(
                 for j in range(i + 1, len(names)):
                     sk.line(img[names[i]], img[names[j]], "main")
                     labels.avoid_line(img[names[i]], img[names[j]])
+        # the images named, those at one point in one label: "d, s_{5}, k_{5}"
+        marks: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
+
+        def mark(name: str, at: np.ndarray) -> None:
+            key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
+            marks.setdefault(key, (at, []))[1].append(image_markup(name))
+
+        mark("p", np.zeros(2))
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
-                labels.later(img[n], n.lower(), img[n])
+                mark(n, img[n])
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         labels.avoid_circle((0.0, 0.0), 1.2)
-        labels.later(np.zeros(2), "p", np.array([-1.0, -1.0]))
         forces = [*lever.forces, lever.balancing]
         feet: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
         largest = max(float(np.hypot(*f.force)) for f in forces)
@@ -592,7 +599,7 @@ def sketch_lever(
             if re.fullmatch(r"[SK]\d+", f.point) and f.point not in dotted:
                 dotted.add(f.point)
                 sk.circle(at, 0.6, "thin", "black")
-                labels.later(at, image_markup(f.point), -u)
+                mark(f.point, at)
             h = abs(f.arm) / mu_V
             arms.append((f.label, h))
             if h >= 1.0:
@@ -602,6 +609,9 @@ def sketch_lever(
                 # forces on one line of action share their arm: one label, h_{10,11}
                 key = (round(float(foot[0]) * 2), round(float(foot[1]) * 2))
                 feet.setdefault(key, (foot, []))[1].append(str(len(arms)))
+        for at, names in marks.values():
+            pole = float(np.hypot(*at)) < 0.5
+            labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
         for start, end, names in drawn:
             sk.arrow(start, end, "main", **_ARROW)  # type: ignore[arg-type]
             labels.later(end, ", ".join(force_markup(n) for n in names), unit_vector(end - start))
@@ -784,11 +794,15 @@ def guide_side(polygons: Sequence[ForcePolygon]) -> float:
 
 def _force_scale(polygons: Sequence[ForcePolygon], steps: int = 0) -> float:
     """μF so that the guide's side (guide_side) is 150 … 300 mm, `steps` series
-    values coarser to fit the sheet, but never so coarse that it falls under 150 mm."""
+    values coarser to fit the sheet, but never so coarse that F_PR falls under 150 mm."""
     side = guide_side(polygons)
     if side <= 0:
         return 1.0
     mu = scale_for(side, FORCE_PLAN)
+    if not any(v.label.startswith("F_PR") for p in polygons for v in p.vectors):
+        # the guide is the production resistance's: the other groups' polygons
+        # may go coarser with the rest of the sheet
+        return scale_step(mu, max(0, steps))
     limit = side / FORCE_PLAN.low
     coarsest = max(series(mu, limit), default=mu) if limit >= mu else mu
     return min(scale_step(mu, max(0, steps)), coarsest)
@@ -897,7 +911,7 @@ def compose_sheet2(
     # from its textbook scale, the loaded mechanism up to two steps finer still.
     for shrink in range(-2, 6):
         sketches, scales, arms = _sketch_all(fa, solution, backend.look, lang, shrink, cache)
-        for bigger in (2, 1, 0):
+        for bigger in range(max(2, shrink + 2), -1, -1):
             mu_l = length_scale_step(float(solution.mu_l), shrink - bigger)
             if ("force-mechanism", mu_l) not in cache:
                 cache[("force-mechanism", mu_l)] = (

@@ -8,8 +8,8 @@ import math
 from shapely.geometry import box
 
 
-def label_boxes(backend, group: str | None = None):
-    """(text, box) per label. backend.rich_text writes a label as runs (a
+def label_boxes(backend, group: str | None = None, *, groups: bool = False):
+    """(text, box) per label (with `groups`, (text, box, the groups of its first run)). backend.rich_text writes a label as runs (a
     letter, then its index), each run starting where the previous one's
     advance ends; such runs are one label."""
     calls = backend.named("text") if group is None else [
@@ -27,13 +27,13 @@ def label_boxes(backend, group: str | None = None):
             gap = c["pos"][0] - end
             if -1e-9 <= gap <= let.advance_width(" ", max(prev["size"], c["size"])) + 1e-9 \
                     and abs(c["pos"][1] - prev["pos"][1]) < prev["size"]:
-                text, old = labels[-1]
-                labels[-1] = (text + c["content"], old.union(b).envelope)
+                text, old, g = labels[-1]
+                labels[-1] = (text + c["content"], old.union(b).envelope, g)
                 prev = c
                 continue
-        labels.append((c["content"], b))
+        labels.append((c["content"], b, c.groups))
         prev = c
-    return labels
+    return labels if groups else [(t, b) for t, b, _ in labels]
 
 
 def clashes(backend, group: str | None = None, area: float = 0.2):
@@ -103,7 +103,8 @@ def primitive_shapes(backend):
 
 
 def label_hits(backend, shrink: float = 0.1):
-    """(label, primitive name, a point of the overlap) for every label of a
+    """(label, primitive name, a point of the overlap, the label's innermost
+    group) for every label of a
     drawing (tables, the title block and the frame aside) that a drawn
     primitive crosses; a label's box is its capitals and indices, `shrink` mm in."""
     from shapely import STRtree
@@ -122,14 +123,14 @@ def label_hits(backend, shrink: float = 0.1):
     shapes = primitive_shapes(backend)
     tree = STRtree([s for _, s in shapes])
     hits = []
-    for text, b in label_boxes(_Only):
+    for text, b, g in label_boxes(_Only, groups=True):
         inner = b.buffer(-shrink, join_style=2)
         if inner.is_empty:
             continue
         for k in tree.query(inner, predicate="intersects"):
             name, shape = shapes[int(k)]
             p = inner.intersection(shape).representative_point()
-            hits.append((text, name, (round(p.x, 1), round(p.y, 1))))
+            hits.append((text, name, (round(p.x, 1), round(p.y, 1)), g[-1] if g else ""))
     return hits
 
 
