@@ -226,7 +226,7 @@ class Labels:
         # where the segment's sides are taken: round its middle, further out
         mx, my = (a + b) / 2
         dirs = np.array(_COMPASS)
-        far = (distance + np.concatenate([self.rings, self.rings[-1] + np.array([6.0, 12.0])]))
+        far = distance + np.concatenate([self.rings, self.rings[-1] + np.array([6.0, 12.0])])
         far = far[:, None]
         cx = np.concatenate([cx, (mx + dirs.real * (far + w / 2 * np.abs(dirs.real))).ravel()])
         cy = np.concatenate([cy, (my + dirs.imag * (far + h / 2 * np.abs(dirs.imag))).ravel()])
