@@ -787,9 +787,11 @@ def guide_side(polygons: Sequence[ForcePolygon]) -> float:
     """The force the guide's 150 … 300 mm is for (seed 003 §2.6): |F_PR| where
     the polygons carry the production resistance, else their largest side, N."""
     resistance = [v.magnitude for p in polygons for v in p.vectors if v.label.startswith("F_PR")]
-    if resistance and max(resistance) > 0.0:
+    largest = max((p.largest for p in polygons), default=0.0)
+    # F_PR at 150 mm must leave the largest side within 300 mm
+    if resistance and max(resistance) * FORCE_PLAN.high / FORCE_PLAN.low >= largest > 0.0:
         return max(resistance)
-    return max((p.largest for p in polygons), default=0.0)
+    return largest
 
 
 def _force_scale(polygons: Sequence[ForcePolygon], steps: int = 0) -> float:
