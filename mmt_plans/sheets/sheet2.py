@@ -922,16 +922,14 @@ def compose_sheet2(
                 )
             sketches["force-mechanism"], sketches["table-loads"] = cache[("force-mechanism", mu_l)]
             scales["mu_l"] = mu_l
-            if not math.isclose(mu_l, scales["mu_l_groups"], rel_tol=1e-9):
-                other = _words(lang)["other_scale"].format(
-                    scale=scale_label(mu_l, "length", lang).markup()
-                )
-                for g in fa.groups:
-                    gid = f"group-{g.name}"
-                    sketches[gid] = _with_note(cache[("groups", scales["mu_l_groups"])][gid], other)
-                sketches["driving-link"] = _with_note(
-                    cache[("groups", scales["mu_l_groups"])]["driving-link"], other
-                )
+            plain = cache[("groups", scales["mu_l_groups"])]
+            for gid in [*(f"group-{g.name}" for g in fa.groups), "driving-link"]:
+                sketches[gid] = plain[gid]
+                if not math.isclose(mu_l, scales["mu_l_groups"], rel_tol=1e-9):
+                    other = _words(lang)["other_scale"].format(
+                        scale=scale_label(mu_l, "length", lang).markup()
+                    )
+                    sketches[gid] = _with_note(plain[gid], other)
             # the textbook's order first; then the largest first, which packs tighter
             largest_first = [drawings[0]] + sorted(
                 drawings[1:],
