@@ -2,10 +2,15 @@
 
 A draughtsman writes a label next to what it names, on whichever side is
 free. `Labels` does the same for one drawing: it keeps the boxes of the
-labels already written and the lines already drawn (shapely), tries the
+labels already written and everything already drawn (shapely), tries the
 places round the anchor nearest first, and writes the label at the first one
 that touches neither. When every place is taken it takes the one that covers
 the least, so a label is never dropped.
+
+What is drawn is read from the sketch itself (`follow`): before each label
+the placer takes every call recorded since the last one — lines, hatching,
+arrows with their heads, arcs, circles, polygons, other lettering — so no
+drawing has to list its lines by hand.
 """
 
 from __future__ import annotations
@@ -23,7 +28,7 @@ from shapely.geometry.base import BaseGeometry
 from ..render.backend import PointLike
 from ..render.recording import Call, RecordingBackend
 
-__all__ = ["Labels", "arc_line"]
+__all__ = ["Labels", "arc_line", "drawn_shapes"]
 
 # the directions tried round an anchor, preferred first: the given side, then
 # round the compass
@@ -55,9 +60,21 @@ _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, 
 class Labels:
     """Places rich-text labels on a recording sketch without collisions."""
 
-    def __init__(self, sketch: RecordingBackend, size: float, *, rings: PointLike = _RINGS) -> None:
+    def __init__(
+        self,
+        sketch: RecordingBackend,
+        size: float,
+        *,
+        rings: PointLike = _RINGS,
+        follow: bool = True,
+        clearance: float = 0.4,
+    ) -> None:
         self.sketch = sketch
         self.size = size
+        # with `follow`, every call recorded on `sketch` is avoided, `clearance` mm off
+        self.follow = follow
+        self.clearance = clearance
+        self._seen = 0
         # how much further out than `distance` a label may go, tried in turn; past
         # the last ring it is written where it covers least
         self.rings = np.array(rings, dtype=float)
@@ -66,7 +83,7 @@ class Labels:
         self._clearance: list[float] = []
         self._tree: STRtree | None = None
         self._grown: BaseGeometry | None = None
-        self._later: list[tuple[Sequence[float], str, PointLike | None]] = []
+        self._later: list[tuple[str, Sequence[float], str, PointLike | None]] = []
 
     def avoid(self, shape: BaseGeometry, clearance: float) -> None:
         """Keep labels `clearance` mm off any shape (a filled polygon is avoided whole)."""
@@ -90,7 +107,11 @@ class Labels:
     ) -> None:
         """Keep labels off everything already recorded: lines, polylines, the
         edges of polygons, arrows and circles; with `solid`, also the inside
-        of polygons and the length of arcs."""
+        of polygons and the length of arcs. (A placer that follows its sketch
+        does this by itself.)"""
+        if self.follow and calls is self.sketch.calls:
+            self._sync()
+            return
         for c in calls:
             if solid and c.name == "polygon":
                 self.avoid(Polygon(c["points"]), clearance)
@@ -104,9 +125,20 @@ class Labels:
             elif c.name == "circle":
                 self.avoid_circle(c["center"], c["radius"] + clearance)
 
+    def _sync(self) -> None:
+        """Avoid every call recorded on the sketch since the last look."""
+        if not self.follow:
+            return
+        calls = self.sketch.calls
+        for c in calls[self._seen :]:
+            for shape in drawn_shapes(c, self.sketch):
+                self.avoid(shape, self.clearance)
+        self._seen = len(calls)
+
     def covered(self, shape: BaseGeometry) -> float:
         """The area of `shape` (mm²) within the clearance of what labels avoid:
         how much a symbol drawn there would cover."""
+        self._sync()
         if not self._obstacles:
             return 0.0
         if self._grown is None:
@@ -121,12 +153,22 @@ class Labels:
 
     def later(self, anchor: PointLike, markup: str, towards: PointLike | None = None) -> None:
         """A label to write with `write_later`, once every line is drawn and avoided."""
-        self._later.append((tuple(float(v) for v in anchor), markup, towards))
+        self._later.append(("at", tuple(float(v) for v in anchor), markup, towards))
+
+    def later_along(self, start: PointLike, end: PointLike, markup: str) -> None:
+        """A label to write beside the segment start–end (`place_along`) with `write_later`."""
+        self._later.append(
+            ("along", tuple(float(v) for v in start), markup, tuple(float(v) for v in end))
+        )
 
     def write_later(self) -> None:
-        """Write the labels kept by `later`, in the order they came."""
-        for anchor, markup, towards in self._later:
-            self.place(anchor, markup, towards=towards)
+        """Write the labels kept by `later` and `later_along`, in the order they came."""
+        for kind, anchor, markup, other in self._later:
+            if kind == "along":
+                assert other is not None
+                self.place_along(anchor, other, markup, around=True)
+            else:
+                self.place(anchor, markup, towards=other)
         self._later.clear()
 
     def place(
@@ -161,9 +203,11 @@ class Labels:
         *,
         distance: float = 1.0,
         group: str | None = None,
+        around: bool = False,
     ) -> BaseGeometry:
         """Write `markup` `distance` mm beside the segment start–end (a link's
-        number): at its middle if that is free, else further along, either side."""
+        number): at its middle if that is free, else further along, either side;
+        with `around`, else round the middle further out (an arm h among others)."""
         w, h, drop = self._extent(markup)
         a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
         d = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
@@ -177,6 +221,15 @@ class Labels:
         ring = (distance + self.rings)[:, None, None]
         cx = (anchors[:, 0][:, None] + sides.real * (ring + reach)).ravel()
         cy = (anchors[:, 1][:, None] + sides.imag * (ring + reach)).ravel()
+        if not around:
+            return self._write_first_free(cx, cy, w, h, drop, markup, group)
+        # where the segment's sides are taken: round its middle, further out
+        mx, my = (a + b) / 2
+        dirs = np.array(_COMPASS)
+        far = distance + np.concatenate([self.rings, self.rings[-1] + np.array([6.0, 12.0])])
+        far = far[:, None]
+        cx = np.concatenate([cx, (mx + dirs.real * (far + w / 2 * np.abs(dirs.real))).ravel()])
+        cy = np.concatenate([cy, (my + dirs.imag * (far + h / 2 * np.abs(dirs.imag))).ravel()])
         return self._write_first_free(cx, cy, w, h, drop, markup, group)
 
     def _extent(self, markup: str) -> tuple[float, float, float]:
@@ -215,6 +268,7 @@ class Labels:
         group: str | None,
     ) -> BaseGeometry:
         """Write `markup` centred at the first free candidate, else at the one that covers least."""
+        self._sync()
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = np.zeros(cx.size)
         if self.boxes:
@@ -241,8 +295,48 @@ class Labels:
             self.sketch.rich_text(
                 (float(cx[k]), float(cy[k])), markup, self.size, anchor="center", valign="middle"
             )
+        if self.follow:  # its own lettering is among `boxes`, not the obstacles
+            self._seen = len(self.sketch.calls)
         self.boxes.append(footprint)
         return footprint
+
+
+def drawn_shapes(call: Call, backend: RecordingBackend) -> list[BaseGeometry]:
+    """What one recorded call covers on the paper: a line or polyline, an arrow's
+    shaft and head, a polygon's edges (its inside too when filled), a circle's
+    rim (the whole disc when filled or small), an arc, the box of a text."""
+    name, a = call.name, call.args
+    if name in ("line", "polyline"):
+        pts = call.points()
+        if len(pts) >= 2 and any(math.dist(pts[0], q) > 1e-9 for q in pts[1:]):
+            return [LineString(pts)]
+        return [Point(pts[0])] if pts else []
+    if name == "arrow":
+        s, e = np.asarray(a["start"], float), np.asarray(a["end"], float)
+        length = float(np.hypot(*(e - s)))
+        if length < 1e-9:
+            return [Point(tuple(s))]
+        u = (e - s) / length
+        n = np.array([-u[1], u[0]])
+        back = e - min(a["head_length"], length) * u
+        half = a["head_width"] / 2
+        head = Polygon([tuple(e), tuple(back + half * n), tuple(back - half * n)])
+        return [LineString([tuple(s), tuple(e)]), head]
+    if name == "polygon":
+        if len(a["points"]) < 3:
+            return [LineString(a["points"])] if len(a["points"]) == 2 else []
+        ring = Polygon(a["points"])
+        if a["fill"] != "none" and ring.is_valid:
+            return [ring]
+        return [ring.exterior]
+    if name == "circle":
+        disc = Point(a["center"]).buffer(a["radius"], 16)
+        return [disc if a["fill"] != "none" or a["radius"] <= 2.0 else disc.exterior]
+    if name == "arc":
+        return [arc_line(a["center"], a["radius"], a["start_deg"], a["end_deg"])]
+    if name == "text" and a["rotation"] % 360.0 == 0.0:
+        return [box(*backend.text_box(call))]
+    return []
 
 
 def arc_line(centre: PointLike, radius: float, start_deg: float, end_deg: float) -> LineString:

@@ -27,7 +27,7 @@ import numpy as np
 from ..drawing.labels import Labels
 from ..drawing.layout import LayoutError, SheetLayout
 from ..drawing.markup import equation_markup as _equation_markup
-from ..drawing.markup import force_markup, point_markup
+from ..drawing.markup import force_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
 from ..drawing.sketch import Sketch
 from ..drawing.symbols import hatched_base, hatched_guide, sense_arc, unit_vector
@@ -38,11 +38,11 @@ from ..i18n import Language, catalogue, check_language
 from ..model import FRAME
 from ..render.backend import Backend
 from ..render.look import LineType
-from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label
+from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
 from .common import length_scale_step, scale_step, title_fields
 
-__all__ = ["Sheet2", "compose_sheet2", "force_markup", "GROUPS"]
+__all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
 
 _TEXT = 3.5
 _TITLE = 5.0
@@ -103,6 +103,23 @@ def _num(x: float, digits: int = 4) -> str:
     return f"{round(x, decimals):.{decimals}f}"
 
 
+def _coincident(s1: np.ndarray, e1: np.ndarray, s2: Any, e2: Any, tol: float = 0.8) -> bool:
+    """True when the arrows s1→e1 and s2→e2 lie on one line and share more
+    than half a millimetre of it, either sense: drawn on top of each other."""
+    d1, d2 = np.asarray(e1, float) - s1, np.asarray(e2, float) - np.asarray(s2, float)
+    l1, l2 = float(np.hypot(*d1)), float(np.hypot(*d2))
+    if l1 < 1e-9 or l2 < 1e-9:
+        return False
+    u = d1 / l1
+    if abs(float(np.dot(u, d2 / l2))) < 0.999:
+        return False
+    r = np.asarray(s2, float) - s1
+    if abs(float(u[0] * r[1] - u[1] * r[0])) > tol:
+        return False
+    a, b = sorted((float(np.dot(r, u)), float(np.dot(r + d2, u))))
+    return min(l1, b) - max(0.0, a) > 0.5
+
+
 def _arrow_length(magnitude: float, largest: float) -> float:
     """Drawn length of a force shown to direction only: 8 … 26 mm by √|F|."""
     if largest <= 0.0:
@@ -118,7 +135,7 @@ class _Drawing:
         self.labels = Labels(self.sk, _TEXT)
         self.state = state
         self.mu_l = mu_l
-        self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, direction) drawn
+        self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
 
     def mm(self, P: Any) -> np.ndarray:
         return _xy(_c(P)) / self.mu_l
@@ -138,15 +155,13 @@ class _Drawing:
         if size <= 1e-9 * max(largest, 1e-300):
             return
         u = np.asarray(F, float) / size
-        # forces at one point along one line (F_PR and F_in on a slider) side by side
-        for start, v in self._arrows:
-            if (
-                float(np.hypot(*(start - at))) < 1.0
-                and abs(float(v[0] * u[1] - v[1] * u[0])) < 0.05
-            ):
-                at = at + 2.5 * np.array([-u[1], u[0]])
-        self._arrows.append((at, u))
         end = at + _arrow_length(size, largest) * u
+        # forces along one line of action (F_PR, F_in and G on a slider) side by side
+        for _ in range(6):
+            if not any(_coincident(at, end, s, e) for s, e in self._arrows):
+                break
+            at, end = at + 2.5 * np.array([-u[1], u[0]]), end + 2.5 * np.array([-u[1], u[0]])
+        self._arrows.append((at, end))
         self.sk.arrow(at, end, line, **_ARROW)  # type: ignore[arg-type]
         self.labels.avoid_line(at, end)
         self.later(end, force_markup(label), u)
@@ -170,7 +185,7 @@ class _Drawing:
             self.labels.avoid_line(pivot, foot)
             # the line of action carried on to the foot, thin
             self.sk.line(at, foot, "thin")
-            self.later((pivot + foot) / 2, label, None)
+            self.labels.later_along(pivot, foot, label)
         return h
 
     # the mechanism's links -----------------------------------------------------------
@@ -257,7 +272,7 @@ class _Drawing:
                 if float(np.hypot(*(K - S))) >= 1.0:
                     self.sk.line(S, K, "thin")
                     self.labels.avoid_line(S, K)
-                    self.later((S + K) / 2, f"h_{{{lid}}}", None)
+                    self.labels.later_along(S, K, f"h_{{{lid}}}")
                 self.force(K, ll.inertia_force, f"F_in{lid}", largest)
             elif ll.mass:
                 self.force(S, ll.inertia_force, f"F_in{lid}", largest)
@@ -411,6 +426,16 @@ def _polygon_title(title: str, lang: Language) -> str:
     return title
 
 
+def _reversed(label: str) -> str:
+    """The reaction of the same pair the other way round: "R23" → "R32",
+    "R10_11" → "R11_10"; "" for any other label."""
+    m = re.fullmatch(r"R(\d)(\d)", label) or re.fullmatch(r"R(\d+)_(\d+)", label)
+    if m is None:
+        return ""
+    sep = "_" if "_" in label else ""
+    return f"R{m.group(2)}{sep}{m.group(1)}"
+
+
 def sketch_force_polygons(
     polygons: Sequence[ForcePolygon], mu_F: float, look: Any, lang: Language, gid: str, title: str
 ) -> Sketch:
@@ -424,6 +449,9 @@ def sketch_force_polygons(
     drawn: dict[tuple[str, int, int], bool] = {}
     short: list[str] = []
     offset = np.zeros(2)
+    sides: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # label → drawn start, end
+    names: dict[str, list[Any]] = {}  # label → [anchor, markup, towards], written last
+    captions: list[tuple[np.ndarray, str]] = []
     with sk.group(gid, "force-polygon"):
         for n, poly in enumerate(polygons):
             keys = [
@@ -435,14 +463,28 @@ def sketch_force_polygons(
                 for v in poly.vectors
             ]
             shares = any(k in drawn for k in keys)
+            inner = None  # the side that is a drawn side reversed (R32 of R23)
             if n and not shares:
-                # beside what is drawn, clear of it whichever way its sides run
-                xs = [float(x) / mu_F for v in poly.vectors for x in (v.start[0], v.end[0])]
-                offset = np.array([sk.extent().right + 15.0 - min(xs), 0.0])
+                inner = next((v for v in poly.vectors if _reversed(v.label) in sides), None)
+                if inner is not None:
+                    # one figure: the inner reaction closes this link's polygon
+                    # inside the group's, on the side already drawn
+                    offset = sides[_reversed(inner.label)][1] - np.asarray(inner.start) / mu_F
+                else:
+                    # beside what is drawn, clear of it whichever way its sides run
+                    xs = [float(x) / mu_F for v in poly.vectors for x in (v.start[0], v.end[0])]
+                    offset = np.array([sk.extent().right + 15.0 - min(xs), 0.0])
+            corners = [offset + np.asarray(v.start, float) / mu_F for v in poly.vectors]
+            if len(polygons) > 1 and poly.title != title:
+                captions.append((np.mean(corners, axis=0), _polygon_title(poly.title, lang)))
             for key, v in zip(keys, poly.vectors):
                 if key in drawn:
                     continue
                 drawn[key] = True
+                if v is inner:
+                    entry = names[_reversed(v.label)]
+                    entry[1] = f"{entry[1]} = -{force_markup(v.label)}"
+                    continue
                 s = offset + np.asarray(v.start, float) / mu_F
                 e = s + np.asarray(v.vector, float) / mu_F
                 length = float(np.hypot(*(e - s)))
@@ -453,7 +495,8 @@ def sketch_force_polygons(
                 sk.arrow(s, e, "dashed" if component else "main", **_ARROW)  # type: ignore[arg-type]
                 labels.avoid_line(s, e)
                 u = (e - s) / length
-                labels.later((s + e) / 2, force_markup(v.label), np.array([-u[1], u[0]]))
+                sides[v.label] = (s, e)
+                names[v.label] = [(s + e) / 2, force_markup(v.label), np.array([-u[1], u[0]])]
             # R = R^n + R^t: the resultant of two consecutive components, main line
             for a, b in zip(poly.vectors, poly.vectors[1:]):
                 if (
@@ -472,6 +515,10 @@ def sketch_force_polygons(
                     labels.avoid_line(s, e)
                     u = unit_vector(e - s)
                     labels.later((s + e) / 2, force_markup(a.label[:-2]), np.array([u[1], -u[0]]))
+        for anchor, markup, towards in names.values():
+            labels.later(anchor, markup, towards)
+        for centre, caption in captions:
+            labels.later(centre, caption, None)
         labels.write_later()
         ext = sk.extent()
         y = ext.bottom - 5.0
@@ -515,15 +562,25 @@ def sketch_lever(
                 for j in range(i + 1, len(names)):
                     sk.line(img[names[i]], img[names[j]], "main")
                     labels.avoid_line(img[names[i]], img[names[j]])
+        # the images named, those at one point in one label: "d, s_{5}, k_{5}"
+        marks: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
+
+        def mark(name: str, at: np.ndarray) -> None:
+            key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
+            marks.setdefault(key, (at, []))[1].append(image_markup(name))
+
+        mark("p", np.zeros(2))
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
-                labels.later(img[n], n.lower(), img[n])
+                mark(n, img[n])
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         labels.avoid_circle((0.0, 0.0), 1.2)
-        labels.later(np.zeros(2), "p", np.array([-1.0, -1.0]))
         forces = [*lever.forces, lever.balancing]
         feet: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
         largest = max(float(np.hypot(*f.force)) for f in forces)
+        # (start, end, labels): forces along one line of action in one sense
+        # (F_PR and F_in5 at e) are one arrow with both names
+        drawn: list[tuple[np.ndarray, np.ndarray, list[str]]] = []
         for f in forces:
             size = float(np.hypot(*f.force))
             if size <= 1e-9 * largest:
@@ -531,24 +588,35 @@ def sketch_lever(
             at = np.asarray(f.image, float) / mu_V
             u = np.asarray(f.force, float) / size
             end = at + _arrow_length(size, largest) * u
-            sk.arrow(at, end, "main", **_ARROW)  # type: ignore[arg-type]
-            labels.avoid_line(at, end)
-            labels.later(end, force_markup(f.label), u)
+            for k, (s0, e0, names) in enumerate(drawn):
+                if _coincident(s0, e0, at, end) and float(np.dot(e0 - s0, u)) > 0.0:
+                    ts = [0.0, float(np.dot(e0 - s0, u)), float(np.dot(at - s0, u))]
+                    ts.append(float(np.dot(end - s0, u)))
+                    drawn[k] = (s0 + min(ts) * u, s0 + max(ts) * u, [*names, f.label])
+                    break
+            else:
+                drawn.append((at, end, [f.label]))
             if re.fullmatch(r"[SK]\d+", f.point) and f.point not in dotted:
                 dotted.add(f.point)
                 sk.circle(at, 0.6, "thin", "black")
+                mark(f.point, at)
             h = abs(f.arm) / mu_V
             arms.append((f.label, h))
             if h >= 1.0:
                 foot = at - float(np.dot(at, u)) * u
                 sk.line((0.0, 0.0), foot, "thin")
                 sk.line(at, foot, "thin")
-                labels.avoid_line((0.0, 0.0), foot)
                 # forces on one line of action share their arm: one label, h_{10,11}
                 key = (round(float(foot[0]) * 2), round(float(foot[1]) * 2))
                 feet.setdefault(key, (foot, []))[1].append(str(len(arms)))
+        for at, names in marks.values():
+            pole = float(np.hypot(*at)) < 0.5
+            labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
+        for start, end, names in drawn:
+            sk.arrow(start, end, "main", **_ARROW)  # type: ignore[arg-type]
+            labels.later(end, ", ".join(force_markup(n) for n in names), unit_vector(end - start))
         for foot, numbers in feet.values():
-            labels.later(foot / 2, f"h_{{{','.join(numbers)}}}")
+            labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}")
         labels.write_later()
         ext = sk.extent()
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
@@ -562,6 +630,48 @@ def sketch_lever(
 
 
 # --- tables -----------------------------------------------------------------------------
+
+
+def _table(
+    look: Any,
+    gid: str,
+    title: str,
+    header: Sequence[str],
+    rows: Sequence[Sequence[str]],
+    widths: Sequence[float],
+    marks: Sequence[str],
+    lang: Language,
+) -> Sketch:
+    """table_sketch with the header cells that carry indices (a_{S}, R^{n})
+    lettered as rich text: split after the comma onto two lines if too wide."""
+    rich = [bool(re.search(r"[_^]", h)) for h in header]
+    sk = table_sketch(
+        look,
+        gid,
+        title,
+        [("" if r else h) for h, r in zip(header, rich)],
+        rows,
+        widths,
+        marks,
+        lang,
+    )
+    extra = Sketch(look)
+    probe = Sketch(look)
+    mid_y = -(_TEXT + 3.0) - 6.0  # the middle of table_sketch's 12 mm header under its title
+    x = 0.0
+    for h, r, w in zip(header, rich, widths):
+        if r:
+            lines = [h]
+            if probe.rich_text((0.0, 0.0), h, _TEXT) > w - 2.0 and ", " in h:
+                head, unit = h.split(", ", 1)
+                lines = [head + ",", unit]
+            pitch = 4.8
+            for k, line in enumerate(lines):
+                y = mid_y + pitch * ((len(lines) - 1) / 2 - k)
+                extra.rich_text((x + w / 2, y), line, _TEXT, anchor="center", valign="middle")
+        x += w
+    sk.add_to_last_group(extra, gid)
+    return sk
 
 
 def sketch_loads_table(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
@@ -585,7 +695,7 @@ def sketch_loads_table(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language
         )
         marks.append(str(lid))
     header = [w["link"], *w["loads_header"]]
-    return table_sketch(
+    return _table(
         look,
         "table-loads",
         w["loads"].format(i=fa.index),
@@ -616,11 +726,11 @@ def _sketch_tables(
             ]
         )
         marks.append(force_markup(name))
-    out["table-reactions"] = table_sketch(
+    out["table-reactions"] = _table(
         look,
         "table-reactions",
         w["reactions"],
-        [w["pair"], "|R|", "Rx", "Ry", "|Rn|", "|Rτ|"],
+        [w["pair"], "|R|", "R_{x}", "R_{y}", "|R^{n}|", "|R^{τ}|"],
         rows,
         [16.0, 18.0, 18.0, 18.0, 18.0, 18.0],
         marks,
@@ -640,7 +750,7 @@ def _sketch_tables(
             ]
         )
         marks.append(force_markup(label))
-    out["table-lever"] = table_sketch(
+    out["table-lever"] = _table(
         look,
         "table-lever",
         w["lever_table"],
@@ -657,7 +767,7 @@ def _sketch_tables(
         ["", "—" if math.isnan(d) else f"{d:.2f}"],
         ["", _num(fa.balancing_moment, 6)],
     ]
-    out["table-balancing"] = table_sketch(
+    out["table-balancing"] = _table(
         look,
         "table-balancing",
         w["balancing"],
@@ -673,10 +783,31 @@ def _sketch_tables(
 # --- composing --------------------------------------------------------------------------
 
 
-def _force_scale(polygons: Sequence[ForcePolygon]) -> float:
-    """μF so that the largest side of the polygons is 150 … 300 mm (seed 003 §2.6)."""
+def guide_side(polygons: Sequence[ForcePolygon]) -> float:
+    """The force the guide's 150 … 300 mm is for (seed 003 §2.6): |F_PR| where
+    the polygons carry the production resistance, else their largest side, N."""
+    resistance = [v.magnitude for p in polygons for v in p.vectors if v.label.startswith("F_PR")]
     largest = max((p.largest for p in polygons), default=0.0)
-    return scale_for(largest, FORCE_PLAN) if largest > 0 else 1.0
+    # F_PR at 150 mm must leave the largest side within 300 mm
+    if resistance and max(resistance) * FORCE_PLAN.high / FORCE_PLAN.low >= largest > 0.0:
+        return max(resistance)
+    return largest
+
+
+def _force_scale(polygons: Sequence[ForcePolygon], steps: int = 0) -> float:
+    """μF so that the guide's side (guide_side) is 150 … 300 mm, `steps` series
+    values coarser to fit the sheet, but never so coarse that F_PR falls under 150 mm."""
+    side = guide_side(polygons)
+    if side <= 0:
+        return 1.0
+    mu = scale_for(side, FORCE_PLAN)
+    if not any(v.label.startswith("F_PR") for p in polygons for v in p.vectors):
+        # the guide is the production resistance's: the other groups' polygons
+        # may go coarser with the rest of the sheet
+        return scale_step(mu, max(0, steps))
+    limit = side / FORCE_PLAN.low
+    coarsest = max(series(mu, limit), default=mu) if limit >= mu else mu
+    return min(scale_step(mu, max(0, steps)), coarsest)
 
 
 # indices of the textbook's symbols that differ by language
@@ -693,6 +824,18 @@ def _translated(sketch: Sketch, lang: Language) -> Sketch:
                 c.name, {**c.args, "content": runs[c.args["content"]]}, c.groups
             )
     return sketch
+
+
+def _with_note(sketch: Sketch, note: str) -> Sketch:
+    """A copy of a drawing with one more line of lettering under its notes."""
+    out = Sketch(sketch.look)
+    out.calls = list(sketch.calls)
+    ext = sketch.extent()
+    extra = Sketch(sketch.look)
+    extra.rich_text((ext.left + _PAD, ext.bottom - 3.0), note, _TEXT)
+    gid = next(c["id"] for c in sketch.calls if c.name == "begin_group")
+    out.add_to_last_group(extra, gid)
+    return out
 
 
 def _sketch_all(
@@ -727,7 +870,7 @@ def _sketch_all(
         *((g.name, g.polygons, f"group {g.name}") for g in fa.groups),
         (str(dl.link), (dl.polygon,), f"link {dl.link}"),
     ]:
-        mu_F = scale_step(_force_scale(polygons), max(0, shrink))
+        mu_F = _force_scale(polygons, shrink)
         scales[f"mu_F {name}"] = mu_F
         gid = f"force-polygon-{name}"
         sketches[gid] = memo(
@@ -770,7 +913,7 @@ def compose_sheet2(
     # from its textbook scale, the loaded mechanism up to two steps finer still.
     for shrink in range(-2, 6):
         sketches, scales, arms = _sketch_all(fa, solution, backend.look, lang, shrink, cache)
-        for bigger in (2, 1, 0):
+        for bigger in range(max(2, shrink + 2), -1, -1):
             mu_l = length_scale_step(float(solution.mu_l), shrink - bigger)
             if ("force-mechanism", mu_l) not in cache:
                 cache[("force-mechanism", mu_l)] = (
@@ -779,7 +922,20 @@ def compose_sheet2(
                 )
             sketches["force-mechanism"], sketches["table-loads"] = cache[("force-mechanism", mu_l)]
             scales["mu_l"] = mu_l
-            for gap in (8.0, 5.0):
+            plain = cache[("groups", scales["mu_l_groups"])]
+            for gid in [*(f"group-{g.name}" for g in fa.groups), "driving-link"]:
+                sketches[gid] = plain[gid]
+                if not math.isclose(mu_l, scales["mu_l_groups"], rel_tol=1e-9):
+                    other = _words(lang)["other_scale"].format(
+                        scale=scale_label(mu_l, "length", lang).markup()
+                    )
+                    sketches[gid] = _with_note(plain[gid], other)
+            # the textbook's order first; then the largest first, which packs tighter
+            largest_first = [drawings[0]] + sorted(
+                drawings[1:],
+                key=lambda n: -sketches[n].extent().width * sketches[n].extent().height,
+            )
+            for gap, order in ((8.0, drawings), (5.0, drawings), (5.0, largest_first)):
                 layout = SheetLayout(page, gap=gap)
                 placed: dict[str, Rect] = {}
                 try:
@@ -788,7 +944,7 @@ def compose_sheet2(
                         placed[name] = layout.place(
                             name, ext.width, ext.height, kind="table", corner="top-right"
                         )
-                    for name in drawings:
+                    for name in order:
                         ext = sketches[name].extent()
                         placed[name] = layout.place(name, ext.width, ext.height, corner="top-left")
                 except LayoutError as err:
