@@ -250,12 +250,17 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                     towards=unit_vector(away + np.array([0.3, 0.6])),
                     distance=2.0,
                 )
-        # Numbered positions of the crank pin.
+        # Numbered positions of the crank pin, in smaller figures and out beyond
+        # the pin's circle, so that "0" is not read as a pivot's "O"; an entry
+        # of the sweep that is no numbered position (an extreme) gets none.
+        labels.size = _SMALL
         for k in range(n):
+            index = solution.positions[k].index
+            if index is None:
+                continue
             p = at(mech.crank_pin, k)
-            labels.place(
-                p, str(solution.positions[k].index), towards=unit_vector(p - centre), distance=2.0
-            )
+            labels.place(p, str(index), towards=unit_vector(p - centre), distance=3.0)
+        labels.size = _TEXT
 
         ext = sk.extent()
         label = scale_label(mu_l, "length", lang)
@@ -672,7 +677,7 @@ MECHANISM_FIELD_SHARE = 0.5
 # The tallest an S, V or a diagram is drawn on this sheet, mm (three stand in a
 # column under the mechanism).
 SHEET_DIAGRAM_HEIGHT_MM = 90.0
-DIAGRAM_HEIGHTS_MM = (SHEET_DIAGRAM_HEIGHT_MM, 70.0)  # lower ones make room for the mechanism
+DIAGRAM_HEIGHTS_MM = (SHEET_DIAGRAM_HEIGHT_MM, 70.0, 55.0)  # lower ones make room for the mechanism
 # The acceleration plan's longest vector (seed 003 §1.5: πa ≈ 100 … 200 mm).
 ACCELERATION_GUIDE_MM = (100.0, 200.0)
 
