@@ -190,10 +190,14 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             sk_b = base + (max(along) + 12.0) * u
             hatched_guide(sk, sk_a, sk_b, u, 3.5)
             nrm = np.array([-u[1], u[0]])
+            # blocks of neighbouring positions kept apart: shorter where they crowd
+            ends = sorted(along[k] for k in main)
+            gaps = [b - a for a, b in zip(ends, ends[1:]) if b - a > 1e-6]
+            half = max(3.0, min([6.0, *(g / 2.0 - 0.5 for g in gaps)]))
             for k in sorted(main):
                 c = at(name, k)
                 corners = [
-                    c + sx * 6.0 * u + sy * 3.5 * nrm
+                    c + sx * half * u + sy * 3.5 * nrm
                     for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
                 ]
                 sk.polygon(
