@@ -36,6 +36,7 @@ from .report import table
 
 if TYPE_CHECKING:  # pragma: no cover
     from .i18n import Language
+    from .model import Mechanism
     from .solution import Solution
 
 __all__ = [
@@ -200,12 +201,24 @@ def read_manifest(out_dir: str | os.PathLike[str]) -> dict | None:
     return data if isinstance(data, dict) and data.get("schema") == MANIFEST_SCHEMA else None
 
 
+Fields = tuple[tuple[str, str], ...]  # --field KEY=VALUE pairs, sorted by key
+
+
 def _settings(
-    lang: str, formats: Sequence[str] = SHEET_FORMATS, extras: Sequence[str] = ()
+    lang: str,
+    formats: Sequence[str] = SHEET_FORMATS,
+    extras: Sequence[str] = (),
+    fields: Fields = (),
 ) -> dict:
     from . import __version__
 
-    return {"lang": lang, "version": __version__, "formats": list(formats), "extras": list(extras)}
+    return {
+        "lang": lang,
+        "version": __version__,
+        "formats": list(formats),
+        "extras": list(extras),
+        "fields": dict(fields),
+    }
 
 
 def _kept(
@@ -214,11 +227,12 @@ def _kept(
     lang: str,
     formats: Sequence[str] = SHEET_FORMATS,
     extras: Sequence[str] = (),
+    fields: Fields = (),
 ) -> FileResult | None:
     """The result of an earlier run when its manifest matches the input and
     its outputs are all there, as they were written; else None."""
     manifest = read_manifest(out)
-    if manifest is None or manifest.get("settings") != _settings(lang, formats, extras):
+    if manifest is None or manifest.get("settings") != _settings(lang, formats, extras, fields):
         return None
     digest = _sha256(path)
     if digest is None or manifest.get("input_sha256") != digest:
@@ -261,16 +275,21 @@ def process_file(
     force: bool = True,
     formats: Sequence[str] = ("svg", "pdf"),
     extras: Sequence[str] = (),
+    fields: Fields | dict[str, str] = (),
 ) -> FileResult:
     """Analyse one file and write its sheets, results.json and note.pdf, then
     its manifest; with `force` False, a file whose manifest matches is kept.
+    `fields` (--field KEY=VALUE) are written over the file's [sheet] table.
 
     Never raises: an `MmtError` becomes the result's message; anything else
     (a bug) too, named by its type, so one file cannot stop the batch."""
     from .numerics import quiet_numerics
 
     with quiet_numerics():
-        return _process_file(str(path), Path(out_dir), lang, force, tuple(formats), tuple(extras))
+        pairs = tuple(sorted(dict(fields).items()))
+        return _process_file(
+            str(path), Path(out_dir), lang, force, tuple(formats), tuple(extras), pairs
+        )
 
 
 def _process_file(
@@ -280,6 +299,7 @@ def _process_file(
     force: bool,
     formats: tuple[str, ...] = ("svg", "pdf"),
     extras: tuple[str, ...] = (),
+    fields: Fields = (),
 ) -> FileResult:
     from .files import ensure_dir, finite_json, write_text_atomic
     from .note import write_note
@@ -289,7 +309,7 @@ def _process_file(
     from .spec import load
 
     if not force:
-        kept = _kept(path, out, lang, formats, extras)
+        kept = _kept(path, out, lang, formats, extras, fields)
         if kept is not None:
             return kept
     t0 = time.perf_counter()
@@ -314,7 +334,7 @@ def _process_file(
         return None
 
     digest = _sha256(path)  # before the analysis: what the manifest vouches for
-    analysis = stage("analysis", lambda: solve(load(path)))
+    analysis = stage("analysis", lambda: solve(_with_fields(load(path), fields)))
     if analysis is None:
         return FileResult(
             str(path), str(out), False, problems[0], seconds=time.perf_counter() - t0, stages=stages
@@ -393,7 +413,7 @@ def _process_file(
                 "schema": MANIFEST_SCHEMA,
                 "input": path,
                 "input_sha256": digest,
-                "settings": _settings(lang, formats, extras),
+                "settings": _settings(lang, formats, extras, fields),
                 "outputs": {Path(w).name: Path(w).stat().st_size for w in written},
                 "summary": summary,
             }
@@ -412,7 +432,16 @@ def _process_file(
     )
 
 
-def _run(args: tuple[str, str, str, bool, tuple[str, ...], tuple[str, ...]]) -> FileResult:
+def _with_fields(mech: Mechanism, fields: Fields) -> Mechanism:
+    """The mechanism with --field's pairs written over its [sheet] table."""
+    if not fields:
+        return mech
+    return mech.with_changes(sheet={**dict(mech.sheet or {}), **dict(fields)})
+
+
+def _run(
+    args: tuple[str, str, str, bool, tuple[str, ...], tuple[str, ...], Fields],
+) -> FileResult:
     return process_file(*args)
 
 
@@ -431,6 +460,7 @@ def run_batch(
     force: bool = True,
     formats: Sequence[str] = ("svg", "pdf"),
     extras: Sequence[str] = (),
+    fields: dict[str, str] | None = None,
 ) -> list[FileResult]:
     """Process `files` with `jobs` processes (default: every core); results in
     the order of `files`. `progress(result)` is called as each file finishes.
@@ -441,7 +471,8 @@ def run_batch(
     out = ensure_dir(out)
     targets = plan_outputs(list(files), out)
     results: list[FileResult | None] = [None] * len(targets)
-    tasks: list[tuple[str, str, str, bool, tuple[str, ...], tuple[str, ...]]] = []
+    pairs: Fields = tuple(sorted((fields or {}).items()))
+    tasks: list[tuple[str, str, str, bool, tuple[str, ...], tuple[str, ...], Fields]] = []
     index: list[int] = []
     for i, (f, t) in enumerate(zip(files, targets)):
         if not _inside(t, out):  # OUT/x is a symbolic link to elsewhere
@@ -455,7 +486,7 @@ def run_batch(
             if progress:
                 progress(results[i])  # type: ignore[arg-type]
             continue
-        tasks.append((str(f), str(t), lang, force, tuple(formats), tuple(extras)))
+        tasks.append((str(f), str(t), lang, force, tuple(formats), tuple(extras), pairs))
         index.append(i)
     jobs = max(1, jobs or os.cpu_count() or 1)
     if jobs == 1 or len(tasks) <= 1:

@@ -48,7 +48,7 @@ import numpy as np
 if TYPE_CHECKING:  # numpy.typing costs ~10 ms to import: only the type checker reads it
     from numpy.typing import ArrayLike
 
-from mmt_plans.scales import MANTISSAS, DrawnLength, series
+from mmt_plans.scales import LENGTH_MANTISSA_TEXT, MANTISSAS, DrawnLength, is_standard, series
 
 __all__ = [
     "DEFAULT_TIME_AXIS_MM",
@@ -62,6 +62,9 @@ __all__ = [
     "time_scale",
     "derived_scale",
     "pole_distance",
+    "ROUND_POLE_DISTANCES_MM",
+    "DiagramScales",
+    "diagram_scales",
     "graphical_differentiation",
     "compare_with_plans",
     "spectral_derivatives",
@@ -132,6 +135,72 @@ def pole_distance(mu_source: float, mu_t: float) -> float:
     ratio = mu_source / mu_t
     reachable = sorted(series(ratio / hi, ratio / lo))
     return ratio / reachable[0]
+
+
+# The pole distances a sheet draws: whole millimetres a draughtsman sets off
+# with a rule, the textbook's 30 … 50 mm first (seed 003 §1.7), longest first.
+ROUND_POLE_DISTANCES_MM: tuple[float, ...] = (50.0, 40.0, 30.0, 60.0, 25.0, 80.0, 20.0, 100.0)
+
+
+@dataclass(frozen=True)
+class DiagramScales:
+    """What a sheet chose for its S, V, a diagrams: μ_S and the poles OH1, OH2."""
+
+    mu_S: float  # m/mm
+    H1: float  # mm, one of ROUND_POLE_DISTANCES_MM
+    H2: float  # mm
+    mu_S_steps: int  # series steps above μ_l (0: μ_S = μ_l, as seed 003 §1.7 draws it)
+    standard: bool  # μ_V and μ_a are values of the standard series
+
+
+def diagram_scales(
+    s: ArrayLike, *, n1: float, L: float, mu_l: float, max_height: float
+) -> DiagramScales:
+    """μ_S and whole-millimetre poles for the diagrams of `s` (m, n equal steps).
+
+    μ_S = μ_l (seed 003 §1.7: "drawn on a scale μ_S = μ_l") unless a diagram
+    would then be taller than `max_height` mm; then μ_S goes up the series of
+    μ_l (1, 2, 2.5, 4, 5 × 10^k) one step at a time. The poles come from
+    ROUND_POLE_DISTANCES_MM such that μ_V = μ_S/(μ_t·OH1) and μ_a =
+    μ_V/(μ_t·OH2) are standard scales; of those, both poles in 30 … 50 mm
+    first, then the tallest diagrams. Where no pair makes both scales standard
+    the poles still come from the list (`standard` False)."""
+    if not (mu_l > 0 and max_height > 0):
+        raise ValueError(f"mu_l and max_height must be positive, got {mu_l!r}, {max_height!r}")
+    ref = graphical_differentiation(s, n1=n1, mu_S=mu_l, L=L, H1=40.0, H2=40.0)
+    h_s, h_v, h_a = ref.heights_mm
+    mu_t = ref.mu_t
+    textbook = (POLE_DISTANCE_RANGE_MM[0], POLE_DISTANCE_RANGE_MM[1])
+    relaxed: DiagramScales | None = None
+    for steps, mu_S in enumerate(series(mu_l * (1 - 1e-9), mu_l * 1e4, LENGTH_MANTISSA_TEXT)):
+        if h_s * mu_l / mu_S > max_height * (1 + 1e-9):
+            continue
+        best: tuple[tuple[float, ...], DiagramScales] | None = None
+        for H1 in ROUND_POLE_DISTANCES_MM:
+            mu_V = derived_scale(mu_S, mu_t, H1)
+            tall_v = h_v * ref.mu_V / mu_V
+            if tall_v > max_height * (1 + 1e-9):
+                continue
+            for H2 in ROUND_POLE_DISTANCES_MM:
+                mu_a = derived_scale(mu_V, mu_t, H2)
+                tall_a = h_a * ref.mu_a / mu_a
+                if tall_a > max_height * (1 + 1e-9):
+                    continue
+                standard = is_standard(mu_V) and is_standard(mu_a)
+                inside = sum(textbook[0] <= H <= textbook[1] for H in (H1, H2))
+                key = (float(standard), float(inside), min(tall_v, tall_a), tall_v + tall_a)
+                found = DiagramScales(mu_S, H1, H2, steps, standard)
+                if best is None or key > best[0]:
+                    best = (key, found)
+        if best is not None and best[1].standard:
+            return best[1]
+        if best is not None and relaxed is None:
+            relaxed = best[1]
+        if steps >= 6 and relaxed is not None:
+            return relaxed
+    if relaxed is not None:
+        return relaxed
+    raise ValueError("no scales draw the diagrams within the height given")
 
 
 # --------------------------------------------------------------------------- the smooth curve

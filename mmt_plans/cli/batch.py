@@ -9,6 +9,7 @@ import click
 
 from .draw import sheet_formats
 from .errors import reports_errors
+from .fields import field_option
 
 
 @click.command()
@@ -50,6 +51,7 @@ from .errors import reports_errors
     metavar="PERCENT",
     help="The quiz answers' tolerance.",
 )
+@field_option
 @reports_errors
 def batch(
     inputs: tuple[Path, ...],
@@ -60,6 +62,7 @@ def batch(
     formats: tuple[str, ...],
     moodle: bool,
     tolerance: float,
+    fields: dict[str, str],
 ) -> None:
     """Answer keys for many mechanism files: each file's sheets (SVG, PDF),
     results.json and note.pdf into OUT/<file stem>/ (OUT/<relative path>/ when
@@ -83,6 +86,7 @@ def batch(
             force=force,
             formats=formats,
             extras=("scheme",) if moodle else (),
+            fields=fields,
             progress=lambda result: bar.update(1),
         )
     for r in results:

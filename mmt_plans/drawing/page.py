@@ -368,8 +368,13 @@ FIELDS: Mapping[str, str] = MappingProxyType(
         "scale": "scale",
         "sheet": "sheet",
         "sheets": "sheets",
+        "organisation": "organisation",
         "school": "organisation",
         "group": "organisation",
+        "sheet_name": "title",  # the document's name, under the title in graph 1
+        # the designation without the sheet's number ("ТММ.КП.PRESS"): completed
+        # with it (".01") where no drawing_number is given
+        "designation_base": "designation",
     }
 )
 
@@ -453,6 +458,21 @@ def _check_fields(fields: Mapping[str, Any]) -> dict[str, str]:
     return {k: str(v) for k, v in fields.items() if v is not None and str(v) != ""}
 
 
+def _default_sheet_name(lang: Language, sheet: str | None) -> str:
+    """The catalogue's name of sheet `sheet` (sheet_name_1, sheet_name_2), or ""."""
+    words = catalogue(lang).words("title_block")
+    return str(words.get(f"sheet_name_{(sheet or '').strip()}", ""))
+
+
+def _designation(values: Mapping[str, str]) -> str:
+    """designation_base completed with the sheet's number: "ТММ.КП.PRESS.01"."""
+    base = values.get("designation_base", "")
+    sheet = values.get("sheet", "").strip()
+    if not base:
+        return ""
+    return f"{base}.{int(sheet):02d}" if sheet.isdigit() else base
+
+
 def title_block_texts(
     block: TitleBlock,
     fields: Mapping[str, Any],
@@ -483,9 +503,10 @@ def title_block_texts(
         x = {"left": r.left + pad, "center": r.center[0], "right": r.right - pad}[anchor]
         out.append(PlacedText(cell, text, (x, r.center[1]), size, anchor, r.width - 2 * pad))
 
-    def block_text(cell: str, text: str, size: float) -> None:
-        """Centred, wrapped, shrunk from `size` down until it fits the cell."""
-        r = block.cell(cell)
+    def block_text(cell: str, text: str, size: float, rect: Rect | None = None) -> None:
+        """Centred, wrapped, shrunk from `size` down until it fits the cell
+        (or `rect`, a part of it)."""
+        r = rect if rect is not None else block.cell(cell)
         fitting = tuple(s for s in let.sizes if s <= size) or (size,)
         room = r.width - 2 * tb.block_padding
         s, lines = let.fit(text, room, r.height - 2 * pad, fitting)
@@ -514,15 +535,26 @@ def title_block_texts(
             room = r.right - pad - x
             out.append(PlacedText(key, values[key], (x, r.center[1]), tb.field, "left", room))
 
-    if "title" in values:
-        block_text("title", values["title"], tb.title)
-    if "drawing_number" in values:
-        one_line("designation", values["drawing_number"], tb.designation, "center")
+    # Graph 1: the product's name and, under it, the document's (the sheet's) name.
+    sheet_name = values.get("sheet_name") or _default_sheet_name(lang, values.get("sheet"))
+    title_cell = block.cell("title")
+    if "title" in values and sheet_name:
+        split = title_cell.top - title_cell.height * 0.62
+        upper = Rect.from_bounds(title_cell.left, split, title_cell.right, title_cell.top)
+        lower = Rect.from_bounds(title_cell.left, title_cell.bottom, title_cell.right, split)
+        block_text("title", values["title"], tb.title, upper)
+        block_text("title", sheet_name, tb.title, lower)
+    elif "title" in values or sheet_name:
+        block_text("title", values.get("title") or sheet_name, tb.title)
+    designation = values.get("drawing_number") or _designation(values)
+    if designation:
+        one_line("designation", designation, tb.designation, "center")
     if "material" in values:
         block_text("material", values["material"], tb.field)
-    organisation = "\n".join(values[k] for k in ("school", "group") if k in values)
-    if organisation:
-        block_text("organisation", organisation, tb.organisation)
+    first = values.get("organisation") or values.get("school")
+    first = first or str(catalogue(lang).words("title_block")["organisation_default"])
+    organisation = "\n".join(v for v in (first, values.get("group")) if v)
+    block_text("organisation", organisation, tb.organisation)
     for key in ("author", "checked_by", "tech_control", "norm_control", "approved_by"):
         if key in values:
             one_line(FIELDS[key], values[key], tb.field, "left")

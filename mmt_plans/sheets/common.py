@@ -2,12 +2,23 @@
 
 from __future__ import annotations
 
+import re
+import zlib
+from pathlib import Path
+
 from ..drawing.page import FIELDS
-from ..i18n import Language
+from ..i18n import Language, catalogue
 from ..scales import LENGTH_MANTISSA_TEXT, series
 from ..solution import Solution
 
-__all__ = ["drawing_scale", "length_scale_step", "next_scale", "scale_step", "title_fields"]
+__all__ = [
+    "designation_base",
+    "drawing_scale",
+    "length_scale_step",
+    "next_scale",
+    "scale_step",
+    "title_fields",
+]
 
 
 def next_scale(mu: float, steps: int) -> float:
@@ -25,19 +36,52 @@ def drawing_scale(mu_l: float) -> str:
     return f"1:{text}" if k >= 1 else f"{text}:1"
 
 
+def designation_base(solution: Solution, lang: Language = "en") -> str:
+    """The designation without the sheet's number, from the file's stem:
+    "TMM.CP.SIX_LINK_PRESS" (en). A Ukrainian sheet holds no English word, so
+    there the stem's numbers stand for it ("task01_v1" → "ТММ.КП.01-1"), or,
+    for a stem without digits, a four-digit number made from it."""
+    prefix = str(catalogue(lang).words("title_block")["designation_prefix"])
+    stem = Path(solution.mechanism.path or "").stem.strip()
+    if not stem:
+        return prefix
+    if lang == "en":
+        code = re.sub(r"[^\w-]+", "_", stem.upper()).strip("_")
+    else:
+        digits = re.findall(r"\d+", stem)
+        code = "-".join(digits) if digits else f"{zlib.crc32(stem.encode()) % 10000:04d}"
+    return f"{prefix}.{code}" if code else prefix
+
+
 def title_fields(
-    solution: Solution, mu_l: float | None = None, lang: Language = "en"
+    solution: Solution,
+    mu_l: float | None = None,
+    lang: Language = "en",
+    *,
+    sheet: int | None = None,
+    sheets: int = 2,
 ) -> dict[str, str]:
-    """The title block's fields: the file's [sheet] entries, its title, the sheet
-    numbers, and the scale of the mechanism's drawing (μ_l) unless the file gives one."""
+    """The title block's fields: the file's [sheet] entries (and --field), its
+    title, the sheet's number, the scale of the mechanism's drawing (μ_l)
+    unless the file gives one, and the defaults the title block completes by
+    the sheet's number: the designation "<prefix>.<STEM>.0i" unless the file
+    gives drawing_number, the catalogue's name of the sheet unless sheet_name,
+    and the catalogue's organisation unless organisation, school or group."""
     mech = solution.mechanism
-    fields = {k: str(v) for k, v in dict(mech.sheet or {}).items() if k in FIELDS}
+    fields = {
+        k: str(v).strip()
+        for k, v in dict(mech.sheet or {}).items()
+        if k in FIELDS and str(v).strip()
+    }
+    if "approved" in (mech.sheet or {}) and "approved_by" not in fields:
+        fields["approved_by"] = str(mech.sheet["approved"]).strip()
     if mu_l is not None:
         fields.setdefault("scale", drawing_scale(mu_l))
     fields.setdefault("title", mech.title_in(lang))
-    fields.setdefault("sheet", "1")
-    fields.setdefault("sheets", "2")
-    return fields
+    fields["sheet"] = str(sheet) if sheet is not None else fields.get("sheet", "1")
+    fields.setdefault("sheets", str(sheets))
+    fields.setdefault("designation_base", designation_base(solution, lang))
+    return {k: v for k, v in fields.items() if v}
 
 
 def scale_step(mu: float, steps: int) -> float:

@@ -7,15 +7,22 @@ then finds free room on the sheet and the recording is replayed there.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
-from ..diagrams import ILL_CONDITIONED
+from ..diagrams import (
+    ILL_CONDITIONED,
+    DiagramScales,
+    KinematicDiagrams,
+    diagram_scales,
+    graphical_differentiation,
+)
 from ..drawing.labels import Labels
 from ..drawing.layout import LayoutError, SheetLayout
 from ..drawing.markup import component_markup, image_markup, point_markup
@@ -27,7 +34,14 @@ from ..drawing.table import table_sketch
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend
 from ..render.look import LineType
-from ..scales import ACCELERATION_PLAN, VELOCITY_PLAN, Quantity, scale_for, scale_label
+from ..scales import (
+    LENGTH_MANTISSA_TEXT,
+    VELOCITY_PLAN,
+    Quantity,
+    scale_for,
+    scale_label,
+    series,
+)
 from ..solution import Solution
 from .common import length_scale_step, title_fields
 from .common import next_scale as _next_scale
@@ -70,7 +84,17 @@ class Sheet1:
     scales: dict[str, float] = field(default_factory=dict)
     origins: dict[str, tuple[float, float]] = field(default_factory=dict)
     placed: dict[str, Rect] = field(default_factory=dict)
-    shrink: int = 0  # series steps the plan scales were raised by to make room
+    shrink: int = 0  # series steps the acceleration plans' scale was raised by to make room
+    field: Rect | None = None  # the mechanism's field (None: a crowded sheet's fallback)
+    diagrams: KinematicDiagrams | None = None  # the S, V, a construction as drawn
+
+    def fill(self) -> float:
+        """How much of its field the mechanism's drawing fills: the larger of its
+        width and height shares (1: it touches two opposite sides)."""
+        if self.field is None or "mechanism" not in self.placed:
+            return 0.0
+        r = self.placed["mechanism"]
+        return max(r.width / self.field.width, r.height / self.field.height)
 
 
 def _fmt(x: float, digits: int = 3) -> str:
@@ -166,10 +190,14 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             sk_b = base + (max(along) + 12.0) * u
             hatched_guide(sk, sk_a, sk_b, u, 3.5)
             nrm = np.array([-u[1], u[0]])
+            # blocks of neighbouring positions kept apart: shorter where they crowd
+            ends = sorted(along[k] for k in main)
+            gaps = [b - a for a, b in zip(ends, ends[1:]) if b - a > 1e-6]
+            half = max(3.0, min([6.0, *(g / 2.0 - 0.5 for g in gaps)]))
             for k in sorted(main):
                 c = at(name, k)
                 corners = [
-                    c + sx * 6.0 * u + sy * 3.5 * nrm
+                    c + sx * half * u + sy * 3.5 * nrm
                     for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
                 ]
                 sk.polygon(
@@ -226,12 +254,17 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                     towards=unit_vector(away + np.array([0.3, 0.6])),
                     distance=2.0,
                 )
-        # Numbered positions of the crank pin.
+        # Numbered positions of the crank pin, in smaller figures and out beyond
+        # the pin's circle, so that "0" is not read as a pivot's "O"; an entry
+        # of the sweep that is no numbered position (an extreme) gets none.
+        labels.size = _SMALL
         for k in range(n):
+            index = solution.positions[k].index
+            if index is None:
+                continue
             p = at(mech.crank_pin, k)
-            labels.place(
-                p, str(solution.positions[k].index), towards=unit_vector(p - centre), distance=2.0
-            )
+            labels.place(p, str(index), towards=unit_vector(p - centre), distance=3.0)
+        labels.size = _TEXT
 
         ext = sk.extent()
         label = scale_label(mu_l, "length", lang)
@@ -370,10 +403,12 @@ def sketch_diagram(
     lang: Language,
     s_dense: np.ndarray | None = None,
     refinement: int = 1,
+    mu_l: float | None = None,
 ) -> Sketch:
     """One of the S, V, a diagrams with its construction. `s_dense` (m, at equal
     crank steps from position 0) draws S as the smooth curve through the
-    positions' ordinates, as a draughtsman draws it with a French curve."""
+    positions' ordinates, as a draughtsman draws it with a French curve.
+    `mu_l` (the mechanism's drawing): μ_S other than it is explained under S."""
     c = construction
     sk = Sketch(look)
     axes = catalogue(lang).words("diagram_axes")
@@ -411,11 +446,12 @@ def sketch_diagram(
         grid = np.asarray(c.abscissae, dtype=float).tolist() + [L]
         for i, x in enumerate(grid):
             if i % refinement == 0:  # the positions are numbered, the finer grid is not
+                # the first "0" stands left of the ordinate axis, clear of it
                 sk.text(
-                    (x, -1.5),
+                    (x - 1.2, -1.5) if i == 0 else (x, -1.5),
                     str((i // refinement) % (len(grid) // refinement)),
                     _SMALL,
-                    anchor="center",
+                    anchor="right" if i == 0 else "center",
                     valign="top",
                 )
             if which == "s":
@@ -450,6 +486,12 @@ def sketch_diagram(
         if which != "s":
             pole = f"{float(-deriv.pole[0]):.2f}".rstrip("0").rstrip(".")
             sk.rich_text((x, y), str(axes["pole"]).format(H=catalogue(lang).localise(pole)), _TEXT)
+        elif mu_l is not None and abs(c.mu_S / mu_l - 1.0) > 1e-9:
+            # seed 003 §1.7 draws S at μ_S = μ_l: a larger μ_S says why
+            k = catalogue(lang).plain_number(float(f"{c.mu_S / mu_l:.6g}"))
+            sk.rich_text(
+                (ext.x + _PAD, y - _TEXT - 2.0), _words(lang)["mu_S_reason"].format(k=k), _TEXT
+            )
         sk.text((ext.x + _PAD, ext.top + 3.0), _words(lang)[f"diagram_{which}"], _TEXT)
     return sk
 
@@ -633,36 +675,89 @@ _PLACEMENT: Mapping[str, str] = {
     "table-check": "top-right",
 }
 
+# The field of the mechanism's drawing: the left part of the sheet, this share
+# of the free width, from the top down to the column of diagrams (Appendix A).
+MECHANISM_FIELD_SHARE = 0.5
+# The tallest an S, V or a diagram is drawn on this sheet, mm (three stand in a
+# column under the mechanism).
+SHEET_DIAGRAM_HEIGHT_MM = 90.0
+DIAGRAM_HEIGHTS_MM = (SHEET_DIAGRAM_HEIGHT_MM, 70.0, 55.0)  # lower ones make room for the mechanism
+# The acceleration plan's longest vector (seed 003 §1.5: πa ≈ 100 … 200 mm).
+ACCELERATION_GUIDE_MM = (100.0, 200.0)
+
 
 def _plan_scales(solution: Solution) -> tuple[float, float]:
-    """μV and μa from V_A and a_A at the first planned position (seed 003, eqs. 5, 9)."""
+    """μV from V_A (seed 003, eq. 5: pa 100 … 150 mm) and μa such that the
+    longest vector of the acceleration plans is 100 … 200 mm (eq. 9's πa ≈
+    100 … 200 mm, applied to the plan's longest vector so that no plan runs
+    over the sheet)."""
     pin = solution.mechanism.crank_pin
-    v_a = a_a = 0.0
+    v_a = 0.0
     for i in solution.plan_positions:
         view = solution.plan(i)
         v_a = max(v_a, float(np.hypot(*view.velocity_images[pin])))
-        a_a = max(a_a, float(np.hypot(*view.acceleration_images[pin])))
-    return scale_for(v_a, VELOCITY_PLAN), scale_for(a_a, ACCELERATION_PLAN)
+    return scale_for(v_a, VELOCITY_PLAN), _acceleration_scale(solution, 0) or 1.0
+
+
+def _longest_acceleration(solution: Solution) -> float:
+    """The longest vector of the acceleration plans (images and components), m/s²."""
+    longest = 0.0
+    for i in solution.plan_positions:
+        view = solution.plan(i)
+        for v in view.acceleration_images.values():
+            longest = max(longest, float(np.hypot(*v)))
+        for g in view.groups:
+            for c in g.acceleration:
+                longest = max(longest, float(np.hypot(*c.vector)))
+    return longest
+
+
+def _acceleration_scale(solution: Solution, shrink: int) -> float | None:
+    """μa `shrink` series steps above the one drawing the longest vector at most
+    200 mm; None once that vector would be shorter than 100 mm."""
+    lo, hi = ACCELERATION_GUIDE_MM
+    longest = _longest_acceleration(solution)
+    if not (math.isfinite(longest) and longest > 0):
+        return None
+    mu = next(iter(series(longest / hi * (1 - 1e-9), longest / hi * 100.0)))
+    mu = _next_scale(mu, shrink)
+    return mu if shrink == 0 or longest / mu >= lo * (1 - 1e-9) else None
+
+
+def _sheet_diagrams(
+    solution: Solution, mu_l: float, max_height: float = SHEET_DIAGRAM_HEIGHT_MM
+) -> tuple[KinematicDiagrams, DiagramScales]:
+    """The construction of the Solution's diagrams (the same grid, so the same
+    values and the same 5 % check) drawn at the sheet's scales: μ_S = μ_l of
+    the mechanism's drawing where the diagrams fit, whole-millimetre poles."""
+    dg = solution.require_diagrams()
+    c = dg.construction
+    chosen = diagram_scales(c.s, n1=c.n1, L=c.L, mu_l=mu_l, max_height=max_height)
+    drawn = graphical_differentiation(
+        c.s, n1=c.n1, mu_S=chosen.mu_S, L=c.L, H1=chosen.H1, H2=chosen.H2
+    )
+    return drawn, chosen
 
 
 def _sketch_all(
     solution: Solution,
     look: Any,
     lang: Language,
-    shrink: int,
+    mu_a: float,
+    mu_l: float,
     stacked: bool,
     cache: dict[tuple[str, float], Any],
-) -> tuple[dict[str, Sketch], dict[str, float]]:
-    """Every drawing but the mechanism, the plans `shrink` series steps from
-    their textbook scales; `cache` keeps what was drawn at a scale for the next try."""
+    diagram_height: float = SHEET_DIAGRAM_HEIGHT_MM,
+) -> tuple[dict[str, Sketch], dict[str, float], KinematicDiagrams]:
+    """Every drawing but the mechanism: the plans at μV and `mu_a`, the diagrams
+    at the scales that go with μ_l; `cache` keeps what was drawn at a scale."""
 
     def memo(name: str, mu: float, make: Callable[[], Any]) -> Any:
         if (name, mu) not in cache:
             cache[(name, mu)] = make()
         return cache[(name, mu)]
 
-    mu_v, mu_a = _plan_scales(solution)
-    mu_v, mu_a = _next_scale(mu_v, shrink), _next_scale(mu_a, shrink)
+    mu_v, _ = _plan_scales(solution)
     sketches: dict[str, Sketch] = {}
     sketches["structural-formula"] = memo(
         "structural-formula", 0.0, lambda: sketch_formula(solution, look, lang)
@@ -679,23 +774,136 @@ def _sketch_all(
             lambda: sketch_plan(solution, i, mu_a, "acceleration", look, lang)[0],
         )
 
+    tag = f"{diagram_height:g}"
+    drawn, chosen = memo(
+        f"diagram-scales-{tag}", mu_l, lambda: _sheet_diagrams(solution, mu_l, diagram_height)
+    )
+
     def diagrams() -> list[Sketch]:
         dg = solution.require_diagrams()
-        construction = dg.construction
-        s_dense = solution.s_dense
         return [
-            sketch_diagram(construction, which, look, lang, s_dense, dg.refinement)
+            sketch_diagram(
+                drawn,
+                which,
+                look,
+                lang,
+                solution.s_dense,
+                dg.refinement,
+                mu_l=mu_l if which == "s" else None,
+            )
             for which in ("s", "v", "a")
         ]
 
-    parts = memo("diagrams", 0.0, diagrams)
+    parts = memo(f"diagrams-{tag}", mu_l, diagrams)
     if stacked:
-        sketches["diagrams"] = memo("diagrams-stacked", 0.0, lambda: _stack(parts, look))
+        sketches["diagrams"] = memo(f"diagrams-stacked-{tag}", mu_l, lambda: _stack(parts, look))
     else:
         for which, sk in zip("sva", parts):
             sketches[f"diagram-{which}"] = sk
     sketches.update(memo("tables", 0.0, lambda: _sketch_tables(solution, look, lang)))
-    return sketches, {"mu_V": mu_v, "mu_a": mu_a}
+    scales = {
+        "mu_V": mu_v,
+        "mu_a": mu_a,
+        "mu_S": drawn.mu_S,
+        "mu_t": drawn.mu_t,
+        "mu_V_diagram": drawn.mu_V,
+        "mu_a_diagram": drawn.mu_a,
+        "H1": drawn.H1,
+        "H2": drawn.H2,
+    }
+    return sketches, scales, drawn
+
+
+def _geometric_extent(solution: Solution) -> tuple[float, float]:
+    """Width and height (m) of the mechanism in every position with its trajectories."""
+    xs: list[float] = []
+    ys: list[float] = []
+    for source in (solution.sweep.points, solution.dense.points):
+        for arr in source.values():
+            a = np.asarray(arr, dtype=float).reshape(-1, 2)
+            a = a[np.all(np.isfinite(a), axis=1)]
+            if len(a):
+                xs += [float(a[:, 0].min()), float(a[:, 0].max())]
+                ys += [float(a[:, 1].min()), float(a[:, 1].max())]
+    if not xs:
+        return (1.0, 1.0)
+    return (max(xs) - min(xs), max(ys) - min(ys))
+
+
+def _order(sketches: Mapping[str, Sketch], stacked: bool) -> list[str]:
+    # Big fixed pieces first: the column of diagrams bottom left, the tables
+    # from the top right, the mechanism in the field left of the tables and
+    # above the diagrams; the plans then take the free middle.
+    columns = ["diagrams"] if stacked else ["diagram-s", "diagram-v", "diagram-a"]
+    return [
+        *columns,
+        "table-velocities",
+        "table-accelerations",
+        "table-omega-eps",
+        "table-check",
+        "mechanism",
+        "structural-formula",
+    ] + [n for n in sketches if n.startswith("velocity-plan") or n.startswith("acceleration-plan")]
+
+
+def mechanism_field(layout: SheetLayout, gap: float) -> Rect:
+    """The field of the mechanism's drawing (Appendix A: top left): from the
+    left of the free region to the tables, from its top down to the diagrams."""
+    region = layout.region
+    right = region.left + region.width * MECHANISM_FIELD_SHARE
+    bottom = region.bottom
+    for e in layout.elements:
+        b = e.bounds
+        if e.name.startswith("table"):
+            right = max(right, min(region.right, b.left - gap)) if right < b.left else right
+        elif e.name.startswith("diagram"):
+            bottom = max(bottom, b.top + gap)
+    tables = [e.bounds.left for e in layout.elements if e.name.startswith("table")]
+    if tables:
+        right = max(region.left + region.width * MECHANISM_FIELD_SHARE, min(tables) - gap)
+    return Rect.from_bounds(region.left, min(bottom, region.top - 1.0), right, region.top)
+
+
+def _try_layout(
+    page: Page,
+    sketches: Mapping[str, Sketch],
+    order: Sequence[str],
+    gap: float,
+    with_field: bool,
+    tables_width: float | None = None,
+) -> tuple[SheetLayout, dict[str, Rect], Rect | None]:
+    """Place every sketch in `order`; the mechanism inside its field when
+    `with_field` (LayoutError if it does not fit there); the tables within
+    `tables_width` mm of the right edge when given (a block, not a row)."""
+    layout = SheetLayout(page, gap=gap)
+    region = layout.region
+    placed: dict[str, Rect] = {}
+    field: Rect | None = None
+    for name in order:
+        ext = sketches[name].extent()
+        corner = _PLACEMENT.get(name, "top-left")
+        kind = "table" if name.startswith("table") else "drawing"
+        within = None
+        if kind == "table" and tables_width is not None:
+            width = min(region.width, max(tables_width, ext.width))
+            within = Rect(region.right - width, region.bottom, width, region.height)
+        if name == "mechanism" and with_field:
+            field = mechanism_field(layout, gap)
+            if ext.width > field.width + 1e-6 or ext.height > field.height + 1e-6:
+                raise LayoutError(
+                    f"mechanism: {ext.width:.0f} x {ext.height:.0f} mm is larger than "
+                    f"its field {field.width:.0f} x {field.height:.0f} mm"
+                )
+            within = field
+        placed[name] = layout.place(
+            name,
+            ext.width,
+            ext.height,
+            kind=kind,  # type: ignore[arg-type]
+            corner=corner,  # type: ignore[arg-type]
+            within=within,
+        )
+    return layout, placed, field
 
 
 def compose_sheet1(
@@ -703,63 +911,123 @@ def compose_sheet1(
 ) -> Sheet1:
     """Draw sheet 1 of `solution` on `backend`; returns the layout and scales used.
 
-    Scales from the textbook's (seed 003: pa, πa) raised a step at a time until
-    everything fits; the mechanism is tried up to two steps finer first, so
-    that a sheet with room draws it large.
+    μ_l is the series value (1, 2, 2.5, 4, 5 × 10^k) that draws the mechanism
+    in all its positions largest within its field (top left: left of the
+    tables, above the diagrams); the plans keep the textbook's sizes (pa 100 …
+    150 mm, the acceleration plan's longest vector 100 … 200 mm); the diagrams
+    are drawn at μ_S = μ_l with whole-millimetre poles. Where the rest does
+    not fit, the mechanism goes a step smaller, then the acceleration plans.
     """
     page = page if page is not None else Page.of("A1")
     check_language(lang)
-    last: Exception | None = None
+    look = backend.look
     cache: dict[tuple[str, float], Any] = {}
+    region = SheetLayout(page).region
+    width_m, height_m = _geometric_extent(solution)
+    # the largest the drawing could be: the region's width or height
+    start = max(width_m / region.width, height_m / region.height, 1e-9)
+    candidates = list(series(start * (1 - 1e-9), start * 1e4, LENGTH_MANTISSA_TEXT))[:16]
+
+    def mechanism(mu_l: float) -> Sketch:
+        if ("mechanism", mu_l) not in cache:
+            cache[("mechanism", mu_l)] = sketch_mechanism(solution, mu_l, look, lang)
+        return cast(Sketch, cache[("mechanism", mu_l)])
+
+    last: Exception | None = None
+    fitted = 0  # candidates whose mechanism fitted its field but whose sheet did not
+    for mu_l in candidates:
+        if width_m / mu_l > region.width or height_m / mu_l > region.height:
+            continue
+        placed_field = False
+        for dh, shrink in itertools.product(DIAGRAM_HEIGHTS_MM, (0, 1)):
+            mu_a = _acceleration_scale(solution, shrink)
+            if mu_a is None:
+                continue
+            sketches, scales, drawn = _sketch_all(solution, look, lang, mu_a, mu_l, True, cache, dh)
+            sketches["mechanism"] = mechanism(mu_l)
+            order = _order(sketches, True)
+            tables = [sketches[n].extent().width for n in order if n.startswith("table")]
+            # the tables in a row across the top right, or in a block two rows high
+            arrangements = (None, max(max(tables), sum(tables) / 2.0 + 8.0))
+            for gap, tables_width in itertools.product((8.0, 5.0), arrangements):
+                try:
+                    layout, placed, field = _try_layout(
+                        page, sketches, order, gap, True, tables_width
+                    )
+                except LayoutError as err:
+                    last = err
+                    placed_field = placed_field or not str(err).startswith("mechanism")
+                    continue
+                scales["mu_l"] = mu_l
+                result = Sheet1(layout, scales, shrink=shrink, field=field, diagrams=drawn)
+                return _draw(solution, backend, page, lang, sketches, order, placed, result)
+        fitted += placed_field
+        if fitted > 3:
+            break
+    return _fallback(solution, backend, page, lang, cache, last)
+
+
+def _draw(
+    solution: Solution,
+    backend: Backend,
+    page: Page,
+    lang: Language,
+    sketches: Mapping[str, Sketch],
+    order: Sequence[str],
+    placed: Mapping[str, Rect],
+    result: Sheet1,
+) -> Sheet1:
+    for name in order:
+        ext, rect = sketches[name].extent(), placed[name]
+        dx, dy = rect.x - ext.x, rect.y - ext.y
+        sketches[name].replay(backend, dx, dy)
+        result.origins[name] = (dx, dy)
+        result.placed[name] = rect
+    draw_page(backend, page, title_fields(solution, result.scales["mu_l"], lang, sheet=1), lang)
+    return result
+
+
+def _fallback(
+    solution: Solution,
+    backend: Backend,
+    page: Page,
+    lang: Language,
+    cache: dict[tuple[str, float], Any],
+    last: Exception | None,
+) -> Sheet1:
+    """A crowded sheet: the acceleration plans and the mechanism smaller, step
+    by step from the file's μ_l, the diagrams apart if need be."""
+    look = backend.look
+    base_a = _acceleration_scale(solution, 0) or _plan_scales(solution)[1]
     attempts = [
-        (shrink, stacked, bigger, gap)
+        (shrink, stacked, gap)
         for shrink in range(5)
         for stacked in (True, False)
-        for bigger in (2, 1, 0)
         for gap in (8.0, 5.0)
     ]
-    for shrink, stacked, bigger, gap in attempts:
-        sketches, scales = _sketch_all(solution, backend.look, lang, shrink, stacked, cache)
-        mu_l = length_scale_step(float(solution.mu_l), max(0, shrink - 1) - bigger)
+    for shrink, stacked, gap in attempts:
+        mu_l = length_scale_step(float(solution.mu_l), shrink)
+        sketches, scales, drawn = _sketch_all(
+            solution, look, lang, _next_scale(base_a, shrink), mu_l, stacked, cache
+        )
         if ("mechanism", mu_l) not in cache:
-            cache[("mechanism", mu_l)] = sketch_mechanism(solution, mu_l, backend.look, lang)
+            cache[("mechanism", mu_l)] = sketch_mechanism(solution, mu_l, look, lang)
         sketches["mechanism"] = cache[("mechanism", mu_l)]
-        scales["mu_l"] = mu_l
-        layout = SheetLayout(page, gap=gap)
-        placed: dict[str, Rect] = {}
+        order = _order(sketches, stacked)
         try:
-            # Big fixed pieces first: the mechanism top left, the column of
-            # diagrams bottom left, the tables from the top right; the plans
-            # then take the free middle.
-            columns = ["diagrams"] if stacked else ["diagram-s", "diagram-v", "diagram-a"]
-            order = [
-                "mechanism",
-                *columns,
-                "table-velocities",
-                "table-accelerations",
-                "table-omega-eps",
-                "table-check",
-                "structural-formula",
-            ] + [
-                n
-                for n in sketches
-                if n.startswith("velocity-plan") or n.startswith("acceleration-plan")
-            ]
-            for name in order:
-                ext = sketches[name].extent()
-                corner = _PLACEMENT.get(name, "top-left")
-                kind = "table" if name.startswith("table") else "drawing"
-                placed[name] = layout.place(name, ext.width, ext.height, kind=kind, corner=corner)  # type: ignore[arg-type]
+            layout, placed, _ = _try_layout(page, sketches, order, gap, False)
         except LayoutError as err:
             last = err
             continue
-        result = Sheet1(layout, scales, shrink=shrink)
-        for name in order:
-            ext, rect = sketches[name].extent(), placed[name]
-            dx, dy = rect.x - ext.x, rect.y - ext.y
-            sketches[name].replay(backend, dx, dy)
-            result.origins[name] = (dx, dy)
-            result.placed[name] = rect
-        draw_page(backend, page, title_fields(solution, mu_l, lang), lang)
-        return result
+        scales["mu_l"] = mu_l
+        return _draw(
+            solution,
+            backend,
+            page,
+            lang,
+            sketches,
+            order,
+            placed,
+            Sheet1(layout, scales, shrink=shrink, diagrams=drawn),
+        )
     raise LayoutError(f"sheet 1 does not fit on {page.name or 'the page'}: {last}")

@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 import mmt_plans
+from mmt_plans.i18n import catalogue
 from mmt_plans.render.recording import RecordingBackend
 from mmt_plans.sheets.sheet1 import compose_sheet1
 from mmt_plans.sheets.sheet2 import compose_sheet2
@@ -35,6 +36,10 @@ def test_sheets_in_one_language(path):
     for lang in ("en", "uk"):
         for t in texts(solution, lang):
             assert not re.search(r"\b(None|nan|inf)\b", t), t
+    prefix = catalogue("uk").words("title_block")["designation_prefix"]
     for t in texts(solution, "uk"):
         assert not ENGLISH.search(t), t
+        if t.startswith(prefix + "."):  # the designation: dots part its codes, not decimals
+            assert re.fullmatch(re.escape(prefix) + r"(\.[0-9А-ЯІЇЄҐ_-]+)+", t), t
+            continue
         assert not re.search(r"\d\.\d", t), t  # the decimal comma

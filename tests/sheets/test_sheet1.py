@@ -10,7 +10,7 @@ import pytest
 
 import mmt_plans
 from mmt_plans.render.recording import RecordingBackend
-from mmt_plans.scales import ACCELERATION_PLAN, VELOCITY_PLAN, scale_for
+from mmt_plans.scales import VELOCITY_PLAN, scale_for
 from mmt_plans.sheets.sheet1 import compose_sheet1
 
 from lettering import clashes
@@ -49,14 +49,32 @@ def test_every_required_group_is_drawn(press):
 
 
 def test_plan_scales_are_the_standard_ones(press):
+    """pa = V_A/μV in the textbook's 100 … 150 mm; the acceleration plan's longest
+    vector (an image or a component) 100 … 200 mm, its μa the largest drawing
+    within 200 mm (one series step up, if the sheet needed it, still >= 100)."""
+    from mmt_plans.scales import is_standard
+
     analysis, _, sheet = press
     pin = analysis.mechanism.crank_pin
     view = analysis.plan(analysis.plan_positions[0])
-    assert sheet.shrink == 0
     assert sheet.scales["mu_V"] == scale_for(float(np.hypot(*view.velocity_images[pin])), VELOCITY_PLAN)
-    assert sheet.scales["mu_a"] == scale_for(
-        float(np.hypot(*view.acceleration_images[pin])), ACCELERATION_PLAN
+    longest = max(
+        max(float(np.hypot(*v)) for v in analysis.plan(i).acceleration_images.values())
+        for i in analysis.plan_positions
     )
+    longest = max(
+        [longest]
+        + [float(np.hypot(*c.vector)) for i in analysis.plan_positions
+           for g in analysis.plan(i).groups for c in g.acceleration]
+    )
+    mu_a = sheet.scales["mu_a"]
+    assert is_standard(mu_a)
+    assert 100.0 <= longest / mu_a <= 200.0
+    if sheet.shrink == 0:
+        # the next finer series value would draw it longer than 200 mm
+        finer = max(m * 10.0**k for m in (1, 1.25, 2, 2.5, 4, 5, 8) for k in range(-6, 6)
+                    if m * 10.0**k < mu_a * (1 - 1e-9))
+        assert longest / finer > 200.0
 
 
 @pytest.mark.parametrize("kind", ["velocity", "acceleration"])
@@ -147,7 +165,8 @@ def test_omega_and_epsilon_arcs_at_the_planned_positions(press):
 
 def test_s_curve_is_smooth_and_passes_through_the_positions(press):
     analysis, backend, sheet = press
-    construction = analysis.diagrams.construction
+    construction = sheet.diagrams  # the Solution's construction at the sheet's scales
+    assert np.array_equal(construction.s, analysis.diagrams.construction.s)
     curves = [c for c in backend.in_group("diagram-s") if c.name == "polyline" and c["line"] == "main"]
     assert len(curves) == 1
     pts = np.array(curves[0]["points"])
