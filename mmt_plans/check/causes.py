@@ -112,46 +112,15 @@ def scenarios(exact: Exact) -> list[Scenario]:
     d = mech.drive.link
     others = [lid for lid in moving if lid != d]
     heavy = [lid for lid in moving if mech.links[lid].mass or mech.links[lid].J]
-    out = [
-        Scenario(
-            "inertia_others",
-            Cause("cause_inertia_links", (("links", _links(others)),)),
-            (("inertia_forces", (d,)), ("inertia_moments", (d,))),
-        ),
-        Scenario(
-            "inertia_all",
-            Cause("cause_inertia_all"),
-            (("inertia_forces", ()), ("inertia_moments", ())),
-        ),
-        Scenario("moments_all", Cause("cause_moments_all"), (("inertia_moments", ()),)),
-        Scenario("gravity", Cause("cause_gravity"), (("gravity", False),)),
-    ]
-    if len(heavy) > 1:
-        for lid in heavy:
-            kept = tuple(x for x in moving if x != lid)
-            out.append(
-                Scenario(
-                    f"inertia_{lid}",
-                    Cause("cause_inertia_link", (("link", str(lid)),)),
-                    (("inertia_forces", kept), ("inertia_moments", kept)),
-                )
-            )
-    # a force applied at the wrong point: F_in at S (its M_in left out), F_in
-    # shifted to the wrong side of S, G at another point of the link
+    # a force applied at the wrong point: F_in of one link at S (its M_in left
+    # out), F_in shifted to the wrong side of S; named before the mistakes of
+    # every link that give the same value where only one link turns
     turning = [lid for lid in moving if mech.links[lid].J]
-    if turning:
-        out.append(
-            Scenario(
-                "shift_reversed",
-                Cause("cause_shift_reversed_all"),
-                (("inertia_moments_reversed", tuple(turning)),),
-                False,
-            )
-        )
+    one_link: list[Scenario] = []
     if len(turning) > 1:
         for lid in turning:
             kept = tuple(x for x in moving if x != lid)
-            out += [
+            one_link += [
                 Scenario(
                     f"at_s_{lid}",
                     Cause("cause_inertia_at_s", (("link", str(lid)),)),
@@ -165,6 +134,42 @@ def scenarios(exact: Exact) -> list[Scenario]:
                     False,
                 ),
             ]
+    out = [
+        Scenario(
+            "inertia_others",
+            Cause("cause_inertia_links", (("links", _links(others)),)),
+            (("inertia_forces", (d,)), ("inertia_moments", (d,))),
+        ),
+        Scenario(
+            "inertia_all",
+            Cause("cause_inertia_all"),
+            (("inertia_forces", ()), ("inertia_moments", ())),
+        ),
+        *one_link,
+        Scenario("moments_all", Cause("cause_moments_all"), (("inertia_moments", ()),)),
+        Scenario("gravity", Cause("cause_gravity"), (("gravity", False),)),
+    ]
+    if turning:
+        out.append(
+            Scenario(
+                "shift_reversed",
+                Cause("cause_shift_reversed_all")
+                if len(turning) > 1
+                else Cause("cause_shift_reversed", (("link", str(turning[0])),)),
+                (("inertia_moments_reversed", tuple(turning)),),
+                False,
+            )
+        )
+    if len(heavy) > 1:
+        for lid in heavy:
+            kept = tuple(x for x in moving if x != lid)
+            out.append(
+                Scenario(
+                    f"inertia_{lid}",
+                    Cause("cause_inertia_link", (("link", str(lid)),)),
+                    (("inertia_forces", kept), ("inertia_moments", kept)),
+                )
+            )
     out += _weights_elsewhere(exact)
     s = 1.0 if mech.drive.sense == "ccw" else -1.0
     out += [
