@@ -290,7 +290,7 @@ def _arm_candidates(a: Answer, fa: ForceAnalysis, mu_l: float) -> Iterator[Candi
         if size(Q - B) <= 1e-9 * max(size(P - B), 1e-300):
             continue
         v = arm_about(F, P, Q) / scale
-        yield Candidate(v, Cause("cause_arm_from", (("point", n), ("pivot", pivot))))
+        yield Candidate(v, Cause("cause_arm_from", (("point", n), ("pivot", pivot), ("value", v))))
     for other, (F2, P2, B2, link2) in forces.items():
         if other != a.name and link2 == link:
             v = arm_about(F2, P2, B2) / scale
