@@ -148,8 +148,8 @@ class CheckResult:
             values.append(
                 {
                     "what": a.label,
-                    "position": a.where.index,
-                    "phi1_deg": _finite(a.where.phi1_deg),
+                    "position": None if a.kind == "check_verdict" else a.where.index,
+                    "phi1_deg": None if a.kind == "check_verdict" else _finite(a.where.phi1_deg),
                     "unit": UNITS[a.kind][1],
                     "exact": _finite(v.exact),
                     "given": _finite(a.value),
@@ -192,6 +192,8 @@ def label(cat: Any, a: Answer) -> str:
 
 
 def _where(cat: Any, a: Answer) -> str:
+    if a.kind == "check_verdict":  # the verdict of every investigated position
+        return "-"
     if a.where.index is not None:
         return str(a.where.index)
     return cat.word("check", "at_angle", phi=cat.number(a.where.phi1_deg, 6))

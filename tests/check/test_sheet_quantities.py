@@ -234,6 +234,9 @@ def test_sheet_check_right_and_wrong():
     assert by["a (plan)"].cause_key == "cause_check_diagram"
     assert not by["δV %"].passed and by["δV %"].deviation_percent == pytest.approx(-2 * dv - 10)
     row = next(line for line in res.text().splitlines() if "5 % check passed" in line)
+    assert row.split()[0] == "-"  # the verdict of every investigated position
+    data = res.json_data()["values"][0]
+    assert data["position"] is None and data["phi1_deg"] is None and data["unit"] == ""
     cells = row.split("passed")[1].split()
     assert cells[:4] == (["yes", "no", "-", "FAIL"] if verdict else ["no", "yes", "-", "FAIL"])
 
