@@ -93,6 +93,15 @@ def check(
     ranked: dict[int, list] = {}
     for k, a in enumerate(answers.values):
         x = _exact(exact, a)
+        if a.kind == "check_verdict":  # true or false: no deviation
+            rows.append((a, x, None, a.value == x))
+            continue
+        if a.kind == "check_delta":  # a percentage: its deviation in percentage points
+            deviation = a.value - x
+            rows.append((a, x, deviation, abs(deviation) <= tol))
+            if abs(deviation) > tol:
+                ranked[k] = rank(a.value, x, list(kinematic_candidates(a, exact, x, drawn)))
+            continue
         largest = _largest(exact, a)
         if abs(x) <= _ZERO * largest:  # an exact zero: within tol of the largest value
             rows.append((a, 0.0, None, abs(a.value) <= frac * largest))
@@ -169,6 +178,10 @@ def _largest(exact: Exact, a: Answer) -> float:
         return max(abs(x) for x in (plan.omega if a.kind == "omega" else plan.eps).values())
     if a.kind in ("mu_V", "mu_a"):
         return abs(exact.kinematic(a))
+    if a.kind in ("check_V", "check_a"):
+        sc = exact.solution.require_diagrams().sheet_check
+        q = a.extra[1]
+        return max(max(abs(v.plan), abs(v.diagram)) for v in sc.values if v.quantity == q)
     if a.kind == "diagram":
         sol = exact.solution
         what = a.extra[0]
@@ -192,6 +205,11 @@ def _largest(exact: Exact, a: Answer) -> float:
                 for lid in fa.loads.links
             ]
         )
+    if a.kind in ("group_arm_m", "group_arm_mm"):
+        from .quantities import arm_about, arm_forces
+
+        arms = [arm_about(F, P, B) for F, P, B, _ in arm_forces(fa).values()]
+        return max(arms) / (a.mu or exact.solution.mu_l if a.kind == "group_arm_mm" else 1.0)
     big = max(
         [
             abs(fa.balancing_force_plans),

@@ -56,6 +56,7 @@ KEYS: dict[str, tuple[str, ...]] = {
         "mu_F",
         "mu_V",
         "mu_l",
+        "mu_l_groups",
         "balancing_force_plans",
         "balancing_force_lever",
         "balancing_moment",
@@ -68,8 +69,24 @@ KEYS: dict[str, tuple[str, ...]] = {
         "inertia_arms_mm",
         "force_plan_mm",
         "lever_mm",
+        "group_arms_m",
+        "group_arms_mm",
     ),
-    "diagrams": ("mu_S", "mu_V", "mu_a", "S_mm", "V_mm", "a_mm"),
+    "diagrams": (
+        "mu_S",
+        "mu_V",
+        "mu_a",
+        "S_mm",
+        "V_mm",
+        "a_mm",
+        "check_passed",
+        "V_plan",
+        "V_diagram",
+        "dV_percent",
+        "a_plan",
+        "a_diagram",
+        "da_percent",
+    ),
 }
 
 # key: (kind, signed) of a position's tables of values
@@ -95,8 +112,20 @@ _FORCE_TABLES: dict[str, tuple[str, str, str]] = {
     "inertia_arms_mm": ("inertia_arm_mm", "link", ""),
     "force_plan_mm": ("force_plan_mm", "force", "mu_F"),
     "lever_mm": ("lever_mm", "lever", "mu_V"),
+    "group_arms_m": ("group_arm_m", "arm", ""),
+    "group_arms_mm": ("group_arm_mm", "arm", ""),
 }
 _DIAGRAM_TABLES = {"S_mm": ("S", "mu_S"), "V_mm": ("V", "mu_V"), "a_mm": ("a", "mu_a")}
+# the 5 % check of the diagrams against the plans (seed 003 (12), (13)), by
+# investigated position: key: (kind, quantity, column)
+_CHECK_TABLES = {
+    "V_plan": ("check_V", "v", "plan"),
+    "V_diagram": ("check_V", "v", "diagram"),
+    "dV_percent": ("check_delta", "v", "error"),
+    "a_plan": ("check_a", "a", "plan"),
+    "a_diagram": ("check_a", "a", "diagram"),
+    "da_percent": ("check_delta", "a", "error"),
+}
 
 VELOCITY_POLES = ("p",)
 ACCELERATION_POLES = ("pi", "π", "p")
@@ -117,9 +146,17 @@ _EXAMPLES = {
     "inertia_arms_mm": '"2" = 20',
     "force_plan_mm": "R12 = 203",
     "lever_mm": "h_G2 = 12.5",
+    "group_arms_m": "G2 = 0.081",
+    "group_arms_mm": "G2 = 40.5",
     "S_mm": '"3" = 41.5',
     "V_mm": '"3" = 52.0',
     "a_mm": '"3" = -20.4',
+    "V_plan": '"3" = 1.52',
+    "V_diagram": '"3" = 1.49',
+    "dV_percent": '"3" = 2.0',
+    "a_plan": '"3" = -5.1',
+    "a_diagram": '"3" = -5.3',
+    "da_percent": '"3" = -3.9',
 }
 
 
@@ -509,7 +546,7 @@ class _Reader:
                 f"no force analysis at this position: {err}",
                 "check the position of your force analysis",
             ) from None
-        scales = {k: self.scale(table, k, entry) for k in ("mu_F", "mu_V", "mu_l")}
+        scales = {k: self.scale(table, k, entry) for k in ("mu_F", "mu_V", "mu_l", "mu_l_groups")}
         out = []
         for key in _FORCE_VALUES:
             if key in table:
@@ -535,6 +572,8 @@ class _Reader:
                 )
             if kind == "inertia_arm_mm":
                 mu = scales["mu_l"] or self.analysis.mu_l
+            if kind == "group_arm_mm":
+                mu = scales["mu_l_groups"] or scales["mu_l"] or self.analysis.mu_l
             for name, raw in self.values_of(table, key, where).items():
                 name = self.key(str(name), where)
                 at = f"{where}.{name}"
@@ -560,6 +599,9 @@ class _Reader:
                 elif names == "force":
                     self.plan_force(name, fa, at)
                     label = f"{name} (force plan)"
+                elif names == "arm":
+                    self.arm(name, fa, at)
+                    label = f"h'_{name}" + (" (mm)" if kind == "group_arm_mm" else "")
                 else:
                     extra = self.lever_name(name, fa, at)
                     label = f"{name} (lever)"
@@ -612,6 +654,17 @@ class _Reader:
                 f"forces: {', '.join(forces)}",
             ) from None
 
+    def arm(self, name: str, fa: ForceAnalysis, entry: str) -> None:
+        from .quantities import arm_forces
+
+        forces = list(arm_forces(fa))
+        if name not in forces:
+            raise self.fail(
+                entry,
+                f"{name!r} is not a force of a group's moment equation about its inner pin",
+                f"forces with an arm h': {', '.join(forces) or 'none in this mechanism'}",
+            )
+
     def lever_name(self, name: str, fa: ForceAnalysis, entry: str) -> tuple:
         lever = fa.lever
         labels = [f.label for f in lever.forces] + ["F_bal"]
@@ -628,6 +681,7 @@ class _Reader:
 
     # --- [diagrams] -----------------------------------------------------------------
     def diagrams(self, table: Any, entry: str) -> list[Answer]:
+        """The output's diagrams: ordinates in mm and the 5 % check against the plans."""
         self.check_keys(table, "diagrams", entry)
         n = self.analysis.mechanism.study.positions
         out = []
@@ -656,6 +710,76 @@ class _Reader:
                 label = f"{what} ordinate"
                 out.append(
                     Answer(at, w, "diagram", name, value, True, label, mu, None, None, (what,))
+                )
+        if any(k in table for k in ("check_passed", *_CHECK_TABLES)):
+            out += self.sheet_check(table, entry)
+        return out
+
+    def sheet_check(self, table: dict, entry: str) -> list[Answer]:
+        """The 5 % check's verdict and its values at the investigated positions."""
+        dg = self.analysis.diagrams
+        if dg is None:
+            raise self.fail(
+                entry,
+                f"this mechanism has no kinematic diagrams: {self.analysis.diagrams_problem}",
+                "leave out check_passed and the check's values",
+            )
+        sc = dg.sheet_check
+        out = []
+        if "check_passed" in table:
+            value = table["check_passed"]
+            if not isinstance(value, bool):
+                raise self.fail(
+                    f"{entry}.check_passed",
+                    f"must be true or false, not {show_value(value)}",
+                    "write check_passed = true (every δ within 5 %) or false",
+                )
+            w = self.exact.where(index=sc.values[0].index)
+            out.append(
+                Answer(
+                    f"{entry}.check_passed",
+                    w,
+                    "check_verdict",
+                    "",
+                    1.0 if value else 0.0,
+                    True,
+                    "5 % check passed",
+                )
+            )
+        investigated = sorted({v.index for v in sc.values})
+        for key, (kind, quantity, column) in _CHECK_TABLES.items():
+            if key not in table:
+                continue
+            where = f"{entry}.{key}"
+            for name, raw in self.values_of(table, key, where).items():
+                name = self.key(str(name), where)
+                at = f"{where}.{name}"
+                if not name.isdigit() or int(name) not in investigated:
+                    raise self.fail(
+                        at,
+                        f"{name!r} is not an investigated position of the 5 % check",
+                        "key each value by an investigated position: "
+                        + ", ".join(f'"{i}"' for i in investigated),
+                    )
+                val = next(v for v in sc.values if v.index == int(name) and v.quantity == quantity)
+                if column == "error" and val.ill_conditioned:
+                    raise self.fail(
+                        at,
+                        f"at position {name} the plan's value is near zero: the check takes "
+                        "its absolute error, not a percentage",
+                        f"leave {key} out at position {name}",
+                    )
+                value = self.number(raw, at)
+                label = {
+                    "plan": f"{quantity.upper() if quantity == 'v' else 'a'} (plan)",
+                    "diagram": f"{quantity.upper() if quantity == 'v' else 'a'} (diagram)",
+                    "error": f"δ{'V' if quantity == 'v' else 'a'} %",
+                }[column]
+                w = self.exact.where(index=int(name))
+                out.append(
+                    Answer(
+                        at, w, kind, name, value, True, label, None, None, None, (column, quantity)
+                    )
                 )
         return out
 

@@ -23,7 +23,17 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..scales import series
-from .quantities import POLE, Answer, Exact, Where, force_value, size
+from .quantities import (
+    CHECK_KINDS,
+    POLE,
+    Answer,
+    Exact,
+    Where,
+    arm_about,
+    arm_forces,
+    force_value,
+    size,
+)
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..forces import ForceAnalysis
@@ -46,6 +56,10 @@ KINEMATIC = {
     "mu_V",
     "mu_a",
     "diagram",
+    "check_V",
+    "check_a",
+    "check_delta",
+    "check_verdict",
 }
 
 
@@ -87,6 +101,9 @@ class Scenario:
     group: str  # the mistake (without R0d's): shared by the values it explains
     cause: Cause
     options: tuple[tuple[str, Any], ...]
+    # also recomputed with R0d without F_bal (a force at the wrong point is not:
+    # its small change would only blur R0d's own mistake)
+    combines: bool = True
 
 
 def scenarios(exact: Exact) -> list[Scenario]:
@@ -95,6 +112,28 @@ def scenarios(exact: Exact) -> list[Scenario]:
     d = mech.drive.link
     others = [lid for lid in moving if lid != d]
     heavy = [lid for lid in moving if mech.links[lid].mass or mech.links[lid].J]
+    # a force applied at the wrong point: F_in of one link at S (its M_in left
+    # out), F_in shifted to the wrong side of S; named before the mistakes of
+    # every link that give the same value where only one link turns
+    turning = [lid for lid in moving if mech.links[lid].J]
+    one_link: list[Scenario] = []
+    if len(turning) > 1:
+        for lid in turning:
+            kept = tuple(x for x in moving if x != lid)
+            one_link += [
+                Scenario(
+                    f"at_s_{lid}",
+                    Cause("cause_inertia_at_s", (("link", str(lid)),)),
+                    (("inertia_moments", kept),),
+                    False,
+                ),
+                Scenario(
+                    f"shift_reversed_{lid}",
+                    Cause("cause_shift_reversed", (("link", str(lid)),)),
+                    (("inertia_moments_reversed", (lid,)),),
+                    False,
+                ),
+            ]
     out = [
         Scenario(
             "inertia_others",
@@ -106,9 +145,21 @@ def scenarios(exact: Exact) -> list[Scenario]:
             Cause("cause_inertia_all"),
             (("inertia_forces", ()), ("inertia_moments", ())),
         ),
+        *one_link,
         Scenario("moments_all", Cause("cause_moments_all"), (("inertia_moments", ()),)),
         Scenario("gravity", Cause("cause_gravity"), (("gravity", False),)),
     ]
+    if turning:
+        out.append(
+            Scenario(
+                "shift_reversed",
+                Cause("cause_shift_reversed_all")
+                if len(turning) > 1
+                else Cause("cause_shift_reversed", (("link", str(turning[0])),)),
+                (("inertia_moments_reversed", tuple(turning)),),
+                False,
+            )
+        )
     if len(heavy) > 1:
         for lid in heavy:
             kept = tuple(x for x in moving if x != lid)
@@ -119,6 +170,7 @@ def scenarios(exact: Exact) -> list[Scenario]:
                     (("inertia_forces", kept), ("inertia_moments", kept)),
                 )
             )
+    out += _weights_elsewhere(exact)
     s = 1.0 if mech.drive.sense == "ccw" else -1.0
     out += [
         Scenario("lever_not_turned", Cause("cause_lever_not_turned"), (("lever_turn_deg", 0.0),)),
@@ -128,6 +180,28 @@ def scenarios(exact: Exact) -> list[Scenario]:
             (("lever_turn_deg", 90.0 * s),),
         ),
     ]
+    return out
+
+
+def _weights_elsewhere(exact: Exact) -> list[Scenario]:
+    """G_i applied at each point of link i that is not its centre of mass."""
+    mech = exact.solution.mechanism
+    out = []
+    for lid, link in mech.links.items():
+        if not link.mass:
+            continue
+        length = max(link.length, 1e-300)
+        for name in link.points:
+            if abs(complex(*link.points[name]) - complex(*link.cm)) <= 1e-9 * length:
+                continue
+            out.append(
+                Scenario(
+                    f"weight_{lid}_{name}",
+                    Cause("cause_weight_at", (("link", str(lid)), ("point", name))),
+                    (("weight_at", ((lid, name),)),),
+                    False,
+                )
+            )
     return out
 
 
@@ -149,17 +223,22 @@ def force_candidates(a: Answer, exact: Exact, x: float) -> Iterator[Candidate]:
         if sc.group.startswith("lever") and a.kind not in ("balancing_force_lever", "lever_mm"):
             continue
         fa = exact.forces(w, **dict(sc.options))
-        yield Candidate(force_value(fa, a, mu_l), Cause(sc.cause.key, sc.cause.fields, sc.group))
+        v = _value(fa, a, mu_l)
+        if v is not None:
+            yield Candidate(v, Cause(sc.cause.key, sc.cause.fields, sc.group))
     if is_r0d:
         fa = exact.forces(w, balancing_in_r0d=False)
         r0d = (("name", fa.driving_link.reaction.name), ("link", str(d)))
         yield Candidate(force_value(fa, a, mu_l), Cause("cause_r0d_without_fbal", r0d, "r0d"))
         for sc in scenarios(exact):
-            if sc.group.startswith("lever"):
+            if sc.group.startswith("lever") or not sc.combines:
                 continue
             fa = exact.forces(w, balancing_in_r0d=False, **dict(sc.options))
+            v = _value(fa, a, mu_l)
+            if v is None:
+                continue
             yield Candidate(
-                force_value(fa, a, mu_l),
+                v,
                 Cause(
                     "cause_r0d_without_fbal_and",
                     (*r0d, ("also", Cause(sc.cause.key, sc.cause.fields))),
@@ -177,11 +256,49 @@ def force_candidates(a: Answer, exact: Exact, x: float) -> Iterator[Candidate]:
                         "cause_other_reaction", (("name", other.name), ("value", other.magnitude))
                     ),
                 )
+    if a.kind in ("group_arm_m", "group_arm_mm"):
+        yield from _arm_candidates(a, fa, mu_l)
     if a.kind in ("weight", "inertia_force", "inertia_moment", "inertia_arm_m", "inertia_arm_mm"):
         for lid in fa.loads.links:
             if str(lid) != a.name:
                 v = force_value(fa, Answer(a.entry, w, a.kind, str(lid), a.value, mu=a.mu), mu_l)
                 yield Candidate(v, Cause("cause_other_link", (("link", str(lid)), ("value", v))))
+
+
+def _value(fa: ForceAnalysis, a: Answer, mu_l: float) -> float | None:
+    """The answer's quantity in a force analysis with a mistake made; None where
+    the mistake removes it (the arm of an inertia force left out)."""
+    try:
+        return force_value(fa, a, mu_l)
+    except (KeyError, StopIteration):
+        return None
+
+
+def _arm_candidates(a: Answer, fa: ForceAnalysis, mu_l: float) -> Iterator[Candidate]:
+    """A group's arm h' measured from another point of the link than the inner
+    pin, or another force's arm of the same equation."""
+    forces = arm_forces(fa)
+    F, P, B, link = forces[a.name]
+    scale = 1.0 if a.kind == "group_arm_m" else (a.mu or mu_l)
+    state = fa.loads.state
+    pivot = next(
+        (n for n in state.mech.links[link].points if size(_xy(state.point(link, n)) - B) < 1e-9),
+        "B",
+    )
+    for n in state.mech.links[link].points:
+        Q = _xy(state.point(link, n))
+        if size(Q - B) <= 1e-9 * max(size(P - B), 1e-300):
+            continue
+        v = arm_about(F, P, Q) / scale
+        yield Candidate(v, Cause("cause_arm_from", (("point", n), ("pivot", pivot), ("value", v))))
+    for other, (F2, P2, B2, link2) in forces.items():
+        if other != a.name and link2 == link:
+            v = arm_about(F2, P2, B2) / scale
+            yield Candidate(v, Cause("cause_other_arm", (("force", other), ("value", v))))
+
+
+def _xy(z: complex) -> np.ndarray:
+    return np.array([z.real, z.imag])
 
 
 def _is_r0d(a: Answer, d: int) -> bool:
@@ -213,7 +330,14 @@ def kinematic_candidates(
     if a.signed:
         yield Candidate(-x, Cause("cause_sign", (("exact", x),)))
     yield from _scale_slips(a, x)
-    if a.kind in ("mu_V", "mu_a", "diagram"):
+    if a.kind in ("check_V", "check_a"):  # the other column of the check's table
+        column, quantity = a.extra
+        other = "diagram" if column == "plan" else "plan"
+        v = exact.kinematic(
+            Answer(a.entry, a.where, a.kind, a.name, a.value, extra=(other, quantity))
+        )
+        yield Candidate(v, Cause(f"cause_check_{other}", (("value", v),)))
+    if a.kind in ("mu_V", "mu_a", "diagram", *CHECK_KINDS):
         return
     plan = exact.plan(a.where)
     other = _OTHER[a.kind]

@@ -22,6 +22,9 @@ if TYPE_CHECKING:  # pragma: no cover
 
 POLE = ""  # a segment's end at the pole
 
+# the 5 % check of the diagrams against the plans (seed 003 (12), (13))
+CHECK_KINDS = ("check_V", "check_a", "check_delta", "check_verdict")
+
 
 @dataclass(frozen=True)
 class Where:
@@ -92,6 +95,8 @@ class Exact:
         """The force analysis at `w`; with keywords of force_analysis_at, the
         analysis with that mistake made."""
         key = (w.key, tuple(sorted((k, _hashable(v)) for k, v in mistake.items())))
+        if "weight_at" in mistake:  # given as pairs (link, point): hashable
+            mistake = {**mistake, "weight_at": dict(mistake["weight_at"])}
         if key not in self._forces:
             if not mistake:
                 if w.index is not None:
@@ -136,6 +141,13 @@ class Exact:
         if kind in ("mu_V", "mu_a"):  # V_A / pa or a_A / πa of the student's own pa
             images = plan.velocity_images if kind == "mu_V" else plan.acceleration_images
             return size(images[a.name]) / a.extra[0]
+        if kind in CHECK_KINDS:  # the 5 % check of the diagrams against the plans
+            sc = self.solution.require_diagrams().sheet_check
+            if kind == "check_verdict":
+                return 1.0 if sc.passed else 0.0
+            column, quantity = a.extra
+            val = next(v for v in sc.values if v.index == w.index and v.quantity == quantity)
+            return {"plan": val.plan, "diagram": val.diagram, "error": val.error_percent}[column]
         if kind == "diagram":
             assert w.index is not None and a.mu is not None
             s, v, acc = self.output(w.index)
@@ -221,6 +233,48 @@ def _lever(fa: ForceAnalysis, a: Answer, mu_l: float) -> float:
     return size(lever.images[point]) / a.mu
 
 
+def arm_forces(
+    fa: ForceAnalysis,
+) -> dict[str, tuple[np.ndarray, np.ndarray, np.ndarray, int]]:
+    """The forces of each group's moment equations about its inner pin (ΣM_B(L) = 0,
+    the equation of R^τ of an outer pair split into R^n and R^τ; sheet 2 draws
+    their arms h'_k): the force's label -> (force N, its point m, the pin B m).
+    The inertia force acts at K_i (shifted by h_i), as the sheet draws it; the
+    last item is the link the force acts on."""
+    out: dict[str, tuple[np.ndarray, np.ndarray, np.ndarray, int]] = {}
+    for g in fa.groups:
+        inner = g.reactions[2]
+        if inner.kind != "R":
+            continue
+        own = {name for r in g.reactions for name in (r.name, r.reversed().name)}
+        B = np.asarray(inner.point, float)
+        for k, L in enumerate(g.links):
+            if len(g.reactions[k].components) != 2:
+                continue
+            for f in g.free_bodies[L]:
+                if f.label in own or size(f.force) == 0.0:
+                    continue
+                P = np.asarray(f.point, float)
+                if f.label == f"F_in{L}":
+                    sh = fa.loads.links[L].shifted_inertia_force
+                    if sh is not None:
+                        P = np.asarray(sh.point, float)
+                out[f.label] = (np.asarray(f.force, float), P, B, L)
+    return out
+
+
+def arm_about(F: np.ndarray, P: np.ndarray, B: np.ndarray) -> float:
+    """The arm of F acting at P about B, m: |(P − B) × F| / |F|."""
+    r = P - B
+    return abs(float(r[0] * F[1] - r[1] * F[0])) / size(F)
+
+
+def group_arm(fa: ForceAnalysis, a: Answer) -> float:
+    """The arm h of a force in its group's moment equation about the inner pin, m."""
+    F, P, B, _ = arm_forces(fa)[a.name]
+    return arm_about(F, P, B)
+
+
 FORCE_KINDS: dict[str, Callable[[ForceAnalysis, Answer, float], float]] = {
     "balancing_force_plans": lambda fa, a, _: _signed(fa.balancing_force_plans, a),
     "balancing_force_lever": lambda fa, a, _: _signed(fa.balancing_force_lever, a),
@@ -234,6 +288,8 @@ FORCE_KINDS: dict[str, Callable[[ForceAnalysis, Answer, float], float]] = {
     "inertia_arm_mm": lambda fa, a, mu_l: _arm(fa, a) / (a.mu or mu_l),
     "force_plan_mm": lambda fa, a, _: _named_force(fa, a.name) / (a.mu or 1.0),
     "lever_mm": _lever,
+    "group_arm_m": lambda fa, a, _: group_arm(fa, a),
+    "group_arm_mm": lambda fa, a, mu_l: group_arm(fa, a) / (a.mu or mu_l),
 }
 
 

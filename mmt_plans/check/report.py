@@ -35,6 +35,12 @@ UNITS: dict[str, tuple[str, str]] = {
     "inertia_arm_mm": ("mm", "mm"),
     "force_plan_mm": ("mm", "mm"),
     "lever_mm": ("mm", "mm"),
+    "group_arm_m": ("m", "m"),
+    "group_arm_mm": ("mm", "mm"),
+    "check_V": ("m/s", "m/s"),
+    "check_a": ("m/s2", "m/s2"),
+    "check_delta": ("%", "%"),
+    "check_verdict": ("", ""),
 }
 
 
@@ -94,9 +100,9 @@ class CheckResult:
                 [
                     _where(cat, a),
                     label(cat, a),
-                    cat.unit(UNITS[a.kind][0]),
-                    _num(cat, v.exact),
-                    _num(cat, a.value),
+                    cat.unit(UNITS[a.kind][0]) if UNITS[a.kind][0] else "",
+                    _yes_no(cat, v.exact) if a.kind == "check_verdict" else _num(cat, v.exact),
+                    _yes_no(cat, a.value) if a.kind == "check_verdict" else _num(cat, a.value),
                     dev,
                     w["pass"] if v.passed else w["fail"],
                     cause,
@@ -142,8 +148,8 @@ class CheckResult:
             values.append(
                 {
                     "what": a.label,
-                    "position": a.where.index,
-                    "phi1_deg": _finite(a.where.phi1_deg),
+                    "position": None if a.kind == "check_verdict" else a.where.index,
+                    "phi1_deg": None if a.kind == "check_verdict" else _finite(a.where.phi1_deg),
                     "unit": UNITS[a.kind][1],
                     "exact": _finite(v.exact),
                     "given": _finite(a.value),
@@ -170,6 +176,9 @@ _LABEL_WORDS = {
     "(force plan)": "l_force_plan",
     "ordinate": "l_ordinate",
     "(mm)": "l_mm",
+    "(plan)": "l_plan",
+    "(diagram)": "l_diagram",
+    "5 % check passed": "l_check_passed",
 }
 
 
@@ -183,9 +192,15 @@ def label(cat: Any, a: Answer) -> str:
 
 
 def _where(cat: Any, a: Answer) -> str:
+    if a.kind == "check_verdict":  # the verdict of every investigated position
+        return "-"
     if a.where.index is not None:
         return str(a.where.index)
     return cat.word("check", "at_angle", phi=cat.number(a.where.phi1_deg, 6))
+
+
+def _yes_no(cat: Any, x: float) -> str:
+    return cat.word("check", "yes" if x else "no")
 
 
 def _num(cat: Any, x: float) -> str:

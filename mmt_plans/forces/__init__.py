@@ -123,6 +123,8 @@ def force_analysis_at(
     gravity: bool = True,
     balancing_in_r0d: bool = True,
     lever_turn_deg: float | None = None,
+    inertia_moments_reversed: Collection[int] = (),
+    weight_at: Mapping[int, str] | None = None,
 ) -> ForceAnalysis:
     """The force analysis at the position of `state`: loads, the groups' force
     plans from the last attached group, the driving link, Zhukovsky's lever.
@@ -131,13 +133,17 @@ def force_analysis_at(
     The other keywords make one mistake on purpose, so that the student check
     can recompute it (defaults: the textbook's calculation): the links whose
     inertia forces / moments are kept (None: all), gravity, F_bal in the
-    driving link's polygon (False: R0d without it), the lever's turn."""
+    driving link's polygon (False: R0d without it), the lever's turn, the
+    links whose M_IN is taken the wrong way (F_IN shifted to the wrong side
+    of S), a point of a link where its G is applied in place of S."""
     loads = link_loads(
         state,
         mu_l,
         inertia_forces=inertia_forces,
         inertia_moments=inertia_moments,
         gravity=gravity,
+        inertia_moments_reversed=inertia_moments_reversed,
+        weight_at=weight_at,
     )
     groups, driver = solve_groups(loads, balancing_in_r0d=balancing_in_r0d)
     lever = zhukovsky_lever(loads, turn_deg=lever_turn_deg)

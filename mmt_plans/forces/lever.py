@@ -116,7 +116,11 @@ def zhukovsky_lever(loads: Loads, *, turn_deg: float | None = None) -> Zhukovsky
         G = complex(*ll.weight)
         F_in = complex(*ll.inertia_force)
         if G:
-            g = b.force(f"G{lid}", lid, sname, S, G)
+            if ll.weight_point is None:
+                g = b.force(f"G{lid}", lid, sname, S, G)
+            else:  # a mistake recomputed: G at another point of the link
+                assert ll.weight_at is not None
+                g = b.force(f"G{lid}", lid, ll.weight_at, complex(*ll.weight_point), G)
             shifted.append(g)
             couples.append(g)
         if F_in:

@@ -78,6 +78,10 @@ class LinkLoads:
     inertia_moment: float  # M_IN.i, N·m
     # None when F_IN.i = 0 (to rounding): the inertia moment then stays a couple
     shifted_inertia_force: ShiftedInertiaForce | None
+    # G_i applied at a point of the link other than S_i (a mistake recomputed
+    # for the student check): its name and position; None: at S_i
+    weight_at: str | None = None
+    weight_point: np.ndarray | None = None
 
     @property
     def cm_name(self) -> str:
@@ -120,7 +124,8 @@ class Loads:
         if ll is not None:
             S = ll.centre_of_mass
             if ll.mass:
-                out.append(AppliedForce(f"G{link}", ll.weight, S))
+                G_at = S if ll.weight_point is None else ll.weight_point
+                out.append(AppliedForce(f"G{link}", ll.weight, G_at))
                 out.append(AppliedForce(f"F_in{link}", ll.inertia_force, S))
             if ll.inertia_moment:
                 out.append(AppliedForce(f"M_in{link}", xy(0j), S, ll.inertia_moment))
@@ -146,11 +151,16 @@ def link_loads(
     inertia_forces: Collection[int] | None = None,
     inertia_moments: Collection[int] | None = None,
     gravity: bool = True,
+    inertia_moments_reversed: Collection[int] = (),
+    weight_at: Mapping[int, str] | None = None,
 ) -> Loads:
     """Every link's loads. The keywords make a mistake on purpose, for the
     student check to recompute it: `inertia_forces` / `inertia_moments` the
     links whose F_IN / M_IN are kept (None: all), `gravity` False leaves out
-    every G. The defaults are the textbook's calculation."""
+    every G, `inertia_moments_reversed` the links whose M_IN is taken the
+    wrong way (F_IN shifted to the wrong side of S: K mirrored about S),
+    `weight_at` a point of the link (by name) where G is applied in place of
+    S. The defaults are the textbook's calculation."""
     if mu_l is not None and not (math.isfinite(mu_l) and mu_l > 0):
         raise ForceError(
             f"the length scale mu_l = {mu_l!r} m/mm is not a positive number",
@@ -171,6 +181,17 @@ def link_loads(
             F_in = 0j
         if inertia_moments is not None and lid not in inertia_moments:
             M_in = 0.0
+        if lid in inertia_moments_reversed:
+            M_in = -M_in
+        G_at, G_point = None, None
+        if weight_at is not None and lid in weight_at:
+            G_at = weight_at[lid]
+            if G_at not in link.points:
+                raise ForceError(
+                    f"link {lid} has no point {G_at!r} to apply its weight at",
+                    f"name one of its points: {', '.join(link.points)}",
+                )
+            G_point = xy(state.point(lid, G_at))
         links[lid] = LinkLoads(
             link=lid,
             mass=link.mass,
@@ -184,6 +205,8 @@ def link_loads(
             shifted_inertia_force=shifted_inertia_force(
                 lid, S, F_in, M_in, mu_l, NOISE * link.mass * a_A
             ),
+            weight_at=G_at,
+            weight_point=G_point,
         )
     external = tuple(external_force(f, state) for f in mech.forces)
     return Loads(state.index, state.phi1_deg, state.stroke, g, mu_l, links, external, state)

@@ -478,7 +478,7 @@ def test_angle_where_the_mechanism_does_not_assemble(tmp_path):
     text = EXAMPLE.read_text(encoding="utf-8")
     text = text.replace("through = [0, -140]", "through = [0, -619]")
     text = text.replace("angles = [210.862]", "angles = []\npartial_turn = true")
-    text = text[: text.index("[sketch]")] + text[text.index("[[force]]"):]
+    text = text[: text.index("[sketch]")] + text[text.index("[[force]]") :]
     mech = tmp_path / "partial.toml"
     mech.write_text(text, encoding="utf-8")
     answers = tmp_path / "a.toml"

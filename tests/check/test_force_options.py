@@ -150,3 +150,46 @@ def _xy(z: complex) -> np.ndarray:
 
 def cross(a, b) -> float:
     return float(a[0] * b[1] - a[1] * b[0])
+
+
+def test_weight_at_another_point_is_the_centre_of_mass_moved_there(tmp_path):
+    # G2 applied at B: the same as a link 2 whose centre of mass is at B, with
+    # the inertia gone (a crank turning very slowly), where only G acts.
+    moved = analysis(
+        tmp_path,
+        text_of(**{"omega = 25.31": "omega = 0.001", "mass = 10.4": "mass = 10.4\ncm = [400, 0]"}),
+    )
+    ref = moved.forces_at(phi1_deg=PHI)
+    sol = mmt_plans.solve(mmt_plans.load(EXAMPLE))
+    fa = force_analysis_at(
+        sol.state(phi1_deg=PHI), inertia_forces=(), inertia_moments=(), weight_at={2: "B"}
+    )
+    assert fa.balancing_force_plans == pytest.approx(ref.balancing_force_plans, rel=1e-6)
+    assert fa.balancing_force_lever == pytest.approx(ref.balancing_force_lever, rel=1e-6)
+    for name, r in ref.reactions.items():
+        assert fa.reactions[name].magnitude == pytest.approx(r.magnitude, rel=1e-6, abs=1e-6)
+    plain = force_analysis_at(sol.state(phi1_deg=PHI), inertia_forces=(), inertia_moments=())
+    assert not math.isclose(plain.balancing_force_plans, fa.balancing_force_plans, rel_tol=0.01)
+    with pytest.raises(mmt_plans.errors.MmtError, match="no point 'Q'"):
+        force_analysis_at(sol.state(phi1_deg=PHI), weight_at={2: "Q"})
+
+
+def test_inertia_moment_reversed_is_linear_in_the_moment():
+    # Every result is linear in the loads: M_in taken the wrong way gives
+    # X(-M) = 2 X(0) - X(M), X(0) the analysis without the moment.
+    sol = mmt_plans.solve(mmt_plans.load(EXAMPLE))
+    state = sol.state(phi1_deg=PHI)
+    right = force_analysis_at(state, mu_l=sol.mu_l)
+    kept = [lid for lid in sol.mechanism.links if lid != 2]
+    none = force_analysis_at(state, mu_l=sol.mu_l, inertia_moments=kept)
+    wrong = force_analysis_at(state, mu_l=sol.mu_l, inertia_moments_reversed=[2])
+    for x in ("balancing_force_plans", "balancing_force_lever"):
+        expect = 2 * getattr(none, x) - getattr(right, x)
+        assert getattr(wrong, x) == pytest.approx(expect, rel=1e-9)
+    for name, r in right.reactions.items():
+        expect = 2 * none.reactions[name].force - r.force
+        assert wrong.reactions[name].force == pytest.approx(expect, rel=1e-9, abs=1e-6)
+    # K mirrored about S: the inertia force shifted to the wrong side
+    S = right.loads.links[2].centre_of_mass
+    K = right.loads.links[2].shifted_inertia_force.point
+    assert wrong.loads.links[2].shifted_inertia_force.point == pytest.approx(2 * S - K)
