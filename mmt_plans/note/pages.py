@@ -124,6 +124,23 @@ def markup_width(let: Lettering, text: str, size: float) -> float:
     )
 
 
+def words(text: str) -> list[str]:
+    """A markup line's words: split at spaces outside index braces."""
+    out: list[str] = []
+    current, depth = "", 0
+    for ch in text:
+        depth += {"{": 1, "}": -1}.get(ch, 0)
+        if ch == " " and depth <= 0:
+            if current:
+                out.append(current)
+            current = ""
+        else:
+            current += ch
+    if current:
+        out.append(current)
+    return out
+
+
 def _wrap(let: Lettering, text: str, size: float, width: float, first: float = 0.0) -> list[str]:
     """Break at spaces into lines no wider than `width`, the first `first` mm narrower."""
     lines: list[str] = []
@@ -190,6 +207,7 @@ class _Layout:
         self.pitch = pitch(BODY_PT, SPACING)
         self.tables = 0
         self.figures = 0
+        self.next: Block | None = None  # the block after the one being set
 
     # --- placing --------------------------------------------------------------------
     def new_page(self, form: str = "2a") -> None:
@@ -239,7 +257,72 @@ class _Layout:
     ) -> None:
         size = size or self.body
         self.advance(step or self.pitch, keep, before)
-        self.put(Line(self.y, self.box.left + x, text, size, kind, align=align, anchor=anchor))
+        widths = (self.box.width - x,) if align == "justify" else ()
+        self.put(
+            Line(
+                self.y,
+                self.box.left + x,
+                text,
+                size,
+                kind,
+                widths=widths,
+                align=align,
+                anchor=anchor,
+            )
+        )
+
+    # --- keeping lines together ------------------------------------------------------
+    def fits(self) -> int:
+        """How many more lines of the main text this page holds."""
+        if self.empty:
+            return int((self.box.height - self.body) / self.pitch + 1e-9) + 1
+        return int((self.y - self.box.bottom) / self.pitch + 1e-9)
+
+    def break_at(self, n: int, tail: float = 0.0) -> int:
+        """Where a paragraph of `n` lines goes on to the next page (n: it does
+        not): never one line alone at a page's foot or head; `tail` mm of the
+        next block stay with the last line (a lead-in ending in ':')."""
+        k = self.fits()
+        if n <= k and (not tail or self.y - n * self.pitch - tail >= self.box.bottom - 1e-9):
+            return n
+        b = min(k, n - 1) if n > k else n - 1
+        if n - b < 2:
+            b = n - 2
+        return b if b >= 2 else 0
+
+    def lead(self, block: Block | None) -> float:
+        """The height of what must stay with a heading above `block`: its
+        first two lines (three of a three-line paragraph, which does not
+        break), a table's caption, header and first row, a whole figure."""
+        if block is None:
+            return 0.0
+        width = self.box.width
+        if block.kind in ("text", "problem"):
+            first = PARAGRAPH if not block.indent else 0.0
+            n = len(_wrap(self.let, block.text, self.body, width - block.indent, first))
+        elif block.kind == "equation":
+            n = len(_equation_lines(self.let, block.text, self.body, width))
+        elif block.kind == "table":
+            head = self.caption_lines(block.text, self.body, width)
+            return self.pitch + (len(head) - 1) * pitch(BODY_PT) + 2 * (pitch(TABLE_PT) + CELL_PAD)
+        elif block.kind == "figure":
+            return block.height + 2 * pitch(CAPTION_PT) + self.pitch
+        elif block.kind in ("toc", "subsection"):
+            n = 1
+        else:
+            return 0.0
+        return (n if n <= 3 else 2) * self.pitch
+
+    def paragraph(self, lines: Sequence[tuple[str, float]], kind: str, justify: bool) -> None:
+        """Lines of one paragraph (text, indent), kept as break_at says; all
+        but the last set flush left and right when `justify`."""
+        tail = self.lead(self.next) if self.next and lines and lines[-1][0].endswith(":") else 0.0
+        b = self.break_at(len(lines), tail)
+        for j, (t, x) in enumerate(lines):
+            if j == b and not self.empty:
+                self.new_page(self.next_form)
+            last = j == len(lines) - 1
+            self.text_line(t, x, kind, align="justify" if justify and not last else "left")
 
     # --- blocks ---------------------------------------------------------------------
     def block(self, block: Block, toc: Mapping[str, int]) -> None:
@@ -271,7 +354,7 @@ class _Layout:
                     kind,
                     align="center",
                     keep=(len(lines) - 1 - j) * self.pitch
-                    + (self.pitch if kind != "center" else 0),
+                    + (self.lead(self.next) if kind != "center" else 0),
                     anchor=block.step if j == 0 else "",
                 )
             if kind != "center":
@@ -287,18 +370,17 @@ class _Layout:
                     PARAGRAPH if j == 0 else 0.0,
                     kind,
                     before=self.pitch / 2 if j == 0 else 0.0,
-                    keep=(len(lines) - 1 - j) * self.pitch + 2 * self.pitch,
+                    keep=(len(lines) - 1 - j) * self.pitch + self.lead(self.next),
                     anchor=block.step if j == 0 else "",
                 )
             self.y -= self.pitch / 4
         elif kind in ("text", "problem"):
             first = PARAGRAPH if not block.indent else 0.0
             lines = _wrap(let, block.text, self.body, width - block.indent, first)
-            for j, t in enumerate(lines):
-                self.text_line(t, block.indent + (first if j == 0 else 0.0), kind)
+            placed = [(t, block.indent + (first if j == 0 else 0.0)) for j, t in enumerate(lines)]
+            self.paragraph(placed, kind, justify=True)
         elif kind == "equation":
-            for t, indent in _equation_lines(let, block.text, self.body, width):
-                self.text_line(t, indent, "equation")
+            self.paragraph(_equation_lines(let, block.text, self.body, width), kind, justify=False)
         elif kind == "toc":
             self.toc_line(block, toc.get(block.step))
         elif kind == "table":
@@ -450,7 +532,8 @@ def layout_note(
     look = look or note_look()
     page = page or note_page()
     lay = _Layout(look, page, content.lang, first_form)
-    for block in content.blocks:
+    for k, block in enumerate(content.blocks):
+        lay.next = content.blocks[k + 1] if k + 1 < len(content.blocks) else None
         lay.block(block, toc or {})
     pages = [(lines, form) for lines, form in zip(lay.pages, lay.forms)]
     while len(pages) > 1 and not pages[-1][0]:
@@ -519,6 +602,25 @@ def draw_markup(
             backend.rich_text((x + let.advance_width(" " * lead, size), y), part.lstrip(" "), size)
         x += markup_width(let, part, size)
     return total
+
+
+def draw_justified(
+    backend: Backend, pos: tuple[float, float], text: str, size: float, width: float
+) -> float:
+    """A line of markup set flush left and right over `width` mm: its words
+    drawn one by one, the spaces between them widened alike (never narrowed)."""
+    let = backend.look.lettering
+    parts = words(text)
+    natural = [markup_width(let, p, size) for p in parts]
+    space = let.advance_width(" ", size)
+    gap = (width - sum(natural)) / (len(parts) - 1) if len(parts) > 1 else 0.0
+    if len(parts) < 2 or gap < space - 1e-6:
+        return draw_markup(backend, pos, text, size)
+    x = pos[0]
+    for part, w in zip(parts, natural):
+        draw_markup(backend, (x, pos[1]), part, size)
+        x += w + gap
+    return width
 
 
 def _draw_row(backend: Backend, line: Line) -> None:
@@ -713,6 +815,8 @@ def draw_note_page(
                     rect = Rect(line.x, line.y, sum(line.widths), line.height)
                     with backend.group(f"figure-{line.figure}", "figure"):
                         drawer(backend, rect, content.lang)
+            elif line.align == "justify":
+                draw_justified(backend, (line.x, line.y), line.text, line.size, line.widths[0])
             else:
                 draw_markup(backend, (line.x, line.y), line.text, line.size, line.align)
                 if line.kind == "toc":
