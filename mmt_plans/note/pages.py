@@ -311,7 +311,9 @@ class _Layout:
             n = 1
         else:
             return 0.0
-        return (n if n <= 3 else 2) * self.pitch
+        # a lead-in ending in ':' keeps the line after it
+        n = n if n <= 3 else 2
+        return (n + (block.text.endswith(":") and n == 1)) * self.pitch
 
     def paragraph(self, lines: Sequence[tuple[str, float]], kind: str, justify: bool) -> None:
         """Lines of one paragraph (text, indent), kept as break_at says; all
