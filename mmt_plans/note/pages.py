@@ -40,8 +40,11 @@ __all__ = [
     "Form",
 ]
 
-Form = Literal["none", "2", "2a"]
-FORMS: tuple[str, ...] = ("none", "2", "2a")
+Form = Literal["none", "2", "2a", "5", "5a"]
+FORMS: tuple[str, ...] = ("none", "2", "2a", "5", "5a")
+# GOST 2.106's forms 5 and 5a of a text document: forms 2 and 2a of GOST 2.104
+# with the additional columns 19-25 in the binding margin (seed 002)
+FORM5 = {"2": "5", "2a": "5a"}
 
 PT = 25.4 / 72.0  # mm per point
 SINGLE = 1.149  # single line spacing of Times New Roman / Liberation Serif, em
@@ -181,13 +184,16 @@ def _equation_lines(
     return out
 
 
+FORM5_OF = {v: k for k, v in FORM5.items()}
+
+
 def text_box(page: Page, form: str) -> Rect:
     """Where text may go on a page of `form` (capitals' tops at most at its top)."""
     f = page.frame
     left = max(MARGIN_LEFT, f.left + 5.0)
     right = min(page.width - MARGIN_RIGHT, f.right - 5.0)
     top = min(page.height - MARGIN_TOP, f.top - 10.0)
-    stamp = {"none": 0.0, "2": FORM2_HEIGHT, "2a": FORM2A_HEIGHT}[form]
+    stamp = {"none": 0.0, "2": FORM2_HEIGHT, "2a": FORM2A_HEIGHT}[FORM5_OF.get(form, form)]
     bottom = MARGIN_BOTTOM if form == "none" else max(MARGIN_BOTTOM, f.bottom + stamp + STAMP_GAP)
     return Rect.from_bounds(left, bottom, right, top)
 
@@ -791,6 +797,56 @@ def draw_form2a(
             _cell_text(backend, (xs[5], y0, xs[6], y0 + 15.0), designation, 16.0)
 
 
+# the additional columns of GOST 2.104 in the binding margin, from the frame's
+# bottom up (19-23) and from its top down (25, 24): (catalogue key, height mm)
+MARGIN_COLUMNS = (
+    ("inv_original", 25.0),
+    ("sign_date", 35.0),
+    ("inv_replaced", 25.0),
+    ("inv_duplicate", 25.0),
+    ("sign_date", 35.0),
+)
+MARGIN_TOP_COLUMNS = (("first_use", 60.0), ("reference_no", 60.0))
+MARGIN_CAPTION, MARGIN_VALUE = 5.0, 7.0  # the columns' widths, mm
+
+
+def draw_margin_columns(backend: Backend, page: Page, first: bool, lang: Language) -> None:
+    """Columns 19-23 of GOST 2.104 left of the frame (12 mm: a 5 mm caption
+    column and a 7 mm one to fill), and on the first page (form 5) columns
+    24-25 at the top: GOST 2.106's forms 5 and 5a."""
+    w = catalogue(lang).words("note_front")
+    f = page.frame
+    x1 = f.left
+    x0, xm = x1 - MARGIN_CAPTION - MARGIN_VALUE, x1 - MARGIN_VALUE
+    size = cap(CAPTION_FORM_PT, backend.look.lettering)
+
+    def strip(y0: float, cells: Sequence[tuple[str, float]], down: bool) -> None:
+        y = y0
+        edges = [y]
+        for key, h in cells:
+            ya, yb = (y - h, y) if down else (y, y + h)
+            backend.text(
+                ((x0 + xm) / 2, (ya + yb) / 2),
+                str(w[key]),
+                size,
+                anchor="center",
+                valign="middle",
+                rotation=90.0,
+                max_width=h - 2.0,
+            )
+            y = ya if down else yb
+            edges.append(y)
+        backend.line((x0, min(edges)), (x0, max(edges)), "main")
+        backend.line((xm, min(edges)), (xm, max(edges)), "main")
+        for e in edges:
+            backend.line((x0, e), (x1, e), "main")
+
+    with backend.group("margin-columns", "title-block"):
+        strip(f.bottom, MARGIN_COLUMNS, down=False)
+        if first:
+            strip(f.top, MARGIN_TOP_COLUMNS, down=True)
+
+
 def draw_note_page(
     backend: Backend,
     note_page_: NotePage,
@@ -848,10 +904,13 @@ def draw_note_page(
                 )
         return
     draw_frame(backend, page)
-    if note_page_.form == "2":
+    form = FORM5_OF.get(note_page_.form, note_page_.form)
+    if form == "2":
         draw_form2(backend, page, note_page_.number, stamp, content.lang)
     else:
         draw_form2a(backend, page, note_page_.number, stamp.designation, content.lang)
+    if note_page_.form in FORM5_OF:
+        draw_margin_columns(backend, page, note_page_.form == "5", content.lang)
 
 
 def all_lines(pages: Sequence[NotePage]) -> list[Line]:

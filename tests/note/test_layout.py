@@ -117,3 +117,58 @@ def test_pages_break_only_where_the_next_lines_do_not_fit(case):
         # what q starts with: three lines, a fourth under a heading or a table's title
         m = 4 if first.kind in ("subsection", "caption") else 3
         assert _free(p, box) < (m + 1) * PITCH, (p.number, first.kind, first.text)
+
+
+def _groups(backend: RecordingBackend) -> set[str]:
+    return {c["id"] for c in backend.named("begin_group")}
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_forms_5_and_5a_of_gost_2106(lang):
+    from mmt_plans.cli.fields import with_fields
+    from mmt_plans.i18n import catalogue
+
+    path = CASES[0][0]
+    solution = mmt_plans.solve(with_fields(mmt_plans.load(path), {"note_form": "5"}))
+    backends = draw_note(solution, lambda w, h, title: RecordingBackend(w, h), lang)
+    plain = draw_note(solution, lambda w, h, title: RecordingBackend(w, h), lang, form="2")
+    w = catalogue(lang).words("note_front")  # type: ignore[arg-type]
+    bottom = [w[k] for k in ("inv_original", "sign_date", "inv_replaced", "inv_duplicate")]
+    top = [w["first_use"], w["reference_no"]]
+    framed = [b for b in backends if "frame" in _groups(b)]
+    assert len(framed) >= 10 and not any("margin-columns" in _groups(b) for b in plain)
+    frame_left = note_page().frame.left
+    for k, b in enumerate(framed):
+        # forms 2 (the first page) and 2a of GOST 2.104 with the columns in the margin
+        assert ("title-block" in _groups(b)) == (k == 0) and ("form-2a" in _groups(b)) == (k > 0)
+        calls = [c for c in b.in_group("margin-columns")]
+        texts = [c["content"] for c in calls if c.name == "text"]
+        assert sorted(texts) == sorted(bottom + [w["sign_date"]] + (top if k == 0 else []))
+        assert all(c["rotation"] == 90.0 for c in calls if c.name == "text")
+        # in the binding margin, 12 mm wide, left of the frame; the text stays where it was
+        xs = [x for c in calls if c.name == "line" for x, _ in c.points()]
+        assert min(xs) == pytest.approx(frame_left - 12.0) and max(xs) == pytest.approx(frame_left)
+        ys = [y for c in calls if c.name == "line" for _, y in c.points()]
+        assert min(ys) == pytest.approx(note_page().frame.bottom)
+    same = [
+        [c["pos"] for c in b.named("text") if "margin-columns" not in c.groups] for b in backends
+    ]
+    assert same == [[c["pos"] for c in b.named("text")] for b in plain]
+
+
+def test_note_form_option_and_a_wrong_field(tmp_path):
+    from click.testing import CliRunner
+
+    from mmt_plans.cli import main
+
+    path = CASES[0][0]
+    runner = CliRunner()
+    out = tmp_path / "note.pdf"
+    result = runner.invoke(main, ["note", str(path), "-o", str(out), "--form", "5"])
+    assert result.exit_code == 0, result.output
+    assert out.read_bytes().startswith(b"%PDF")
+    result = runner.invoke(main, ["note", str(path), "-o", str(out), "--form", "7"])
+    assert result.exit_code == 2
+    result = runner.invoke(main, ["note", str(path), "-o", str(out), "--field", "note_form=2a"])
+    assert result.exit_code == 2 and "note_form" in result.output
+    assert "Traceback" not in result.output
