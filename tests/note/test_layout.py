@@ -172,3 +172,23 @@ def test_note_form_option_and_a_wrong_field(tmp_path):
     result = runner.invoke(main, ["note", str(path), "-o", str(out), "--field", "note_form=2a"])
     assert result.exit_code == 2 and "note_form" in result.output
     assert "Traceback" not in result.output
+
+
+def test_the_notes_catalogue_tables_agree_and_are_used():
+    """[note], [note_front], [note_refs], [gears]: the same keys in en and uk,
+    and every [note] key read by some module of the package (by name, or as
+    an item number, a stroke or a mesh the modules look up)."""
+    import tomllib
+
+    i18n = ROOT / "mmt_plans" / "i18n"
+    en = tomllib.loads((i18n / "en.toml").read_text(encoding="utf-8"))
+    uk = tomllib.loads((i18n / "uk.toml").read_text(encoding="utf-8"))
+    for table in ("note", "note_front", "note_refs", "gears"):
+        assert set(en[table]) == set(uk[table]), table
+    assert "step_phrases" not in en and "step_phrases" not in uk
+    source = "\n".join(p.read_text(encoding="utf-8") for p in (ROOT / "mmt_plans").rglob("*.py"))
+    dynamic = {"working", "idle", "external", "internal", "cw", "ccw"}
+    for key in en["note"]:
+        if key in dynamic or key[:1].isdigit():
+            continue
+        assert f'"{key}"' in source or f"'{key}'" in source, key
