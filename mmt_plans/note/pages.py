@@ -324,7 +324,12 @@ class _Layout:
     def paragraph(self, lines: Sequence[tuple[str, float]], kind: str, justify: bool) -> None:
         """Lines of one paragraph (text, indent), kept as break_at says; all
         but the last set flush left and right when `justify`."""
-        tail = self.lead(self.next) if self.next and lines and lines[-1][0].endswith(":") else 0.0
+        # a lead-in (ending in ':', or one line before an equation) keeps what it introduces
+        nxt = self.next
+        lead_in = bool(lines) and nxt is not None
+        if lead_in and not lines[-1][0].endswith(":"):
+            lead_in = kind != "equation" and len(lines) == 1 and nxt.kind == "equation"  # type: ignore[union-attr]
+        tail = self.lead(self.next) if self.next and lead_in else 0.0
         b = self.break_at(len(lines), tail)
         for j, (t, x) in enumerate(lines):
             if j == b and not self.empty:
