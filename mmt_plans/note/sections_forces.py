@@ -317,7 +317,7 @@ def _slot_reaction(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: s
     lhs = " + ".join(parts + [f"{name}·{hn}"])
     wr.eq(f"ΣM_{sub(C)}({lid}) = {lhs} = 0;")
     wr.eq(
-        f"{name} = -ΣM_{sub(C)}/{hn} = -{wr.vp(total, sum_src)}/{wr.vp(h, H)} = "
+        f"{name} = -ΣM_{sub(C)}/{hn} = {wr.neg(total, sum_src)}/{wr.vp(h, H)} = "
         f"{wr.v(comp.value, N_src)} {u['N']}" + (" " + w["reverse"] if comp.value < 0 else "")
     )
 
@@ -372,7 +372,7 @@ def _guide_reactions(wr: Writer, j: int, g: GroupForces) -> None:
         lhs = " + ".join([f"{Ra}·cos({Ra}, t)", *parts])
         wr.eq(f"ΣF_t = {lhs} = 0, cos({Ra}, t) = {wr.v(c, C)};")
         wr.eq(
-            f"{Ra} = -ΣF_t/cos({Ra}, t) = -{wr.vp(total, '+'.join(src_sum) or '0')}/"
+            f"{Ra} = -ΣF_t/cos({Ra}, t) = {wr.neg(total, '+'.join(src_sum) or '0')}/"
             f"{wr.vp(c, C)} = {wr.v(N.value, NS)} {u['N']}"
             + (" " + w["reverse"] if N.value < 0 else "")
         )
@@ -419,7 +419,7 @@ def _guide_points(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: se
         lhs = " + ".join(parts + [f"{name}·{hn}"])
         wr.eq(f"ΣM_{sub(P_name)}({lid}) = {lhs} = 0;")
         wr.eq(
-            f"{hn} = -ΣM_{sub(P_name)}/{name} = -{wr.vp(total, sum_src)}/{wr.vp(value, N_src)} = "
+            f"{hn} = -ΣM_{sub(P_name)}/{name} = {wr.neg(total, sum_src)}/{wr.vp(value, N_src)} = "
             f"{wr.v(h, H)} {u['m']}; {hn}/μ_l = {wr.vp(h, H)}/{wr.v(mu_l, 'S.mu_l')} = "
             f"{wr.v(h / mu_l, f'({H})/S.mu_l')} {u['mm']}"
         )
@@ -519,7 +519,7 @@ def driving_link(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     FB = "J['forces']['balancing_force_plans']"
     MB = "J['forces']['balancing_moment']"
     wr.eq(
-        f"F_{{bal.pl}} = {minus}ΣM_{sub(O)}/l_{{{OA_}}} = {minus}{wr.vp(total, sum_src)}/"
+        f"F_{{bal.pl}} = {minus}ΣM_{sub(O)}/l_{{{OA_}}} = {wr.neg(total, sum_src) if minus else wr.vp(total, sum_src)}/"
         f"{wr.v(OA, 'M.crank_length')} = {wr.v(dl.balancing_force, FB)} {u['N']} "
         f"({w['drives'] if dl.balancing_force >= 0 else w['brakes']});"
     )
@@ -589,7 +589,7 @@ def lever(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     minus = "-" if s > 0 else ""
     FZ = "J['forces']['balancing_force_lever']"
     wr.eq(
-        f"F_{{bal.z}} = {minus}ΣF_i·h_i/pa = {minus}{wr.vp(total, TOT)}/"
+        f"F_{{bal.z}} = {minus}ΣF_i·h_i/pa = {wr.neg(total, TOT) if minus else wr.vp(total, TOT)}/"
         f"{wr.v(pa, f'F.lever.pa/{MV}')} = {wr.v(lv.balancing_force, FZ)} {u['N']} "
         f"({w['drives'] if lv.balancing_force >= 0 else w['brakes']})"
     )
