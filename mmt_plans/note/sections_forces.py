@@ -278,12 +278,12 @@ def group(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, step: str) -> N
         _slot_reaction(wr, fa, j, g, own)
     if g.kind in ("PRP", "RPP"):
         _guide_reactions(wr, j, g)
-        _guide_points(wr, fa, j, g, own)
     for p_ix, poly in enumerate(g.polygons):
         _polygon(wr, poly, f"F.groups[{j}].polygons[{p_ix}]", p_ix == 0)
     wr.text(w["found_R"])
     for r in g.reactions:
         _reaction_line(wr, r, _mu_f(g.polygons), f"mu_F(F.groups[{j}].polygons)")
+    _guide_points(wr, fa, j, g, own)
 
 
 def _slot_reaction(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: set[str]) -> None:
@@ -379,16 +379,15 @@ def _guide_reactions(wr: Writer, j: int, g: GroupForces) -> None:
 
 
 def _guide_points(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: set[str]) -> None:
-    """PRP, RPP: where each reaction normal to a guide acts, from ΣM of its
-    link about the group's revolute pair (the other reactions on the link
-    pass through it, or are known by then): ΣM_P = ΣM_P(loads) + R·h = 0."""
+    """Where each reaction normal to a guide acts (a prismatic pair's), from
+    ΣM of its link about a revolute pair of the group that the link's other
+    unknown reactions pass through: ΣM_P = ΣM_P(loads) + R·h = 0. An inner
+    prismatic pair's from its first link about the outer pin A; an outer
+    one's about the inner pin B (RRP, PRP), or A (RPP: its inner reaction
+    known by then)."""
     w, u, a = wr.w, wr.u, wr.solution
     fp = fa.index if fa.index is not None else a.force_position
     mu_l = float(a.mu_l)
-    pin = next(r for r in g.reactions if r.kind == "R")
-    P = np.asarray(pin.point, dtype=float)
-    P_name = pin.pair
-    P_src = src.point(a, fp, P_name, "points")
     # RPP: the inner reaction is placed from the first link, then known on the second
     order = sorted(
         (r for r in g.reactions if r.kind == "P" and not r.couple and r.magnitude > 0),
@@ -396,13 +395,18 @@ def _guide_points(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: se
     )
     known: set[str] = set()
     for r in order:
+        inner = r.by in g.links
+        pin = g.reactions[0] if inner or g.reactions[2].kind != "R" else g.reactions[2]
+        P = np.asarray(pin.point, dtype=float)
+        P_name = pin.pair
+        P_src = src.point(a, fp, P_name, "points")
         comp = r.components[0]
         lid, name, value = r.on, force_markup(r.name), comp.value
         D = f"J['forces']['reaction_details'][{r.name!r}]"
         N_src = f"{D}['components'][{comp.label!r}]"
         # the arm of the reaction about P: the same for it and for its opposite
         H = f"moment(({D}['point'], J['forces']['reactions'][{r.name!r}], 0), {P_src})/{N_src}"
-        if r.by in g.links and r.by != lid and g.kind == "RPP":
+        if inner:
             # the inner reaction from the link it acts back on (the outer one there passes P)
             lid, name, value, N_src = r.by, force_markup(r.reversed().name), -value, f"-{N_src}"
         wr.text(w["guide_point"].format(R=name, P=P_name, lid=lid))
