@@ -420,6 +420,10 @@ def _guide_points(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: se
         h = float(rp[0] * n[1] - rp[1] * n[0])
         hn = f"h_{{{len(parts) + 1}}}"
         sum_src = "+".join(f"moment({t[4]}, {P_src})" for t in terms) or "0"
+        known |= {r.name, r.reversed().name}
+        if not parts:  # every other force on the link passes through P, and so does R
+            wr.eq(f"ΣM_{sub(P_name)}({lid}) = {name}·{hn} = 0; {hn} = {wr.v(h, H)} {u['m']}")
+            continue
         lhs = " + ".join(parts + [f"{name}·{hn}"])
         wr.eq(f"ΣM_{sub(P_name)}({lid}) = {lhs} = 0;")
         wr.eq(
@@ -427,7 +431,6 @@ def _guide_points(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: se
             f"{wr.v(h, H)} {u['m']}; {hn}/μ_l = {wr.vp(h, H)}/{wr.v(mu_l, 'S.mu_l')} = "
             f"{wr.v(h / mu_l, f'({H})/S.mu_l')} {u['mm']}"
         )
-        known |= {r.name, r.reversed().name}
 
 
 def _mu_f(polygons: tuple[ForcePolygon, ...]) -> float:
