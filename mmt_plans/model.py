@@ -50,6 +50,7 @@ SHEET_FIELDS: tuple[str, ...] = (
     "supervisor",  # overrides checked_by on the title page
     "city",
     "year",
+    "note_form",  # the note's forms: "2" (GOST 2.104 2, 2a) or "5" (GOST 2.106 5, 5a)
     "lang",
 )
 

@@ -10,7 +10,6 @@ import numpy as np
 import pytest
 
 import mmt_plans
-
 from mmt_plans.note import (
     draw_note,
     layout_note,

@@ -29,9 +29,23 @@ from .fields import field_option, with_fields
     is_flag=True,
     help="A crank that cannot make a whole turn: analyse the range where it assembles.",
 )
+@click.option(
+    "--form",
+    type=click.Choice(["2", "5"]),
+    default=None,
+    help="The pages' forms: 2 (GOST 2.104 forms 2 and 2a, seed 003) or 5 (GOST 2.106 "
+    "forms 5 and 5a, seed 002); default the file's [sheet] note_form, else 2.",
+)
 @field_option
 @reports_errors
-def note(file: Path, target: Path, lang: str, partial_turn: bool, fields: dict[str, str]) -> None:
+def note(
+    file: Path,
+    target: Path,
+    lang: str,
+    partial_turn: bool,
+    form: str | None,
+    fields: dict[str, str],
+) -> None:
     """Write the calculation and explanatory note of FILE as a PDF.
 
     The title page and the task sheet take the names from the file's [sheet]
@@ -45,5 +59,5 @@ def note(file: Path, target: Path, lang: str, partial_turn: bool, fields: dict[s
 
     check_output(target)
     solution = solve(with_fields(load(file), fields), partial_turn=partial_turn)
-    path = write_note(solution, target, lang=lang)  # type: ignore[arg-type]
+    path = write_note(solution, target, lang=lang, form=form)  # type: ignore[arg-type]
     click.echo(f"written {path}")

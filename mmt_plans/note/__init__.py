@@ -18,7 +18,7 @@ pages and counts), `pdf` joins the pages' SVG into one PDF.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -37,7 +37,16 @@ from .front import (
     title_info,
     title_page,
 )
-from .pages import NotePage, Stamp, draw_note_page, heading_pages, layout_note, note_look, note_page
+from .pages import (
+    FORM5,
+    NotePage,
+    Stamp,
+    draw_note_page,
+    heading_pages,
+    layout_note,
+    note_look,
+    note_page,
+)
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..solution import Solution
@@ -51,6 +60,7 @@ __all__ = [
     "layout_note",
     "note_content",
     "note_document",
+    "note_form",
     "note_svgs",
     "number",
     "plain",
@@ -77,10 +87,35 @@ def _count(content: NoteContent, pages: int, refs: int) -> Counts:
     )
 
 
-def note_document(analysis: Solution, lang: Language = "en") -> NoteDocument:
+NOTE_FORMS = ("2", "5")
+
+
+def note_form(analysis: Solution, form: str | None = None) -> str:
+    """The forms of the note's pages: "2" (GOST 2.104 forms 2 and 2a, seed
+    003) or "5" (GOST 2.106 forms 5 and 5a, seed 002); `form`, else the
+    file's [sheet] note_form, else "2"."""
+    mech = analysis.mechanism
+    chosen = form or str(dict(mech.sheet or {}).get("note_form", "") or "2")
+    if chosen not in NOTE_FORMS:
+        from ..errors import SpecError
+
+        raise SpecError(
+            mech.path,
+            "[sheet] note_form",
+            f"{chosen!r} is not a form of the note",
+            'write note_form = "2" (forms 2 and 2a, GOST 2.104) or "5" (forms 5 and 5a, GOST 2.106)',
+        )
+    return chosen
+
+
+def note_document(
+    analysis: Solution, lang: Language = "en", form: str | None = None
+) -> NoteDocument:
     """The note with its front and back matter, laid out: title page, task
-    sheet, abstract (form 2), contents, the calculation, references."""
+    sheet, abstract (form 2 or 5), contents, the calculation, references;
+    `form` as note_form() chooses."""
     check_language(lang)
+    chosen = note_form(analysis, form)
     written = note_content(analysis, lang)
     # the title page names the document: the calculation starts at its first section
     body = NoteContent(written.title, lang, tuple(b for b in written.blocks if b.kind != "title"))
@@ -108,18 +143,22 @@ def note_document(analysis: Solution, lang: Language = "en") -> NoteDocument:
         if new_toc == toc and new_counts == counts:
             break
         toc, counts = new_toc, new_counts
+    if chosen == "5":
+        pages = [replace(p, form=FORM5.get(p.form, p.form)) for p in pages]  # type: ignore[arg-type]
     s = stamp_fields(info, lang)
     stamp = Stamp(pages=len(pages), **s)
     return NoteDocument(doc, tuple(pages), counts, stamp)
 
 
-def draw_note(analysis: Solution, backend_factory: Any, lang: Language = "en") -> list[Any]:
+def draw_note(
+    analysis: Solution, backend_factory: Any, lang: Language = "en", form: str | None = None
+) -> list[Any]:
     """Draw every page of the note on a new backend from `backend_factory(width,
     height, title)`; returns the backends (SvgBackend, RecordingBackend ...).
     The pages are drawn in the note's look (templates/note_look.toml)."""
     from .figures import figure_drawers
 
-    document = note_document(analysis, lang)
+    document = note_document(analysis, lang, form)
     page = note_page()
     look = note_look()
     figures = figure_drawers(analysis)
@@ -143,7 +182,7 @@ def draw_note(analysis: Solution, backend_factory: Any, lang: Language = "en") -
     return backends
 
 
-def note_svgs(analysis: Solution, lang: Language = "en") -> list[str]:
+def note_svgs(analysis: Solution, lang: Language = "en", form: str | None = None) -> list[str]:
     """The pages of the note as SVG documents (render's factory by format)."""
     titles: list[str] = []
 
@@ -151,13 +190,18 @@ def note_svgs(analysis: Solution, lang: Language = "en") -> list[str]:
         titles.append(title)
         return RecordingBackend(width, height, note_look())
 
-    pages = draw_note(analysis, factory, lang)
+    pages = draw_note(analysis, factory, lang, form)
     return [render(page, "svg", title).decode("utf-8") for page, title in zip(pages, titles)]
 
 
-def write_note(analysis: Solution, target: str | os.PathLike[str], lang: Language = "en") -> Path:
+def write_note(
+    analysis: Solution,
+    target: str | os.PathLike[str],
+    lang: Language = "en",
+    form: str | None = None,
+) -> Path:
     """Write the note as one multi-page A4 PDF at `target` (atomically, with
-    fixed dates: note/pdf.py)."""
+    fixed dates: note/pdf.py), in forms 2/2a or 5/5a (note_form)."""
     from .pdf import svgs_to_pdf
 
-    return svgs_to_pdf(note_svgs(analysis, lang), Path(target))
+    return svgs_to_pdf(note_svgs(analysis, lang, form), Path(target))

@@ -40,8 +40,11 @@ __all__ = [
     "Form",
 ]
 
-Form = Literal["none", "2", "2a"]
-FORMS: tuple[str, ...] = ("none", "2", "2a")
+Form = Literal["none", "2", "2a", "5", "5a"]
+FORMS: tuple[str, ...] = ("none", "2", "2a", "5", "5a")
+# GOST 2.106's forms 5 and 5a of a text document: forms 2 and 2a of GOST 2.104
+# with the additional columns 19-25 in the binding margin (seed 002)
+FORM5 = {"2": "5", "2a": "5a"}
 
 PT = 25.4 / 72.0  # mm per point
 SINGLE = 1.149  # single line spacing of Times New Roman / Liberation Serif, em
@@ -124,6 +127,23 @@ def markup_width(let: Lettering, text: str, size: float) -> float:
     )
 
 
+def words(text: str) -> list[str]:
+    """A markup line's words: split at spaces outside index braces."""
+    out: list[str] = []
+    current, depth = "", 0
+    for ch in text:
+        depth += {"{": 1, "}": -1}.get(ch, 0)
+        if ch == " " and depth <= 0:
+            if current:
+                out.append(current)
+            current = ""
+        else:
+            current += ch
+    if current:
+        out.append(current)
+    return out
+
+
 def _wrap(let: Lettering, text: str, size: float, width: float, first: float = 0.0) -> list[str]:
     """Break at spaces into lines no wider than `width`, the first `first` mm narrower."""
     lines: list[str] = []
@@ -164,13 +184,16 @@ def _equation_lines(
     return out
 
 
+FORM5_OF = {v: k for k, v in FORM5.items()}
+
+
 def text_box(page: Page, form: str) -> Rect:
     """Where text may go on a page of `form` (capitals' tops at most at its top)."""
     f = page.frame
     left = max(MARGIN_LEFT, f.left + 5.0)
     right = min(page.width - MARGIN_RIGHT, f.right - 5.0)
     top = min(page.height - MARGIN_TOP, f.top - 10.0)
-    stamp = {"none": 0.0, "2": FORM2_HEIGHT, "2a": FORM2A_HEIGHT}[form]
+    stamp = {"none": 0.0, "2": FORM2_HEIGHT, "2a": FORM2A_HEIGHT}[FORM5_OF.get(form, form)]
     bottom = MARGIN_BOTTOM if form == "none" else max(MARGIN_BOTTOM, f.bottom + stamp + STAMP_GAP)
     return Rect.from_bounds(left, bottom, right, top)
 
@@ -190,6 +213,7 @@ class _Layout:
         self.pitch = pitch(BODY_PT, SPACING)
         self.tables = 0
         self.figures = 0
+        self.next: Block | None = None  # the block after the one being set
 
     # --- placing --------------------------------------------------------------------
     def new_page(self, form: str = "2a") -> None:
@@ -239,7 +263,79 @@ class _Layout:
     ) -> None:
         size = size or self.body
         self.advance(step or self.pitch, keep, before)
-        self.put(Line(self.y, self.box.left + x, text, size, kind, align=align, anchor=anchor))
+        widths = (self.box.width - x,) if align == "justify" else ()
+        self.put(
+            Line(
+                self.y,
+                self.box.left + x,
+                text,
+                size,
+                kind,
+                widths=widths,
+                align=align,
+                anchor=anchor,
+            )
+        )
+
+    # --- keeping lines together ------------------------------------------------------
+    def fits(self) -> int:
+        """How many more lines of the main text this page holds."""
+        if self.empty:
+            return int((self.box.height - self.body) / self.pitch + 1e-9) + 1
+        return int((self.y - self.box.bottom) / self.pitch + 1e-9)
+
+    def break_at(self, n: int, tail: float = 0.0) -> int:
+        """Where a paragraph of `n` lines goes on to the next page (n: it does
+        not): never one line alone at a page's foot or head; `tail` mm of the
+        next block stay with the last line (a lead-in ending in ':')."""
+        k = self.fits()
+        if n <= k and (not tail or self.y - n * self.pitch - tail >= self.box.bottom - 1e-9):
+            return n
+        b = min(k, n - 1) if n > k else n - 1
+        if n - b < 2:
+            b = n - 2
+        return b if b >= 2 else 0
+
+    def lead(self, block: Block | None) -> float:
+        """The height of what must stay with a heading above `block`: its
+        first two lines (three of a three-line paragraph, which does not
+        break), a table's caption, header and first row, a whole figure."""
+        if block is None:
+            return 0.0
+        width = self.box.width
+        if block.kind in ("text", "problem"):
+            first = PARAGRAPH if not block.indent else 0.0
+            n = len(_wrap(self.let, block.text, self.body, width - block.indent, first))
+        elif block.kind == "equation":
+            n = len(_equation_lines(self.let, block.text, self.body, width))
+        elif block.kind == "table":
+            head = self.caption_lines(block.text, self.body, width)
+            return self.pitch + (len(head) - 1) * pitch(BODY_PT) + 2 * (pitch(TABLE_PT) + CELL_PAD)
+        elif block.kind == "figure":
+            return block.height + 2 * pitch(CAPTION_PT) + self.pitch
+        elif block.kind in ("toc", "subsection"):
+            n = 1
+        else:
+            return 0.0
+        # a lead-in ending in ':' keeps the line after it
+        n = n if n <= 3 else 2
+        return (n + (block.text.endswith(":") and n == 1)) * self.pitch
+
+    def paragraph(self, lines: Sequence[tuple[str, float]], kind: str, justify: bool) -> None:
+        """Lines of one paragraph (text, indent), kept as break_at says; all
+        but the last set flush left and right when `justify`."""
+        # a lead-in (ending in ':', or one line before an equation) keeps what it introduces
+        nxt = self.next
+        lead_in = bool(lines) and nxt is not None
+        if lead_in and not lines[-1][0].endswith(":"):
+            lead_in = kind != "equation" and len(lines) == 1 and nxt.kind == "equation"  # type: ignore[union-attr]
+        tail = self.lead(self.next) if self.next and lead_in else 0.0
+        b = self.break_at(len(lines), tail)
+        for j, (t, x) in enumerate(lines):
+            if j == b and not self.empty:
+                self.new_page(self.next_form)
+            last = j == len(lines) - 1
+            self.text_line(t, x, kind, align="justify" if justify and not last else "left")
 
     # --- blocks ---------------------------------------------------------------------
     def block(self, block: Block, toc: Mapping[str, int]) -> None:
@@ -271,7 +367,7 @@ class _Layout:
                     kind,
                     align="center",
                     keep=(len(lines) - 1 - j) * self.pitch
-                    + (self.pitch if kind != "center" else 0),
+                    + (self.lead(self.next) if kind != "center" else 0),
                     anchor=block.step if j == 0 else "",
                 )
             if kind != "center":
@@ -287,18 +383,17 @@ class _Layout:
                     PARAGRAPH if j == 0 else 0.0,
                     kind,
                     before=self.pitch / 2 if j == 0 else 0.0,
-                    keep=(len(lines) - 1 - j) * self.pitch + 2 * self.pitch,
+                    keep=(len(lines) - 1 - j) * self.pitch + self.lead(self.next),
                     anchor=block.step if j == 0 else "",
                 )
             self.y -= self.pitch / 4
         elif kind in ("text", "problem"):
             first = PARAGRAPH if not block.indent else 0.0
             lines = _wrap(let, block.text, self.body, width - block.indent, first)
-            for j, t in enumerate(lines):
-                self.text_line(t, block.indent + (first if j == 0 else 0.0), kind)
+            placed = [(t, block.indent + (first if j == 0 else 0.0)) for j, t in enumerate(lines)]
+            self.paragraph(placed, kind, justify=True)
         elif kind == "equation":
-            for t, indent in _equation_lines(let, block.text, self.body, width):
-                self.text_line(t, indent, "equation")
+            self.paragraph(_equation_lines(let, block.text, self.body, width), kind, justify=False)
         elif kind == "toc":
             self.toc_line(block, toc.get(block.step))
         elif kind == "table":
@@ -450,7 +545,8 @@ def layout_note(
     look = look or note_look()
     page = page or note_page()
     lay = _Layout(look, page, content.lang, first_form)
-    for block in content.blocks:
+    for k, block in enumerate(content.blocks):
+        lay.next = content.blocks[k + 1] if k + 1 < len(content.blocks) else None
         lay.block(block, toc or {})
     pages = [(lines, form) for lines, form in zip(lay.pages, lay.forms)]
     while len(pages) > 1 and not pages[-1][0]:
@@ -519,6 +615,25 @@ def draw_markup(
             backend.rich_text((x + let.advance_width(" " * lead, size), y), part.lstrip(" "), size)
         x += markup_width(let, part, size)
     return total
+
+
+def draw_justified(
+    backend: Backend, pos: tuple[float, float], text: str, size: float, width: float
+) -> float:
+    """A line of markup set flush left and right over `width` mm: its words
+    drawn one by one, the spaces between them widened alike (never narrowed)."""
+    let = backend.look.lettering
+    parts = words(text)
+    natural = [markup_width(let, p, size) for p in parts]
+    space = let.advance_width(" ", size)
+    gap = (width - sum(natural)) / (len(parts) - 1) if len(parts) > 1 else 0.0
+    if len(parts) < 2 or gap < space - 1e-6:
+        return draw_markup(backend, pos, text, size)
+    x = pos[0]
+    for part, w in zip(parts, natural):
+        draw_markup(backend, (x, pos[1]), part, size)
+        x += w + gap
+    return width
 
 
 def _draw_row(backend: Backend, line: Line) -> None:
@@ -687,6 +802,56 @@ def draw_form2a(
             _cell_text(backend, (xs[5], y0, xs[6], y0 + 15.0), designation, 16.0)
 
 
+# the additional columns of GOST 2.104 in the binding margin, from the frame's
+# bottom up (19-23) and from its top down (25, 24): (catalogue key, height mm)
+MARGIN_COLUMNS = (
+    ("inv_original", 25.0),
+    ("sign_date", 35.0),
+    ("inv_replaced", 25.0),
+    ("inv_duplicate", 25.0),
+    ("sign_date", 35.0),
+)
+MARGIN_TOP_COLUMNS = (("first_use", 60.0), ("reference_no", 60.0))
+MARGIN_CAPTION, MARGIN_VALUE = 5.0, 7.0  # the columns' widths, mm
+
+
+def draw_margin_columns(backend: Backend, page: Page, first: bool, lang: Language) -> None:
+    """Columns 19-23 of GOST 2.104 left of the frame (12 mm: a 5 mm caption
+    column and a 7 mm one to fill), and on the first page (form 5) columns
+    24-25 at the top: GOST 2.106's forms 5 and 5a."""
+    w = catalogue(lang).words("note_front")
+    f = page.frame
+    x1 = f.left
+    x0, xm = x1 - MARGIN_CAPTION - MARGIN_VALUE, x1 - MARGIN_VALUE
+    size = cap(CAPTION_FORM_PT, backend.look.lettering)
+
+    def strip(y0: float, cells: Sequence[tuple[str, float]], down: bool) -> None:
+        y = y0
+        edges = [y]
+        for key, h in cells:
+            ya, yb = (y - h, y) if down else (y, y + h)
+            backend.text(
+                ((x0 + xm) / 2, (ya + yb) / 2),
+                str(w[key]),
+                size,
+                anchor="center",
+                valign="middle",
+                rotation=90.0,
+                max_width=h - 2.0,
+            )
+            y = ya if down else yb
+            edges.append(y)
+        backend.line((x0, min(edges)), (x0, max(edges)), "main")
+        backend.line((xm, min(edges)), (xm, max(edges)), "main")
+        for e in edges:
+            backend.line((x0, e), (x1, e), "main")
+
+    with backend.group("margin-columns", "title-block"):
+        strip(f.bottom, MARGIN_COLUMNS, down=False)
+        if first:
+            strip(f.top, MARGIN_TOP_COLUMNS, down=True)
+
+
 def draw_note_page(
     backend: Backend,
     note_page_: NotePage,
@@ -713,6 +878,8 @@ def draw_note_page(
                     rect = Rect(line.x, line.y, sum(line.widths), line.height)
                     with backend.group(f"figure-{line.figure}", "figure"):
                         drawer(backend, rect, content.lang)
+            elif line.align == "justify":
+                draw_justified(backend, (line.x, line.y), line.text, line.size, line.widths[0])
             else:
                 draw_markup(backend, (line.x, line.y), line.text, line.size, line.align)
                 if line.kind == "toc":
@@ -742,10 +909,13 @@ def draw_note_page(
                 )
         return
     draw_frame(backend, page)
-    if note_page_.form == "2":
+    form = FORM5_OF.get(note_page_.form, note_page_.form)
+    if form == "2":
         draw_form2(backend, page, note_page_.number, stamp, content.lang)
     else:
         draw_form2a(backend, page, note_page_.number, stamp.designation, content.lang)
+    if note_page_.form in FORM5_OF:
+        draw_margin_columns(backend, page, note_page_.form == "5", content.lang)
 
 
 def all_lines(pages: Sequence[NotePage]) -> list[Line]:

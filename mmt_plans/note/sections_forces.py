@@ -276,11 +276,14 @@ def group(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, step: str) -> N
         )
     if g.kind == "RPR":
         _slot_reaction(wr, fa, j, g, own)
+    if g.kind in ("PRP", "RPP"):
+        _guide_reactions(wr, j, g)
     for p_ix, poly in enumerate(g.polygons):
         _polygon(wr, poly, f"F.groups[{j}].polygons[{p_ix}]", p_ix == 0)
     wr.text(w["found_R"])
     for r in g.reactions:
         _reaction_line(wr, r, _mu_f(g.polygons), f"mu_F(F.groups[{j}].polygons)")
+    _guide_points(wr, fa, j, g, own)
 
 
 def _slot_reaction(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: set[str]) -> None:
@@ -314,9 +317,120 @@ def _slot_reaction(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: s
     lhs = " + ".join(parts + [f"{name}·{hn}"])
     wr.eq(f"ΣM_{sub(C)}({lid}) = {lhs} = 0;")
     wr.eq(
-        f"{name} = -ΣM_{sub(C)}/{hn} = -{wr.vp(total, sum_src)}/{wr.vp(h, H)} = "
+        f"{name} = -ΣM_{sub(C)}/{hn} = {wr.neg(total, sum_src)}/{wr.vp(h, H)} = "
         f"{wr.v(comp.value, N_src)} {u['N']}" + (" " + w["reverse"] if comp.value < 0 else "")
     )
+
+
+def _guide_reactions(wr: Writer, j: int, g: GroupForces) -> None:
+    """PRP, RPP: the two reactions normal to their guides from the polygon
+    they close (the group's for PRP, the outer slider's for RPP), each from
+    ΣF projected on the other's guide, where the other drops out."""
+    w, u = wr.w, wr.u
+    by_name = {r.name: k for k, r in enumerate(g.reactions)}
+    for p_ix, poly in enumerate(g.polygons):
+        unknown = [v.label for v in poly.vectors if not v.known]
+        if len(unknown) == 2 and all(
+            lb in by_name and g.reactions[by_name[lb]].kind == "P" for lb in unknown
+        ):
+            break
+    else:
+        return
+    base = f"F.groups[{j}].polygons[{p_ix}]"
+    known = [(m, v) for m, v in enumerate(poly.vectors) if v.known and v.magnitude > 0]
+    names = [force_markup(lb) for lb in unknown]
+    wr.text(w["guide_eq"].format(Ra=names[0], Rb=names[1], title=_title(wr, poly)))
+    for a_ix, b_ix in ((0, 1), (1, 0)):
+        ra, rb = g.reactions[by_name[unknown[a_ix]]], g.reactions[by_name[unknown[b_ix]]]
+        Ra = names[a_ix]
+        NB = f"F.groups[{j}].reactions[{by_name[rb.name]}].components[0].direction"
+        NA = f"F.groups[{j}].reactions[{by_name[ra.name]}].components[0].direction"
+        nb = np.asarray(rb.components[0].direction, dtype=float)
+        t = np.array([nb[1], -nb[0]])  # the guide of rb: its normal turned by -90°
+
+        def along(V: str) -> str:
+            return f"({V}[0]*{NB}[1] - {V}[1]*{NB}[0])"
+
+        wr.text(w["guide_axis"].format(Rb=names[b_ix], Ra=Ra))
+        total, parts, src_sum = 0.0, list[str](), list[str]()
+        for m, v in known:
+            V = f"{base}.vectors[{m}].vector"
+            F = float(np.hypot(*v.vector))
+            proj = float(np.dot(v.vector, t))
+            total += proj
+            src_sum.append(along(V))
+            name = force_markup(v.label)
+            wr.eq(
+                f"{name}·cos({name}, t) = {wr.v(F, f'hyp({V})')}·"
+                f"{wr.vp(proj / F, f'{along(V)}/hyp({V})')} = {wr.v(proj, along(V))} {u['N']}"
+            )
+            parts.append(f"{name}·cos({name}, t)")
+        c = float(np.dot(ra.components[0].direction, t))
+        C = along(NA)
+        N = ra.components[0]
+        NS = f"J['forces']['reaction_details'][{ra.name!r}]['components'][{N.label!r}]"
+        lhs = " + ".join([f"{Ra}·cos({Ra}, t)", *parts])
+        wr.eq(f"ΣF_t = {lhs} = 0, cos({Ra}, t) = {wr.v(c, C)};")
+        wr.eq(
+            f"{Ra} = -ΣF_t/cos({Ra}, t) = {wr.neg(total, '+'.join(src_sum) or '0')}/"
+            f"{wr.vp(c, C)} = {wr.v(N.value, NS)} {u['N']}"
+            + (" " + w["reverse"] if N.value < 0 else "")
+        )
+
+
+def _guide_points(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: set[str]) -> None:
+    """Where each reaction normal to a guide acts (a prismatic pair's), from
+    ΣM of its link about a revolute pair of the group that the link's other
+    unknown reactions pass through: ΣM_P = ΣM_P(loads) + R·h = 0. An inner
+    prismatic pair's from its first link about the outer pin A; an outer
+    one's about the inner pin B (RRP, PRP), or A (RPP: its inner reaction
+    known by then)."""
+    w, u, a = wr.w, wr.u, wr.solution
+    fp = fa.index if fa.index is not None else a.force_position
+    mu_l = float(a.mu_l)
+    # RPP: the inner reaction is placed from the first link, then known on the second
+    order = sorted(
+        (r for r in g.reactions if r.kind == "P" and not r.couple and r.magnitude > 0),
+        key=lambda r: r.by not in g.links,
+    )
+    known: set[str] = set()
+    for r in order:
+        inner = r.by in g.links
+        pin = g.reactions[0] if inner or g.reactions[2].kind != "R" else g.reactions[2]
+        P = np.asarray(pin.point, dtype=float)
+        P_name = pin.pair
+        P_src = src.point(a, fp, P_name, "points")
+        comp = r.components[0]
+        lid, name, value = r.on, force_markup(r.name), comp.value
+        D = f"J['forces']['reaction_details'][{r.name!r}]"
+        N_src = f"{D}['components'][{comp.label!r}]"
+        # the arm of the reaction about P: the same for it and for its opposite
+        H = f"moment(({D}['point'], J['forces']['reactions'][{r.name!r}], 0), {P_src})/{N_src}"
+        if inner:
+            # the inner reaction from the link it acts back on (the outer one there passes P)
+            lid, name, value, N_src = r.by, force_markup(r.reversed().name), -value, f"-{N_src}"
+        wr.text(w["guide_point"].format(R=name, P=P_name, lid=lid))
+        skip = (own - known) | {r.name, r.reversed().name}
+        base = f"F.groups[{j}].free_bodies[{lid}]"
+        terms = _terms(wr, fa, g.free_bodies[lid], skip, base)
+        terms = [t for t in terms if np.hypot(*(np.asarray(t[2]) - P)) > 1e-12 or t[3]]
+        total, parts = _moment_terms(wr, fa, terms, P, P_src, P_name)
+        n = np.asarray(comp.direction, dtype=float)
+        rp = np.asarray(r.point, dtype=float) - P
+        h = float(rp[0] * n[1] - rp[1] * n[0])
+        hn = f"h_{{{len(parts) + 1}}}"
+        sum_src = "+".join(f"moment({t[4]}, {P_src})" for t in terms) or "0"
+        known |= {r.name, r.reversed().name}
+        if not parts:  # every other force on the link passes through P, and so does R
+            wr.eq(f"ΣM_{sub(P_name)}({lid}) = {name}·{hn} = 0; {hn} = {wr.v(h, H)} {u['m']}")
+            continue
+        lhs = " + ".join(parts + [f"{name}·{hn}"])
+        wr.eq(f"ΣM_{sub(P_name)}({lid}) = {lhs} = 0;")
+        wr.eq(
+            f"{hn} = -ΣM_{sub(P_name)}/{name} = {wr.neg(total, sum_src)}/{wr.vp(value, N_src)} = "
+            f"{wr.v(h, H)} {u['m']}; {hn}/μ_l = {wr.vp(h, H)}/{wr.v(mu_l, 'S.mu_l')} = "
+            f"{wr.v(h / mu_l, f'({H})/S.mu_l')} {u['mm']}"
+        )
 
 
 def _mu_f(polygons: tuple[ForcePolygon, ...]) -> float:
@@ -412,7 +526,7 @@ def driving_link(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     FB = "J['forces']['balancing_force_plans']"
     MB = "J['forces']['balancing_moment']"
     wr.eq(
-        f"F_{{bal.pl}} = {minus}ΣM_{sub(O)}/l_{{{OA_}}} = {minus}{wr.vp(total, sum_src)}/"
+        f"F_{{bal.pl}} = {minus}ΣM_{sub(O)}/l_{{{OA_}}} = {wr.neg(total, sum_src) if minus else wr.vp(total, sum_src)}/"
         f"{wr.v(OA, 'M.crank_length')} = {wr.v(dl.balancing_force, FB)} {u['N']} "
         f"({w['drives'] if dl.balancing_force >= 0 else w['brakes']});"
     )
@@ -482,7 +596,7 @@ def lever(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     minus = "-" if s > 0 else ""
     FZ = "J['forces']['balancing_force_lever']"
     wr.eq(
-        f"F_{{bal.z}} = {minus}ΣF_i·h_i/pa = {minus}{wr.vp(total, TOT)}/"
+        f"F_{{bal.z}} = {minus}ΣF_i·h_i/pa = {wr.neg(total, TOT) if minus else wr.vp(total, TOT)}/"
         f"{wr.v(pa, f'F.lever.pa/{MV}')} = {wr.v(lv.balancing_force, FZ)} {u['N']} "
         f"({w['drives'] if lv.balancing_force >= 0 else w['brakes']})"
     )

@@ -109,6 +109,12 @@ class Writer:
         mark = self.v(x, source, sig)
         return f"({mark})" if self.cat.number(float(x), sig).startswith("-") else mark
 
+    def neg(self, x: float, source: str, sig: int = 4) -> str:
+        """-x substituted into a formula: "-" before the number (in parentheses
+        when negative); no sign before a number that prints as 0 (no "-0")."""
+        mark = self.vp(x, source, sig)
+        return mark if self.cat.number(float(x), sig) == "0" else f"-{mark}"
+
     def i(self, k: int, source: str) -> str:
         """A whole number (a count, a position) written exactly."""
         key = len(self._pending)

@@ -312,6 +312,10 @@ def test_pdf_text_is_real_and_in_one_language(tmp_path, lang):
     for word in (w["abstract"], w["contents"], w["references"], w["task"]):
         assert word in out
     assert "W = 3n - 2p5 - p4" in out
+    # the longest paragraph, set flush left and right, reads back word by word
+    blocks = note_document(solution, lang).content.blocks  # type: ignore[arg-type]
+    texts = [b.text for b in blocks if b.kind == "text" and not re.search(r"[_^{}]", b.text)]
+    assert _norm(max(texts, key=len)) in _norm(out)
     if lang == "uk":
         assert not re.findall(UNITS_EN, out)
         assert "рад/с" in out and "Таблиця 1" in out and "Рисунок 1" in out

@@ -19,7 +19,7 @@ import pytest
 
 import mmt_plans
 from mmt_plans.gears import GearPair
-from mmt_plans.note import note_content
+from mmt_plans.note import note_content, plain
 from mmt_plans.results_json import results
 from mmt_plans.scales import ACCELERATION_PLAN, FORCE_PLAN, VELOCITY_PLAN, scale_for
 
@@ -30,8 +30,10 @@ SEED002_PAIR = ROOT / "samples/tasks/seed002/task1_v03.toml"
 SEED003 = [
     ROOT / "samples/tasks/seed003/task01_v1.toml",
     ROOT / "samples/tasks/seed003/task02_v3.toml",
+    ROOT / "samples/tasks/seed003/task11_v1.toml",  # RPP
 ]
-FILES = SAMPLES + [SEED002_GEARS, SEED002_PAIR] + SEED003
+SEED002_PRP = ROOT / "samples/tasks/seed002/task6_v00.toml"  # PRP and RPR
+FILES = SAMPLES + [SEED002_GEARS, SEED002_PAIR, SEED002_PRP] + SEED003
 CASES = [(p, lang) for p in FILES for lang in ("en", "uk")]
 
 
@@ -320,3 +322,62 @@ def test_analyze_prints_the_gear_train_and_the_reduction():
     )
     assert f"{energy / w1**2:.6g}" in text
     assert "Gear train" not in text_report(solved(ROOT / "samples/six_link_press.toml"))
+
+
+NUM = r"\(?(-?\d+(?:\.\d+)?)\)?"
+
+
+@pytest.mark.parametrize(
+    "path", [SEED002_PRP, ROOT / "samples/tasks/seed003/task11_v1.toml"], ids=lambda p: p.stem
+)
+def test_prismatic_reactions_by_projections_and_moments(path):
+    """PRP and RPP (seed 000/003): each reaction normal to a guide from ΣF
+    projected on the other guide, its point from ΣM about the revolute pair.
+    The printed numbers (each checked against its source above) must also
+    satisfy the printed equations: F·cos = projection, the projections' sum,
+    R = -ΣF_t/cos, h = -ΣM/R, and every reaction normal to a guide solved so."""
+    a, content = solved(path), note(path, "en")
+    text = content.text()
+    kinds = {g.kind for g in a.forces.groups}
+    assert kinds & {"PRP", "RPP"}
+    lines = text.splitlines()
+    solved_names = []
+    for k, line in enumerate(lines):
+        m = re.fullmatch(rf"(\S+) = -ΣF_t/cos\(\1, t\) = -?{NUM}/{NUM} = {NUM} N.*", line)
+        if not m:
+            continue
+        total, c, value = (float(x) for x in m.groups()[1:])
+        assert value == pytest.approx(-total / c, rel=2e-3, abs=0.5)
+        # the projections above it add up to the sum
+        proj = []
+        for prev in reversed(lines[:k]):
+            if not prev.startswith(("Projections", "ΣF_t")) and "cos(" not in prev:
+                break
+            pm = re.fullmatch(rf"\S+·cos\(\S+, t\) = {NUM}·{NUM} = {NUM} N", prev)
+            if pm:
+                F, cosine, p = (float(x) for x in pm.groups())
+                assert p == pytest.approx(F * cosine, rel=5e-3, abs=0.5)
+                assert -1.0 - 1e-9 <= cosine <= 1.0 + 1e-9
+                proj.append(p)
+            if prev.startswith("Projections"):
+                break
+        assert total == pytest.approx(sum(proj), rel=2e-3, abs=1.0)
+        solved_names.append(m.group(1))
+    normal = {
+        r.name
+        for g in a.forces.groups
+        if g.kind in ("PRP", "RPP")
+        for r in g.reactions
+        if r.kind == "P"
+    }
+    from mmt_plans.note.sections_forces import force_markup
+
+    assert set(solved_names) == {plain(force_markup(n)) for n in normal}
+    assert not re.search(r"-\(?0(?![.\d])", text)  # no negative zero, not even as -ΣM = -0
+    arms = re.findall(rf"h_\d = -ΣM_\S+/\S+ = -?{NUM}/{NUM} = {NUM} m", text)
+    # a reaction whose link's other forces all pass through the pin passes through it too
+    through = re.findall(rf"ΣM_\S+ = \S+·h_\d = 0; h_\d = {NUM} m", text)
+    assert arms or through
+    assert all(float(h) == 0 for h in through)
+    for moment, value, h in arms:
+        assert float(h) == pytest.approx(-float(moment) / float(value), rel=2e-3, abs=1e-4)
