@@ -146,19 +146,9 @@ def words(text: str) -> list[str]:
 
 def _wrap(let: Lettering, text: str, size: float, width: float, first: float = 0.0) -> list[str]:
     """Break at spaces into lines no wider than `width`, the first `first` mm narrower."""
-    lines: list[str] = []
-    for paragraph in text.split("\n"):
-        current = ""
-        for word in paragraph.split(" "):
-            trial = f"{current} {word}" if current else word
-            room = width - (first if not lines else 0.0)
-            if current and markup_width(let, trial, size) > room:
-                lines.append(current)
-                current = word
-            else:
-                current = trial
-        lines.append(current)
-    return lines
+    return let.wrap(
+        text, size, width, measure=lambda t, s: markup_width(let, t, s), first_indent=first
+    )
 
 
 def _equation_lines(

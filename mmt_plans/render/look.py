@@ -135,9 +135,11 @@ class Lettering:
         max_width: float,
         *,
         measure: Callable[[str, float], float] | None = None,
+        first_indent: float = 0.0,
     ) -> list[str]:
         """Break `text` at spaces (and at given newlines) into lines no wider than max_width,
-        as `measure(line, size)` gives widths (plain text's by default).
+        as `measure(line, size)` gives widths (plain text's by default); the very
+        first line `first_indent` narrower (a paragraph's indent).
 
         A single word wider than max_width stays on its own line. Spaces inside
         a line are kept as written (an equation's "  (" stays two).
@@ -148,7 +150,8 @@ class Lettering:
             current = ""
             for word in paragraph.split(" "):
                 trial = f"{current} {word}" if current else word
-                if current and measure(trial, size) > max_width:
+                room = max_width - (first_indent if not lines else 0.0)
+                if current and measure(trial, size) > room:
                     lines.append(current)
                     current = word
                 else:
