@@ -18,10 +18,7 @@ import numpy as np
 
 from ..diagrams import (
     ILL_CONDITIONED,
-    DiagramScales,
     KinematicDiagrams,
-    diagram_scales,
-    graphical_differentiation,
 )
 from ..drawing.labels import Labels
 from ..drawing.layout import LayoutError, SheetLayout
@@ -404,11 +401,14 @@ def sketch_diagram(
     s_dense: np.ndarray | None = None,
     refinement: int = 1,
     mu_l: float | None = None,
+    mu_l_solution: float | None = None,
 ) -> Sketch:
     """One of the S, V, a diagrams with its construction. `s_dense` (m, at equal
     crank steps from position 0) draws S as the smooth curve through the
     positions' ordinates, as a draughtsman draws it with a French curve.
-    `mu_l` (the mechanism's drawing): μ_S other than it is explained under S."""
+    `mu_l` (the mechanism's drawing on this sheet): μ_S other than it is
+    explained under S, by the diagrams' height when μ_l is the calculation's
+    `mu_l_solution` (the one μ_S was chosen from), else by the field."""
     c = construction
     sk = Sketch(look)
     axes = catalogue(lang).words("diagram_axes")
@@ -487,11 +487,20 @@ def sketch_diagram(
             pole = f"{float(-deriv.pole[0]):.2f}".rstrip("0").rstrip(".")
             sk.rich_text((x, y), str(axes["pole"]).format(H=catalogue(lang).localise(pole)), _TEXT)
         elif mu_l is not None and abs(c.mu_S / mu_l - 1.0) > 1e-9:
-            # seed 003 §1.7 draws S at μ_S = μ_l: a larger μ_S says why
-            k = catalogue(lang).plain_number(float(f"{c.mu_S / mu_l:.6g}"))
-            sk.rich_text(
-                (ext.x + _PAD, y - _TEXT - 2.0), _words(lang)["mu_S_reason"].format(k=k), _TEXT
+            # seed 003 §1.7 draws S at μ_S = μ_l: another μ_S says why
+            cat = catalogue(lang)
+            k = cat.plain_number(float(f"{c.mu_S / mu_l:.6g}"))
+            same = mu_l_solution is None or abs(mu_l / mu_l_solution - 1.0) <= 1e-9
+            reason = (
+                _words(lang)["mu_S_reason"].format(k=k)
+                if same
+                else _words(lang)["mu_S_reason_field"].format(
+                    k=k,
+                    mu_S=cat.plain_number(_tidy(c.mu_S)),
+                    unit=cat.unit("m/mm"),
+                )
             )
+            sk.rich_text((ext.x + _PAD, y - _TEXT - 2.0), reason, _TEXT)
         sk.text((ext.x + _PAD, ext.top + 3.0), _words(lang)[f"diagram_{which}"], _TEXT)
     return sk
 
@@ -678,10 +687,6 @@ _PLACEMENT: Mapping[str, str] = {
 # The field of the mechanism's drawing: the left part of the sheet, this share
 # of the free width, from the top down to the column of diagrams (Appendix A).
 MECHANISM_FIELD_SHARE = 0.5
-# The tallest an S, V or a diagram is drawn on this sheet, mm (three stand in a
-# column under the mechanism).
-SHEET_DIAGRAM_HEIGHT_MM = 90.0
-DIAGRAM_HEIGHTS_MM = (SHEET_DIAGRAM_HEIGHT_MM, 70.0, 55.0)  # lower ones make room for the mechanism
 # The acceleration plan's longest vector (seed 003 §1.5: πa ≈ 100 … 200 mm).
 ACCELERATION_GUIDE_MM = (100.0, 200.0)
 
@@ -724,21 +729,6 @@ def _acceleration_scale(solution: Solution, shrink: int) -> float | None:
     return mu if shrink == 0 or longest / mu >= lo * (1 - 1e-9) else None
 
 
-def _sheet_diagrams(
-    solution: Solution, mu_l: float, max_height: float = SHEET_DIAGRAM_HEIGHT_MM
-) -> tuple[KinematicDiagrams, DiagramScales]:
-    """The construction of the Solution's diagrams (the same grid, so the same
-    values and the same 5 % check) drawn at the sheet's scales: μ_S = μ_l of
-    the mechanism's drawing where the diagrams fit, whole-millimetre poles."""
-    dg = solution.require_diagrams()
-    c = dg.construction
-    chosen = diagram_scales(c.s, n1=c.n1, L=c.L, mu_l=mu_l, max_height=max_height)
-    drawn = graphical_differentiation(
-        c.s, n1=c.n1, mu_S=chosen.mu_S, L=c.L, H1=chosen.H1, H2=chosen.H2
-    )
-    return drawn, chosen
-
-
 def _sketch_all(
     solution: Solution,
     look: Any,
@@ -747,10 +737,10 @@ def _sketch_all(
     mu_l: float,
     stacked: bool,
     cache: dict[tuple[str, float], Any],
-    diagram_height: float = SHEET_DIAGRAM_HEIGHT_MM,
 ) -> tuple[dict[str, Sketch], dict[str, float], KinematicDiagrams]:
     """Every drawing but the mechanism: the plans at μV and `mu_a`, the diagrams
-    at the scales that go with μ_l; `cache` keeps what was drawn at a scale."""
+    as the Solution constructed them (its μ_S and poles, the ones the note and
+    the results JSON give); `cache` keeps what was drawn at a scale."""
 
     def memo(name: str, mu: float, make: Callable[[], Any]) -> Any:
         if (name, mu) not in cache:
@@ -774,13 +764,10 @@ def _sketch_all(
             lambda: sketch_plan(solution, i, mu_a, "acceleration", look, lang)[0],
         )
 
-    tag = f"{diagram_height:g}"
-    drawn, chosen = memo(
-        f"diagram-scales-{tag}", mu_l, lambda: _sheet_diagrams(solution, mu_l, diagram_height)
-    )
+    dg = solution.require_diagrams()
+    drawn = dg.construction
 
     def diagrams() -> list[Sketch]:
-        dg = solution.require_diagrams()
         return [
             sketch_diagram(
                 drawn,
@@ -790,13 +777,14 @@ def _sketch_all(
                 solution.s_dense,
                 dg.refinement,
                 mu_l=mu_l if which == "s" else None,
+                mu_l_solution=float(solution.mu_l),
             )
             for which in ("s", "v", "a")
         ]
 
-    parts = memo(f"diagrams-{tag}", mu_l, diagrams)
+    parts = memo("diagrams", mu_l, diagrams)
     if stacked:
-        sketches["diagrams"] = memo(f"diagrams-stacked-{tag}", mu_l, lambda: _stack(parts, look))
+        sketches["diagrams"] = memo("diagrams-stacked", mu_l, lambda: _stack(parts, look))
     else:
         for which, sk in zip("sva", parts):
             sketches[f"diagram-{which}"] = sk
@@ -939,11 +927,11 @@ def compose_sheet1(
         if width_m / mu_l > region.width or height_m / mu_l > region.height:
             continue
         placed_field = False
-        for dh, shrink in itertools.product(DIAGRAM_HEIGHTS_MM, (0, 1)):
+        for shrink in (0, 1):
             mu_a = _acceleration_scale(solution, shrink)
             if mu_a is None:
                 continue
-            sketches, scales, drawn = _sketch_all(solution, look, lang, mu_a, mu_l, True, cache, dh)
+            sketches, scales, drawn = _sketch_all(solution, look, lang, mu_a, mu_l, True, cache)
             sketches["mechanism"] = mechanism(mu_l)
             order = _order(sketches, True)
             tables = [sketches[n].extent().width for n in order if n.startswith("table")]
