@@ -15,12 +15,13 @@ from dataclasses import dataclass, field
 from typing import Any, cast
 
 import numpy as np
+import shapely
 
 from ..diagrams import (
     ILL_CONDITIONED,
     KinematicDiagrams,
 )
-from ..drawing.labels import Labels
+from ..drawing.labels import Labels, arc_line, drawn_shapes
 from ..drawing.layout import LayoutError, SheetLayout
 from ..drawing.markup import component_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
@@ -109,6 +110,192 @@ def _tidy(mu: float) -> float:
 
 
 # --- the mechanism -----------------------------------------------------------------
+
+_OMEGA_R, _EPS_R, _CRANK_R = 5.0, 8.0, 8.0  # radii of the ω, ε arcs and of ω1's, mm
+# a label among many lines may go this much further out, mm, tried in turn
+_MECHANISM_RINGS = (0.0, 2.5, 5.0, 9.0, 14.0, 20.0)
+_SPAN = 150.0  # an arc beside a link spans this much of the half-plane on its side, deg
+# where along a link its arcs are tried, the middle first
+_ALONG_LINK = tuple(sorted(np.arange(0.15, 0.86, 0.05), key=lambda t: abs(t - 0.5)))
+
+
+def _inset(radius: float) -> float:
+    """Degrees the outer (ε) arc stops short of the inner (ω) one at each end, so
+    that the inner arc's arrowhead and label stand clear of it."""
+    return 0.0 if radius <= _OMEGA_R else 25.0
+
+
+def _label_room(
+    centre: np.ndarray, start: float, spins: Sequence[tuple[float, float]]
+) -> list[list[Any]]:
+    """For each arc (radius, sense) from `start`, the boxes its label may take
+    beside its arrowhead: round it in eight directions, as far off as the
+    label placer's rings), nearest first."""
+    out = []
+    for radius, sense in spins:
+        inset = _inset(radius)
+        t = math.radians(start + _SPAN - inset if sense > 0 else start + inset)
+        u = np.array([math.cos(t), math.sin(t)])
+        tip = centre + radius * u
+        boxes = []
+        for ring in 1.5 + np.asarray(_MECHANISM_RINGS):
+            for k in range(8):
+                d = math.radians(math.degrees(t) + 45.0 * k)
+                x, y = tip + np.array([math.cos(d), math.sin(d)]) * (ring + 3.0)
+                boxes.append(shapely.box(x - 3.2, y - 2.6, x + 3.2, y + 2.6))
+        out.append(boxes)
+    return out
+
+
+def _between_spokes(
+    centre: np.ndarray, tip: np.ndarray, spokes: Sequence[np.ndarray], width: float
+) -> np.ndarray:
+    """Where a label `width` mm wide fits between the crank's lines (spokes
+    from `centre`) nearest the arrowhead `tip`: on the bisector of a gap, as
+    far out as the gap is wide enough; `tip` itself when no gap will do."""
+    angles = sorted(
+        {
+            round(math.degrees(math.atan2(v[1], v[0])) % 360.0, 6)
+            for v in spokes
+            if np.hypot(*v) > 1e-9
+        }
+    )
+    reach = min((float(np.hypot(*v)) for v in spokes), default=0.0)
+    if len(angles) < 2:
+        return tip
+    at_tip = math.degrees(math.atan2(*(tip - centre)[::-1])) % 360.0
+    best: tuple[float, np.ndarray] | None = None
+    for a, b in zip(angles, angles[1:] + [angles[0] + 360.0]):
+        half = math.radians(b - a) / 2
+        if half >= math.pi / 2:
+            r = float(np.hypot(*(tip - centre)))
+        else:
+            r = (width / 2 + 1.0) / math.sin(half) + 2.5
+        if r > reach - 2.0:
+            continue
+        mid = (a + b) / 2
+        off = abs((mid - at_tip + 180.0) % 360.0 - 180.0)
+        u = np.array([math.cos(math.radians(mid)), math.sin(math.radians(mid))])
+        if best is None or off < best[0]:
+            best = (off, centre + u * max(r - 2.5, 0.0))
+    return tip if best is None else best[1]
+
+
+class _ArcPlacer:
+    """Where the ω/ε arcs of a link go: round a point of the link, on one side
+    of it, crossing as little of what is drawn as it can (a main line of a link
+    or block counts 1, a thin line of another position or a trajectory 0.2, an
+    arc or the room kept for a label 3, a label written 10), with a free box
+    for each label next to its arrowhead."""
+
+    _WEIGHT = {"main": 1.0, "thin": 0.2, "arc": 3.0, "label": 10.0}
+
+    def __init__(self, sk: Sketch) -> None:
+        self.sk = sk
+        self._seen = 0
+        self._shapes: list[Any] = []
+        self._weights: list[float] = []
+        self._tree: Any = None
+
+    def _add(self, shapes: Sequence[Any], kind: str) -> None:
+        self._shapes += list(shapes)
+        self._weights += [self._WEIGHT[kind]] * len(shapes)
+        self._tree = None
+
+    def reserve(self, shapes: Sequence[Any]) -> None:
+        """Keep later arcs and labels' boxes off these (the room of labels to come)."""
+        self._add(shapes, "arc")
+
+    def _near(self, geom: Any, distance: float) -> np.ndarray:
+        calls = self.sk.calls
+        for c in calls[self._seen :]:
+            arc = c.name == "arc" or (c.name == "arrow" and c.args.get("head_length") == 2.5)
+            kind = "arc" if arc else ("main" if c.args.get("line") == "main" else "thin")
+            kind = "label" if c.name == "text" else kind
+            self._add(drawn_shapes(c, self.sk), kind)
+        self._seen = len(calls)
+        if not self._shapes:
+            return np.zeros(0, dtype=int)
+        if self._tree is None:
+            self._tree = shapely.STRtree(self._shapes)
+            self._w = np.asarray(self._weights)
+        return np.asarray(self._tree.query(geom, predicate="dwithin", distance=distance))
+
+    def cost(self, arc: Any) -> float:
+        """What `arc` crosses, weighted."""
+        near = self._near(arc, 0.6)
+        return float(self._w[near].sum()) if near.size else 0.0
+
+    def _covered(self, box: Any) -> int:
+        return int(self._near(box, 0.3).size)
+
+    def rooms(self, candidates: Sequence[Sequence[Any]]) -> tuple[float, list[Any]]:
+        """For each label the nearest free box of its candidates (not on another
+        label's of the same link), else the least covered; the score: 10 for
+        each drawn thing a box touches, and how far out it is, mm."""
+        total, chosen = 0.0, cast(list[Any], [])
+        for boxes in candidates:
+            best: tuple[float, Any] | None = None
+            for k, b in enumerate(boxes):
+                if any(b.intersects(c) for c in chosen):
+                    continue
+                covered = self._covered(b)
+                score = 10.0 * covered + 0.5 * _MECHANISM_RINGS[k // 8]
+                if best is None or score < best[0]:
+                    best = (score, b)
+                if covered == 0:
+                    break
+            if best is None:
+                best = (0.0, boxes[0])
+            total += best[0]
+            chosen.append(best[1])
+        return total, chosen
+
+    def beside(
+        self,
+        segments: Sequence[tuple[np.ndarray, np.ndarray]],
+        spins: Sequence[tuple[float, float]],
+    ) -> tuple[np.ndarray, float, list[np.ndarray]]:
+        """Centre and start angle (deg) of the arcs (radius, sense) of a link
+        beside one of its segments, spanning _SPAN degrees on one side of it,
+        and the free place of each one's label (its box's centre)."""
+        best: tuple[float, np.ndarray, float, list[Any]] | None = None
+        order = 0
+        for a, b in segments:
+            if float(np.hypot(*(b - a))) < 1e-9:
+                continue
+            theta = math.degrees(math.atan2(*(b - a)[::-1]))
+            for t in _ALONG_LINK:
+                c = a + t * (b - a)
+                for side in (0.0, 180.0):
+                    start = theta + side + (180.0 - _SPAN) / 2
+                    score = sum(
+                        self.cost(arc_line(c, r, start + _inset(r), start + _SPAN - _inset(r)))
+                        for r, _ in spins
+                    )
+                    room, boxes = self.rooms(_label_room(c, start, spins))
+                    score += room + 0.01 * order
+                    order += 1
+                    if best is None or score < best[0]:
+                        best = (score, c, start, boxes)
+        assert best is not None
+        self.reserve(best[3])
+        return best[1], best[2], [np.asarray(b.centroid.coords[0]) for b in best[3]]
+
+    def round_pivot(self, centre: np.ndarray, radius: float, sense: float) -> float:
+        """Start angle (deg) of a 120° arc round a frame pivot crossing least,
+        with room for its label at the arrowhead."""
+        options = []
+        for a in np.arange(0.0, 360.0, 15.0):
+            tip = math.radians(a + 120.0 if sense > 0 else a)
+            u = np.array([math.cos(tip), math.sin(tip)])
+            x, y = centre + u * (radius + 4.0)
+            room = [shapely.box(x - 2.5, y - 2.2, x + 2.5, y + 2.2)]
+            score = self.cost(arc_line(centre, radius, a, a + 120.0)) + self._covered(room[0])
+            options.append((score + 1e-3 * abs(a - 30.0), float(a), room))
+        best = min(options, key=lambda o: (o[0], o[1]))
+        self.reserve(best[2])
+        return best[1]
 
 
 def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language) -> Sketch:
@@ -211,11 +398,34 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         for name, (l0, _) in owners.items():
             if l0 == 0:
                 hatched_base(sk, at(name, 0))
-        # Lettering goes where it covers no line and no other letter.
-        labels = Labels(sk, _TEXT)
+        # Lettering goes where it covers no line, no arc and no other letter:
+        # the joints' names first (the arcs are then drawn clear of them), then
+        # ω and ε once every arc is drawn, then the positions' numbers.
+        pivot = at(mech.crank_pivot, 0)
+        labels = Labels(sk, _TEXT, rings=_MECHANISM_RINGS)
         labels.avoid_drawn(sk.calls)
-        # ω and ε of every rotating link at the planned positions (seed 003 §1.6)
-        centre = at(mech.crank_pivot, 0)
+        for name in owners:
+            if name in pts:
+                p = at(name, 0)
+                away = unit_vector(p - pivot) if name != mech.crank_pivot else np.array([-1.0, 0.0])
+                labels.place(
+                    p,
+                    point_markup(name),
+                    towards=unit_vector(away + np.array([0.3, 0.6])),
+                    distance=2.0,
+                )
+        # ω and ε of every rotating link at the planned positions (seed 003
+        # §1.6), each beside its own link on the side freest of the others and
+        # of the joints' names; all drawn before their labels are written.
+        arcs = _ArcPlacer(sk)
+        # the frame's pivots: no arc over a hatched base
+        arcs.reserve(
+            [
+                shapely.box(x - 5.0, y - 6.5, x + 5.0, y - 1.0)
+                for x, y in (at(p, 0) for p, (l0, _) in owners.items() if l0 == 0 and p in pts)
+            ]
+        )
+        queued: list[tuple[np.ndarray, str, np.ndarray]] = []  # (tip, label, towards)
         sw = solution.sweep
         w1 = abs(float(mech.drive.signed_omega))
         for i in solution.plan_positions:
@@ -225,32 +435,34 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                 names = [p for p in link.points if p in pts]
                 if lid == mech.drive.link or len(names) < 2 or abs(w) < 1e-9 * w1:
                     continue
-                mid = (at(names[0], k) + at(names[1], k)) / 2
-                arcs: tuple[tuple[float, float, str, LineType], ...] = (
-                    (w, 4.0, "ω", "main"),
-                    (e, 7.0, "ε", "thin"),
-                )
-                for value, radius, sym, line in arcs:
-                    if abs(value) < 1e-9 * w1 * w1 and sym == "ε":
-                        continue
-                    tip = sense_arc(sk, mid, radius, value, 200.0, 340.0, line)
-                    labels.avoid_circle(mid, radius + 0.3)
-                    labels.place(tip, f"{sym}_{{{lid}}}", towards=tip - mid)
-        tip = sense_arc(sk, centre, 8.0, float(mech.drive.signed_omega), 30.0, 150.0)
-        labels.avoid_circle(centre, 8.3)
-        labels.place(tip, "ω_{1}", towards=tip - centre)
-        for name in owners:
-            if name in pts:
-                p = at(name, 0)
-                away = (
-                    unit_vector(p - centre) if name != mech.crank_pivot else np.array([-1.0, 0.0])
-                )
-                labels.place(
-                    p,
-                    point_markup(name),
-                    towards=unit_vector(away + np.array([0.3, 0.6])),
-                    distance=2.0,
-                )
+                spins: list[tuple[float, float, str, LineType]] = [(w, _OMEGA_R, "ω", "main")]
+                if abs(e) >= 1e-9 * w1 * w1:
+                    spins.append((e, _EPS_R, "ε", "thin"))
+                segments = [(at(a, k), at(b, k)) for a, b in itertools.combinations(names, 2)]
+                centre, start_deg, rooms = arcs.beside(segments, [(r, v) for v, r, _, _ in spins])
+                for (value, radius, sym, line), room in zip(spins, rooms):
+                    inset = _inset(radius)
+                    tip = sense_arc(
+                        sk,
+                        centre,
+                        radius,
+                        value,
+                        start_deg + inset,
+                        start_deg + _SPAN - inset,
+                        line,
+                    )
+                    queued.append((tip, f"{sym}_{{{lid}}}", room - tip))
+        centre = pivot
+        start_deg = arcs.round_pivot(centre, _CRANK_R, float(mech.drive.signed_omega))
+        tip = sense_arc(
+            sk, centre, _CRANK_R, float(mech.drive.signed_omega), start_deg, start_deg + 120.0
+        )
+        crank = [at(mech.crank_pin, k) - centre for k in range(n)]
+        anchor = _between_spokes(centre, tip, crank, 7.0)
+        queued.append((anchor, "ω_{1}", anchor - centre))
+        for tip, markup, towards in queued:
+            labels.later(tip, markup, towards)
+        labels.write_later()
         # Numbered positions of the crank pin, in smaller figures and out beyond
         # the pin's circle, so that "0" is not read as a pivot's "O"; an entry
         # of the sweep that is no numbered position (an extreme) gets none.

@@ -227,3 +227,61 @@ def test_title_block_scale_is_the_mechanism_drawing_scale(press):
     _, backend, sheet = press
     texts = [c["content"] for c in backend.in_group("title-block") if c.name == "text"]
     assert drawing_scale(sheet.scales["mu_l"]) in texts
+
+
+@pytest.mark.parametrize("path", [PRESS, ROOT / "samples" / "shaper.toml",
+                                  ROOT / "samples" / "tasks" / "seed003" / "task01_v1.toml"],
+                         ids=lambda p: p.stem)
+def test_each_arc_beside_its_own_link_and_its_label_near_it(path):
+    """An ω/ε arc is centred on its own link as drawn at its planned position
+    and lies on one side of it (it does not cross it); every ω_k/ε_k label
+    is within 12 mm of an arc of link k; no arc crosses a label."""
+    from shapely.geometry import LineString, box
+
+    from mmt_plans.drawing.labels import arc_line
+
+    from lettering import label_boxes
+
+    sol = mmt_plans.solve(mmt_plans.load(path), forces=False)
+    backend = RecordingBackend()
+    sheet = compose_sheet1(sol, backend)
+    backend.close()
+    dx, dy = sheet.origins["mechanism"]
+    mu = sheet.scales["mu_l"]
+    calls = backend.in_group("mechanism")
+    arcs = [c for c in calls if c.name == "arc"]
+    by_link: dict[int, list] = {}
+    pts = sol.sweep.points
+    for c in arcs:
+        centre = np.asarray(c["center"])
+        shape = arc_line(c["center"], c["radius"], c["start_deg"], c["end_deg"])
+        owner = None
+        for i in sol.plan_positions:
+            k = sol.entry(i)
+            for lid, link in sol.mechanism.links.items():
+                if lid == sol.mechanism.drive.link:
+                    continue
+                names = [p for p in link.points if p in pts]
+                for a, b in zip(names, names[1:]):
+                    pa = np.asarray(pts[a][k]) / mu + (dx, dy)
+                    pb = np.asarray(pts[b][k]) / mu + (dx, dy)
+                    seg = LineString([tuple(pa), tuple(pb)])
+                    if seg.distance(LineString([tuple(centre), tuple(centre + 1e-9)])) < 1e-6:
+                        assert not seg.crosses(shape), (lid, i)
+                        owner = lid
+        if owner is not None:
+            by_link.setdefault(owner, []).append(shape)
+        else:  # ω1 round the crank's pivot
+            pivot = np.asarray(pts[sol.mechanism.crank_pivot][0]) / mu + (dx, dy)
+            assert math.dist(pivot, centre) < 1e-6
+    # a block (one joint, turning with its guide) shows its ω on the guide
+    rotating = {lid for lid, link in sol.mechanism.links.items()
+                if lid != sol.mechanism.drive.link and sum(p in pts for p in link.points) > 1
+                and abs(float(sol.sweep.omega[lid][sol.entry(sol.plan_positions[0])])) > 1e-9}
+    assert set(by_link) == rotating
+    labels = label_boxes(backend, "mechanism")
+    every_arc = [arc_line(c["center"], c["radius"], c["start_deg"], c["end_deg"]) for c in arcs]
+    for text, b in labels:
+        assert not any(a.intersects(b) for a in every_arc), text
+        if text[:1] in "ωε" and text[1:].isdigit() and int(text[1:]) in by_link:
+            assert min(a.distance(b) for a in by_link[int(text[1:])]) <= 12.0, text
