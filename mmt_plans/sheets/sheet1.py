@@ -16,6 +16,7 @@ from typing import Any, cast
 
 import numpy as np
 import shapely
+from shapely.geometry import box
 
 from ..diagrams import (
     ILL_CONDITIONED,
@@ -32,6 +33,7 @@ from ..drawing.table import table_sketch
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend
 from ..render.look import LineType
+from ..render.recording import RecordingBackend
 from ..scales import (
     LENGTH_MANTISSA_TEXT,
     VELOCITY_PLAN,
@@ -114,7 +116,16 @@ def _tidy(mu: float) -> float:
 _OMEGA_R, _EPS_R, _CRANK_R = 5.0, 8.0, 8.0  # radii of the ω, ε arcs and of ω1's, mm
 # a label among many lines may go this much further out, mm, tried in turn
 _MECHANISM_RINGS = (0.0, 2.5, 5.0, 9.0, 14.0, 20.0)
-_SPAN = 150.0  # an arc beside a link spans this much of the half-plane on its side, deg
+_SPAN = 150.0
+# a diagram's number or pole letter goes no further than this from its point, mm
+_TICK_RINGS = (
+    0.0,
+    1.0,
+    2.0,
+    3.5,
+    5.0,
+    7.0,
+)  # an arc beside a link spans this much of the half-plane on its side, deg
 # where along a link its arcs are tried, the middle first
 _ALONG_LINK = tuple(sorted(np.arange(0.15, 0.86, 0.05), key=lambda t: abs(t - 0.5)))
 
@@ -598,6 +609,18 @@ def sketch_plan(
 # --- diagrams ----------------------------------------------------------------------
 
 
+def _free_spot(
+    sk: Sketch, free: Labels, text: str, size: float, spots: Sequence[tuple[Any, str, str]]
+) -> tuple[Any, str, str] | None:
+    """The first of `spots` (position, anchor, valign) where `text` covers no line."""
+    for pos, anchor, valign in spots:
+        probe = RecordingBackend(look=sk.look)
+        probe.text(pos, text, size, anchor=anchor, valign=valign)  # type: ignore[arg-type]
+        if free.covered(box(*probe.text_box(probe.calls[-1]))) <= 0:
+            return pos, anchor, valign
+    return None
+
+
 def _axes(sk: Sketch, x0: float, x1: float, y0: float, y1: float, ylabel: str, xlabel: str) -> None:
     sk.arrow((x0, 0.0), (x1, 0.0), "main", head_length=3.0, head_width=1.2)
     sk.arrow((0.0, y0), (0.0, y1), "main", head_length=3.0, head_width=1.2)
@@ -656,16 +679,10 @@ def sketch_diagram(
         _axes(sk, x_lo, L + 12.0, ymin - 4.0, ymax + 10.0, str(label), str(axes["t"]))
         # Ordinates at the positions, numbered under the axis.
         grid = np.asarray(c.abscissae, dtype=float).tolist() + [L]
+        ticks = []  # numbered once every line is drawn, where they cover none
         for i, x in enumerate(grid):
             if i % refinement == 0:  # the positions are numbered, the finer grid is not
-                # the first "0" stands left of the ordinate axis, clear of it
-                sk.text(
-                    (x - 1.2, -1.5) if i == 0 else (x, -1.5),
-                    str((i // refinement) % (len(grid) // refinement)),
-                    _SMALL,
-                    anchor="right" if i == 0 else "center",
-                    valign="top",
-                )
+                ticks.append((x, str((i // refinement) % (len(grid) // refinement))))
             if which == "s":
                 y = float(c.s_points[i][1])
                 if abs(y) > 0.5:
@@ -675,7 +692,6 @@ def sketch_diagram(
             # The construction: pole H, rays H–K_i, K_i carried to the mid points.
             H = np.asarray(deriv.pole, dtype=float)
             sk.circle(H, 0.8, "main", "black")
-            sk.text((H[0], -1.5), "H", _TEXT, anchor="center", valign="top")
             for s, e in np.asarray(deriv.rays, dtype=float):
                 sk.line(s, e, "thin")
             for kp, mp in zip(np.asarray(deriv.k_points, dtype=float), pts):
@@ -690,6 +706,45 @@ def sketch_diagram(
         if chords is not None:
             for s, e in np.asarray(chords, dtype=float):
                 sk.line(s, e, "dashed")
+        # The lettering of the construction, clear of every line: the pole's
+        # letter beside the pole away from its rays, the positions' numbers
+        # under the time axis (above it where the curve or a line is below),
+        # the first "0" left of the ordinate axis.
+        free = Labels(sk, _TEXT)  # asked only what is covered: it follows every line drawn
+        if which != "s":
+            hx = float(deriv.pole[0])
+            spot = _free_spot(
+                sk,
+                free,
+                "H",
+                _TEXT,
+                [
+                    ((hx - 1.0, -1.2), "right", "top"),
+                    ((hx - 1.0, 1.2), "right", "baseline"),
+                    ((hx, -1.5), "center", "top"),
+                    ((hx, 1.5), "center", "baseline"),
+                ],
+            )
+            pos, anchor, valign = spot or ((hx - 5.0, 0.0), "right", "middle")
+            sk.text(pos, "H", _TEXT, anchor=anchor, valign=valign)  # type: ignore[arg-type]
+        # the numbers at the time axis, under it or over it where a line is in
+        # the way; where no place by the axis is free for one of them, all in a
+        # row under the whole diagram (one rule for the diagram)
+        spots = []
+        for j, (x, number) in enumerate(ticks):
+            if j == 0:  # the first "0" left of the ordinate axis
+                near = [((x - 1.2, -1.2), "right", "top"), ((x - 1.2, 1.2), "right", "baseline")]
+            else:
+                near = [((x, -1.2), "center", "top"), ((x, 1.2), "center", "baseline")]
+                near += [((x + d, -1.2), "center", "top") for d in (-1.5, 1.5)]
+                near += [((x + d, 1.2), "center", "baseline") for d in (-1.5, 1.5)]
+            spots.append(_free_spot(sk, free, number, _SMALL, near))
+        for (x, number), spot in zip(ticks, spots):
+            if any(sp is None for sp in spots):
+                spot = ((x, ymin - 5.0), "center", "top")
+            assert spot is not None
+            pos, anchor, valign = spot
+            sk.text(pos, number, _SMALL, anchor=anchor, valign=valign)  # type: ignore[arg-type]
         ext = sk.extent()
         y = ext.bottom - 5.0
         x = ext.x + _PAD
