@@ -531,6 +531,16 @@ def sketch_plan(
     view = solution.plan(index)
     images_si = view.velocity_images if kind == "velocity" else view.acceleration_images
     images = {n: np.asarray(v, dtype=float) / mu for n, v in images_si.items()}
+    # The point a group's plan solves for and that is no joint of the
+    # mechanism (A3 of a slotted link, on the link beside the block's A): its
+    # image is where the group's last component ends, and it is named too.
+    solved: list[str] = []
+    for g in view.groups:
+        comps = g.velocity if kind == "velocity" else g.acceleration
+        if g.point not in images and comps:
+            last = comps[-1]
+            images[g.point] = (np.asarray(last.start, float) + np.asarray(last.vector, float)) / mu
+            solved.append(g.point)
     sk = Sketch(look)
     gid = f"{kind}-plan-{index}"
     pole = "p" if kind == "velocity" else "π"
@@ -580,6 +590,12 @@ def sketch_plan(
             if float(np.hypot(*v)) >= 0.5 and not name.startswith("S"):
                 sk.arrow((0.0, 0.0), v)
             elif float(np.hypot(*v)) >= 0.5:
+                sk.circle(v, 0.6, "thin", "black")
+            key = (round(float(v[0]) * 2), round(float(v[1]) * 2))
+            labels.setdefault(key, []).append(name)
+        for name in solved:
+            v = images[name]
+            if float(np.hypot(*v)) >= 0.5:
                 sk.circle(v, 0.6, "thin", "black")
             key = (round(float(v[0]) * 2), round(float(v[1]) * 2))
             labels.setdefault(key, []).append(name)
@@ -956,6 +972,8 @@ _PLACEMENT: Mapping[str, str] = {
 MECHANISM_FIELD_SHARE = 0.5
 # The acceleration plan's longest vector (seed 003 §1.5: πa ≈ 100 … 200 mm).
 ACCELERATION_GUIDE_MM = (100.0, 200.0)
+# The longest an acceleration plan's vector may be drawn so that πa reaches 100 mm.
+ACCELERATION_SHEET_MAX_MM = 320.0
 
 
 def _plan_scales(solution: Solution) -> tuple[float, float]:
@@ -984,16 +1002,47 @@ def _longest_acceleration(solution: Solution) -> float:
     return longest
 
 
+def _crank_pin_acceleration(solution: Solution) -> float:
+    """a_A, the crank pin's acceleration on the plans (the largest), m/s²."""
+    pin = solution.mechanism.crank_pin
+    return max(
+        float(np.hypot(*solution.plan(i).acceleration_images[pin])) for i in solution.plan_positions
+    )
+
+
 def _acceleration_scale(solution: Solution, shrink: int) -> float | None:
-    """μa `shrink` series steps above the one drawing the longest vector at most
-    200 mm; None once that vector would be shorter than 100 mm."""
+    """μa `shrink` series steps above the finest one drawing the longest
+    vector at most 200 mm; None once that vector would be shorter than 100 mm,
+    or πa (seed 003 eq. 9: πa ≈ 100 … 200 mm) shorter than 100 mm where the
+    unshrunk scale met it. `shrink` −1: the coarsest value giving πa >= 100 mm
+    where the 200 mm scale does not (None where it does, or where that draws
+    the longest vector past ACCELERATION_SHEET_MAX_MM).
+
+    The finest scale that keeps the longest vector within 200 mm is also the
+    one that draws πa longest, so it meets both rules whenever any series value
+    does. Where none does (the longest vector, a fast-turning link's a^τ or a
+    Coriolis a^k, more than about twice a_A or between two series values; e.g.
+    seed 003 task 1 v1, πa 55 mm) the guide's πa >= 100 mm wins where the sheet
+    holds the larger plan (its longest vector up to ACCELERATION_SHEET_MAX_MM,
+    and the layout still fits around the mechanism at its μ_l): the guide is
+    the textbook's, the 200 mm bound only keeps a plan on the sheet. Where the
+    sheet cannot hold it, the 200 mm rule wins and πa is the longest it can be."""
     lo, hi = ACCELERATION_GUIDE_MM
     longest = _longest_acceleration(solution)
     if not (math.isfinite(longest) and longest > 0):
         return None
-    mu = next(iter(series(longest / hi * (1 - 1e-9), longest / hi * 100.0)))
-    mu = _next_scale(mu, shrink)
-    return mu if shrink == 0 or longest / mu >= lo * (1 - 1e-9) else None
+    first = next(iter(series(longest / hi * (1 - 1e-9), longest / hi * 100.0)))
+    a_pin = _crank_pin_acceleration(solution)
+    if shrink < 0:
+        if a_pin / first >= lo * (1 - 1e-9):
+            return None  # the unshrunk scale meets both rules
+        finer = max(series(a_pin / lo / 100.0, a_pin / lo * (1 + 1e-9)))  # πa >= 100 mm
+        return finer if longest / finer <= ACCELERATION_SHEET_MAX_MM * (1 + 1e-9) else None
+    mu = _next_scale(first, shrink)
+    if shrink == 0:
+        return mu
+    keeps_guide = a_pin / first < lo * (1 - 1e-9) or a_pin / mu >= lo * (1 - 1e-9)
+    return mu if longest / mu >= lo * (1 - 1e-9) and keeps_guide else None
 
 
 def _sketch_all(
@@ -1194,7 +1243,7 @@ def compose_sheet1(
         if width_m / mu_l > region.width or height_m / mu_l > region.height:
             continue
         placed_field = False
-        for shrink in (0, 1):
+        for shrink in (-1, 0, 1):
             mu_a = _acceleration_scale(solution, shrink)
             if mu_a is None:
                 continue
