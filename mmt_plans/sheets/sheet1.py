@@ -909,8 +909,20 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
         f"a {w['diagram']}",
         "δa, %",
     ]
+    # formulas (12) and (13): Δ_V, Δ_a of V_plan and V_diagram (a likewise)
+    header_marks: list[str | None] = [None]
+    for q in ("V", "a"):
+        header_marks += [f"{q}_{{{w['plan']}}}", f"{q}_{{{w['diagram']}}}", f"Δ_{{{q}}}, %"]
     sk = table_sketch(
-        look, "table-check", w["check"], header, rows, [12.0] + [18.0] * 6, marks, lang
+        look,
+        "table-check",
+        w["check"],
+        header,
+        rows,
+        [12.0] + [18.0] * 6,
+        marks,
+        lang,
+        header_markup=header_marks,
     )
     step = 360.0 / sc.intervals
     notes = [w["grid"].format(n=sc.intervals, step=f"{step:g}")]
