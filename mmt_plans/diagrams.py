@@ -77,8 +77,9 @@ Array = np.ndarray  # NDArray[np.float64] to the type checker (annotations are s
 DEFAULT_TIME_AXIS_MM = 240.0
 # one turn of the crank on the time axis of a sheet: μ_t from the standard
 # series makes it 150 … 240 mm (240 mm when T/240 is itself a series value)
-# the tallest a diagram may be drawn on sheet 1 (S, V and a stand in one column)
-DIAGRAM_HEIGHT_MM = 110.0
+# the tallest an S, V or a diagram is drawn on sheet 1 (the three stand in one
+# column under the mechanism): the Solution chooses μ_S and the poles for it
+DIAGRAM_HEIGHT_MM = 70.0
 TIME_AXIS = DrawnLength("L", 150.0, DEFAULT_TIME_AXIS_MM, DEFAULT_TIME_AXIS_MM)
 POLE_DISTANCE_RANGE_MM = (30, 50)
 POSITION_CANDIDATES = (12, 24, 36, 48, 72, 120, 360)

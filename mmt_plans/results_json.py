@@ -109,6 +109,8 @@ def diagrams_json(solution: Solution) -> dict[str, Any]:
             "H1_mm": construction.H1,
             "H2_mm": construction.H2,
             "L_mm": construction.L,
+            # series steps of μ_S above μ_l (0: μ_S = μ_l, as seed 003 §1.7 draws it)
+            "mu_S_steps": dg.scales.mu_S_steps,
         },
         "limit_percent": sc.limit_percent,
         # seed 003 §1.8: the investigated positions, on the diagrams drawn

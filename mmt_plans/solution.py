@@ -27,10 +27,13 @@ from .diagrams import (
     ERROR_LIMIT_PERCENT,
     GRID_REFINEMENTS,
     TIME_AXIS,
+    DiagramScales,
+    InvestigatedValue,
     KinematicDiagrams,
     PlanComparison,
     SheetCheck,
     compare_with_plans,
+    diagram_scales,
     graphical_differentiation,
     judge,
 )
@@ -42,7 +45,7 @@ from .kinematics.branches import Branches, build_chain
 from .kinematics.chain import Chain, Sweep
 from .kinematics.plans import PlanView, plan_view
 from .model import Mechanism, Stroke
-from .scales import LENGTH_MANTISSA_TEXT, DrawnLength, scale_for, series
+from .scales import LENGTH_MANTISSA_TEXT, DrawnLength, scale_for
 from .structure import Structure, analyse_structure
 
 __all__ = ["Position", "Diagrams", "Solution", "solve", "sweep", "EXTREME_TOL_DEG"]
@@ -61,7 +64,10 @@ class Position:
 
 @dataclass(frozen=True)
 class Diagrams:
-    """The graphical differentiation (mm and SI) and its 5 % check against the plans."""
+    """The graphical differentiation (mm and SI) and its 5 % check against the plans.
+
+    `construction` is drawn at `scales`, the one μ_S and the poles OH1, OH2
+    that sheet 1 draws, the note writes and the results JSON carries."""
 
     construction: KinematicDiagrams
     check: PlanComparison  # every position of the study against the drawn construction
@@ -69,6 +75,7 @@ class Diagrams:
     a_plan: np.ndarray
     sheet_check: SheetCheck  # the verdict: the investigated positions, on the grid drawn
     refinement: int  # divisions of the diagrams per position step
+    scales: DiagramScales  # μ_S (μ_l or a series step above it) and the whole-millimetre poles
 
     def at_position(self, values: np.ndarray) -> np.ndarray:
         """A construction's values (on its grid) at the n positions."""
@@ -317,21 +324,21 @@ def _diagrams(
     tried: list[tuple[int, bool]] = []
     for refinement in GRID_REFINEMENTS:
         s_grid, v_grid, a_grid = turn.along_grid(n * refinement)
-        # μ_S from μ_l up the series until no diagram is taller than the sheet
-        # can hold: the heights of V and a grow with μ_t·OH/μ_S and μ_t²·OH1·OH2/μ_S
-        for mu_S in series(mu_l * (1 - 1e-9), mu_l * 1e3):
-            construction = graphical_differentiation(s_grid, n1=n1, mu_S=mu_S, L=L)
-            if max(construction.heights_mm) <= DIAGRAM_HEIGHT_MM:
-                break
-        vmax, amax = float(np.max(np.abs(v_grid))), float(np.max(np.abs(a_grid)))
-        values = []
-        for i in investigated:
-            values.append(judge(i, "v", float(v[i]), float(construction.v[i * refinement]), vmax))
-            values.append(judge(i, "a", float(a[i]), float(construction.a[i * refinement]), amax))
+        # the scales cancel in the values (module docstring of diagrams): the
+        # grid is judged at any, the construction then drawn at the sheet's
+        construction = graphical_differentiation(s_grid, n1=n1, mu_S=mu_l, L=L, H1=40.0, H2=40.0)
+        values = _judged(construction, v, a, v_grid, a_grid, investigated, refinement)
         passed = all(x.passed for x in values)
         tried.append((n * refinement, passed))
         if passed:
             break
+    # μ_S = μ_l unless a diagram would be taller than sheet 1 holds, then up
+    # the series; round poles from ROUND_POLE_DISTANCES_MM (diagram_scales)
+    scales = diagram_scales(s_grid, n1=n1, L=L, mu_l=mu_l, max_height=DIAGRAM_HEIGHT_MM)
+    construction = graphical_differentiation(
+        s_grid, n1=n1, mu_S=scales.mu_S, L=L, H1=scales.H1, H2=scales.H2
+    )
+    values = _judged(construction, v, a, v_grid, a_grid, investigated, refinement)
     sheet_check = SheetCheck(
         n * refinement, refinement, ERROR_LIMIT_PERCENT, tuple(values), tuple(tried)
     )
@@ -345,7 +352,25 @@ def _diagrams(
         s=construction.s[at_positions],
         candidates=(),
     )
-    return Diagrams(construction, check, v, a, sheet_check, refinement)
+    return Diagrams(construction, check, v, a, sheet_check, refinement, scales)
+
+
+def _judged(
+    construction: KinematicDiagrams,
+    v: np.ndarray,
+    a: np.ndarray,
+    v_grid: np.ndarray,
+    a_grid: np.ndarray,
+    investigated: tuple[int, ...],
+    refinement: int,
+) -> list[InvestigatedValue]:
+    """Formulas (12) and (13) at the investigated positions, read off `construction`."""
+    vmax, amax = float(np.max(np.abs(v_grid))), float(np.max(np.abs(a_grid)))
+    values = []
+    for i in investigated:
+        values.append(judge(i, "v", float(v[i]), float(construction.v[i * refinement]), vmax))
+        values.append(judge(i, "a", float(a[i]), float(construction.a[i * refinement]), amax))
+    return values
 
 
 def _stroke_of(

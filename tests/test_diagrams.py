@@ -455,3 +455,38 @@ def test_result_types():
     assert isinstance(d, KinematicDiagrams) and d.n == 12
     c = compare_with_plans(d.v, d.a, v, a, n1=N1)
     assert c.limit_percent == 5.0 and c.positions == 12 and not c.passed
+
+
+_SAMPLE_FILES = sorted(
+    (__import__("pathlib").Path(__file__).resolve().parents[1] / "samples").glob("*.toml")
+)
+
+
+@pytest.mark.parametrize("path", _SAMPLE_FILES, ids=lambda p: p.stem)
+def test_the_solution_holds_one_mu_S_and_round_poles(path):
+    """One μ_S and one pair of poles for the sheet, the note and the JSON:
+    whole millimetres from the short list, μ_S = μ_l or the fewest series steps
+    above it that keep every diagram within DIAGRAM_HEIGHT_MM."""
+    import mmt_plans
+    from mmt_plans.diagrams import DIAGRAM_HEIGHT_MM, ROUND_POLE_DISTANCES_MM
+    from mmt_plans.results_json import diagrams_json
+    from mmt_plans.scales import is_standard
+
+    sol = mmt_plans.solve(mmt_plans.load(path), forces=False)
+    dg = sol.diagrams
+    c, sc = dg.construction, dg.scales
+    assert (c.mu_S, c.H1, c.H2) == (sc.mu_S, sc.H1, sc.H2)
+    assert sc.H1 in ROUND_POLE_DISTANCES_MM and sc.H2 in ROUND_POLE_DISTANCES_MM
+    assert max(c.heights_mm) <= DIAGRAM_HEIGHT_MM + 1e-6
+    # μ_V, μ_a by the textbook's formulas from what the construction holds
+    assert c.mu_V == pytest.approx(c.mu_S / (c.mu_t * c.H1), rel=1e-12)
+    assert c.mu_a == pytest.approx(c.mu_V / (c.mu_t * c.H2), rel=1e-12)
+    assert is_standard(c.mu_V) and is_standard(c.mu_a)
+    # μ_S is μ_l's series: (1, 2, 2.5, 4, 5)·10^k from μ_l, mu_S_steps steps up
+    ratio = sc.mu_S / sol.mu_l
+    assert (sc.mu_S_steps == 0) == math.isclose(ratio, 1.0, rel_tol=1e-9)
+    if sc.mu_S_steps:  # one step lower, the S diagram would be too tall or the poles not found
+        assert ratio > 1.0
+    js = diagrams_json(sol)["scales"]
+    assert (js["mu_S"], js["H1_mm"], js["H2_mm"]) == (sc.mu_S, sc.H1, sc.H2)
+    assert js["mu_S_steps"] == sc.mu_S_steps

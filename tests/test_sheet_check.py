@@ -58,3 +58,48 @@ def test_every_key_passes_its_check_on_the_drawn_grid(path):
     js = diagrams_json(sol)
     assert js["passed"] is True and js["grid_intervals"] == sc.intervals
     assert len(js["investigated"]) == 2 * len(sol.plan_positions)
+
+
+DRAWN = [ROOT / "samples" / "six_link_press.toml", ROOT / "samples" / "shaper.toml",
+         ROOT / "samples" / "tasks" / "seed003" / "task01_v1.toml"]
+
+
+@pytest.mark.parametrize("path", DRAWN, ids=lambda p: Path(p).stem)
+def test_the_check_reads_the_diagrams_sheet_1_draws(path):
+    """The values judged by (12)/(13) are the ordinates sheet 1 draws, read off
+    its V and a curves in millimetres and times the scales the JSON gives; the
+    poles written on the sheet are the JSON's."""
+    from mmt_plans.drawing.page import Page
+    from mmt_plans.i18n import catalogue
+    from mmt_plans.render.recording import RecordingBackend
+    from mmt_plans.sheets.sheet1 import compose_sheet1
+
+    sol = mmt_plans.solve(mmt_plans.load(path), forces=False)
+    backend = RecordingBackend()
+    sheet = compose_sheet1(sol, backend, "en", page=Page.of("A1"))
+    backend.close()
+    js = diagrams_json(sol)
+    scales = js["scales"]
+    for key, name in (("mu_S", "mu_S"), ("mu_V_diagram", "mu_V"), ("mu_a_diagram", "mu_a"),
+                      ("H1", "H1_mm"), ("H2", "H2_mm")):
+        assert sheet.scales[key] == scales[name], key
+    c = sol.diagrams.construction
+    for gid, q, mu, H in (("diagram-v", "v", scales["mu_V"], scales["H1_mm"]),
+                          ("diagram-a", "a", scales["mu_a"], scales["H2_mm"])):
+        calls = backend.in_group(gid)
+        axis = [a for a in calls if a.name == "arrow" and a["line"] == "main"
+                and abs(a["start"][1] - a["end"][1]) < 1e-9]
+        assert len(axis) == 1
+        y0 = axis[0]["start"][1]
+        curve = [p for p in calls if p.name == "polyline" and p["line"] == "main"]
+        assert len(curve) == 1
+        pts = np.asarray(curve[0]["points"])
+        x0 = pts[0][0]  # the curve starts on the ordinate axis
+        words = catalogue("en").words("diagram_axes")["pole"].format(H=f"{H:g}")
+        assert words in [t["content"] for t in calls if t.name == "text"]
+        for val in (v for v in js["investigated"] if v["quantity"] == q):
+            x = c.abscissae[val["index"] * sol.diagrams.refinement]
+            k = int(np.argmin(np.abs(pts[:, 0] - x0 - x)))
+            assert abs(pts[k, 0] - x0 - x) < 1e-9
+            drawn = (pts[k, 1] - y0) * mu
+            assert drawn == pytest.approx(val["diagram"], rel=1e-9, abs=1e-12)

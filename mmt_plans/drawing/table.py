@@ -202,9 +202,12 @@ def table_sketch(
     widths: Sequence[float],
     first_markup: Sequence[str],
     lang: Language = "en",
+    header_markup: Sequence[str | None] | None = None,
 ) -> Sketch:
     """A Table whose first column is set with indices (rich_text) over empty cells;
-    Ukrainian tables write numbers with a decimal comma, as the scale labels do."""
+    so is each header cell given a markup in `header_markup` (V_{plan}, not
+    "V plan"). Ukrainian tables write numbers with a decimal comma, as the
+    scale labels do."""
     sk = Sketch(look)
 
     def cell(text: str) -> str:
@@ -212,8 +215,11 @@ def table_sketch(
 
     body = [["", *(cell(t) for t in r[1:])] for r in rows]
     row_h, head_h = 8.0, 12.0
+    marks = list(header_markup or [None] * len(header))
+    if len(marks) != len(header):
+        raise ValueError(f"header_markup has {len(marks)} cells for {len(header)} columns")
     table = Table(
-        header,
+        ["" if m is not None else h for h, m in zip(header, marks)],
         body,
         widths,
         text_size=3.5,
@@ -230,5 +236,12 @@ def table_sketch(
         extra.rich_text(
             (widths[0] / 2, top - (r + 0.5) * row_h), text, _TEXT, anchor="center", valign="middle"
         )
+    x = 0.0
+    for width, mark in zip(widths, marks):
+        if mark is not None:
+            extra.rich_text(
+                (x + width / 2, top + head_h / 2), mark, _TEXT, anchor="center", valign="middle"
+            )
+        x += width
     sk.add_to_last_group(extra, gid)
     return sk

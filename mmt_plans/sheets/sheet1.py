@@ -15,15 +15,14 @@ from dataclasses import dataclass, field
 from typing import Any, cast
 
 import numpy as np
+import shapely
+from shapely.geometry import box
 
 from ..diagrams import (
     ILL_CONDITIONED,
-    DiagramScales,
     KinematicDiagrams,
-    diagram_scales,
-    graphical_differentiation,
 )
-from ..drawing.labels import Labels
+from ..drawing.labels import Labels, arc_line, drawn_shapes
 from ..drawing.layout import LayoutError, SheetLayout
 from ..drawing.markup import component_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
@@ -34,6 +33,7 @@ from ..drawing.table import table_sketch
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend
 from ..render.look import LineType
+from ..render.recording import RecordingBackend
 from ..scales import (
     LENGTH_MANTISSA_TEXT,
     VELOCITY_PLAN,
@@ -112,6 +112,201 @@ def _tidy(mu: float) -> float:
 
 
 # --- the mechanism -----------------------------------------------------------------
+
+_OMEGA_R, _EPS_R, _CRANK_R = 5.0, 8.0, 8.0  # radii of the ω, ε arcs and of ω1's, mm
+# a label among many lines may go this much further out, mm, tried in turn
+_MECHANISM_RINGS = (0.0, 2.5, 5.0, 9.0, 14.0, 20.0)
+_SPAN = 150.0
+# a diagram's number or pole letter goes no further than this from its point, mm
+_TICK_RINGS = (
+    0.0,
+    1.0,
+    2.0,
+    3.5,
+    5.0,
+    7.0,
+)  # an arc beside a link spans this much of the half-plane on its side, deg
+# where along a link its arcs are tried, the middle first
+_ALONG_LINK = tuple(sorted(np.arange(0.15, 0.86, 0.05), key=lambda t: abs(t - 0.5)))
+
+
+def _inset(radius: float) -> float:
+    """Degrees the outer (ε) arc stops short of the inner (ω) one at each end, so
+    that the inner arc's arrowhead and label stand clear of it."""
+    return 0.0 if radius <= _OMEGA_R else 25.0
+
+
+def _label_room(
+    centre: np.ndarray, start: float, spins: Sequence[tuple[float, float]]
+) -> list[list[Any]]:
+    """For each arc (radius, sense) from `start`, the boxes its label may take
+    beside its arrowhead: round it in eight directions, as far off as the
+    label placer's rings), nearest first."""
+    out = []
+    for radius, sense in spins:
+        inset = _inset(radius)
+        t = math.radians(start + _SPAN - inset if sense > 0 else start + inset)
+        u = np.array([math.cos(t), math.sin(t)])
+        tip = centre + radius * u
+        boxes = []
+        for ring in 1.5 + np.asarray(_MECHANISM_RINGS):
+            for k in range(8):
+                d = math.radians(math.degrees(t) + 45.0 * k)
+                x, y = tip + np.array([math.cos(d), math.sin(d)]) * (ring + 3.0)
+                boxes.append(shapely.box(x - 3.2, y - 2.6, x + 3.2, y + 2.6))
+        out.append(boxes)
+    return out
+
+
+def _between_spokes(
+    centre: np.ndarray, tip: np.ndarray, spokes: Sequence[np.ndarray], width: float
+) -> np.ndarray:
+    """Where a label `width` mm wide fits between the crank's lines (spokes
+    from `centre`) nearest the arrowhead `tip`: on the bisector of a gap, as
+    far out as the gap is wide enough; `tip` itself when no gap will do."""
+    angles = sorted(
+        {
+            round(math.degrees(math.atan2(v[1], v[0])) % 360.0, 6)
+            for v in spokes
+            if np.hypot(*v) > 1e-9
+        }
+    )
+    reach = min((float(np.hypot(*v)) for v in spokes), default=0.0)
+    if len(angles) < 2:
+        return tip
+    at_tip = math.degrees(math.atan2(*(tip - centre)[::-1])) % 360.0
+    best: tuple[float, np.ndarray] | None = None
+    for a, b in zip(angles, angles[1:] + [angles[0] + 360.0]):
+        half = math.radians(b - a) / 2
+        if half >= math.pi / 2:
+            r = float(np.hypot(*(tip - centre)))
+        else:
+            r = (width / 2 + 1.0) / math.sin(half) + 2.5
+        if r > reach - 2.0:
+            continue
+        mid = (a + b) / 2
+        off = abs((mid - at_tip + 180.0) % 360.0 - 180.0)
+        u = np.array([math.cos(math.radians(mid)), math.sin(math.radians(mid))])
+        if best is None or off < best[0]:
+            best = (off, centre + u * max(r - 2.5, 0.0))
+    return tip if best is None else best[1]
+
+
+class _ArcPlacer:
+    """Where the ω/ε arcs of a link go: round a point of the link, on one side
+    of it, crossing as little of what is drawn as it can (a main line of a link
+    or block counts 1, a thin line of another position or a trajectory 0.2, an
+    arc or the room kept for a label 3, a label written 10), with a free box
+    for each label next to its arrowhead."""
+
+    _WEIGHT = {"main": 1.0, "thin": 0.2, "arc": 3.0, "label": 10.0}
+
+    def __init__(self, sk: Sketch) -> None:
+        self.sk = sk
+        self._seen = 0
+        self._shapes: list[Any] = []
+        self._weights: list[float] = []
+        self._tree: Any = None
+
+    def _add(self, shapes: Sequence[Any], kind: str) -> None:
+        self._shapes += list(shapes)
+        self._weights += [self._WEIGHT[kind]] * len(shapes)
+        self._tree = None
+
+    def reserve(self, shapes: Sequence[Any]) -> None:
+        """Keep later arcs and labels' boxes off these (the room of labels to come)."""
+        self._add(shapes, "arc")
+
+    def _near(self, geom: Any, distance: float) -> np.ndarray:
+        calls = self.sk.calls
+        for c in calls[self._seen :]:
+            arc = c.name == "arc" or (c.name == "arrow" and c.args.get("head_length") == 2.5)
+            kind = "arc" if arc else ("main" if c.args.get("line") == "main" else "thin")
+            kind = "label" if c.name == "text" else kind
+            self._add(drawn_shapes(c, self.sk), kind)
+        self._seen = len(calls)
+        if not self._shapes:
+            return np.zeros(0, dtype=int)
+        if self._tree is None:
+            self._tree = shapely.STRtree(self._shapes)
+            self._w = np.asarray(self._weights)
+        return np.asarray(self._tree.query(geom, predicate="dwithin", distance=distance))
+
+    def cost(self, arc: Any) -> float:
+        """What `arc` crosses, weighted."""
+        near = self._near(arc, 0.6)
+        return float(self._w[near].sum()) if near.size else 0.0
+
+    def _covered(self, box: Any) -> int:
+        return int(self._near(box, 0.3).size)
+
+    def rooms(self, candidates: Sequence[Sequence[Any]]) -> tuple[float, list[Any]]:
+        """For each label the nearest free box of its candidates (not on another
+        label's of the same link), else the least covered; the score: 10 for
+        each drawn thing a box touches, and how far out it is, mm."""
+        total, chosen = 0.0, cast(list[Any], [])
+        for boxes in candidates:
+            best: tuple[float, Any] | None = None
+            for k, b in enumerate(boxes):
+                if any(b.intersects(c) for c in chosen):
+                    continue
+                covered = self._covered(b)
+                score = 10.0 * covered + 0.5 * _MECHANISM_RINGS[k // 8]
+                if best is None or score < best[0]:
+                    best = (score, b)
+                if covered == 0:
+                    break
+            if best is None:
+                best = (0.0, boxes[0])
+            total += best[0]
+            chosen.append(best[1])
+        return total, chosen
+
+    def beside(
+        self,
+        segments: Sequence[tuple[np.ndarray, np.ndarray]],
+        spins: Sequence[tuple[float, float]],
+    ) -> tuple[np.ndarray, float, list[np.ndarray]]:
+        """Centre and start angle (deg) of the arcs (radius, sense) of a link
+        beside one of its segments, spanning _SPAN degrees on one side of it,
+        and the free place of each one's label (its box's centre)."""
+        best: tuple[float, np.ndarray, float, list[Any]] | None = None
+        order = 0
+        for a, b in segments:
+            if float(np.hypot(*(b - a))) < 1e-9:
+                continue
+            theta = math.degrees(math.atan2(*(b - a)[::-1]))
+            for t in _ALONG_LINK:
+                c = a + t * (b - a)
+                for side in (0.0, 180.0):
+                    start = theta + side + (180.0 - _SPAN) / 2
+                    score = sum(
+                        self.cost(arc_line(c, r, start + _inset(r), start + _SPAN - _inset(r)))
+                        for r, _ in spins
+                    )
+                    room, boxes = self.rooms(_label_room(c, start, spins))
+                    score += room + 0.01 * order
+                    order += 1
+                    if best is None or score < best[0]:
+                        best = (score, c, start, boxes)
+        assert best is not None
+        self.reserve(best[3])
+        return best[1], best[2], [np.asarray(b.centroid.coords[0]) for b in best[3]]
+
+    def round_pivot(self, centre: np.ndarray, radius: float, sense: float) -> float:
+        """Start angle (deg) of a 120° arc round a frame pivot crossing least,
+        with room for its label at the arrowhead."""
+        options = []
+        for a in np.arange(0.0, 360.0, 15.0):
+            tip = math.radians(a + 120.0 if sense > 0 else a)
+            u = np.array([math.cos(tip), math.sin(tip)])
+            x, y = centre + u * (radius + 4.0)
+            room = [shapely.box(x - 2.5, y - 2.2, x + 2.5, y + 2.2)]
+            score = self.cost(arc_line(centre, radius, a, a + 120.0)) + self._covered(room[0])
+            options.append((score + 1e-3 * abs(a - 30.0), float(a), room))
+        best = min(options, key=lambda o: (o[0], o[1]))
+        self.reserve(best[2])
+        return best[1]
 
 
 def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language) -> Sketch:
@@ -214,11 +409,34 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         for name, (l0, _) in owners.items():
             if l0 == 0:
                 hatched_base(sk, at(name, 0))
-        # Lettering goes where it covers no line and no other letter.
-        labels = Labels(sk, _TEXT)
+        # Lettering goes where it covers no line, no arc and no other letter:
+        # the joints' names first (the arcs are then drawn clear of them), then
+        # ω and ε once every arc is drawn, then the positions' numbers.
+        pivot = at(mech.crank_pivot, 0)
+        labels = Labels(sk, _TEXT, rings=_MECHANISM_RINGS)
         labels.avoid_drawn(sk.calls)
-        # ω and ε of every rotating link at the planned positions (seed 003 §1.6)
-        centre = at(mech.crank_pivot, 0)
+        for name in owners:
+            if name in pts:
+                p = at(name, 0)
+                away = unit_vector(p - pivot) if name != mech.crank_pivot else np.array([-1.0, 0.0])
+                labels.place(
+                    p,
+                    point_markup(name),
+                    towards=unit_vector(away + np.array([0.3, 0.6])),
+                    distance=2.0,
+                )
+        # ω and ε of every rotating link at the planned positions (seed 003
+        # §1.6), each beside its own link on the side freest of the others and
+        # of the joints' names; all drawn before their labels are written.
+        arcs = _ArcPlacer(sk)
+        # the frame's pivots: no arc over a hatched base
+        arcs.reserve(
+            [
+                shapely.box(x - 5.0, y - 6.5, x + 5.0, y - 1.0)
+                for x, y in (at(p, 0) for p, (l0, _) in owners.items() if l0 == 0 and p in pts)
+            ]
+        )
+        queued: list[tuple[np.ndarray, str, np.ndarray]] = []  # (tip, label, towards)
         sw = solution.sweep
         w1 = abs(float(mech.drive.signed_omega))
         for i in solution.plan_positions:
@@ -228,32 +446,34 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                 names = [p for p in link.points if p in pts]
                 if lid == mech.drive.link or len(names) < 2 or abs(w) < 1e-9 * w1:
                     continue
-                mid = (at(names[0], k) + at(names[1], k)) / 2
-                arcs: tuple[tuple[float, float, str, LineType], ...] = (
-                    (w, 4.0, "ω", "main"),
-                    (e, 7.0, "ε", "thin"),
-                )
-                for value, radius, sym, line in arcs:
-                    if abs(value) < 1e-9 * w1 * w1 and sym == "ε":
-                        continue
-                    tip = sense_arc(sk, mid, radius, value, 200.0, 340.0, line)
-                    labels.avoid_circle(mid, radius + 0.3)
-                    labels.place(tip, f"{sym}_{{{lid}}}", towards=tip - mid)
-        tip = sense_arc(sk, centre, 8.0, float(mech.drive.signed_omega), 30.0, 150.0)
-        labels.avoid_circle(centre, 8.3)
-        labels.place(tip, "ω_{1}", towards=tip - centre)
-        for name in owners:
-            if name in pts:
-                p = at(name, 0)
-                away = (
-                    unit_vector(p - centre) if name != mech.crank_pivot else np.array([-1.0, 0.0])
-                )
-                labels.place(
-                    p,
-                    point_markup(name),
-                    towards=unit_vector(away + np.array([0.3, 0.6])),
-                    distance=2.0,
-                )
+                spins: list[tuple[float, float, str, LineType]] = [(w, _OMEGA_R, "ω", "main")]
+                if abs(e) >= 1e-9 * w1 * w1:
+                    spins.append((e, _EPS_R, "ε", "thin"))
+                segments = [(at(a, k), at(b, k)) for a, b in itertools.combinations(names, 2)]
+                centre, start_deg, rooms = arcs.beside(segments, [(r, v) for v, r, _, _ in spins])
+                for (value, radius, sym, line), room in zip(spins, rooms):
+                    inset = _inset(radius)
+                    tip = sense_arc(
+                        sk,
+                        centre,
+                        radius,
+                        value,
+                        start_deg + inset,
+                        start_deg + _SPAN - inset,
+                        line,
+                    )
+                    queued.append((tip, f"{sym}_{{{lid}}}", room - tip))
+        centre = pivot
+        start_deg = arcs.round_pivot(centre, _CRANK_R, float(mech.drive.signed_omega))
+        tip = sense_arc(
+            sk, centre, _CRANK_R, float(mech.drive.signed_omega), start_deg, start_deg + 120.0
+        )
+        crank = [at(mech.crank_pin, k) - centre for k in range(n)]
+        anchor = _between_spokes(centre, tip, crank, 7.0)
+        queued.append((anchor, "ω_{1}", anchor - centre))
+        for tip, markup, towards in queued:
+            labels.later(tip, markup, towards)
+        labels.write_later()
         # Numbered positions of the crank pin, in smaller figures and out beyond
         # the pin's circle, so that "0" is not read as a pivot's "O"; an entry
         # of the sweep that is no numbered position (an extreme) gets none.
@@ -311,6 +531,16 @@ def sketch_plan(
     view = solution.plan(index)
     images_si = view.velocity_images if kind == "velocity" else view.acceleration_images
     images = {n: np.asarray(v, dtype=float) / mu for n, v in images_si.items()}
+    # The point a group's plan solves for and that is no joint of the
+    # mechanism (A3 of a slotted link, on the link beside the block's A): its
+    # image is where the group's last component ends, and it is named too.
+    solved: list[str] = []
+    for g in view.groups:
+        comps = g.velocity if kind == "velocity" else g.acceleration
+        if g.point not in images and comps:
+            last = comps[-1]
+            images[g.point] = (np.asarray(last.start, float) + np.asarray(last.vector, float)) / mu
+            solved.append(g.point)
     sk = Sketch(look)
     gid = f"{kind}-plan-{index}"
     pole = "p" if kind == "velocity" else "π"
@@ -363,6 +593,12 @@ def sketch_plan(
                 sk.circle(v, 0.6, "thin", "black")
             key = (round(float(v[0]) * 2), round(float(v[1]) * 2))
             labels.setdefault(key, []).append(name)
+        for name in solved:
+            v = images[name]
+            if float(np.hypot(*v)) >= 0.5:
+                sk.circle(v, 0.6, "thin", "black")
+            key = (round(float(v[0]) * 2), round(float(v[1]) * 2))
+            labels.setdefault(key, []).append(name)
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         placer.avoid_drawn(sk.calls)
         placer.place((0.0, 0.0), pole, towards=(-1.0, -1.0))
@@ -389,6 +625,18 @@ def sketch_plan(
 # --- diagrams ----------------------------------------------------------------------
 
 
+def _free_spot(
+    sk: Sketch, free: Labels, text: str, size: float, spots: Sequence[tuple[Any, str, str]]
+) -> tuple[Any, str, str] | None:
+    """The first of `spots` (position, anchor, valign) where `text` covers no line."""
+    for pos, anchor, valign in spots:
+        probe = RecordingBackend(look=sk.look)
+        probe.text(pos, text, size, anchor=anchor, valign=valign)  # type: ignore[arg-type]
+        if free.covered(box(*probe.text_box(probe.calls[-1]))) <= 0:
+            return pos, anchor, valign
+    return None
+
+
 def _axes(sk: Sketch, x0: float, x1: float, y0: float, y1: float, ylabel: str, xlabel: str) -> None:
     sk.arrow((x0, 0.0), (x1, 0.0), "main", head_length=3.0, head_width=1.2)
     sk.arrow((0.0, y0), (0.0, y1), "main", head_length=3.0, head_width=1.2)
@@ -404,11 +652,14 @@ def sketch_diagram(
     s_dense: np.ndarray | None = None,
     refinement: int = 1,
     mu_l: float | None = None,
+    mu_l_solution: float | None = None,
 ) -> Sketch:
     """One of the S, V, a diagrams with its construction. `s_dense` (m, at equal
     crank steps from position 0) draws S as the smooth curve through the
     positions' ordinates, as a draughtsman draws it with a French curve.
-    `mu_l` (the mechanism's drawing): μ_S other than it is explained under S."""
+    `mu_l` (the mechanism's drawing on this sheet): μ_S other than it is
+    explained under S, by the diagrams' height when μ_l is the calculation's
+    `mu_l_solution` (the one μ_S was chosen from), else by the field."""
     c = construction
     sk = Sketch(look)
     axes = catalogue(lang).words("diagram_axes")
@@ -444,16 +695,10 @@ def sketch_diagram(
         _axes(sk, x_lo, L + 12.0, ymin - 4.0, ymax + 10.0, str(label), str(axes["t"]))
         # Ordinates at the positions, numbered under the axis.
         grid = np.asarray(c.abscissae, dtype=float).tolist() + [L]
+        ticks = []  # numbered once every line is drawn, where they cover none
         for i, x in enumerate(grid):
             if i % refinement == 0:  # the positions are numbered, the finer grid is not
-                # the first "0" stands left of the ordinate axis, clear of it
-                sk.text(
-                    (x - 1.2, -1.5) if i == 0 else (x, -1.5),
-                    str((i // refinement) % (len(grid) // refinement)),
-                    _SMALL,
-                    anchor="right" if i == 0 else "center",
-                    valign="top",
-                )
+                ticks.append((x, str((i // refinement) % (len(grid) // refinement))))
             if which == "s":
                 y = float(c.s_points[i][1])
                 if abs(y) > 0.5:
@@ -463,7 +708,6 @@ def sketch_diagram(
             # The construction: pole H, rays H–K_i, K_i carried to the mid points.
             H = np.asarray(deriv.pole, dtype=float)
             sk.circle(H, 0.8, "main", "black")
-            sk.text((H[0], -1.5), "H", _TEXT, anchor="center", valign="top")
             for s, e in np.asarray(deriv.rays, dtype=float):
                 sk.line(s, e, "thin")
             for kp, mp in zip(np.asarray(deriv.k_points, dtype=float), pts):
@@ -478,6 +722,45 @@ def sketch_diagram(
         if chords is not None:
             for s, e in np.asarray(chords, dtype=float):
                 sk.line(s, e, "dashed")
+        # The lettering of the construction, clear of every line: the pole's
+        # letter beside the pole away from its rays, the positions' numbers
+        # under the time axis (above it where the curve or a line is below),
+        # the first "0" left of the ordinate axis.
+        free = Labels(sk, _TEXT)  # asked only what is covered: it follows every line drawn
+        if which != "s":
+            hx = float(deriv.pole[0])
+            spot = _free_spot(
+                sk,
+                free,
+                "H",
+                _TEXT,
+                [
+                    ((hx - 1.0, -1.2), "right", "top"),
+                    ((hx - 1.0, 1.2), "right", "baseline"),
+                    ((hx, -1.5), "center", "top"),
+                    ((hx, 1.5), "center", "baseline"),
+                ],
+            )
+            pos, anchor, valign = spot or ((hx - 5.0, 0.0), "right", "middle")
+            sk.text(pos, "H", _TEXT, anchor=anchor, valign=valign)  # type: ignore[arg-type]
+        # the numbers at the time axis, under it or over it where a line is in
+        # the way; where no place by the axis is free for one of them, all in a
+        # row under the whole diagram (one rule for the diagram)
+        spots = []
+        for j, (x, number) in enumerate(ticks):
+            if j == 0:  # the first "0" left of the ordinate axis
+                near = [((x - 1.2, -1.2), "right", "top"), ((x - 1.2, 1.2), "right", "baseline")]
+            else:
+                near = [((x, -1.2), "center", "top"), ((x, 1.2), "center", "baseline")]
+                near += [((x + d, -1.2), "center", "top") for d in (-1.5, 1.5)]
+                near += [((x + d, 1.2), "center", "baseline") for d in (-1.5, 1.5)]
+            spots.append(_free_spot(sk, free, number, _SMALL, near))
+        for (x, number), spot in zip(ticks, spots):
+            if any(sp is None for sp in spots):
+                spot = ((x, ymin - 5.0), "center", "top")
+            assert spot is not None
+            pos, anchor, valign = spot
+            sk.text(pos, number, _SMALL, anchor=anchor, valign=valign)  # type: ignore[arg-type]
         ext = sk.extent()
         y = ext.bottom - 5.0
         x = ext.x + _PAD
@@ -487,11 +770,20 @@ def sketch_diagram(
             pole = f"{float(-deriv.pole[0]):.2f}".rstrip("0").rstrip(".")
             sk.rich_text((x, y), str(axes["pole"]).format(H=catalogue(lang).localise(pole)), _TEXT)
         elif mu_l is not None and abs(c.mu_S / mu_l - 1.0) > 1e-9:
-            # seed 003 §1.7 draws S at μ_S = μ_l: a larger μ_S says why
-            k = catalogue(lang).plain_number(float(f"{c.mu_S / mu_l:.6g}"))
-            sk.rich_text(
-                (ext.x + _PAD, y - _TEXT - 2.0), _words(lang)["mu_S_reason"].format(k=k), _TEXT
+            # seed 003 §1.7 draws S at μ_S = μ_l: another μ_S says why
+            cat = catalogue(lang)
+            k = cat.plain_number(float(f"{c.mu_S / mu_l:.6g}"))
+            same = mu_l_solution is None or abs(mu_l / mu_l_solution - 1.0) <= 1e-9
+            reason = (
+                _words(lang)["mu_S_reason"].format(k=k)
+                if same
+                else _words(lang)["mu_S_reason_field"].format(
+                    k=k,
+                    mu_S=cat.plain_number(_tidy(c.mu_S)),
+                    unit=cat.unit("m/mm"),
+                )
             )
+            sk.rich_text((ext.x + _PAD, y - _TEXT - 2.0), reason, _TEXT)
         sk.text((ext.x + _PAD, ext.top + 3.0), _words(lang)[f"diagram_{which}"], _TEXT)
     return sk
 
@@ -617,8 +909,20 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
         f"a {w['diagram']}",
         "δa, %",
     ]
+    # formulas (12) and (13): Δ_V, Δ_a of V_plan and V_diagram (a likewise)
+    header_marks: list[str | None] = [None]
+    for q in ("V", "a"):
+        header_marks += [f"{q}_{{{w['plan']}}}", f"{q}_{{{w['diagram']}}}", f"Δ_{{{q}}}, %"]
     sk = table_sketch(
-        look, "table-check", w["check"], header, rows, [12.0] + [18.0] * 6, marks, lang
+        look,
+        "table-check",
+        w["check"],
+        header,
+        rows,
+        [12.0] + [18.0] * 6,
+        marks,
+        lang,
+        header_markup=header_marks,
     )
     step = 360.0 / sc.intervals
     notes = [w["grid"].format(n=sc.intervals, step=f"{step:g}")]
@@ -678,12 +982,10 @@ _PLACEMENT: Mapping[str, str] = {
 # The field of the mechanism's drawing: the left part of the sheet, this share
 # of the free width, from the top down to the column of diagrams (Appendix A).
 MECHANISM_FIELD_SHARE = 0.5
-# The tallest an S, V or a diagram is drawn on this sheet, mm (three stand in a
-# column under the mechanism).
-SHEET_DIAGRAM_HEIGHT_MM = 90.0
-DIAGRAM_HEIGHTS_MM = (SHEET_DIAGRAM_HEIGHT_MM, 70.0, 55.0)  # lower ones make room for the mechanism
 # The acceleration plan's longest vector (seed 003 §1.5: πa ≈ 100 … 200 mm).
 ACCELERATION_GUIDE_MM = (100.0, 200.0)
+# The longest an acceleration plan's vector may be drawn so that πa reaches 100 mm.
+ACCELERATION_SHEET_MAX_MM = 320.0
 
 
 def _plan_scales(solution: Solution) -> tuple[float, float]:
@@ -712,31 +1014,47 @@ def _longest_acceleration(solution: Solution) -> float:
     return longest
 
 
+def _crank_pin_acceleration(solution: Solution) -> float:
+    """a_A, the crank pin's acceleration on the plans (the largest), m/s²."""
+    pin = solution.mechanism.crank_pin
+    return max(
+        float(np.hypot(*solution.plan(i).acceleration_images[pin])) for i in solution.plan_positions
+    )
+
+
 def _acceleration_scale(solution: Solution, shrink: int) -> float | None:
-    """μa `shrink` series steps above the one drawing the longest vector at most
-    200 mm; None once that vector would be shorter than 100 mm."""
+    """μa `shrink` series steps above the finest one drawing the longest
+    vector at most 200 mm; None once that vector would be shorter than 100 mm,
+    or πa (seed 003 eq. 9: πa ≈ 100 … 200 mm) shorter than 100 mm where the
+    unshrunk scale met it. `shrink` −1: the coarsest value giving πa >= 100 mm
+    where the 200 mm scale does not (None where it does, or where that draws
+    the longest vector past ACCELERATION_SHEET_MAX_MM).
+
+    The finest scale that keeps the longest vector within 200 mm is also the
+    one that draws πa longest, so it meets both rules whenever any series value
+    does. Where none does (the longest vector, a fast-turning link's a^τ or a
+    Coriolis a^k, more than about twice a_A or between two series values; e.g.
+    seed 003 task 1 v1, πa 55 mm) the guide's πa >= 100 mm wins where the sheet
+    holds the larger plan (its longest vector up to ACCELERATION_SHEET_MAX_MM,
+    and the layout still fits around the mechanism at its μ_l): the guide is
+    the textbook's, the 200 mm bound only keeps a plan on the sheet. Where the
+    sheet cannot hold it, the 200 mm rule wins and πa is the longest it can be."""
     lo, hi = ACCELERATION_GUIDE_MM
     longest = _longest_acceleration(solution)
     if not (math.isfinite(longest) and longest > 0):
         return None
-    mu = next(iter(series(longest / hi * (1 - 1e-9), longest / hi * 100.0)))
-    mu = _next_scale(mu, shrink)
-    return mu if shrink == 0 or longest / mu >= lo * (1 - 1e-9) else None
-
-
-def _sheet_diagrams(
-    solution: Solution, mu_l: float, max_height: float = SHEET_DIAGRAM_HEIGHT_MM
-) -> tuple[KinematicDiagrams, DiagramScales]:
-    """The construction of the Solution's diagrams (the same grid, so the same
-    values and the same 5 % check) drawn at the sheet's scales: μ_S = μ_l of
-    the mechanism's drawing where the diagrams fit, whole-millimetre poles."""
-    dg = solution.require_diagrams()
-    c = dg.construction
-    chosen = diagram_scales(c.s, n1=c.n1, L=c.L, mu_l=mu_l, max_height=max_height)
-    drawn = graphical_differentiation(
-        c.s, n1=c.n1, mu_S=chosen.mu_S, L=c.L, H1=chosen.H1, H2=chosen.H2
-    )
-    return drawn, chosen
+    first = next(iter(series(longest / hi * (1 - 1e-9), longest / hi * 100.0)))
+    a_pin = _crank_pin_acceleration(solution)
+    if shrink < 0:
+        if a_pin / first >= lo * (1 - 1e-9):
+            return None  # the unshrunk scale meets both rules
+        finer = max(series(a_pin / lo / 100.0, a_pin / lo * (1 + 1e-9)))  # πa >= 100 mm
+        return finer if longest / finer <= ACCELERATION_SHEET_MAX_MM * (1 + 1e-9) else None
+    mu = _next_scale(first, shrink)
+    if shrink == 0:
+        return mu
+    keeps_guide = a_pin / first < lo * (1 - 1e-9) or a_pin / mu >= lo * (1 - 1e-9)
+    return mu if longest / mu >= lo * (1 - 1e-9) and keeps_guide else None
 
 
 def _sketch_all(
@@ -747,10 +1065,10 @@ def _sketch_all(
     mu_l: float,
     stacked: bool,
     cache: dict[tuple[str, float], Any],
-    diagram_height: float = SHEET_DIAGRAM_HEIGHT_MM,
 ) -> tuple[dict[str, Sketch], dict[str, float], KinematicDiagrams]:
     """Every drawing but the mechanism: the plans at μV and `mu_a`, the diagrams
-    at the scales that go with μ_l; `cache` keeps what was drawn at a scale."""
+    as the Solution constructed them (its μ_S and poles, the ones the note and
+    the results JSON give); `cache` keeps what was drawn at a scale."""
 
     def memo(name: str, mu: float, make: Callable[[], Any]) -> Any:
         if (name, mu) not in cache:
@@ -774,13 +1092,10 @@ def _sketch_all(
             lambda: sketch_plan(solution, i, mu_a, "acceleration", look, lang)[0],
         )
 
-    tag = f"{diagram_height:g}"
-    drawn, chosen = memo(
-        f"diagram-scales-{tag}", mu_l, lambda: _sheet_diagrams(solution, mu_l, diagram_height)
-    )
+    dg = solution.require_diagrams()
+    drawn = dg.construction
 
     def diagrams() -> list[Sketch]:
-        dg = solution.require_diagrams()
         return [
             sketch_diagram(
                 drawn,
@@ -790,13 +1105,14 @@ def _sketch_all(
                 solution.s_dense,
                 dg.refinement,
                 mu_l=mu_l if which == "s" else None,
+                mu_l_solution=float(solution.mu_l),
             )
             for which in ("s", "v", "a")
         ]
 
-    parts = memo(f"diagrams-{tag}", mu_l, diagrams)
+    parts = memo("diagrams", mu_l, diagrams)
     if stacked:
-        sketches["diagrams"] = memo(f"diagrams-stacked-{tag}", mu_l, lambda: _stack(parts, look))
+        sketches["diagrams"] = memo("diagrams-stacked", mu_l, lambda: _stack(parts, look))
     else:
         for which, sk in zip("sva", parts):
             sketches[f"diagram-{which}"] = sk
@@ -939,11 +1255,11 @@ def compose_sheet1(
         if width_m / mu_l > region.width or height_m / mu_l > region.height:
             continue
         placed_field = False
-        for dh, shrink in itertools.product(DIAGRAM_HEIGHTS_MM, (0, 1)):
+        for shrink in (-1, 0, 1):
             mu_a = _acceleration_scale(solution, shrink)
             if mu_a is None:
                 continue
-            sketches, scales, drawn = _sketch_all(solution, look, lang, mu_a, mu_l, True, cache, dh)
+            sketches, scales, drawn = _sketch_all(solution, look, lang, mu_a, mu_l, True, cache)
             sketches["mechanism"] = mechanism(mu_l)
             order = _order(sketches, True)
             tables = [sketches[n].extent().width for n in order if n.startswith("table")]

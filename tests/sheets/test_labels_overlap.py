@@ -30,10 +30,6 @@ TASKS = sorted((ROOT / "samples" / "tasks").glob("seed*/*.toml"))
 # pattern of its text) → the reason. A sheet-1 case with such overlaps is
 # checked for every other overlap first, then skipped naming them.
 SHEET1_KNOWN: list[tuple[str, str, str]] = [
-    ("diagram-", r"\d+", "the diagrams' tick numbers are written on the axis line and the ordinates"),
-    ("diagram-", r"H", "the pole distance H is written on the pole's ray"),
-    ("mechanism", r"[ωε]\d+", "the ω/ε arc of a later position or link is drawn over a label "
-     "placed before it (sheet1.py places each ω label right after its own arc)"),
 ]
 
 
