@@ -54,6 +54,13 @@ _COMPASS = tuple(
     )
 )
 _RINGS = (0.0, 2.5, 5.0, 9.0, 14.0)  # mm further out, tried in turn
+# where no ring near the anchor is free: further out, tied to the anchor by a
+# thin leader line, in 24 directions
+_LEADER_RINGS = (6.0, 10.0, 15.0, 21.0, 28.0, 36.0)
+_LEADER_DIRS = tuple(np.exp(1j * math.radians(15.0 * k)) for k in range(24))
+_LEADER_START = (
+    1.8  # mm from the anchor where the leader must be clear (a pin, the lines meeting there)
+)
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
 
@@ -68,9 +75,14 @@ class Labels:
         rings: PointLike = _RINGS,
         follow: bool = True,
         clearance: float = 0.4,
+        spacing: float | None = None,
     ) -> None:
         self.sketch = sketch
         self.size = size
+        # labels side by side keep a word space apart (else they read as one)
+        self.spacing = (
+            sketch.look.lettering.advance_width(" ", size) + 0.2 if spacing is None else spacing
+        )
         # with `follow`, every call recorded on `sketch` is avoided, `clearance` mm off
         self.follow = follow
         self.clearance = clearance
@@ -193,7 +205,9 @@ class Labels:
         ring = (distance + self.rings)[:, None]
         cx = (x + dirs.real * (ring + w / 2 * np.sqrt(np.abs(dirs.real)))).ravel()
         cy = (y + dirs.imag * (ring + h / 2 * np.sqrt(np.abs(dirs.imag)))).ravel()
-        return self._write_first_free(cx, cy, w, h, drop, markup, group)
+        return self._write_first_free(
+            cx, cy, w, h, drop, markup, group, leader=((x, y), towards, distance)
+        )
 
     def place_along(
         self,
@@ -221,16 +235,17 @@ class Labels:
         ring = (distance + self.rings)[:, None, None]
         cx = (anchors[:, 0][:, None] + sides.real * (ring + reach)).ravel()
         cy = (anchors[:, 1][:, None] + sides.imag * (ring + reach)).ravel()
-        if not around:
-            return self._write_first_free(cx, cy, w, h, drop, markup, group)
-        # where the segment's sides are taken: round its middle, further out
         mx, my = (a + b) / 2
+        leader = ((float(mx), float(my)), (float(sides[0].real), float(sides[0].imag)), distance)
+        if not around:
+            return self._write_first_free(cx, cy, w, h, drop, markup, group, leader=leader)
+        # where the segment's sides are taken: round its middle, further out
         dirs = np.array(_COMPASS)
         far = distance + np.concatenate([self.rings, self.rings[-1] + np.array([6.0, 12.0])])
         far = far[:, None]
         cx = np.concatenate([cx, (mx + dirs.real * (far + w / 2 * np.abs(dirs.real))).ravel()])
         cy = np.concatenate([cy, (my + dirs.imag * (far + h / 2 * np.abs(dirs.imag))).ravel()])
-        return self._write_first_free(cx, cy, w, h, drop, markup, group)
+        return self._write_first_free(cx, cy, w, h, drop, markup, group, leader=leader)
 
     def _extent(self, markup: str) -> tuple[float, float, float]:
         """Width and height of the box a label keeps free, and how far its index drops."""
@@ -257,6 +272,20 @@ class Labels:
             cost += 0.25 * np.bincount(hit, minlength=x0.size)
         return cost
 
+    def _label_cost(
+        self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
+    ) -> np.ndarray:
+        """The area (mm²) candidate boxes share with the labels written, these
+        widened by `spacing` each side: two labels on one line never run into
+        each other as if they were one."""
+        if not self.boxes:
+            return np.zeros(x0.size)
+        b = np.array([g.bounds for g in self.boxes])
+        sp = self.spacing
+        dx = np.minimum(x1[:, None], b[:, 2] + sp) - np.maximum(x0[:, None], b[:, 0] - sp)
+        dy = np.minimum(y1[:, None], b[:, 3]) - np.maximum(y0[:, None], b[:, 1])
+        return (np.clip(dx, 0, None) * np.clip(dy, 0, None)).sum(axis=1)
+
     def _write_first_free(
         self,
         cx: np.ndarray,
@@ -266,16 +295,15 @@ class Labels:
         drop: float,
         markup: str,
         group: str | None,
+        leader: tuple[PointLike, PointLike | None, float] | None = None,
     ) -> BaseGeometry:
-        """Write `markup` centred at the first free candidate, else at the one that covers least."""
+        """Write `markup` centred at the first free candidate; else, with
+        `leader` (the anchor, the preferred side, the distance), further out
+        at the first free place a leader line can reach from the anchor; else
+        at the candidate that covers least."""
         self._sync()
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
-        cost = np.zeros(cx.size)
-        if self.boxes:
-            b = np.array([g.bounds for g in self.boxes])
-            dx = np.minimum(x1[:, None], b[:, 2]) - np.maximum(x0[:, None], b[:, 0])
-            dy = np.minimum(y1[:, None], b[:, 3]) - np.maximum(y0[:, None], b[:, 1])
-            cost += (np.clip(dx, 0, None) * np.clip(dy, 0, None)).sum(axis=1)
+        cost = self._label_cost(x0, y0, x1, y1)
         # The obstacles are asked about one ring of candidates at a time, nearest
         # first: most labels find room in the first ring (the same pick as asking
         # about all of them, since the candidates are in order of preference).
@@ -288,17 +316,84 @@ class Labels:
             if free.size:
                 k = r0 + int(free[0])
                 break
+        line: tuple[tuple[float, float], tuple[float, float]] | None = None
+        if k < 0 and leader is not None:
+            found = self._leader_place(leader, w, h, drop)
+            if found is not None:
+                (lx, ly), line = found
+                cx, cy = np.array([lx]), np.array([ly])
+                x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+                k = 0
         if k < 0:
             k = int(np.argmin(cost))
         footprint = box(x0[k], y0[k], x1[k], y1[k])
         with self.sketch.group(group, "label") if group is not None else nullcontext():
+            if line is not None:
+                self.sketch.line(line[0], line[1], "thin")
             self.sketch.rich_text(
                 (float(cx[k]), float(cy[k])), markup, self.size, anchor="center", valign="middle"
             )
         if self.follow:  # its own lettering is among `boxes`, not the obstacles
             self._seen = len(self.sketch.calls)
+        if line is not None:
+            self.avoid(LineString(line), self.clearance)
         self.boxes.append(footprint)
         return footprint
+
+    def _leader_place(
+        self, leader: tuple[PointLike, PointLike | None, float], w: float, h: float, drop: float
+    ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
+        """The centre of the first free box further out round the anchor that a
+        straight leader from the anchor reaches without touching anything but
+        what meets at the anchor; with the leader (anchor, end). None if none."""
+        (ax, ay), towards, distance = (float(leader[0][0]), float(leader[0][1])), *leader[1:]
+        dirs = np.array(_LEADER_DIRS)
+        if towards is not None and math.hypot(*towards) > 1e-12:
+            t = complex(towards[0], towards[1]) / math.hypot(*towards)
+            dirs = dirs[np.argsort(-(dirs.real * t.real + dirs.imag * t.imag), kind="stable")]
+        # the box's edge `ring` mm from the anchor along the direction
+        half = np.minimum(
+            (w / 2) / np.maximum(np.abs(dirs.real), 1e-9),
+            (h / 2 + drop / 2) / np.maximum(np.abs(dirs.imag), 1e-9),
+        )
+        ring = (distance + np.array(_LEADER_RINGS))[:, None]
+        cx = (ax + dirs.real * (ring + half)).ravel()
+        cy = (ay + dirs.imag * (ring + half) + drop / 2).ravel()
+        x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+        cost = self._label_cost(x0, y0, x1, y1) + self._obstacle_cost(x0, y0, x1, y1)
+        boxes = (
+            shapely.union_all([g.buffer(self.clearance) for g in self.boxes])
+            if self.boxes
+            else None
+        )
+        for k in np.flatnonzero(cost <= 1e-9):
+            # the leader ends 0.4 mm short of the box's nearest point
+            px, py = min(max(ax, x0[k]), x1[k]), min(max(ay, y0[k]), y1[k])
+            length = math.hypot(px - ax, py - ay)
+            if length <= _LEADER_START + 0.5:
+                continue
+            ux, uy = (px - ax) / length, (py - ay) / length
+            end = (px - 0.4 * ux, py - 0.4 * uy)
+            clear = LineString([(ax + _LEADER_START * ux, ay + _LEADER_START * uy), end])
+            if boxes is not None and clear.intersects(boxes):
+                continue
+            if self._touches(clear):
+                continue
+            return (float(cx[k]), float(cy[k])), ((ax, ay), end)
+        return None
+
+    def _touches(self, shape: BaseGeometry) -> bool:
+        """True when `shape` comes within the clearance of anything avoided."""
+        if not self._obstacles:
+            return False
+        if self._tree is None:
+            self._tree = STRtree(self._obstacles)
+            self._reach = np.array(self._clearance)
+        near = self._tree.query(shape, predicate="dwithin", distance=float(self._reach.max()))
+        for i in near:
+            if shape.distance(self._obstacles[int(i)]) < self._reach[int(i)]:
+                return True
+        return False
 
 
 def drawn_shapes(call: Call, backend: RecordingBackend) -> list[BaseGeometry]:
