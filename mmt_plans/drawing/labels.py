@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Sequence
 from contextlib import nullcontext
+from typing import Any
 
 import numpy as np
 import shapely
@@ -58,9 +59,10 @@ _RINGS = (0.0, 2.5, 5.0, 9.0, 14.0)  # mm further out, tried in turn
 # thin leader line, in 24 directions
 _LEADER_RINGS = (6.0, 10.0, 15.0, 21.0, 28.0, 36.0)
 _LEADER_DIRS = tuple(np.exp(1j * math.radians(15.0 * k)) for k in range(24))
-_LEADER_START = (
-    1.8  # mm from the anchor where the leader must be clear (a pin, the lines meeting there)
-)
+# the leader is clear of everything from this far (mm) from the anchor on,
+# past the pin and the lines that meet there
+_LEADER_START = 1.8
+_LEADER_CROSSINGS = 4  # thin lines a leader may cross where no leader crosses none
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
 
@@ -160,8 +162,9 @@ class Labels:
         return float(shape.intersection(self._grown).area) if self._grown.intersects(shape) else 0.0
 
     def width(self, markup: str) -> float:
+        """The width of the lettering, mm (of its longest line)."""
         probe = RecordingBackend(look=self.sketch.look)
-        return probe.rich_text((0.0, 0.0), markup, self.size)
+        return max(probe.rich_text((0.0, 0.0), line, self.size) for line in markup.split("\n"))
 
     def later(self, anchor: PointLike, markup: str, towards: PointLike | None = None) -> None:
         """A label to write with `write_later`, once every line is drawn and avoided."""
@@ -173,12 +176,21 @@ class Labels:
             ("along", tuple(float(v) for v in start), markup, tuple(float(v) for v in end))
         )
 
+    def later_arrow(self, start: PointLike, end: PointLike, markup: str) -> None:
+        """A label to write at the head of the arrow start–end (`place_arrow`) with `write_later`."""
+        self._later.append(
+            ("arrow", tuple(float(v) for v in start), markup, tuple(float(v) for v in end))
+        )
+
     def write_later(self) -> None:
-        """Write the labels kept by `later` and `later_along`, in the order they came."""
+        """Write the labels kept by `later`, `later_along` and `later_arrow`, in the order they came."""
         for kind, anchor, markup, other in self._later:
             if kind == "along":
                 assert other is not None
                 self.place_along(anchor, other, markup, around=True)
+            elif kind == "arrow":
+                assert other is not None
+                self.place_arrow(anchor, other, markup)
             else:
                 self.place(anchor, markup, towards=other)
         self._later.clear()
@@ -205,9 +217,69 @@ class Labels:
         ring = (distance + self.rings)[:, None]
         cx = (x + dirs.real * (ring + w / 2 * np.sqrt(np.abs(dirs.real)))).ravel()
         cy = (y + dirs.imag * (ring + h / 2 * np.sqrt(np.abs(dirs.imag)))).ravel()
-        return self._write_first_free(
-            cx, cy, w, h, drop, markup, group, leader=((x, y), towards, distance)
+        return self._write(cx, cy, w, h, drop, markup, group, leader=((x, y), towards, distance))
+
+    def place_arrow(
+        self, start: PointLike, end: PointLike, markup: str, *, group: str | None = None
+    ) -> BaseGeometry:
+        """Write a force's name by the head of its arrow start–end, on the side
+        it points to; where that is taken, beside its shaft; else further out
+        from the head with a leader."""
+        a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+        u = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
+        # the names of forces that share the arrow one under another where in one line they find no room
+        tries = [markup, "\n".join(f"{m}," for m in markup.split(", "))[:-1]]
+        tries = tries[:1] if ", " not in markup else tries
+        for k, text in enumerate(tries):
+            cx, cy, w, h, drop = self._around(b, text, u, 1.5)
+            sx, sy = self._beside(a, b, text, 1.0, _ALONG[:3])
+            footprint = self._write_first_free(
+                np.concatenate([cx, sx]),
+                np.concatenate([cy, sy]),
+                w,
+                h,
+                drop,
+                text,
+                group,
+                leader=((float(b[0]), float(b[1])), (float(u[0]), float(u[1])), 1.5),
+                settle=k == len(tries) - 1,
+            )
+            if footprint is not None:
+                return footprint
+        raise AssertionError("the last try always writes")
+
+    def _around(
+        self, anchor: np.ndarray, markup: str, towards: PointLike | None, distance: float
+    ) -> tuple[np.ndarray, np.ndarray, float, float, float]:
+        """Centres of the boxes round `anchor`, nearest ring first, the side
+        `towards` first; the box's width, height and drop."""
+        w, h, drop = self._extent(markup)
+        x, y = float(anchor[0]), float(anchor[1])
+        dirs = np.array(_COMPASS)
+        if towards is not None and math.hypot(*towards) > 1e-12:
+            t = complex(towards[0], towards[1]) / math.hypot(*towards)
+            dirs = dirs[np.argsort(-(dirs.real * t.real + dirs.imag * t.imag), kind="stable")]
+        ring = (distance + self.rings)[:, None]
+        cx = (x + dirs.real * (ring + w / 2 * np.sqrt(np.abs(dirs.real)))).ravel()
+        cy = (y + dirs.imag * (ring + h / 2 * np.sqrt(np.abs(dirs.imag)))).ravel()
+        return cx, cy, w, h, drop
+
+    def _beside(
+        self, a: np.ndarray, b: np.ndarray, markup: str, distance: float, along: Sequence[float]
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """Centres of the boxes beside the segment a–b at the fractions `along`,
+        either side, nearest ring first."""
+        w, h, drop = self._extent(markup)
+        d = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
+        sides = np.array([complex(-d[1], d[0]), complex(d[1], -d[0])])
+        reach = w / 2 * np.abs(sides.real) + np.where(sides.imag > 0, h / 2 + drop, h / 2) * np.abs(
+            sides.imag
         )
+        anchors = a + np.array(along)[:, None] * (b - a)
+        ring = (distance + self.rings)[:, None, None]
+        cx = (anchors[:, 0][:, None] + sides.real * (ring + reach)).ravel()
+        cy = (anchors[:, 1][:, None] + sides.imag * (ring + reach)).ravel()
+        return cx, cy
 
     def place_along(
         self,
@@ -238,19 +310,26 @@ class Labels:
         mx, my = (a + b) / 2
         leader = ((float(mx), float(my)), (float(sides[0].real), float(sides[0].imag)), distance)
         if not around:
-            return self._write_first_free(cx, cy, w, h, drop, markup, group, leader=leader)
+            return self._write(cx, cy, w, h, drop, markup, group, leader=leader)
         # where the segment's sides are taken: round its middle, further out
         dirs = np.array(_COMPASS)
         far = distance + np.concatenate([self.rings, self.rings[-1] + np.array([6.0, 12.0])])
         far = far[:, None]
         cx = np.concatenate([cx, (mx + dirs.real * (far + w / 2 * np.abs(dirs.real))).ravel()])
         cy = np.concatenate([cy, (my + dirs.imag * (far + h / 2 * np.abs(dirs.imag))).ravel()])
-        return self._write_first_free(cx, cy, w, h, drop, markup, group, leader=leader)
+        return self._write(cx, cy, w, h, drop, markup, group, leader=leader)
 
     def _extent(self, markup: str) -> tuple[float, float, float]:
         """Width and height of the box a label keeps free, and how far its index drops."""
-        # an index drops 0.3 of the letter height under the line
-        return self.width(markup) + 0.4, self.size + 0.4, 0.3 * self.size if "_{" in markup else 0.0
+        # an index drops 0.3 of the letter height under the (last) line
+        lines = markup.split("\n")
+        drop = 0.3 * self.size if "_{" in lines[-1] else 0.0
+        return self.width(markup) + 0.4, self.size + 0.4 + (len(lines) - 1) * self._pitch, drop
+
+    @property
+    def _pitch(self) -> float:
+        """From line to line of a label of several lines, mm."""
+        return 1.3 * self.size
 
     def _obstacle_cost(
         self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
@@ -286,6 +365,12 @@ class Labels:
         dy = np.minimum(y1[:, None], b[:, 3]) - np.maximum(y0[:, None], b[:, 1])
         return (np.clip(dx, 0, None) * np.clip(dy, 0, None)).sum(axis=1)
 
+    def _write(self, *args: Any, **kwargs: Any) -> BaseGeometry:
+        """`_write_first_free` that always writes."""
+        footprint = self._write_first_free(*args, **kwargs)
+        assert footprint is not None
+        return footprint
+
     def _write_first_free(
         self,
         cx: np.ndarray,
@@ -296,11 +381,13 @@ class Labels:
         markup: str,
         group: str | None,
         leader: tuple[PointLike, PointLike | None, float] | None = None,
-    ) -> BaseGeometry:
+        settle: bool = True,
+    ) -> BaseGeometry | None:
         """Write `markup` centred at the first free candidate; else, with
         `leader` (the anchor, the preferred side, the distance), further out
         at the first free place a leader line can reach from the anchor; else
-        at the candidate that covers least."""
+        (with `settle`; without it write nothing and return None) at the
+        candidate that covers least."""
         self._sync()
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = self._label_cost(x0, y0, x1, y1)
@@ -324,15 +411,20 @@ class Labels:
                 cx, cy = np.array([lx]), np.array([ly])
                 x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
                 k = 0
+        if k < 0 and not settle:
+            return None
         if k < 0:
             k = int(np.argmin(cost))
         footprint = box(x0[k], y0[k], x1[k], y1[k])
+        lines = markup.split("\n")
         with self.sketch.group(group, "label") if group is not None else nullcontext():
             if line is not None:
                 self.sketch.line(line[0], line[1], "thin")
-            self.sketch.rich_text(
-                (float(cx[k]), float(cy[k])), markup, self.size, anchor="center", valign="middle"
-            )
+            for i, text in enumerate(lines):
+                y = float(cy[k]) + ((len(lines) - 1) / 2 - i) * self._pitch
+                self.sketch.rich_text(
+                    (float(cx[k]), y), text, self.size, anchor="center", valign="middle"
+                )
         if self.follow:  # its own lettering is among `boxes`, not the obstacles
             self._seen = len(self.sketch.calls)
         if line is not None:
@@ -366,6 +458,7 @@ class Labels:
             if self.boxes
             else None
         )
+        best: tuple[int, tuple[float, float], tuple[float, float]] | None = None
         for k in np.flatnonzero(cost <= 1e-9):
             # the leader ends 0.4 mm short of the box's nearest point
             px, py = min(max(ax, x0[k]), x1[k]), min(max(ay, y0[k]), y1[k])
@@ -377,23 +470,31 @@ class Labels:
             clear = LineString([(ax + _LEADER_START * ux, ay + _LEADER_START * uy), end])
             if boxes is not None and clear.intersects(boxes):
                 continue
-            if self._touches(clear):
-                continue
-            return (float(cx[k]), float(cy[k])), ((ax, ay), end)
+            crossed = self._crossed(clear)
+            if crossed == 0:
+                return (float(cx[k]), float(cy[k])), ((ax, ay), end)
+            if best is None or crossed < best[0]:
+                best = (crossed, (float(cx[k]), float(cy[k])), end)
+        # else the leader that crosses fewest lines, as a draughtsman's crosses thin ones
+        if best is not None and best[0] <= _LEADER_CROSSINGS:
+            return best[1], ((ax, ay), best[2])
         return None
 
-    def _touches(self, shape: BaseGeometry) -> bool:
-        """True when `shape` comes within the clearance of anything avoided."""
+    def _crossed(self, shape: BaseGeometry) -> int:
+        """How many avoided lines `shape` comes within the clearance of (a
+        solid shape, an arrowhead or a dot, counts as many as can be)."""
         if not self._obstacles:
-            return False
+            return 0
         if self._tree is None:
             self._tree = STRtree(self._obstacles)
             self._reach = np.array(self._clearance)
         near = self._tree.query(shape, predicate="dwithin", distance=float(self._reach.max()))
-        for i in near:
-            if shape.distance(self._obstacles[int(i)]) < self._reach[int(i)]:
-                return True
-        return False
+        hit = [
+            int(i) for i in near if shape.distance(self._obstacles[int(i)]) < self._reach[int(i)]
+        ]
+        if any(self._obstacles[i].geom_type == "Polygon" for i in hit):
+            return len(self._obstacles)
+        return len(hit)
 
 
 def drawn_shapes(call: Call, backend: RecordingBackend) -> list[BaseGeometry]:

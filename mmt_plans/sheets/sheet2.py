@@ -165,7 +165,7 @@ class _Drawing:
         self._arrows.append((at, end))
         self.sk.arrow(at, end, line, **_ARROW)  # type: ignore[arg-type]
         self.labels.avoid_line(at, end)
-        self.later(end, force_markup(label), u)
+        self.labels.later_arrow(at, end, force_markup(label))
 
     def moment(self, centre: np.ndarray, M: float, label: str, radius: float = 6.0) -> None:
         """A couple as an arc with its arrowhead in the sense of M (ccw positive)."""
@@ -615,7 +615,7 @@ def sketch_lever(
             labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
         for start, end, names in drawn:
             sk.arrow(start, end, "main", **_ARROW)  # type: ignore[arg-type]
-            labels.later(end, ", ".join(force_markup(n) for n in names), unit_vector(end - start))
+            labels.later_arrow(start, end, ", ".join(force_markup(n) for n in names))
         for foot, numbers in feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}")
         labels.write_later()
