@@ -97,6 +97,7 @@ class Labels:
         self._clearance: list[float] = []
         self._tree: STRtree | None = None
         self._grown: BaseGeometry | None = None
+        self.unsettled = 0  # labels written where they cover something: no place was free
         self._later: list[tuple[str, Sequence[float], str, PointLike | None]] = []
 
     def avoid(self, shape: BaseGeometry, clearance: float) -> None:
@@ -415,6 +416,7 @@ class Labels:
             return None
         if k < 0:
             k = int(np.argmin(cost))
+            self.unsettled += 1
         footprint = box(x0[k], y0[k], x1[k], y1[k])
         lines = markup.split("\n")
         with self.sketch.group(group, "label") if group is not None else nullcontext():

@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 import random
 import re
+import weakref
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -48,6 +49,8 @@ __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
 _TEXT = 3.5
 _TITLE = 5.0
 _PAD = 2.0
+# how many labels of a drawing found no free place (Labels.unsettled)
+_UNSETTLED: weakref.WeakKeyDictionary[Sketch, int] = weakref.WeakKeyDictionary()
 _ARROW = dict(head_length=3.5, head_width=1.2)
 _FAR_MM = 40.0  # a reaction applied farther than this from its group's points moves to them
 
@@ -287,6 +290,7 @@ class _Drawing:
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
         self.labels.write_later()
+        _UNSETTLED[self.sk] = self.labels.unsettled
         ext = self.sk.extent()
         y = ext.bottom - 5.0
         for note in notes:
@@ -521,6 +525,7 @@ def sketch_force_polygons(
         for centre, caption in captions:
             labels.later(centre, caption, None)
         labels.write_later()
+        _UNSETTLED[sk] = labels.unsettled
         ext = sk.extent()
         y = ext.bottom - 5.0
         for poly in polygons:
@@ -619,6 +624,7 @@ def sketch_lever(
         for foot, numbers in feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}")
         labels.write_later()
+        _UNSETTLED[sk] = labels.unsettled
         ext = sk.extent()
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
         sk.rich_text(
@@ -1049,6 +1055,11 @@ class _Composer:
             self.cache[key] = self.arrange(self.sketches(scales)[0]) is not None
         return bool(self.cache[key])
 
+    def unsettled(self, steps: dict[str, int]) -> int:
+        """How many labels of the drawings at `steps` found no free place."""
+        sketches = self.sketches(self.scales(steps))[0]
+        return sum(_UNSETTLED.get(sketches[n], 0) for n in self.drawings)
+
     def first_fit(self) -> dict[str, int] | None:
         """Scales from the finest that fits: every drawing `shrink` series
         steps from its textbook scale, the loaded mechanism up to two steps
@@ -1071,10 +1082,10 @@ class _Composer:
         polys = [f"poly {name}" for name, _, _ in self.polygon_sets]
         groups = [f"group {g.name}" for g in self.fa.groups]
         kinds: list[list[str]] = [
-            ["lever"],
             ["mech", *groups, "driving"],
-            [*groups, "driving"],
             ["mech"],
+            ["lever"],
+            [*groups, "driving"],
             *([k] for k in groups),
             ["driving"],
             polys,
@@ -1085,7 +1096,12 @@ class _Composer:
                 trial = dict(steps)
                 for k in kind:
                     trial[k] -= 1
-                if not self._allowed(trial) or not self.fits(trial):
+                # larger only where it fits and its lettering finds room as well as before
+                if (
+                    not self._allowed(trial)
+                    or not self.fits(trial)
+                    or self.unsettled(trial) > self.unsettled(steps)
+                ):
                     kinds.remove(kind)
                     continue
                 steps = trial
