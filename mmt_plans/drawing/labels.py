@@ -62,6 +62,7 @@ _LEADER_DIRS = tuple(np.exp(1j * math.radians(15.0 * k)) for k in range(24))
 # the leader is clear of everything from this far (mm) from the anchor on,
 # past the pin and the lines that meet there
 _LEADER_START = 1.8
+_LEADER_FROM = 6.0  # mm: a label farther than this from its anchor is given a leader
 _LEADER_CROSSINGS = 4  # thin lines a leader may cross where no leader crosses none
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
@@ -405,8 +406,16 @@ class Labels:
                 k = r0 + int(free[0])
                 break
         line: tuple[tuple[float, float], tuple[float, float]] | None = None
-        if k < 0 and leader is not None:
-            found = self._leader_place(leader, w, h, drop)
+        far = False
+        if k >= 0 and leader is not None:
+            # a label that had to go far from what it names is tied to it by a
+            # leader; where none reaches it, a place a leader reaches is better
+            ax, ay = float(leader[0][0]), float(leader[0][1])
+            gap = math.hypot(ax - min(max(ax, x0[k]), x1[k]), ay - min(max(ay, y0[k]), y1[k]))
+            line = self._leader_to(leader[0], x0[k], y0[k], x1[k], y1[k], _LEADER_FROM)
+            far = line is None and gap > _LEADER_FROM
+        if (k < 0 or far) and leader is not None:
+            found = self._leader_place(leader, w, h, drop, 0 if far else _LEADER_CROSSINGS)
             if found is not None:
                 (lx, ly), line = found
                 cx, cy = np.array([lx]), np.array([ly])
@@ -435,7 +444,12 @@ class Labels:
         return footprint
 
     def _leader_place(
-        self, leader: tuple[PointLike, PointLike | None, float], w: float, h: float, drop: float
+        self,
+        leader: tuple[PointLike, PointLike | None, float],
+        w: float,
+        h: float,
+        drop: float,
+        crossings: int = _LEADER_CROSSINGS,
     ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
         """The centre of the first free box further out round the anchor that a
         straight leader from the anchor reaches without touching anything but
@@ -478,9 +492,26 @@ class Labels:
             if best is None or crossed < best[0]:
                 best = (crossed, (float(cx[k]), float(cy[k])), end)
         # else the leader that crosses fewest lines, as a draughtsman's crosses thin ones
-        if best is not None and best[0] <= _LEADER_CROSSINGS:
+        if best is not None and best[0] <= crossings:
             return best[1], ((ax, ay), best[2])
         return None
+
+    def _leader_to(
+        self, anchor: PointLike, x0: float, y0: float, x1: float, y1: float, longer: float
+    ) -> tuple[tuple[float, float], tuple[float, float]] | None:
+        """A leader from `anchor` to 0.4 mm short of the box, if the box is
+        more than `longer` mm away and the leader crosses nothing; else None."""
+        ax, ay = float(anchor[0]), float(anchor[1])
+        px, py = min(max(ax, x0), x1), min(max(ay, y0), y1)
+        length = math.hypot(px - ax, py - ay)
+        if length <= max(longer, _LEADER_START + 0.5):
+            return None
+        ux, uy = (px - ax) / length, (py - ay) / length
+        end = (px - 0.4 * ux, py - 0.4 * uy)
+        clear = LineString([(ax + _LEADER_START * ux, ay + _LEADER_START * uy), end])
+        if any(clear.distance(b) < self.clearance for b in self.boxes):
+            return None
+        return ((ax, ay), end) if self._crossed(clear) == 0 else None
 
     def _crossed(self, shape: BaseGeometry) -> int:
         """How many avoided lines `shape` comes within the clearance of (a
