@@ -4,8 +4,12 @@ A draughtsman writes a label next to what it names, on whichever side is
 free. `Labels` does the same for one drawing: it keeps the boxes of the
 labels already written and everything already drawn (shapely), tries the
 places round the anchor nearest first, and writes the label at the first one
-that touches neither. When every place is taken it takes the one that covers
-the least, so a label is never dropped.
+that touches neither. With `leaders`, where nothing near is free it goes
+further out and draws a thin leader line from the anchor to it (a leader
+that crosses nothing first, else one that crosses fewest thin lines; never
+through lettering, an arrowhead or a dot), and a label that had to go far
+from its anchor is tied to it the same way. When every place is taken it
+takes the one that covers the least, so a label is never dropped.
 
 What is drawn is read from the sketch itself (`follow`): before each label
 the placer takes every call recorded since the last one — lines, hatching,
@@ -78,14 +82,18 @@ class Labels:
         rings: PointLike = _RINGS,
         follow: bool = True,
         clearance: float = 0.4,
-        spacing: float | None = None,
+        spacing: float | None = 0.0,
+        leaders: bool = False,
     ) -> None:
         self.sketch = sketch
         self.size = size
-        # labels side by side keep a word space apart (else they read as one)
+        # labels side by side keep `spacing` mm apart; None: a word space (else they read as one)
         self.spacing = (
             sketch.look.lettering.advance_width(" ", size) + 0.2 if spacing is None else spacing
         )
+        # with `leaders`, a label with no free place near its anchor goes further
+        # out, tied to the anchor by a thin leader line
+        self.leaders = leaders
         # with `follow`, every call recorded on `sketch` is avoided, `clearance` mm off
         self.follow = follow
         self.clearance = clearance
@@ -391,6 +399,7 @@ class Labels:
         (with `settle`; without it write nothing and return None) at the
         candidate that covers least."""
         self._sync()
+        leader = leader if self.leaders else None
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = self._label_cost(x0, y0, x1, y1)
         # The obstacles are asked about one ring of candidates at a time, nearest

@@ -136,7 +136,7 @@ class _Drawing:
 
     def __init__(self, look: Any, state: PositionState, mu_l: float) -> None:
         self.sk = Sketch(look)
-        self.labels = Labels(self.sk, _TEXT)
+        self.labels = Labels(self.sk, _TEXT, spacing=None, leaders=True)
         self.state = state
         self.mu_l = mu_l
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
@@ -450,7 +450,7 @@ def sketch_force_polygons(
     the textbook closes R54 inside the polygon of group 4-5; one that shares
     nothing is drawn beside it."""
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT)
+    labels = Labels(sk, _TEXT, spacing=None, leaders=True)
     drawn: dict[tuple[str, int, int], bool] = {}
     short: list[str] = []
     offset = np.zeros(2)
@@ -553,7 +553,7 @@ def sketch_lever(
     lever = fa.lever
     mech = fa.loads.state.mech
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT)
+    labels = Labels(sk, _TEXT, spacing=None, leaders=True)
     img = {n: np.asarray(v, float) / mu_V for n, v in lever.images.items()}
     dotted: set[str] = set()  # images of S_i and K_i marked with a dot
     with sk.group("zhukovsky-lever", "lever"):
