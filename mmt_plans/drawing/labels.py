@@ -478,32 +478,54 @@ class Labels:
         cy = (ay + dirs.imag * (ring + half) + drop / 2).ravel()
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = self._label_cost(x0, y0, x1, y1) + self._obstacle_cost(x0, y0, x1, y1)
-        boxes = (
-            shapely.union_all([g.buffer(self.clearance) for g in self.boxes])
-            if self.boxes
-            else None
+        free = np.flatnonzero(cost <= 1e-9)
+        # each leader ends 0.4 mm short of its box's nearest point
+        px, py = np.clip(ax, x0[free], x1[free]), np.clip(ay, y0[free], y1[free])
+        length = np.hypot(px - ax, py - ay)
+        keep = length > _LEADER_START + 0.5
+        free, px, py, length = free[keep], px[keep], py[keep], length[keep]
+        if not free.size:
+            return None
+        ux, uy = (px - ax) / length, (py - ay) / length
+        ex, ey = px - 0.4 * ux, py - 0.4 * uy
+        clear = shapely.linestrings(
+            np.stack(
+                [
+                    np.c_[ax + _LEADER_START * ux, ay + _LEADER_START * uy],
+                    np.c_[ex, ey],
+                ],
+                axis=1,
+            )
         )
-        best: tuple[int, tuple[float, float], tuple[float, float]] | None = None
-        for k in np.flatnonzero(cost <= 1e-9):
-            # the leader ends 0.4 mm short of the box's nearest point
-            px, py = min(max(ax, x0[k]), x1[k]), min(max(ay, y0[k]), y1[k])
-            length = math.hypot(px - ax, py - ay)
-            if length <= _LEADER_START + 0.5:
-                continue
-            ux, uy = (px - ax) / length, (py - ay) / length
-            end = (px - 0.4 * ux, py - 0.4 * uy)
-            clear = LineString([(ax + _LEADER_START * ux, ay + _LEADER_START * uy), end])
-            if boxes is not None and clear.intersects(boxes):
-                continue
-            crossed = self._crossed(clear)
-            if crossed == 0:
-                return (float(cx[k]), float(cy[k])), ((ax, ay), end)
-            if best is None or crossed < best[0]:
-                best = (crossed, (float(cx[k]), float(cy[k])), end)
-        # else the leader that crosses fewest lines, as a draughtsman's crosses thin ones
-        if best is not None and best[0] <= crossings:
-            return best[1], ((ax, ay), best[2])
-        return None
+        crossed = self._crossings(clear)
+        if self.boxes:  # never through lettering
+            written = np.asarray(self.boxes, dtype=object)
+            near = STRtree(written).query(clear, predicate="dwithin", distance=self.clearance)
+            crossed[np.unique(near[0])] = np.iinfo(np.int64).max
+        if not crossed.size or crossed.min() > crossings:
+            return None
+        # the first that crosses nothing, else the one that crosses fewest thin lines
+        i = int(np.argmin(crossed))
+        k = free[i]
+        return (float(cx[k]), float(cy[k])), ((ax, ay), (float(ex[i]), float(ey[i])))
+
+    def _crossings(self, lines: np.ndarray) -> np.ndarray:
+        """For each of `lines`, how many avoided lines it comes within the
+        clearance of (a solid shape, an arrowhead or a dot, counts as very many)."""
+        out = np.zeros(len(lines), dtype=np.int64)
+        if not self._obstacles or not len(lines):
+            return out
+        if self._tree is None:
+            self._tree = STRtree(self._obstacles)
+            self._reach = np.array(self._clearance)
+        near = self._tree.query(lines, predicate="dwithin", distance=float(self._reach.max()))
+        if not near.shape[1]:
+            return out
+        obstacles = np.asarray(self._obstacles, dtype=object)[near[1]]
+        hit = shapely.distance(lines[near[0]], obstacles) < self._reach[near[1]]
+        solid = shapely.get_type_id(obstacles) == 3  # a polygon
+        np.add.at(out, near[0][hit], np.where(solid[hit], 10**6, 1))
+        return out
 
     def _leader_to(
         self, anchor: PointLike, x0: float, y0: float, x1: float, y1: float, longer: float
@@ -520,23 +542,7 @@ class Labels:
         clear = LineString([(ax + _LEADER_START * ux, ay + _LEADER_START * uy), end])
         if any(clear.distance(b) < self.clearance for b in self.boxes):
             return None
-        return ((ax, ay), end) if self._crossed(clear) == 0 else None
-
-    def _crossed(self, shape: BaseGeometry) -> int:
-        """How many avoided lines `shape` comes within the clearance of (a
-        solid shape, an arrowhead or a dot, counts as many as can be)."""
-        if not self._obstacles:
-            return 0
-        if self._tree is None:
-            self._tree = STRtree(self._obstacles)
-            self._reach = np.array(self._clearance)
-        near = self._tree.query(shape, predicate="dwithin", distance=float(self._reach.max()))
-        hit = [
-            int(i) for i in near if shape.distance(self._obstacles[int(i)]) < self._reach[int(i)]
-        ]
-        if any(self._obstacles[i].geom_type == "Polygon" for i in hit):
-            return len(self._obstacles)
-        return len(hit)
+        return ((ax, ay), end) if self._crossings(np.array([clear]))[0] == 0 else None
 
 
 def drawn_shapes(call: Call, backend: RecordingBackend) -> list[BaseGeometry]:

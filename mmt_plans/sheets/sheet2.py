@@ -949,13 +949,11 @@ class _Composer:
         group_mu = tuple(scales[f"mu_l {g.name}"] for g in fa.groups)
         mu_d = scales[f"mu_l {fa.driving_link.link}"]
 
-        def groups_at() -> dict[str, Sketch]:
-            arm_names: list[str] = []  # the arms are numbered on through the groups
-            out = {
-                f"group-{g.name}": sketch_group(fa, g, mu, look, lang, arm_names)
-                for g, mu in zip(fa.groups, group_mu)
-            }
-            return out
+        def group_at(g: Any, mu: float, before: tuple[str, ...]) -> tuple[Sketch, tuple[str, ...]]:
+            """A group's drawing, its arms numbered on from those of the groups before."""
+            names = list(before)
+            sketch = sketch_group(fa, g, mu, look, lang, names)
+            return sketch, tuple(names)
 
         def noted(plain: Sketch, mu_g: float) -> Sketch:
             if math.isclose(mu_l, mu_g, rel_tol=1e-9):
@@ -966,9 +964,13 @@ class _Composer:
             return self.memo(("noted", id(plain), mu_l), lambda: _with_note(plain, other))
 
         sketches: dict[str, Sketch] = {}
-        plain = self.memo(("groups", group_mu), groups_at)
+        arm_names: tuple[str, ...] = ()  # the arms are numbered on through the groups
         for g, mu in zip(fa.groups, group_mu):
-            sketches[f"group-{g.name}"] = noted(plain[f"group-{g.name}"], mu)
+            before = arm_names
+            plain, arm_names = self.memo(
+                ("group", g.name, mu, before), lambda: group_at(g, mu, before)
+            )
+            sketches[f"group-{g.name}"] = noted(plain, mu)
         driving = self.memo(
             ("driving-link", mu_d), lambda: sketch_driving_link(fa, mu_d, look, lang)
         )
@@ -1063,22 +1065,30 @@ class _Composer:
     def first_fit(self) -> dict[str, int] | None:
         """Scales from the finest that fits: every drawing `shrink` series
         steps from its textbook scale, the loaded mechanism up to two steps
-        finer still, the lever and the polygons never finer than the textbook's."""
+        finer still, the lever and the polygons never finer than the
+        textbook's. Where some lettering then finds no free place, the next
+        two coarser steps are tried as well for a sheet where more of it does."""
+        found: list[dict[str, int]] = []
         for shrink in range(-2, 6):
+            if found and shrink > max(v for k, v in found[0].items() if k != "mech") + 2:
+                break
             for bigger in range(max(2, shrink + 2), -1, -1):
                 steps = {"mech": shrink - bigger, "lever": max(0, shrink)}
                 steps.update({f"group {g.name}": shrink for g in self.fa.groups})
                 steps["driving"] = shrink
                 steps.update({f"poly {name}": max(0, shrink) for name, _, _ in self.polygon_sets})
                 if self.fits(steps):
-                    return steps
-        return None
+                    found.append(steps)
+                    break
+            if found and self.unsettled(found[0]) == 0:
+                break
+        return min(found, key=self.unsettled) if found else None
 
     def fill(self, steps: dict[str, int]) -> dict[str, int]:
         """Enlarge the drawings a series step at a time while the sheet has
-        room: the lever, the mechanism with its groups, each alone, the force
-        polygons back to their textbook scale; a kind that no longer fits is
-        not tried again."""
+        room: the mechanism with its groups, the mechanism, the lever, the
+        groups, each alone, the force polygons within their guide; a kind that
+        no longer fits is not tried again."""
         polys = [f"poly {name}" for name, _, _ in self.polygon_sets]
         groups = [f"group {g.name}" for g in self.fa.groups]
         kinds: list[list[str]] = [
@@ -1093,18 +1103,20 @@ class _Composer:
         ]
         while kinds:
             for kind in list(kinds):
-                trial = dict(steps)
-                for k in kind:
-                    trial[k] -= 1
-                # larger only where it fits and its lettering finds room as well as before
-                if (
-                    not self._allowed(trial)
-                    or not self.fits(trial)
-                    or self.unsettled(trial) > self.unsettled(steps)
-                ):
+                # larger only where it fits and its lettering finds room as well
+                # as before (one step further where it does not, the next does)
+                for by in (1, 2):
+                    trial = dict(steps)
+                    for k in kind:
+                        trial[k] -= by
+                    if not self._allowed(trial) or not self.fits(trial):
+                        kinds.remove(kind)
+                        break
+                    if self.unsettled(trial) <= self.unsettled(steps):
+                        steps = trial
+                        break
+                else:
                     kinds.remove(kind)
-                    continue
-                steps = trial
         return steps
 
     def _allowed(self, steps: dict[str, int]) -> bool:

@@ -72,11 +72,6 @@ def _cases():
 CROWDED = {
     "five_dyads-en-1": "acceleration plan 9: a^τ_ED touches an arrow",
     "five_dyads-uk-1": "acceleration plan 9: a^τ_ED touches an arrow",
-    # the sheet of eleven links holds the loaded mechanism at 1:10 only; its lever is clean
-    "five_dyads-en-2": "loaded mechanism at 1:10: G9, S10, F_PR touch lines (no free place, "
-    "no leader crossing at most four thin lines)",
-    "five_dyads-uk-2": "loaded mechanism at 1:10: G9, S10, F_PR touch lines (no free place, "
-    "no leader crossing at most four thin lines)",
 }
 
 
