@@ -50,6 +50,7 @@ def _solution(path: Path):
     return mmt_plans.solve(mmt_plans.load(path))
 
 
+@cache  # one drawing per case, shared by the tests that read it
 def _draw(path: Path, sheet: int, lang: str = "en"):
     backend = RecordingBackend()
     compose = compose_sheet1 if sheet == 1 else compose_sheet2

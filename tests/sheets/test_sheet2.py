@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from functools import cache
 from pathlib import Path
 
 import numpy as np
@@ -21,6 +22,7 @@ SAMPLES = sorted((ROOT / "samples").glob("*.toml"))
 PRESS = ROOT / "samples" / "six_link_press.toml"
 
 
+@cache  # one drawing per sample and language, shared by the tests that read it
 def _draw(path: Path, lang: str = "en"):
     analysis = mmt_plans.solve(mmt_plans.load(path))
     backend = RecordingBackend()
