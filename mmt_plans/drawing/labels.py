@@ -67,7 +67,8 @@ _LEADER_DIRS = tuple(np.exp(1j * math.radians(15.0 * k)) for k in range(24))
 # past the pin and the lines that meet there
 _LEADER_START = 1.8
 _LEADER_FROM = 6.0  # mm: a label farther than this from its anchor is given a leader
-_LEADER_CROSSINGS = 4  # thin lines a leader may cross where no leader crosses none
+_LEADER_ALONG = (3.0, 10.0)  # a leader longer (mm) within this of a line runs along it
+_LEADER_CROSSINGS = 2  # thin lines a leader may cross where no leader crosses none
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
 
@@ -502,12 +503,15 @@ class Labels:
             written = np.asarray(self.boxes, dtype=object)
             near = STRtree(written).query(clear, predicate="dwithin", distance=self.clearance)
             crossed[np.unique(near[0])] = np.iinfo(np.int64).max
-        if not crossed.size or crossed.min() > crossings:
-            return None
         # the first that crosses nothing, else the one that crosses fewest thin lines
-        i = int(np.argmin(crossed))
-        k = free[i]
-        return (float(cx[k]), float(cy[k])), ((ax, ay), (float(ex[i]), float(ey[i])))
+        for i in np.lexsort((np.arange(crossed.size), crossed)):
+            if crossed[i] > crossings:
+                break
+            if self._runs_along(clear[i]):
+                continue
+            k = free[i]
+            return (float(cx[k]), float(cy[k])), ((ax, ay), (float(ex[i]), float(ey[i])))
+        return None
 
     def _crossings(self, lines: np.ndarray) -> np.ndarray:
         """For each of `lines`, how many avoided lines it comes within the
@@ -523,9 +527,26 @@ class Labels:
             return out
         obstacles = np.asarray(self._obstacles, dtype=object)[near[1]]
         hit = shapely.distance(lines[near[0]], obstacles) < self._reach[near[1]]
-        solid = shapely.get_type_id(obstacles) == 3  # a polygon
-        np.add.at(out, near[0][hit], np.where(solid[hit], 10**6, 1))
+        weight = np.where(shapely.get_type_id(obstacles) == 3, 10**6, 1)  # a polygon: never
+        np.add.at(out, near[0][hit], weight[hit])
         return out
+
+    def _runs_along(self, line: BaseGeometry) -> bool:
+        """True when a leader runs along a line (more than 10 mm within 3 mm of
+        it: it meets it at under 30°): it would read as part of it."""
+        if not self._obstacles:
+            return False
+        if self._tree is None:
+            self._tree = STRtree(self._obstacles)
+            self._reach = np.array(self._clearance)
+        near = self._tree.query(line, predicate="dwithin", distance=_LEADER_ALONG[0])
+        if not near.size:
+            return False
+        obstacles = np.asarray(self._obstacles, dtype=object)[near]
+        along = shapely.length(
+            shapely.intersection(line, shapely.buffer(obstacles, _LEADER_ALONG[0]))
+        )
+        return bool((along > _LEADER_ALONG[1]).any())
 
     def _leader_to(
         self, anchor: PointLike, x0: float, y0: float, x1: float, y1: float, longer: float
@@ -542,7 +563,9 @@ class Labels:
         clear = LineString([(ax + _LEADER_START * ux, ay + _LEADER_START * uy), end])
         if any(clear.distance(b) < self.clearance for b in self.boxes):
             return None
-        return ((ax, ay), end) if self._crossings(np.array([clear]))[0] == 0 else None
+        if self._crossings(np.array([clear]))[0] or self._runs_along(clear):
+            return None
+        return (ax, ay), end
 
 
 def drawn_shapes(call: Call, backend: RecordingBackend) -> list[BaseGeometry]:
