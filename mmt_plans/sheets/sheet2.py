@@ -1006,12 +1006,12 @@ class _Composer:
         drawings = self.drawings
         size = {n: self.extent(sketches[n]) for n in (*self.tables, *drawings)}
         orders = [(8.0, drawings), (5.0, drawings)]
-        for key in (
+        for by in (
             lambda n: -size[n].width * size[n].height,
             lambda n: -size[n].height,
             lambda n: -size[n].width,
         ):
-            orders.append((5.0, [drawings[0], *sorted(drawings[1:], key=key)]))
+            orders.append((5.0, [drawings[0], *sorted(drawings[1:], key=by)]))
         # then other orders, the same on every run: a larger drawing may fit in one
         shuffle = random.Random(len(drawings))
         for _ in range(_ORDERS):
@@ -1021,9 +1021,8 @@ class _Composer:
             return None
         for gap, order in orders:
             # the tables first, top right: the same in every order
-            key = ("tables", gap, *((size[n].width, size[n].height) for n in self.tables))
             tables = self.memo(
-                key,
+                ("tables", gap, *((size[n].width, size[n].height) for n in self.tables)),
                 lambda: _pack(
                     self.page,
                     [(n, size[n].width, size[n].height, "top-right") for n in self.tables],
