@@ -1000,8 +1000,8 @@ class _Composer:
         return sketches, arms
 
     def arrange(self, sketches: dict[str, Sketch]) -> tuple[SheetLayout, dict[str, Rect]] | None:
-        """The tables top right, the drawings from the top left: in the
-        textbook's order first, then the largest, tallest, widest first (which
+        """The loaded mechanism top left, the tables top right, the drawings
+        from the top left: in the textbook's order first, then the largest, tallest, widest first (which
         may pack tighter), then in other orders; None if nothing fits."""
         drawings = self.drawings
         size = {n: self.extent(sketches[n]) for n in (*self.tables, *drawings)}
@@ -1019,24 +1019,18 @@ class _Composer:
         field = self.page.frame.inset(5.0)
         if sum(r.width * r.height for r in size.values()) > field.width * field.height:
             return None
+        tables = [(n, size[n].width, size[n].height, "top-right") for n in self.tables]
+        first = (drawings[0], size[drawings[0]].width, size[drawings[0]].height, "top-left")
         for gap, order in orders:
-            # the tables first, top right: the same in every order
-            tables = self.memo(
-                ("tables", gap, *((size[n].width, size[n].height) for n in self.tables)),
-                lambda: _pack(
-                    self.page,
-                    [(n, size[n].width, size[n].height, "top-right") for n in self.tables],
-                    gap,
-                ),
-            )
-            if tables is None:
-                continue
-            placed = _pack(
-                self.page,
-                [(n, size[n].width, size[n].height, "top-left") for n in order],
-                gap,
-                tables,
-            )
+            rest = [(n, size[n].width, size[n].height, "top-left") for n in order[1:]]
+            # the loaded mechanism top left, the tables top right beside it; else
+            # the tables first (the same in every order) and the mechanism under them
+            for head in ([first, *tables], [*tables, first]):
+                placed = self.memo(("head", gap, *head), lambda: _pack(self.page, head, gap))
+                if placed is not None:
+                    placed = _pack(self.page, rest, gap, placed)
+                if placed is not None:
+                    break
             if placed is None:
                 continue
             layout = SheetLayout(self.page, gap=gap)
