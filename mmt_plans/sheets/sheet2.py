@@ -12,6 +12,11 @@ loads, reactions, the lever's moments and the balancing force by both methods.
 Forces on the mechanism, the groups and the lever are drawn to direction, not
 to scale (their lengths grow with the square root of the magnitude); the
 force polygons are to scale.
+
+Every drawing has its own scale from the standard series: first the finest
+at which all of them fit, then each enlarged a step at a time (the mechanism
+with its groups, the lever, each group, the polygons within their 150 …
+300 mm guide) while the sheet still packs and the lettering still finds room.
 """
 
 from __future__ import annotations
@@ -76,6 +81,8 @@ class Sheet2:
     origins: dict[str, tuple[float, float]] = field(default_factory=dict)
     placed: dict[str, Rect] = field(default_factory=dict)
     arms: dict[str, list[tuple[str, float]]] = field(default_factory=dict)  # lever: label, h mm
+    # the most series steps any drawing is coarser than its textbook scale
+    # (negative: every drawing finer, enlarged to fill the sheet)
     shrink: int = 0
 
 
