@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from shapely.geometry import Point
 
 import mmt_plans
 from mmt_plans.render.recording import RecordingBackend
@@ -196,3 +197,25 @@ def test_lever_names_the_images_of_centres_of_mass_and_force_points():
     joined = " ".join(texts).replace(" ", "")  # "d, s" "5" → "d,s5"
     for p in points:
         assert re.search(rf"(^|[^a-z]){p[0].lower()}{p[1:]}($|[^0-9])", joined), p
+
+
+def test_a_label_pushed_far_from_its_point_is_tied_to_it_by_a_leader():
+    """Lines 3 mm apart round a point leave no room near it: the label goes
+    further out, a thin leader runs from the point to it, and neither the
+    label nor the leader touches a line (the leader is a primitive the
+    checker reads like any other)."""
+    from mmt_plans.drawing.labels import Labels
+    from mmt_plans.drawing.sketch import Sketch
+
+    sk = Sketch(RecordingBackend().look)
+    xs = [1.5 + 3.0 * k for k in range(7)]
+    for x in [*xs, *(-x for x in xs)]:
+        sk.line((x, -6.0), (x, 6.0), "thin")
+    labels = Labels(sk, 3.5, spacing=None, leaders=True)
+    footprint = labels.place((0.0, 0.0), "F_{in5}", towards=(1.0, 1.0))
+    assert footprint.distance(Point(0.0, 0.0)) > 6.0
+    leaders = [c for c in sk.calls if c.name == "line" and math.dist(c["start"], (0, 0)) < 1e-9]
+    assert len(leaders) == 1
+    end = leaders[0]["end"]
+    assert 0.0 < footprint.distance(Point(end)) < 0.5  # it reaches the label
+    assert label_hits(sk) == [] and labels.unsettled == 0
