@@ -105,6 +105,7 @@ class Labels:
         self.boxes: list[BaseGeometry] = []
         self._obstacles: list[BaseGeometry] = []  # shapes, each kept its `_clearance` mm off
         self._clearance: list[float] = []
+        self._leaders: set[int] = set()  # which obstacles are leaders (never crossed)
         self._tree: STRtree | None = None
         self._grown: BaseGeometry | None = None
         self.unsettled = 0  # labels written where they cover something: no place was free
@@ -449,6 +450,7 @@ class Labels:
         if self.follow:  # its own lettering is among `boxes`, not the obstacles
             self._seen = len(self.sketch.calls)
         if line is not None:
+            self._leaders.add(len(self._obstacles))
             self.avoid(LineString(line), self.clearance)
         self.boxes.append(footprint)
         return footprint
@@ -515,7 +517,8 @@ class Labels:
 
     def _crossings(self, lines: np.ndarray) -> np.ndarray:
         """For each of `lines`, how many avoided lines it comes within the
-        clearance of (a solid shape, an arrowhead or a dot, counts as very many)."""
+        clearance of (a solid shape, an arrowhead or a dot, or another leader,
+        counts as very many)."""
         out = np.zeros(len(lines), dtype=np.int64)
         if not self._obstacles or not len(lines):
             return out
@@ -527,7 +530,9 @@ class Labels:
             return out
         obstacles = np.asarray(self._obstacles, dtype=object)[near[1]]
         hit = shapely.distance(lines[near[0]], obstacles) < self._reach[near[1]]
-        weight = np.where(shapely.get_type_id(obstacles) == 3, 10**6, 1)  # a polygon: never
+        # a polygon (arrowhead, dot) or another leader: never
+        weight = np.where(shapely.get_type_id(obstacles) == 3, 10**6, 1)
+        weight[np.isin(near[1], list(self._leaders))] = 10**6
         np.add.at(out, near[0][hit], weight[hit])
         return out
 
