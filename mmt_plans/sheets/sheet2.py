@@ -897,7 +897,7 @@ def _pack(
 
 _LEVER_MAX = 250.0  # mm: the longest pa the lever is enlarged to
 _ORDERS = 16  # orders of the drawings tried beyond the textbook's and by size
-_PARTS_FINER = 1  # series steps a group may be drawn larger than the loaded mechanism
+_PARTS_FINER = 1  # series steps a group may be drawn larger or smaller than the loaded mechanism
 _FINEST = -6  # series steps finer than its textbook scale a drawing may go
 
 
@@ -1065,7 +1065,7 @@ class _Composer:
     def first_fit(self) -> dict[str, int] | None:
         """Scales from the finest that fits: every drawing `shrink` series
         steps from its textbook scale, the loaded mechanism up to two steps
-        finer still, the lever and the polygons never finer than the
+        finer still (the groups then a step from it), the lever and the polygons never finer than the
         textbook's. Where some lettering then finds no free place, the next
         two coarser steps are tried as well for a sheet where more of it does."""
         found: list[dict[str, int]] = []
@@ -1073,9 +1073,11 @@ class _Composer:
             if found and shrink > max(v for k, v in found[0].items() if k != "mech") + 2:
                 break
             for bigger in range(max(2, shrink + 2), -1, -1):
-                steps = {"mech": shrink - bigger, "lever": max(0, shrink)}
-                steps.update({f"group {g.name}": shrink for g in self.fa.groups})
-                steps["driving"] = shrink
+                mech = shrink - bigger
+                parts = min(shrink, mech + _PARTS_FINER)  # the groups near the mechanism's scale
+                steps = {"mech": mech, "lever": max(0, shrink)}
+                steps.update({f"group {g.name}": parts for g in self.fa.groups})
+                steps["driving"] = parts
                 steps.update({f"poly {name}": max(0, shrink) for name, _, _ in self.polygon_sets})
                 if self.fits(steps):
                     found.append(steps)
@@ -1093,9 +1095,9 @@ class _Composer:
         groups = [f"group {g.name}" for g in self.fa.groups]
         kinds: list[list[str]] = [
             ["mech", *groups, "driving"],
-            ["mech"],
-            ["lever"],
             [*groups, "driving"],
+            ["lever"],
+            ["mech"],
             *([k] for k in groups),
             ["driving"],
             polys,
@@ -1123,7 +1125,12 @@ class _Composer:
         if min(v for k, v in steps.items() if not k.startswith(("poly", "lever"))) < _FINEST:
             return False
         parts = [v for k, v in steps.items() if k.startswith(("group", "driving"))]
-        if min(parts) < steps["mech"] - _PARTS_FINER:
+        if (
+            not steps["mech"] - _PARTS_FINER
+            <= min(parts)
+            <= max(parts)
+            <= steps["mech"] + _PARTS_FINER
+        ):
             return False
         for name, polygons, _ in self.polygon_sets:
             # a polygon enlarged no further than the guide's 300 mm
