@@ -4,8 +4,12 @@ A draughtsman writes a label next to what it names, on whichever side is
 free. `Labels` does the same for one drawing: it keeps the boxes of the
 labels already written and everything already drawn (shapely), tries the
 places round the anchor nearest first, and writes the label at the first one
-that touches neither. When every place is taken it takes the one that covers
-the least, so a label is never dropped.
+that touches neither. With `leaders`, where nothing near is free it goes
+further out and draws a thin leader line from the anchor to it (a leader
+that crosses nothing first, else one that crosses fewest thin lines; never
+through lettering, an arrowhead or a dot), and a label that had to go far
+from its anchor is tied to it the same way. When every place is taken it
+takes the one that covers the least, so a label is never dropped.
 
 What is drawn is read from the sketch itself (`follow`): before each label
 the placer takes every call recorded since the last one — lines, hatching,
@@ -18,6 +22,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Sequence
 from contextlib import nullcontext
+from typing import Any
 
 import numpy as np
 import shapely
@@ -54,6 +59,16 @@ _COMPASS = tuple(
     )
 )
 _RINGS = (0.0, 2.5, 5.0, 9.0, 14.0)  # mm further out, tried in turn
+# where no ring near the anchor is free: further out, tied to the anchor by a
+# thin leader line, in 24 directions
+_LEADER_RINGS = (6.0, 10.0, 15.0, 21.0, 28.0, 36.0)
+_LEADER_DIRS = tuple(np.exp(1j * math.radians(15.0 * k)) for k in range(24))
+# the leader is clear of everything from this far (mm) from the anchor on,
+# past the pin and the lines that meet there
+_LEADER_START = 1.8
+_LEADER_FROM = 6.0  # mm: a label farther than this from its anchor is given a leader
+_LEADER_ALONG = (3.0, 10.0)  # a leader longer (mm) within this of a line runs along it
+_LEADER_CROSSINGS = 2  # thin lines a leader may cross where no leader crosses none
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
 
@@ -68,9 +83,18 @@ class Labels:
         rings: PointLike = _RINGS,
         follow: bool = True,
         clearance: float = 0.4,
+        spacing: float | None = 0.0,
+        leaders: bool = False,
     ) -> None:
         self.sketch = sketch
         self.size = size
+        # labels side by side keep `spacing` mm apart; None: a word space (else they read as one)
+        self.spacing = (
+            sketch.look.lettering.advance_width(" ", size) + 0.2 if spacing is None else spacing
+        )
+        # with `leaders`, a label with no free place near its anchor goes further
+        # out, tied to the anchor by a thin leader line
+        self.leaders = leaders
         # with `follow`, every call recorded on `sketch` is avoided, `clearance` mm off
         self.follow = follow
         self.clearance = clearance
@@ -81,8 +105,10 @@ class Labels:
         self.boxes: list[BaseGeometry] = []
         self._obstacles: list[BaseGeometry] = []  # shapes, each kept its `_clearance` mm off
         self._clearance: list[float] = []
+        self._leaders: set[int] = set()  # which obstacles are leaders (never crossed)
         self._tree: STRtree | None = None
         self._grown: BaseGeometry | None = None
+        self.unsettled = 0  # labels written where they cover something: no place was free
         self._later: list[tuple[str, Sequence[float], str, PointLike | None]] = []
 
     def avoid(self, shape: BaseGeometry, clearance: float) -> None:
@@ -148,8 +174,9 @@ class Labels:
         return float(shape.intersection(self._grown).area) if self._grown.intersects(shape) else 0.0
 
     def width(self, markup: str) -> float:
+        """The width of the lettering, mm (of its longest line)."""
         probe = RecordingBackend(look=self.sketch.look)
-        return probe.rich_text((0.0, 0.0), markup, self.size)
+        return max(probe.rich_text((0.0, 0.0), line, self.size) for line in markup.split("\n"))
 
     def later(self, anchor: PointLike, markup: str, towards: PointLike | None = None) -> None:
         """A label to write with `write_later`, once every line is drawn and avoided."""
@@ -161,12 +188,21 @@ class Labels:
             ("along", tuple(float(v) for v in start), markup, tuple(float(v) for v in end))
         )
 
+    def later_arrow(self, start: PointLike, end: PointLike, markup: str) -> None:
+        """A label to write at the head of the arrow start–end (`place_arrow`) with `write_later`."""
+        self._later.append(
+            ("arrow", tuple(float(v) for v in start), markup, tuple(float(v) for v in end))
+        )
+
     def write_later(self) -> None:
-        """Write the labels kept by `later` and `later_along`, in the order they came."""
+        """Write the labels kept by `later`, `later_along` and `later_arrow`, in the order they came."""
         for kind, anchor, markup, other in self._later:
             if kind == "along":
                 assert other is not None
                 self.place_along(anchor, other, markup, around=True)
+            elif kind == "arrow":
+                assert other is not None
+                self.place_arrow(anchor, other, markup)
             else:
                 self.place(anchor, markup, towards=other)
         self._later.clear()
@@ -193,7 +229,69 @@ class Labels:
         ring = (distance + self.rings)[:, None]
         cx = (x + dirs.real * (ring + w / 2 * np.sqrt(np.abs(dirs.real)))).ravel()
         cy = (y + dirs.imag * (ring + h / 2 * np.sqrt(np.abs(dirs.imag)))).ravel()
-        return self._write_first_free(cx, cy, w, h, drop, markup, group)
+        return self._write(cx, cy, w, h, drop, markup, group, leader=((x, y), towards, distance))
+
+    def place_arrow(
+        self, start: PointLike, end: PointLike, markup: str, *, group: str | None = None
+    ) -> BaseGeometry:
+        """Write a force's name by the head of its arrow start–end, on the side
+        it points to; where that is taken, beside its shaft; else further out
+        from the head with a leader."""
+        a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+        u = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
+        # the names of forces that share the arrow one under another where in one line they find no room
+        tries = [markup, "\n".join(f"{m}," for m in markup.split(", "))[:-1]]
+        tries = tries[:1] if ", " not in markup else tries
+        for k, text in enumerate(tries):
+            cx, cy, w, h, drop = self._around(b, text, u, 1.5)
+            sx, sy = self._beside(a, b, text, 1.0, _ALONG[:3])
+            footprint = self._write_first_free(
+                np.concatenate([cx, sx]),
+                np.concatenate([cy, sy]),
+                w,
+                h,
+                drop,
+                text,
+                group,
+                leader=((float(b[0]), float(b[1])), (float(u[0]), float(u[1])), 1.5),
+                settle=k == len(tries) - 1,
+            )
+            if footprint is not None:
+                return footprint
+        raise AssertionError("the last try always writes")
+
+    def _around(
+        self, anchor: np.ndarray, markup: str, towards: PointLike | None, distance: float
+    ) -> tuple[np.ndarray, np.ndarray, float, float, float]:
+        """Centres of the boxes round `anchor`, nearest ring first, the side
+        `towards` first; the box's width, height and drop."""
+        w, h, drop = self._extent(markup)
+        x, y = float(anchor[0]), float(anchor[1])
+        dirs = np.array(_COMPASS)
+        if towards is not None and math.hypot(*towards) > 1e-12:
+            t = complex(towards[0], towards[1]) / math.hypot(*towards)
+            dirs = dirs[np.argsort(-(dirs.real * t.real + dirs.imag * t.imag), kind="stable")]
+        ring = (distance + self.rings)[:, None]
+        cx = (x + dirs.real * (ring + w / 2 * np.sqrt(np.abs(dirs.real)))).ravel()
+        cy = (y + dirs.imag * (ring + h / 2 * np.sqrt(np.abs(dirs.imag)))).ravel()
+        return cx, cy, w, h, drop
+
+    def _beside(
+        self, a: np.ndarray, b: np.ndarray, markup: str, distance: float, along: Sequence[float]
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """Centres of the boxes beside the segment a–b at the fractions `along`,
+        either side, nearest ring first."""
+        w, h, drop = self._extent(markup)
+        d = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
+        sides = np.array([complex(-d[1], d[0]), complex(d[1], -d[0])])
+        reach = w / 2 * np.abs(sides.real) + np.where(sides.imag > 0, h / 2 + drop, h / 2) * np.abs(
+            sides.imag
+        )
+        anchors = a + np.array(along)[:, None] * (b - a)
+        ring = (distance + self.rings)[:, None, None]
+        cx = (anchors[:, 0][:, None] + sides.real * (ring + reach)).ravel()
+        cy = (anchors[:, 1][:, None] + sides.imag * (ring + reach)).ravel()
+        return cx, cy
 
     def place_along(
         self,
@@ -221,21 +319,29 @@ class Labels:
         ring = (distance + self.rings)[:, None, None]
         cx = (anchors[:, 0][:, None] + sides.real * (ring + reach)).ravel()
         cy = (anchors[:, 1][:, None] + sides.imag * (ring + reach)).ravel()
-        if not around:
-            return self._write_first_free(cx, cy, w, h, drop, markup, group)
-        # where the segment's sides are taken: round its middle, further out
         mx, my = (a + b) / 2
+        leader = ((float(mx), float(my)), (float(sides[0].real), float(sides[0].imag)), distance)
+        if not around:
+            return self._write(cx, cy, w, h, drop, markup, group, leader=leader)
+        # where the segment's sides are taken: round its middle, further out
         dirs = np.array(_COMPASS)
         far = distance + np.concatenate([self.rings, self.rings[-1] + np.array([6.0, 12.0])])
         far = far[:, None]
         cx = np.concatenate([cx, (mx + dirs.real * (far + w / 2 * np.abs(dirs.real))).ravel()])
         cy = np.concatenate([cy, (my + dirs.imag * (far + h / 2 * np.abs(dirs.imag))).ravel()])
-        return self._write_first_free(cx, cy, w, h, drop, markup, group)
+        return self._write(cx, cy, w, h, drop, markup, group, leader=leader)
 
     def _extent(self, markup: str) -> tuple[float, float, float]:
         """Width and height of the box a label keeps free, and how far its index drops."""
-        # an index drops 0.3 of the letter height under the line
-        return self.width(markup) + 0.4, self.size + 0.4, 0.3 * self.size if "_{" in markup else 0.0
+        # an index drops 0.3 of the letter height under the (last) line
+        lines = markup.split("\n")
+        drop = 0.3 * self.size if "_{" in lines[-1] else 0.0
+        return self.width(markup) + 0.4, self.size + 0.4 + (len(lines) - 1) * self._pitch, drop
+
+    @property
+    def _pitch(self) -> float:
+        """From line to line of a label of several lines, mm."""
+        return 1.3 * self.size
 
     def _obstacle_cost(
         self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
@@ -257,6 +363,26 @@ class Labels:
             cost += 0.25 * np.bincount(hit, minlength=x0.size)
         return cost
 
+    def _label_cost(
+        self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
+    ) -> np.ndarray:
+        """The area (mm²) candidate boxes share with the labels written, these
+        widened by `spacing` each side: two labels on one line never run into
+        each other as if they were one."""
+        if not self.boxes:
+            return np.zeros(x0.size)
+        b = np.array([g.bounds for g in self.boxes])
+        sp = self.spacing
+        dx = np.minimum(x1[:, None], b[:, 2] + sp) - np.maximum(x0[:, None], b[:, 0] - sp)
+        dy = np.minimum(y1[:, None], b[:, 3]) - np.maximum(y0[:, None], b[:, 1])
+        return (np.clip(dx, 0, None) * np.clip(dy, 0, None)).sum(axis=1)
+
+    def _write(self, *args: Any, **kwargs: Any) -> BaseGeometry:
+        """`_write_first_free` that always writes."""
+        footprint = self._write_first_free(*args, **kwargs)
+        assert footprint is not None
+        return footprint
+
     def _write_first_free(
         self,
         cx: np.ndarray,
@@ -266,16 +392,18 @@ class Labels:
         drop: float,
         markup: str,
         group: str | None,
-    ) -> BaseGeometry:
-        """Write `markup` centred at the first free candidate, else at the one that covers least."""
+        leader: tuple[PointLike, PointLike | None, float] | None = None,
+        settle: bool = True,
+    ) -> BaseGeometry | None:
+        """Write `markup` centred at the first free candidate; else, with
+        `leader` (the anchor, the preferred side, the distance), further out
+        at the first free place a leader line can reach from the anchor; else
+        (with `settle`; without it write nothing and return None) at the
+        candidate that covers least."""
         self._sync()
+        leader = leader if self.leaders else None
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
-        cost = np.zeros(cx.size)
-        if self.boxes:
-            b = np.array([g.bounds for g in self.boxes])
-            dx = np.minimum(x1[:, None], b[:, 2]) - np.maximum(x0[:, None], b[:, 0])
-            dy = np.minimum(y1[:, None], b[:, 3]) - np.maximum(y0[:, None], b[:, 1])
-            cost += (np.clip(dx, 0, None) * np.clip(dy, 0, None)).sum(axis=1)
+        cost = self._label_cost(x0, y0, x1, y1)
         # The obstacles are asked about one ring of candidates at a time, nearest
         # first: most labels find room in the first ring (the same pick as asking
         # about all of them, since the candidates are in order of preference).
@@ -288,17 +416,161 @@ class Labels:
             if free.size:
                 k = r0 + int(free[0])
                 break
+        line: tuple[tuple[float, float], tuple[float, float]] | None = None
+        far = False
+        if k >= 0 and leader is not None:
+            # a label that had to go far from what it names is tied to it by a
+            # leader; where none reaches it, a place a leader reaches is better
+            ax, ay = float(leader[0][0]), float(leader[0][1])
+            gap = math.hypot(ax - min(max(ax, x0[k]), x1[k]), ay - min(max(ay, y0[k]), y1[k]))
+            line = self._leader_to(leader[0], x0[k], y0[k], x1[k], y1[k], _LEADER_FROM)
+            far = line is None and gap > _LEADER_FROM
+        if (k < 0 or far) and leader is not None:
+            found = self._leader_place(leader, w, h, drop, 0 if far else _LEADER_CROSSINGS)
+            if found is not None:
+                (lx, ly), line = found
+                cx, cy = np.array([lx]), np.array([ly])
+                x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+                k = 0
+        if k < 0 and not settle:
+            return None
         if k < 0:
             k = int(np.argmin(cost))
+            self.unsettled += 1
         footprint = box(x0[k], y0[k], x1[k], y1[k])
+        lines = markup.split("\n")
         with self.sketch.group(group, "label") if group is not None else nullcontext():
-            self.sketch.rich_text(
-                (float(cx[k]), float(cy[k])), markup, self.size, anchor="center", valign="middle"
-            )
+            if line is not None:
+                self.sketch.line(line[0], line[1], "thin")
+            for i, text in enumerate(lines):
+                y = float(cy[k]) + ((len(lines) - 1) / 2 - i) * self._pitch
+                self.sketch.rich_text(
+                    (float(cx[k]), y), text, self.size, anchor="center", valign="middle"
+                )
         if self.follow:  # its own lettering is among `boxes`, not the obstacles
             self._seen = len(self.sketch.calls)
+        if line is not None:
+            self._leaders.add(len(self._obstacles))
+            self.avoid(LineString(line), self.clearance)
         self.boxes.append(footprint)
         return footprint
+
+    def _leader_place(
+        self,
+        leader: tuple[PointLike, PointLike | None, float],
+        w: float,
+        h: float,
+        drop: float,
+        crossings: int = _LEADER_CROSSINGS,
+    ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
+        """The centre of the first free box further out round the anchor that a
+        straight leader from the anchor reaches without touching anything but
+        what meets at the anchor; with the leader (anchor, end). None if none."""
+        (ax, ay), towards, distance = (float(leader[0][0]), float(leader[0][1])), *leader[1:]
+        dirs = np.array(_LEADER_DIRS)
+        if towards is not None and math.hypot(*towards) > 1e-12:
+            t = complex(towards[0], towards[1]) / math.hypot(*towards)
+            dirs = dirs[np.argsort(-(dirs.real * t.real + dirs.imag * t.imag), kind="stable")]
+        # the box's edge `ring` mm from the anchor along the direction
+        half = np.minimum(
+            (w / 2) / np.maximum(np.abs(dirs.real), 1e-9),
+            (h / 2 + drop / 2) / np.maximum(np.abs(dirs.imag), 1e-9),
+        )
+        ring = (distance + np.array(_LEADER_RINGS))[:, None]
+        cx = (ax + dirs.real * (ring + half)).ravel()
+        cy = (ay + dirs.imag * (ring + half) + drop / 2).ravel()
+        x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+        cost = self._label_cost(x0, y0, x1, y1) + self._obstacle_cost(x0, y0, x1, y1)
+        free = np.flatnonzero(cost <= 1e-9)
+        # each leader ends 0.4 mm short of its box's nearest point
+        px, py = np.clip(ax, x0[free], x1[free]), np.clip(ay, y0[free], y1[free])
+        length = np.hypot(px - ax, py - ay)
+        keep = length > _LEADER_START + 0.5
+        free, px, py, length = free[keep], px[keep], py[keep], length[keep]
+        if not free.size:
+            return None
+        ux, uy = (px - ax) / length, (py - ay) / length
+        ex, ey = px - 0.4 * ux, py - 0.4 * uy
+        clear = shapely.linestrings(
+            np.stack(
+                [
+                    np.c_[ax + _LEADER_START * ux, ay + _LEADER_START * uy],
+                    np.c_[ex, ey],
+                ],
+                axis=1,
+            )
+        )
+        crossed = self._crossings(clear)
+        if self.boxes:  # never through lettering
+            written = np.asarray(self.boxes, dtype=object)
+            near = STRtree(written).query(clear, predicate="dwithin", distance=self.clearance)
+            crossed[np.unique(near[0])] = np.iinfo(np.int64).max
+        # the first that crosses nothing, else the one that crosses fewest thin lines
+        for i in np.lexsort((np.arange(crossed.size), crossed)):
+            if crossed[i] > crossings:
+                break
+            if self._runs_along(clear[i]):
+                continue
+            k = free[i]
+            return (float(cx[k]), float(cy[k])), ((ax, ay), (float(ex[i]), float(ey[i])))
+        return None
+
+    def _crossings(self, lines: np.ndarray) -> np.ndarray:
+        """For each of `lines`, how many avoided lines it comes within the
+        clearance of (a solid shape, an arrowhead or a dot, or another leader,
+        counts as very many)."""
+        out = np.zeros(len(lines), dtype=np.int64)
+        if not self._obstacles or not len(lines):
+            return out
+        if self._tree is None:
+            self._tree = STRtree(self._obstacles)
+            self._reach = np.array(self._clearance)
+        near = self._tree.query(lines, predicate="dwithin", distance=float(self._reach.max()))
+        if not near.shape[1]:
+            return out
+        obstacles = np.asarray(self._obstacles, dtype=object)[near[1]]
+        hit = shapely.distance(lines[near[0]], obstacles) < self._reach[near[1]]
+        # a polygon (arrowhead, dot) or another leader: never
+        weight = np.where(shapely.get_type_id(obstacles) == 3, 10**6, 1)
+        weight[np.isin(near[1], list(self._leaders))] = 10**6
+        np.add.at(out, near[0][hit], weight[hit])
+        return out
+
+    def _runs_along(self, line: BaseGeometry) -> bool:
+        """True when a leader runs along a line (more than 10 mm within 3 mm of
+        it: it meets it at under 30°): it would read as part of it."""
+        if not self._obstacles:
+            return False
+        if self._tree is None:
+            self._tree = STRtree(self._obstacles)
+            self._reach = np.array(self._clearance)
+        near = self._tree.query(line, predicate="dwithin", distance=_LEADER_ALONG[0])
+        if not near.size:
+            return False
+        obstacles = np.asarray(self._obstacles, dtype=object)[near]
+        along = shapely.length(
+            shapely.intersection(line, shapely.buffer(obstacles, _LEADER_ALONG[0]))
+        )
+        return bool((along > _LEADER_ALONG[1]).any())
+
+    def _leader_to(
+        self, anchor: PointLike, x0: float, y0: float, x1: float, y1: float, longer: float
+    ) -> tuple[tuple[float, float], tuple[float, float]] | None:
+        """A leader from `anchor` to 0.4 mm short of the box, if the box is
+        more than `longer` mm away and the leader crosses nothing; else None."""
+        ax, ay = float(anchor[0]), float(anchor[1])
+        px, py = min(max(ax, x0), x1), min(max(ay, y0), y1)
+        length = math.hypot(px - ax, py - ay)
+        if length <= max(longer, _LEADER_START + 0.5):
+            return None
+        ux, uy = (px - ax) / length, (py - ay) / length
+        end = (px - 0.4 * ux, py - 0.4 * uy)
+        clear = LineString([(ax + _LEADER_START * ux, ay + _LEADER_START * uy), end])
+        if any(clear.distance(b) < self.clearance for b in self.boxes):
+            return None
+        if self._crossings(np.array([clear]))[0] or self._runs_along(clear):
+            return None
+        return (ax, ay), end
 
 
 def drawn_shapes(call: Call, backend: RecordingBackend) -> list[BaseGeometry]:

@@ -12,12 +12,19 @@ loads, reactions, the lever's moments and the balancing force by both methods.
 Forces on the mechanism, the groups and the lever are drawn to direction, not
 to scale (their lengths grow with the square root of the magnitude); the
 force polygons are to scale.
+
+Every drawing has its own scale from the standard series: first the finest
+at which all of them fit, then each enlarged a step at a time (the mechanism
+with its groups, the lever, each group, the polygons within their 150 …
+300 mm guide) while the sheet still packs and the lettering still finds room.
 """
 
 from __future__ import annotations
 
 import math
+import random
 import re
+import weakref
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -47,6 +54,8 @@ __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
 _TEXT = 3.5
 _TITLE = 5.0
 _PAD = 2.0
+# how many labels of a drawing found no free place (Labels.unsettled)
+_UNSETTLED: weakref.WeakKeyDictionary[Sketch, int] = weakref.WeakKeyDictionary()
 _ARROW = dict(head_length=3.5, head_width=1.2)
 _FAR_MM = 40.0  # a reaction applied farther than this from its group's points moves to them
 
@@ -72,6 +81,8 @@ class Sheet2:
     origins: dict[str, tuple[float, float]] = field(default_factory=dict)
     placed: dict[str, Rect] = field(default_factory=dict)
     arms: dict[str, list[tuple[str, float]]] = field(default_factory=dict)  # lever: label, h mm
+    # the most series steps any drawing is coarser than its textbook scale
+    # (negative: every drawing finer, enlarged to fill the sheet)
     shrink: int = 0
 
 
@@ -132,7 +143,7 @@ class _Drawing:
 
     def __init__(self, look: Any, state: PositionState, mu_l: float) -> None:
         self.sk = Sketch(look)
-        self.labels = Labels(self.sk, _TEXT)
+        self.labels = Labels(self.sk, _TEXT, spacing=None, leaders=True)
         self.state = state
         self.mu_l = mu_l
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
@@ -164,7 +175,7 @@ class _Drawing:
         self._arrows.append((at, end))
         self.sk.arrow(at, end, line, **_ARROW)  # type: ignore[arg-type]
         self.labels.avoid_line(at, end)
-        self.later(end, force_markup(label), u)
+        self.labels.later_arrow(at, end, force_markup(label))
 
     def moment(self, centre: np.ndarray, M: float, label: str, radius: float = 6.0) -> None:
         """A couple as an arc with its arrowhead in the sense of M (ccw positive)."""
@@ -286,6 +297,7 @@ class _Drawing:
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
         self.labels.write_later()
+        _UNSETTLED[self.sk] = self.labels.unsettled
         ext = self.sk.extent()
         y = ext.bottom - 5.0
         for note in notes:
@@ -445,7 +457,7 @@ def sketch_force_polygons(
     the textbook closes R54 inside the polygon of group 4-5; one that shares
     nothing is drawn beside it."""
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT)
+    labels = Labels(sk, _TEXT, spacing=None, leaders=True)
     drawn: dict[tuple[str, int, int], bool] = {}
     short: list[str] = []
     offset = np.zeros(2)
@@ -520,6 +532,7 @@ def sketch_force_polygons(
         for centre, caption in captions:
             labels.later(centre, caption, None)
         labels.write_later()
+        _UNSETTLED[sk] = labels.unsettled
         ext = sk.extent()
         y = ext.bottom - 5.0
         for poly in polygons:
@@ -547,7 +560,7 @@ def sketch_lever(
     lever = fa.lever
     mech = fa.loads.state.mech
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT)
+    labels = Labels(sk, _TEXT, spacing=None, leaders=True)
     img = {n: np.asarray(v, float) / mu_V for n, v in lever.images.items()}
     dotted: set[str] = set()  # images of S_i and K_i marked with a dot
     with sk.group("zhukovsky-lever", "lever"):
@@ -614,10 +627,11 @@ def sketch_lever(
             labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
         for start, end, names in drawn:
             sk.arrow(start, end, "main", **_ARROW)  # type: ignore[arg-type]
-            labels.later(end, ", ".join(force_markup(n) for n in names), unit_vector(end - start))
+            labels.later_arrow(start, end, ", ".join(force_markup(n) for n in names))
         for foot, numbers in feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}")
         labels.write_later()
+        _UNSETTLED[sk] = labels.unsettled
         ext = sk.extent()
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
         sk.rich_text(
@@ -796,7 +810,8 @@ def guide_side(polygons: Sequence[ForcePolygon]) -> float:
 
 def _force_scale(polygons: Sequence[ForcePolygon], steps: int = 0) -> float:
     """μF so that the guide's side (guide_side) is 150 … 300 mm, `steps` series
-    values coarser to fit the sheet, but never so coarse that F_PR falls under 150 mm."""
+    values coarser to fit the sheet (finer, negative, to fill it), but never so
+    coarse that F_PR falls under 150 mm."""
     side = guide_side(polygons)
     if side <= 0:
         return 1.0
@@ -804,10 +819,10 @@ def _force_scale(polygons: Sequence[ForcePolygon], steps: int = 0) -> float:
     if not any(v.label.startswith("F_PR") for p in polygons for v in p.vectors):
         # the guide is the production resistance's: the other groups' polygons
         # may go coarser with the rest of the sheet
-        return scale_step(mu, max(0, steps))
+        return scale_step(mu, steps)
     limit = side / FORCE_PLAN.low
     coarsest = max(series(mu, limit), default=mu) if limit >= mu else mu
-    return min(scale_step(mu, max(0, steps)), coarsest)
+    return min(scale_step(mu, steps), coarsest)
 
 
 # indices of the textbook's symbols that differ by language
@@ -838,55 +853,292 @@ def _with_note(sketch: Sketch, note: str) -> Sketch:
     return out
 
 
-def _sketch_all(
-    fa: ForceAnalysis,
-    solution: Solution,
-    look: Any,
-    lang: Language,
-    shrink: int,
-    cache: dict[tuple[str, float], Any],
-) -> tuple[dict[str, Sketch], dict[str, float], list[tuple[str, float]]]:
-    """Every drawing but the loaded mechanism at `shrink` series steps from its
-    textbook scale; `cache` keeps a drawing made at a scale for the next try."""
+def _pack(
+    page: Page,
+    items: Sequence[tuple[str, float, float, str]],
+    gap: float,
+    placed: dict[str, Rect] | None = None,
+) -> dict[str, Rect] | None:
+    """Rectangles for (name, width, height, corner) in turn, as SheetLayout.place
+    finds them (inside the frame less 5 mm, `gap` mm from the title block, from
+    those `placed` before and from each other, the candidate nearest the
+    corner, rows first), computed on arrays: None when one finds no room."""
+    layout = SheetLayout(page, gap=gap)
+    region = layout.region
+    tb = layout["title-block"].bounds
+    boxes = [(tb.left, tb.bottom, tb.right, tb.top)]
+    boxes += [(r.left, r.bottom, r.right, r.top) for r in (placed or {}).values()]
+    out: dict[str, Rect] = dict(placed or {})
+    eps = 1e-9
+    for name, w, h, corner in items:
+        b = np.array(boxes)
+        xs = np.concatenate([[region.left, region.right - w], b[:, 2] + gap, b[:, 0] - gap - w])
+        ys = np.concatenate([[region.bottom, region.top - h], b[:, 3] + gap, b[:, 1] - gap - h])
+        xs = np.unique(xs[(xs >= region.left - eps) & (xs <= region.right - w + eps)])
+        ys = np.unique(ys[(ys >= region.bottom - eps) & (ys <= region.top - h + eps)])
+        if not xs.size or not ys.size:
+            return None
+        X, Y = (a.ravel() for a in np.meshgrid(xs, ys))
+        # the gap between each candidate and each box (0 where they overlap)
+        dx = np.maximum(b[None, :, 0] - (X[:, None] + w), X[:, None] - b[None, :, 2])
+        dy = np.maximum(b[None, :, 1] - (Y[:, None] + h), Y[:, None] - b[None, :, 3])
+        dist = np.hypot(np.clip(dx, 0, None), np.clip(dy, 0, None))
+        clash = (dist < gap - 1e-9).any(axis=1) if gap > 0 else ((dx < 0) & (dy < 0)).any(axis=1)
+        ok = np.flatnonzero(~clash)
+        if not ok.size:
+            return None
+        sy = -Y[ok] if corner.startswith("top") else Y[ok]
+        sx = X[ok] if corner.endswith("left") else -X[ok]
+        k = ok[np.lexsort((sx, sy))[0]]
+        out[name] = Rect(float(X[k]), float(Y[k]), w, h)
+        boxes.append((float(X[k]), float(Y[k]), float(X[k]) + w, float(Y[k]) + h))
+    return out
 
-    def memo(name: str, mu: float, make: Any) -> Any:
-        if (name, mu) not in cache:
-            cache[(name, mu)] = make()
-        return cache[(name, mu)]
 
-    def groups_at(mu_g: float) -> dict[str, Sketch]:
-        arm_names: list[str] = []  # the arms are numbered on through the groups
-        out = {
-            f"group-{g.name}": sketch_group(fa, g, mu_g, look, lang, arm_names) for g in fa.groups
-        }
-        out["driving-link"] = sketch_driving_link(fa, mu_g, look, lang)
+_LEVER_MAX = 250.0  # mm: the longest pa the lever is enlarged to
+_ORDERS = 16  # orders of the drawings tried beyond the textbook's and by size
+_PARTS_FINER = 1  # series steps a group may be drawn larger or smaller than the loaded mechanism
+_FINEST = -6  # series steps finer than its textbook scale a drawing may go
+
+
+class _Composer:
+    """The drawings of sheet 2 at scales given as series steps from the
+    textbook's, each drawing made once per scale, and their layout."""
+
+    def __init__(
+        self, fa: ForceAnalysis, solution: Solution, look: Any, lang: Language, page: Page
+    ) -> None:
+        self.fa, self.look, self.lang, self.page = fa, look, lang, page
+        self.mu0 = float(solution.mu_l)
+        self.cache: dict[tuple[Any, ...], Any] = {}
+        self._extents: dict[int, Rect] = {}
+        dl = fa.driving_link
+        self.polygon_sets: list[tuple[str, Sequence[ForcePolygon], str]] = [
+            *((g.name, g.polygons, f"group {g.name}") for g in fa.groups),
+            (str(dl.link), (dl.polygon,), f"link {dl.link}"),
+        ]
+        self.tables = ["table-balancing", "table-reactions", "table-loads", "table-lever"]
+        self.drawings = ["force-mechanism", "zhukovsky-lever"]
+        for g in fa.groups:
+            self.drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
+        self.drawings += ["driving-link", f"force-polygon-{dl.link}"]
+        self.last: Exception | None = None
+
+    def extent(self, sketch: Sketch) -> Rect:
+        if id(sketch) not in self._extents:
+            self._extents[id(sketch)] = sketch.extent()
+        return self._extents[id(sketch)]
+
+    def memo(self, key: tuple[Any, ...], make: Any) -> Any:
+        if key not in self.cache:
+            self.cache[key] = make()
+        return self.cache[key]
+
+    def scales(self, steps: dict[str, int]) -> dict[str, float]:
+        """μ of every drawing at `steps` series steps from its textbook scale
+        (negative: finer, the drawing larger)."""
+        out: dict[str, float] = {}
+        for g in self.fa.groups:
+            out[f"mu_l {g.name}"] = length_scale_step(self.mu0, steps[f"group {g.name}"])
+        out[f"mu_l {self.fa.driving_link.link}"] = length_scale_step(self.mu0, steps["driving"])
+        for name, polygons, _ in self.polygon_sets:
+            out[f"mu_F {name}"] = _force_scale(polygons, steps[f"poly {name}"])
+        out["mu_V"] = scale_step(scale_for(self.fa.lever.pa, VELOCITY_PLAN), steps["lever"])
+        out["mu_l"] = length_scale_step(self.mu0, steps["mech"])
         return out
 
-    mu_g = length_scale_step(float(solution.mu_l), shrink)
-    scales: dict[str, float] = {"mu_l_groups": mu_g}
-    sketches: dict[str, Sketch] = dict(memo("groups", mu_g, lambda: groups_at(mu_g)))
-    dl = fa.driving_link
-    for name, polygons, title in [
-        *((g.name, g.polygons, f"group {g.name}") for g in fa.groups),
-        (str(dl.link), (dl.polygon,), f"link {dl.link}"),
-    ]:
-        mu_F = _force_scale(polygons, shrink)
-        scales[f"mu_F {name}"] = mu_F
-        gid = f"force-polygon-{name}"
-        sketches[gid] = memo(
-            gid, mu_F, lambda: sketch_force_polygons(polygons, mu_F, look, lang, gid, title)
+    def sketches(
+        self, scales: dict[str, float]
+    ) -> tuple[dict[str, Sketch], list[tuple[str, float]]]:
+        fa, look, lang = self.fa, self.look, self.lang
+        mu_l, mu_V = scales["mu_l"], scales["mu_V"]
+
+        group_mu = tuple(scales[f"mu_l {g.name}"] for g in fa.groups)
+        mu_d = scales[f"mu_l {fa.driving_link.link}"]
+
+        def group_at(g: Any, mu: float, before: tuple[str, ...]) -> tuple[Sketch, tuple[str, ...]]:
+            """A group's drawing, its arms numbered on from those of the groups before."""
+            names = list(before)
+            sketch = sketch_group(fa, g, mu, look, lang, names)
+            return sketch, tuple(names)
+
+        def noted(plain: Sketch, mu_g: float) -> Sketch:
+            if math.isclose(mu_l, mu_g, rel_tol=1e-9):
+                return plain
+            other = _words(lang)["other_scale"].format(
+                scale=scale_label(mu_l, "length", lang).markup()
+            )
+            return self.memo(("noted", id(plain), mu_l), lambda: _with_note(plain, other))
+
+        sketches: dict[str, Sketch] = {}
+        arm_names: tuple[str, ...] = ()  # the arms are numbered on through the groups
+        for g, mu in zip(fa.groups, group_mu):
+            before = arm_names
+            plain, arm_names = self.memo(
+                ("group", g.name, mu, before), lambda: group_at(g, mu, before)
+            )
+            sketches[f"group-{g.name}"] = noted(plain, mu)
+        driving = self.memo(
+            ("driving-link", mu_d), lambda: sketch_driving_link(fa, mu_d, look, lang)
         )
-    mu_V = scale_step(scale_for(fa.lever.pa, VELOCITY_PLAN), max(0, shrink))
-    scales["mu_V"] = mu_V
+        sketches["driving-link"] = noted(driving, mu_d)
+        for name, polygons, title in self.polygon_sets:
+            mu_F = scales[f"mu_F {name}"]
+            gid = f"force-polygon-{name}"
+            sketches[gid] = self.memo(
+                (gid, mu_F),
+                lambda: sketch_force_polygons(polygons, mu_F, look, lang, gid, title),
+            )
 
-    def lever() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
-        arms: list[tuple[str, float]] = []
-        sketch = sketch_lever(fa, mu_V, look, lang, arms)
-        return sketch, arms, _sketch_tables(fa, arms, look, lang)
+        def lever() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
+            arms: list[tuple[str, float]] = []
+            sketch = sketch_lever(fa, mu_V, look, lang, arms)
+            return sketch, arms, _sketch_tables(fa, arms, look, lang)
 
-    sketches["zhukovsky-lever"], arms, tables = memo("lever", mu_V, lever)
-    sketches.update(tables)
-    return sketches, scales, arms
+        sketches["zhukovsky-lever"], arms, tables = self.memo(("lever", mu_V), lever)
+        sketches.update(tables)
+        sketches["force-mechanism"], sketches["table-loads"] = self.memo(
+            ("force-mechanism", mu_l),
+            lambda: (
+                sketch_loaded_mechanism(fa, mu_l, look, lang),
+                sketch_loads_table(fa, mu_l, look, lang),
+            ),
+        )
+        return sketches, arms
+
+    def arrange(self, sketches: dict[str, Sketch]) -> tuple[SheetLayout, dict[str, Rect]] | None:
+        """The loaded mechanism top left, the tables top right, the drawings
+        from the top left: in the textbook's order first, then the largest, tallest, widest first (which
+        may pack tighter), then in other orders; None if nothing fits."""
+        drawings = self.drawings
+        size = {n: self.extent(sketches[n]) for n in (*self.tables, *drawings)}
+        orders = [(8.0, drawings), (5.0, drawings)]
+        for by in (
+            lambda n: -size[n].width * size[n].height,
+            lambda n: -size[n].height,
+            lambda n: -size[n].width,
+        ):
+            orders.append((5.0, [drawings[0], *sorted(drawings[1:], key=by)]))
+        # then other orders, the same on every run: a larger drawing may fit in one
+        shuffle = random.Random(len(drawings))
+        for _ in range(_ORDERS):
+            orders.append((5.0, [drawings[0], *shuffle.sample(drawings[1:], len(drawings) - 1)]))
+        field = self.page.frame.inset(5.0)
+        if sum(r.width * r.height for r in size.values()) > field.width * field.height:
+            return None
+        tables = [(n, size[n].width, size[n].height, "top-right") for n in self.tables]
+        first = (drawings[0], size[drawings[0]].width, size[drawings[0]].height, "top-left")
+        for gap, order in orders:
+            rest = [(n, size[n].width, size[n].height, "top-left") for n in order[1:]]
+            # the loaded mechanism top left, the tables top right beside it; else
+            # the tables first (the same in every order) and the mechanism under them
+            for head in ([first, *tables], [*tables, first]):
+                placed = self.memo(("head", gap, *head), lambda: _pack(self.page, head, gap))
+                if placed is not None:
+                    placed = _pack(self.page, rest, gap, placed)
+                if placed is not None:
+                    break
+            if placed is None:
+                continue
+            layout = SheetLayout(self.page, gap=gap)
+            for name in (*self.tables, *order):
+                layout.register(name, placed[name], "table" if name in self.tables else "drawing")
+            return layout, placed
+        self.last = LayoutError(
+            "no room for the drawings at their coarsest scales "
+            + ", ".join(f"{n} {size[n].width:.0f} x {size[n].height:.0f} mm" for n in drawings)
+        )
+        return None
+
+    def fits(self, steps: dict[str, int]) -> bool:
+        key = ("fits", tuple(sorted(steps.items())))
+        if key not in self.cache:
+            scales = self.scales(steps)
+            self.cache[key] = self.arrange(self.sketches(scales)[0]) is not None
+        return bool(self.cache[key])
+
+    def unsettled(self, steps: dict[str, int]) -> int:
+        """How many labels of the drawings at `steps` found no free place."""
+        sketches = self.sketches(self.scales(steps))[0]
+        return sum(_UNSETTLED.get(sketches[n], 0) for n in self.drawings)
+
+    def first_fit(self) -> dict[str, int] | None:
+        """Scales from the finest that fits: every drawing `shrink` series
+        steps from its textbook scale, the loaded mechanism up to two steps
+        finer still (the groups then a step from it), the lever and the polygons never finer than the
+        textbook's. Where some lettering then finds no free place, the next
+        two coarser steps are tried as well for a sheet where more of it does."""
+        found: list[dict[str, int]] = []
+        for shrink in range(-2, 6):
+            if found and shrink > max(v for k, v in found[0].items() if k != "mech") + 2:
+                break
+            for bigger in range(max(2, shrink + 2), -1, -1):
+                mech = shrink - bigger
+                parts = min(shrink, mech + _PARTS_FINER)  # the groups near the mechanism's scale
+                steps = {"mech": mech, "lever": max(0, shrink)}
+                steps.update({f"group {g.name}": parts for g in self.fa.groups})
+                steps["driving"] = parts
+                steps.update({f"poly {name}": max(0, shrink) for name, _, _ in self.polygon_sets})
+                if self.fits(steps):
+                    found.append(steps)
+                    break
+            if found and self.unsettled(found[0]) == 0:
+                break
+        return min(found, key=self.unsettled) if found else None
+
+    def fill(self, steps: dict[str, int]) -> dict[str, int]:
+        """Enlarge the drawings a series step at a time while the sheet has
+        room: the mechanism with its groups, the mechanism, the lever, the
+        groups, each alone, the force polygons within their guide; a kind that
+        no longer fits is not tried again."""
+        polys = [f"poly {name}" for name, _, _ in self.polygon_sets]
+        groups = [f"group {g.name}" for g in self.fa.groups]
+        kinds: list[list[str]] = [
+            ["mech", *groups, "driving"],
+            [*groups, "driving"],
+            ["lever"],
+            ["mech"],
+            *([k] for k in groups),
+            ["driving"],
+            polys,
+            *([k] for k in polys),
+        ]
+        while kinds:
+            for kind in list(kinds):
+                # larger only where it fits and its lettering finds room as well
+                # as before (one step further where it does not, the next does)
+                for by in (1, 2):
+                    trial = dict(steps)
+                    for k in kind:
+                        trial[k] -= by
+                    if not self._allowed(trial) or not self.fits(trial):
+                        kinds.remove(kind)
+                        break
+                    if self.unsettled(trial) <= self.unsettled(steps):
+                        steps = trial
+                        break
+                else:
+                    kinds.remove(kind)
+        return steps
+
+    def _allowed(self, steps: dict[str, int]) -> bool:
+        if min(v for k, v in steps.items() if not k.startswith(("poly", "lever"))) < _FINEST:
+            return False
+        parts = [v for k, v in steps.items() if k.startswith(("group", "driving"))]
+        if (
+            not steps["mech"] - _PARTS_FINER
+            <= min(parts)
+            <= max(parts)
+            <= steps["mech"] + _PARTS_FINER
+        ):
+            return False
+        for name, polygons, _ in self.polygon_sets:
+            # a polygon enlarged no further than the guide's 300 mm
+            mu_F = _force_scale(polygons, steps[f"poly {name}"])
+            if steps[f"poly {name}"] < 0 and guide_side(polygons) / mu_F > FORCE_PLAN.high:
+                return False
+        mu_V = scale_step(scale_for(self.fa.lever.pa, VELOCITY_PLAN), steps["lever"])
+        return steps["lever"] >= 0 or self.fa.lever.pa / mu_V <= _LEVER_MAX
 
 
 def compose_sheet2(
@@ -898,67 +1150,29 @@ def compose_sheet2(
     forces: ForceAnalysis | None = None,
 ) -> Sheet2:
     """Draw sheet 2 of `solution` on `backend`: the force solution at its force
-    position (computed here unless `forces` is given)."""
+    position (computed here unless `forces` is given). The drawings take the
+    finest scales at which they fit, then grow while the sheet has room."""
     page = page if page is not None else Page.of("A1")
     check_language(lang)
     fa = forces if forces is not None else solution.require_forces()
-    last: Exception | None = None
-    cache: dict[tuple[str, float], Any] = {}
-    tables = ["table-balancing", "table-reactions", "table-loads", "table-lever"]
-    drawings = ["force-mechanism", "zhukovsky-lever"]
-    for g in fa.groups:
-        drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
-    drawings += ["driving-link", f"force-polygon-{fa.driving_link.link}"]
-    # Scales from the finest that fits: every drawing `shrink` series steps
-    # from its textbook scale, the loaded mechanism up to two steps finer still.
-    for shrink in range(-2, 6):
-        sketches, scales, arms = _sketch_all(fa, solution, backend.look, lang, shrink, cache)
-        for bigger in range(max(2, shrink + 2), -1, -1):
-            mu_l = length_scale_step(float(solution.mu_l), shrink - bigger)
-            if ("force-mechanism", mu_l) not in cache:
-                cache[("force-mechanism", mu_l)] = (
-                    sketch_loaded_mechanism(fa, mu_l, backend.look, lang),
-                    sketch_loads_table(fa, mu_l, backend.look, lang),
-                )
-            sketches["force-mechanism"], sketches["table-loads"] = cache[("force-mechanism", mu_l)]
-            scales["mu_l"] = mu_l
-            plain = cache[("groups", scales["mu_l_groups"])]
-            for gid in [*(f"group-{g.name}" for g in fa.groups), "driving-link"]:
-                sketches[gid] = plain[gid]
-                if not math.isclose(mu_l, scales["mu_l_groups"], rel_tol=1e-9):
-                    other = _words(lang)["other_scale"].format(
-                        scale=scale_label(mu_l, "length", lang).markup()
-                    )
-                    sketches[gid] = _with_note(plain[gid], other)
-            # the textbook's order first; then the largest first, which packs tighter
-            largest_first = [drawings[0]] + sorted(
-                drawings[1:],
-                key=lambda n: -sketches[n].extent().width * sketches[n].extent().height,
-            )
-            for gap, order in ((8.0, drawings), (5.0, drawings), (5.0, largest_first)):
-                layout = SheetLayout(page, gap=gap)
-                placed: dict[str, Rect] = {}
-                try:
-                    for name in tables:
-                        ext = sketches[name].extent()
-                        placed[name] = layout.place(
-                            name, ext.width, ext.height, kind="table", corner="top-right"
-                        )
-                    for name in order:
-                        ext = sketches[name].extent()
-                        placed[name] = layout.place(name, ext.width, ext.height, corner="top-left")
-                except LayoutError as err:
-                    last = err
-                    continue
-                result = Sheet2(fa, layout, dict(scales), shrink=shrink, arms={"lever": arms})
-                for name in tables + drawings:
-                    ext, rect = sketches[name].extent(), placed[name]
-                    dx, dy = rect.x - ext.x, rect.y - ext.y
-                    _translated(sketches[name], lang).replay(backend, dx, dy)
-                    result.origins[name] = (dx, dy)
-                    result.placed[name] = rect
-                fields = title_fields(solution, mu_l, lang)
-                fields["sheet"] = "2"
-                draw_page(backend, page, fields, lang)
-                return result
-    raise LayoutError(f"sheet 2 does not fit on {page.name or 'the page'}: {last}")
+    composer = _Composer(fa, solution, backend.look, lang, page)
+    steps = composer.first_fit()
+    if steps is None:
+        raise LayoutError(f"sheet 2 does not fit on {page.name or 'the page'}: {composer.last}")
+    steps = composer.fill(steps)
+    scales = composer.scales(steps)
+    sketches, arms = composer.sketches(scales)
+    arranged = composer.arrange(sketches)
+    assert arranged is not None  # it fitted before
+    layout, placed = arranged
+    result = Sheet2(fa, layout, dict(scales), shrink=max(steps.values()), arms={"lever": arms})
+    for name in composer.tables + composer.drawings:
+        ext, rect = composer.extent(sketches[name]), placed[name]
+        dx, dy = rect.x - ext.x, rect.y - ext.y
+        _translated(sketches[name], lang).replay(backend, dx, dy)
+        result.origins[name] = (dx, dy)
+        result.placed[name] = rect
+    fields = title_fields(solution, scales["mu_l"], lang)
+    fields["sheet"] = "2"
+    draw_page(backend, page, fields, lang)
+    return result
