@@ -16,7 +16,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..drawing.markup import image_markup
-from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for
 from . import sources as src
 from .writer import Writer, sub
 
@@ -155,11 +154,12 @@ def loads(wr: Writer, fa: ForceAnalysis) -> None:
             continue
         F = float(np.hypot(*ll.inertia_force))
         MI, FI = f"abs({L}['{lid}']['M_in'])", f"hyp({L}['{lid}']['F_in'])"
-        H, HMM = f"{L}['{lid}']['h']", f"{L}['{lid}']['h_mm']"
+        H = f"{L}['{lid}']['h']"
+        mu_l, ML = wr.drawn.loaded()
         wr.eq(
             f"h_{{F{lid}}} = M_{{in{lid}}}/F_{{in{lid}}} = {wr.v(abs(ll.inertia_moment), MI)}/"
             f"{wr.v(F, FI)} = {wr.v(sh.arm, H)} {u['m']}; |h_{{F{lid}}}| = h_{{F{lid}}}/μ_l = "
-            f"{wr.v(sh.arm, H)}/{wr.v(float(a.mu_l), 'S.mu_l')} = {wr.v(sh.arm_mm or 0.0, HMM)} "
+            f"{wr.v(sh.arm, H)}/{wr.v(mu_l, ML)} = {wr.v(sh.arm / mu_l, f'{H}/{ML}')} "
             f"{u['mm']}"
         )
         wr.text(w["shift_side"].format(lid=lid))
@@ -199,12 +199,19 @@ def _terms(
 
 
 def _moment_terms(
-    wr: Writer, fa: ForceAnalysis, terms, P: np.ndarray, P_src: str, about: str
+    wr: Writer,
+    fa: ForceAnalysis,
+    terms,
+    P: np.ndarray,
+    P_src: str,
+    about: str,
+    scale: tuple[float, str],
 ) -> tuple[float, list[str]]:
-    """Write M_P of each term as F·h (h in m and in mm of the drawing); the sum
-    and the terms (markup, with numbers) for the equation."""
+    """Write M_P of each term as F·h (h in m and in mm of the drawing at
+    `scale`, the sheet's μ_l of it, with its source); the sum and the terms
+    (markup, with numbers) for the equation."""
     u = wr.u
-    mu_l = float(wr.solution.mu_l)
+    mu_l, ML = scale
     total, parts = 0.0, list[str]()
     for label, force, point, couple, s in terms:
         r = np.asarray(point) - P
@@ -219,8 +226,8 @@ def _moment_terms(
             FS = f"hyp({s}[1])"
             hn = f"h_{{{len(parts) + 1}}}"
             wr.eq(
-                f"{hn} = {wr.v(h / mu_l, f'{HS}/S.mu_l')} {u['mm']}·μ_l = "
-                f"{wr.vp(h / mu_l, f'{HS}/S.mu_l')}·{wr.v(mu_l, 'S.mu_l')} = {wr.v(h, HS)} {u['m']}; "
+                f"{hn} = {wr.v(h / mu_l, f'{HS}/{ML}')} {u['mm']}·μ_l = "
+                f"{wr.vp(h / mu_l, f'{HS}/{ML}')}·{wr.v(mu_l, ML)} = {wr.v(h, HS)} {u['m']}; "
                 f"M_{sub(about)}({name}) = {name}·{hn} = {wr.v(F, FS)}·{wr.vp(h, HS)} = "
                 f"{wr.v(M, MS)} {u['Nm']}"
             )
@@ -263,7 +270,7 @@ def group(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, step: str) -> N
             )
         )
         terms = _terms(wr, fa, g.free_bodies[lid], own, f"F.groups[{j}].free_bodies[{lid}]")
-        total, parts = _moment_terms(wr, fa, terms, P, P_src, B)
+        total, parts = _moment_terms(wr, fa, terms, P, P_src, B, wr.drawn.group(g.name))
         RT = f"J['forces']['reaction_details'][{r.name!r}]['components'][{comp.label!r}]"
         sum_src = "+".join(f"moment({t[4]}, {P_src})" for t in terms) or "0"
         Rt = force_markup(comp.label)
@@ -278,11 +285,12 @@ def group(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, step: str) -> N
         _slot_reaction(wr, fa, j, g, own)
     if g.kind in ("PRP", "RPP"):
         _guide_reactions(wr, j, g)
+    mu_f = wr.drawn.force(f"group {g.name}", g.polygons, f"F.groups[{j}].polygons")
     for p_ix, poly in enumerate(g.polygons):
-        _polygon(wr, poly, f"F.groups[{j}].polygons[{p_ix}]", p_ix == 0)
+        _polygon(wr, poly, f"F.groups[{j}].polygons[{p_ix}]", p_ix == 0, mu_f)
     wr.text(w["found_R"])
     for r in g.reactions:
-        _reaction_line(wr, r, _mu_f(g.polygons), f"mu_F(F.groups[{j}].polygons)")
+        _reaction_line(wr, r, *mu_f)
     _guide_points(wr, fa, j, g, own)
 
 
@@ -301,16 +309,16 @@ def _slot_reaction(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: s
     name = force_markup(r.name)
     wr.text(w["slot_eq"].format(R=name, C=C, lid=lid, n=force_markup(outer.name)))
     terms = _terms(wr, fa, g.free_bodies[lid], own, f"F.groups[{j}].free_bodies[{lid}]")
-    total, parts = _moment_terms(wr, fa, terms, P, P_src, C)
+    total, parts = _moment_terms(wr, fa, terms, P, P_src, C, wr.drawn.group(g.name))
     D = f"J['forces']['reaction_details'][{r.name!r}]"
     N_src = f"{D}['components'][{comp.label!r}]"
     rp = np.asarray(r.point) - P
     h = float(rp[0] * comp.direction[1] - rp[1] * comp.direction[0])
     H = f"moment(({D}['point'], J['forces']['reactions'][{r.name!r}], 0), {P_src})/{N_src}"
-    mu_l = float(a.mu_l)
+    mu_l, ML = wr.drawn.group(g.name)
     hn = f"h_{{{len(parts) + 1}}}"
     wr.eq(
-        f"{hn} = {wr.v(h / mu_l, f'{H}/S.mu_l')} {u['mm']}·μ_l = {wr.v(h, H)} {u['m']} "
+        f"{hn} = {wr.v(h / mu_l, f'({H})/{ML}')} {u['mm']}·μ_l = {wr.v(h, H)} {u['m']} "
         + w["slot_arm"].format(R=name)
     )
     sum_src = "+".join(f"moment({t[4]}, {P_src})" for t in terms) or "0"
@@ -387,7 +395,8 @@ def _guide_points(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: se
     known by then)."""
     w, u, a = wr.w, wr.u, wr.solution
     fp = fa.index if fa.index is not None else a.force_position
-    mu_l = float(a.mu_l)
+    scale = wr.drawn.group(g.name)
+    mu_l, ML = scale
     # RPP: the inner reaction is placed from the first link, then known on the second
     order = sorted(
         (r for r in g.reactions if r.kind == "P" and not r.couple and r.magnitude > 0),
@@ -414,7 +423,7 @@ def _guide_points(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: se
         base = f"F.groups[{j}].free_bodies[{lid}]"
         terms = _terms(wr, fa, g.free_bodies[lid], skip, base)
         terms = [t for t in terms if np.hypot(*(np.asarray(t[2]) - P)) > 1e-12 or t[3]]
-        total, parts = _moment_terms(wr, fa, terms, P, P_src, P_name)
+        total, parts = _moment_terms(wr, fa, terms, P, P_src, P_name, scale)
         n = np.asarray(comp.direction, dtype=float)
         rp = np.asarray(r.point, dtype=float) - P
         h = float(rp[0] * n[1] - rp[1] * n[0])
@@ -428,20 +437,21 @@ def _guide_points(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: se
         wr.eq(f"ΣM_{sub(P_name)}({lid}) = {lhs} = 0;")
         wr.eq(
             f"{hn} = -ΣM_{sub(P_name)}/{name} = {wr.neg(total, sum_src)}/{wr.vp(value, N_src)} = "
-            f"{wr.v(h, H)} {u['m']}; {hn}/μ_l = {wr.vp(h, H)}/{wr.v(mu_l, 'S.mu_l')} = "
-            f"{wr.v(h / mu_l, f'({H})/S.mu_l')} {u['mm']}"
+            f"{wr.v(h, H)} {u['m']}; {hn}/μ_l = {wr.vp(h, H)}/{wr.v(mu_l, ML)} = "
+            f"{wr.v(h / mu_l, f'({H})/{ML}')} {u['mm']}"
         )
 
 
-def _mu_f(polygons: tuple[ForcePolygon, ...]) -> float:
-    largest = max((p.largest for p in polygons), default=0.0)
-    return scale_for(largest, FORCE_PLAN) if largest > 0 else 1.0
-
-
 def _polygon(
-    wr: Writer, poly: ForcePolygon, base: str, first: bool, head: str | None = None
+    wr: Writer,
+    poly: ForcePolygon,
+    base: str,
+    first: bool,
+    scale: tuple[float, str],
+    head: str | None = None,
 ) -> None:
-    """The vector equation (the polygon's order) and every side as F/μ_F = mm."""
+    """The vector equation (the polygon's order) and every side as F/μ_F = mm,
+    μ_F (`scale`, with its source) the one sheet 2 draws the polygon at."""
     w, u = wr.w, wr.u
     wr.text(head or w["link_eq"].format(title=_title(wr, poly)))
     wr.eq(equation_markup(poly.equation))
@@ -450,8 +460,7 @@ def _polygon(
         wr.text(w["unknown"].format(names=", ".join(unknown)))
     if not first:
         return
-    mu = scale_for(poly.largest, FORCE_PLAN) if poly.largest > 0 else 1.0
-    MU = f"scale_for({base}.largest, FORCE_PLAN)"
+    mu, MU = scale
     wr.text(w["mu_F"])
     wr.eq(
         f"μ_F = F_{{max}}/|F_{{max}}| = {wr.v(poly.largest, f'{base}.largest')}/"
@@ -514,7 +523,7 @@ def driving_link(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     wr.text(w["driver_loads"].format(d=dl.link, A=dl.pin, O=O, R=", ".join(passed)))
     skip = {"F_bal", dl.reaction.name}
     terms = _terms(wr, fa, dl.free_body, skip, "F.driving_link.free_body")
-    total, parts = _moment_terms(wr, fa, terms, P, P_src, O)
+    total, parts = _moment_terms(wr, fa, terms, P, P_src, O, wr.drawn.driving())
     sum_src = "+".join(f"moment({t[4]}, {P_src})" for t in terms) or "0"
     s = 1.0 if mech.drive.sense == "ccw" else -1.0
     OA = mech.crank_length
@@ -536,9 +545,10 @@ def driving_link(wr: Writer, fa: ForceAnalysis, step: str) -> None:
         f"{wr.v(dl.balancing_moment, MB)} {u['Nm']}"
     )
     head = w["link_eq"].format(title=_title(wr, dl.polygon))
-    _polygon(wr, dl.polygon, "F.driving_link.polygon", True, head)
+    mu_f = wr.drawn.force(f"link {dl.link}", (dl.polygon,), "(F.driving_link.polygon,)")
+    _polygon(wr, dl.polygon, "F.driving_link.polygon", True, mu_f, head)
     wr.text(w["R01"].format(O=O, d=dl.link))
-    _reaction_line(wr, dl.reaction, _mu_f((dl.polygon,)), "mu_F((F.driving_link.polygon,))")
+    _reaction_line(wr, dl.reaction, *mu_f)
 
 
 def reactions(wr: Writer, fa: ForceAnalysis, step: str) -> None:
@@ -563,8 +573,7 @@ def reactions(wr: Writer, fa: ForceAnalysis, step: str) -> None:
 def lever(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     w, u = wr.w, wr.u
     lv = fa.lever
-    mu_v = scale_for(lv.pa, VELOCITY_PLAN)
-    MV = "scale_for(F.lever.pa, VELOCITY_PLAN)"
+    mu_v, MV = wr.drawn.lever(lv.pa)
     _step(wr, step, w["lever"])
     s = 1.0 if wr.mech.drive.sense == "ccw" else -1.0
     wr.text(w["lever_text"].format(turn=w["against"]))

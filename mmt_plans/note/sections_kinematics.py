@@ -15,7 +15,6 @@ import numpy as np
 
 from ..drawing.markup import image_markup
 from ..errors import MmtError
-from ..scales import ACCELERATION_PLAN, VELOCITY_PLAN, scale_for
 from . import sources as src
 from .writer import Writer, sub
 
@@ -80,12 +79,12 @@ def positions(wr: Writer) -> None:
     a, w, u = wr.solution, wr.w, wr.u
     wr.heading("1.2")
     l_oa = wr.mech.crank_length
-    mu_l = float(a.mu_l)
+    mu_l, ML = wr.drawn.mechanism()
     oa = l_oa / mu_l
-    wr.text(w["mu_l"].format(oa=wr.v(oa, "M.crank_length/S.mu_l")))
+    wr.text(w["mu_l"].format(oa=wr.v(oa, f"M.crank_length/{ML}")))
     wr.eq(
-        f"μ_l = l_{{OA}}/OA = {wr.v(l_oa, 'M.crank_length')}/{wr.v(oa, 'M.crank_length/S.mu_l')}"
-        f" = {wr.v(mu_l, 'S.mu_l')} {u['m/mm']}"
+        f"μ_l = l_{{OA}}/OA = {wr.v(l_oa, 'M.crank_length')}/{wr.v(oa, f'M.crank_length/{ML}')}"
+        f" = {wr.v(mu_l, ML)} {u['m/mm']}"
     )
     if a.extremes is None:
         wr.problem(w["no_extremes"].format(out=wr.mech.study.output))
@@ -128,26 +127,18 @@ def positions(wr: Writer) -> None:
 
 
 # --- scales of the plans ---------------------------------------------------------------------
-def plan_scales(wr: Writer) -> tuple[float, float, str, str]:
-    """μ_V and μ_a as sheet 1 chooses them (seed 003 (5), (9)): V_A and a_A at the
-    plan positions, standard scales; with the source expressions."""
-    a = wr.solution
-    pin = wr.mech.crank_pin
-    v_a = a_a = 0.0
-    vs, as_ = [], []
-    for i in a.plan_positions:
-        if a.problem(a.entry(i)) is not None:
-            continue
-        view = a.plan(i)
-        v_a = max(v_a, float(np.hypot(*view.velocity_images[pin])))
-        a_a = max(a_a, float(np.hypot(*view.acceleration_images[pin])))
-        vs.append(f"hyp({src.point(a, i, pin, 'v')})")
-        as_.append(f"hyp({src.point(a, i, pin, 'a')})")
-    mu_v = scale_for(v_a, VELOCITY_PLAN) if v_a > 0 else 1.0
-    mu_a = scale_for(a_a, ACCELERATION_PLAN) if a_a > 0 else 1.0
-    mv = f"scale_for(max({', '.join(vs)}, 0), VELOCITY_PLAN)" if vs else "1.0"
-    ma = f"scale_for(max({', '.join(as_)}, 0), ACCELERATION_PLAN)" if as_ else "1.0"
+def plan_scales(wr: Writer, i: int) -> tuple[float, float, str, str]:
+    """μ_V and μ_a of the plans at position i as sheet 1 draws them (seed 003 (5),
+    (9); drawn.py), with their sources."""
+    mu_v, mv = wr.drawn.velocity(i)
+    mu_a, ma = wr.drawn.acceleration(i)
     return mu_v, mu_a, mv, ma
+
+
+def _first_plan(wr: Writer) -> int | None:
+    """The first plan position that solved: its scales are the ones introduced."""
+    a = wr.solution
+    return next((i for i in a.plan_positions if a.problem(a.entry(i)) is None), None)
 
 
 def plan_sections(wr: Writer, views: dict[int, Any]) -> Any:
@@ -283,7 +274,8 @@ def velocity_plans(wr: Writer, views: dict[int, Any]) -> None:
     OMEGA = "abs(J['drive']['omega'])"
     wr.eq(f"ω_1 = π·n_1/30 = π·{wr.v(n1, 'M.drive.n1_rpm')}/30 = {wr.v(w1, OMEGA)} {u['rad/s']}")
     l_oa = wr.mech.crank_length
-    mu_v, _, mv, _ = plan_scales(wr)
+    first = _first_plan(wr)
+    mu_v, _, mv, _ = plan_scales(wr, first) if first is not None else (1.0, 1.0, "1.0", "1.0")
     wr.text(w["VA"])
     wr.eq(
         f"V_A = ω_1·l_{{OA}} = {wr.v(w1, 'M.drive.omega')}·{wr.v(l_oa, 'M.crank_length')} = "
@@ -295,6 +287,7 @@ def velocity_plans(wr: Writer, views: dict[int, Any]) -> None:
         f"{wr.v(mu_v, mv)} {u['v/mm']}"
     )
     for i, view in plan_sections(wr, views):
+        mu_v, _, mv, _ = plan_scales(wr, i)
         _velocity_plan(wr, i, view, mu_v, mv)
 
 
@@ -453,7 +446,8 @@ def acceleration_plans(wr: Writer, views: dict[int, Any]) -> None:
     d = wr.mech.drive
     w1 = abs(d.omega)
     l_oa = wr.mech.crank_length
-    _, mu_a, _, ma = plan_scales(wr)
+    first = _first_plan(wr)
+    _, mu_a, _, ma = plan_scales(wr, first) if first is not None else (1.0, 1.0, "1.0", "1.0")
     a_a = w1 * w1 * l_oa
     A = "M.drive.omega**2*M.crank_length"
     wr.text(w["aA"])
@@ -466,6 +460,7 @@ def acceleration_plans(wr: Writer, views: dict[int, Any]) -> None:
         f"{wr.v(mu_a, ma)} {u['a/mm']}"
     )
     for i, view in plan_sections(wr, views):
+        _, mu_a, _, ma = plan_scales(wr, i)
         _acceleration_plan(wr, i, view, mu_a, ma)
 
 
@@ -571,7 +566,7 @@ def diagrams(wr: Writer) -> None:
     LMM, H1, H2 = f"{sc}['L_mm']", f"{sc}['H1_mm']", f"{sc}['H2_mm']"
     wr.eq(
         f"μ_S = {wr.v(c.mu_S, MUS)} {u['m/mm']} "
-        + w["mu_S_is"].format(mu_l=wr.v(float(a.mu_l), "S.mu_l"))
+        + w["mu_S_is"].format(mu_l=wr.v(*wr.drawn.mechanism()))
     )
     wr.eq(
         f"μ_t = 60/(n_1·L) = 60/({wr.v(c.n1, 'M.drive.n1_rpm')}·{wr.v(c.L, LMM)}) = "

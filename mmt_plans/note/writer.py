@@ -11,6 +11,9 @@ its own to check the number:
     J      the results JSON of the solution (results_json.results)
     S, M   the Solution and its Mechanism (inputs: masses, lengths, teeth)
     plan(i), F   the plan at position i, the force analysis at the force position
+    sheet1, sheet2   the scales the sheets draw at (sheets/scales_record.py: mu_l,
+                 mu_V[i], mu_a[i]; mu_l, mu_l_group['4-5'], mu_l_driving,
+                 mu_F['group 4-5'], mu_V): a millimetre in the note is one on a sheet
     hyp, dist, cross, moment, scale_for, VELOCITY_PLAN ...   small helpers
 
 so a number in the note is never taken on the writer's word.
@@ -20,12 +23,14 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import TYPE_CHECKING, Any
 
 from ..i18n import Language, catalogue, check_language
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..solution import Solution
+    from .drawn import Drawn
 
 __all__ = ["Printed", "Writer", "sub", "paren_markup"]
 
@@ -95,6 +100,13 @@ class Writer:
         # the language's indices of the textbook's symbols: F_{bal.pl} is F_{зр.пл} in Ukrainian
         self.symbols = tuple(dict(self.w["symbols"]).items())
         self.mech = self.solution.mechanism
+
+    @cached_property
+    def drawn(self) -> Drawn:
+        """The scales the sheets draw at (drawn.py): the note's mm are the sheets'."""
+        from .drawn import Drawn
+
+        return Drawn(self.solution, self.lang)
 
     # --- numbers ------------------------------------------------------------------------
     def v(self, x: float, source: str, sig: int = 4) -> str:

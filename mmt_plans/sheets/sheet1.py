@@ -45,6 +45,7 @@ from ..scales import (
 from ..solution import Solution
 from .common import length_scale_step, title_fields
 from .common import next_scale as _next_scale
+from .scales_record import Sheet1Scales
 
 __all__ = ["Sheet1", "compose_sheet1", "GROUPS"]
 
@@ -87,6 +88,12 @@ class Sheet1:
     shrink: int = 0  # series steps the acceleration plans' scale was raised by to make room
     field: Rect | None = None  # the mechanism's field (None: a crowded sheet's fallback)
     diagrams: KinematicDiagrams | None = None  # the S, V, a construction as drawn
+    positions: tuple[int, ...] = ()  # the plan positions drawn
+
+    @property
+    def record(self) -> Sheet1Scales:
+        """The scales drawn, as a typed record (scales_record.py)."""
+        return Sheet1Scales.of(self, self.positions)
 
     def fill(self) -> float:
         """How much of its field the mechanism's drawing fills: the larger of its
@@ -1299,6 +1306,7 @@ def _draw(
         sketches[name].replay(backend, dx, dy)
         result.origins[name] = (dx, dy)
         result.placed[name] = rect
+    result.positions = tuple(solution.plan_positions)
     draw_page(backend, page, title_fields(solution, result.scales["mu_l"], lang, sheet=1), lang)
     return result
 

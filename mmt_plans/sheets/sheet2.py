@@ -48,6 +48,7 @@ from ..render.look import LineType
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
 from .common import length_scale_step, scale_step, title_fields
+from .scales_record import Sheet2Scales
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
 
@@ -84,6 +85,11 @@ class Sheet2:
     # the most series steps any drawing is coarser than its textbook scale
     # (negative: every drawing finer, enlarged to fill the sheet)
     shrink: int = 0
+
+    @property
+    def record(self) -> Sheet2Scales:
+        """The scales drawn, as a typed record (scales_record.py)."""
+        return Sheet2Scales.of(self)
 
 
 def _words(lang: Language):

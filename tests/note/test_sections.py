@@ -1,7 +1,8 @@
 """The note's sections: every section present, and EVERY number printed in the
 note equal, at its printed precision, to the value its recorded source gives
 when this test evaluates that source on the solved mechanism by itself (the
-results JSON `J`, the Solution `S`, the Mechanism `M` for inputs).
+results JSON `J`, the Solution `S`, the Mechanism `M` for inputs; `sheet1`,
+`sheet2` the scales the sheets draw at, from composing the sheets here).
 
 The writer records where each number came from (mmt_plans/note/writer.py);
 the helpers below (moment, arm, the lever's moments) are written here again,
@@ -14,14 +15,19 @@ import math
 import re
 from fractions import Fraction
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 
 import mmt_plans
+from mmt_plans.drawing.page import Page
 from mmt_plans.gears import GearPair
 from mmt_plans.note import note_content, plain
+from mmt_plans.render.recording import RecordingBackend
 from mmt_plans.results_json import results
 from mmt_plans.scales import ACCELERATION_PLAN, FORCE_PLAN, VELOCITY_PLAN, scale_for
+from mmt_plans.sheets.sheet1 import compose_sheet1
+from mmt_plans.sheets.sheet2 import compose_sheet2
 
 ROOT = Path(__file__).resolve().parents[2]
 SAMPLES = sorted((ROOT / "samples").glob("*.toml"))
@@ -80,9 +86,40 @@ def _lever_arm(f) -> float:
 
 
 @functools.cache
-def namespace(path: Path) -> dict:
+def drawn_scales(path: Path, lang: str) -> tuple[SimpleNamespace, SimpleNamespace]:
+    """`sheet1`, `sheet2` of the sources: the scales the sheets of `path` are
+    drawn at, read from what compose_sheet1/2 return after drawing them here."""
     S = solved(path)
+    page = Page.of("A1")
+    s1 = compose_sheet1(S, RecordingBackend(page.width, page.height), lang).scales  # type: ignore[arg-type]
+    plans = S.plan_positions
+    sheet1 = SimpleNamespace(
+        mu_l=s1["mu_l"],
+        mu_V={i: s1["mu_V"] for i in plans},
+        mu_a={i: s1["mu_a"] for i in plans},
+    )
+    sheet2 = SimpleNamespace()
+    if S.forces is not None:
+        s2 = compose_sheet2(S, RecordingBackend(page.width, page.height), lang).scales  # type: ignore[arg-type]
+        groups = [g.name for g in S.forces.groups]
+        d = S.forces.driving_link.link
+        sheet2 = SimpleNamespace(
+            mu_l=s2["mu_l"],
+            mu_l_group={n: s2[f"mu_l {n}"] for n in groups},
+            mu_l_driving=s2[f"mu_l {d}"],
+            mu_F={**{f"group {n}": s2[f"mu_F {n}"] for n in groups}, f"link {d}": s2[f"mu_F {d}"]},
+            mu_V=s2["mu_V"],
+        )
+    return sheet1, sheet2
+
+
+@functools.cache
+def namespace(path: Path, lang: str = "en") -> dict:
+    S = solved(path)
+    sheet1, sheet2 = drawn_scales(path, lang)
     return {
+        "sheet1": sheet1,
+        "sheet2": sheet2,
         "J": results(S),
         "S": S,
         "M": S.mechanism,
@@ -145,7 +182,7 @@ def test_every_printed_number_is_its_sources(case):
     """Each recorded number sits where it says and equals its source's value."""
     path, lang = case
     content = note(path, lang)
-    ns = namespace(path)
+    ns = namespace(path, lang)
     assert content.numbers
     for p in content.numbers:
         text = _where(content, p)
