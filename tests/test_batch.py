@@ -197,3 +197,26 @@ def test_one_batch_item_runs_the_solver_once(tmp_path, monkeypatch):
     assert len(calls) == 1
     names = {Path(p).name for p in result.written}
     assert {"results.json", "sheet1.svg", "sheet2.pdf", "note.pdf", "scheme.png"} <= names
+
+
+def test_one_batch_item_composes_each_sheet_once(tmp_path, monkeypatch):
+    """The note writes its millimetres at the sheets' scales: in a batch item it
+    reads them from the sheets just drawn instead of composing them again."""
+    import mmt_plans.sheets.compose as compose
+    from mmt_plans.batch import process_file
+
+    calls: list[int] = []
+
+    def counting(n, real):
+        def compose_n(*args, **kwargs):
+            calls.append(n)
+            return real(*args, **kwargs)
+
+        return compose_n
+
+    monkeypatch.setattr(compose, "compose_sheet1", counting(1, compose.compose_sheet1))
+    monkeypatch.setattr(compose, "compose_sheet2", counting(2, compose.compose_sheet2))
+    sample = Path(__file__).resolve().parents[1] / "samples" / "offset_slider_crank.toml"
+    result = process_file(sample, tmp_path / "item", formats=("svg",))
+    assert result.ok, result.message
+    assert sorted(calls) == [1, 2]

@@ -1,7 +1,7 @@
 """The scales of the sheets' drawings, with their sources, for the note's millimetres.
 
 A segment, a side or an arm the note gives in mm is the one drawn on the
-sheet: value/μ with μ the sheet's (sheets/scales_record.py). Each scale comes
+sheet: value/μ with μ the sheet's (sheets/scales_record.py, sheets.compose.sheet_scales). Each scale comes
 with its source expression (writer.py): `sheet1.mu_l`, `sheet1.mu_V[2]`,
 `sheet2.mu_F['group 4-5']` ..., the record a reader gets by composing the
 sheets. Where a sheet cannot be composed, the calculation's scale stands in
@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..scales import ACCELERATION_PLAN, FORCE_PLAN, VELOCITY_PLAN, scale_for
-from ..sheets.scales_record import sheet_scales
+from ..sheets.compose import sheet_scales
 from . import sources as src
 
 if TYPE_CHECKING:  # pragma: no cover

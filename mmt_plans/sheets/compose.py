@@ -6,6 +6,7 @@ half-written sheet. PDFs carry a fixed date, so two runs give the same bytes."""
 from __future__ import annotations
 
 import os
+import weakref
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import Any
@@ -17,10 +18,17 @@ from ..i18n import Language
 from ..render.output import FORMATS, write_drawing
 from ..render.recording import RecordingBackend
 from ..solution import Solution
+from .scales_record import Sheet1Scales, Sheet2Scales
 from .sheet1 import compose_sheet1
 from .sheet2 import compose_sheet2
 
-__all__ = ["FORMATS", "SheetNotAvailable", "available_sheets", "write_sheets"]
+__all__ = [
+    "FORMATS",
+    "SheetNotAvailable",
+    "available_sheets",
+    "sheet_scales",
+    "write_sheets",
+]
 
 
 class SheetNotAvailable(MmtError, ValueError):
@@ -58,11 +66,52 @@ def write_sheets(
     out = ensure_dir(out_dir)
     written: list[Path] = []
     page = Page.of("A1")
+    records: dict[int, Any] = {}
     for n in wanted:
         recording = RecordingBackend(page.width, page.height)
-        composers[n](solution, recording, lang)
+        records[n] = composers[n](solution, recording, lang).record
         recording.close()
         title = f"{solution.mechanism.title_in(lang)}, sheet {n}"
         for fmt in formats:
             written.append(write_drawing(recording, out / f"sheet{n}.{fmt}", fmt, title))
+    if set(records) == {1, 2}:  # the note of the same Solution composes them no more
+        _cached(solution).setdefault(lang, (records[1], records[2]))
     return written
+
+
+_Record = tuple[Sheet1Scales | None, Sheet2Scales | None]
+# id of a live Solution → its records by language (a Solution is not hashable:
+# kept by id, dropped when the Solution goes)
+_CACHE: dict[int, dict[str, _Record]] = {}
+
+
+def _cached(solution: Solution) -> dict[str, _Record]:
+    key = id(solution)
+    if key not in _CACHE:
+        _CACHE[key] = {}
+        weakref.finalize(solution, _CACHE.pop, key, None)
+    return _CACHE[key]
+
+
+def sheet_scales(solution: Solution, lang: Language = "en") -> _Record:
+    """The scales sheets 1 and 2 of `solution` draw at in `lang` (composed once
+    on a RecordingBackend, kept per Solution); None for a sheet that cannot be
+    composed (no plans, no force analysis, a layout that does not fit)."""
+    by_lang = _cached(solution)
+    if lang not in by_lang:
+        page = Page.of("A1")
+        first: Sheet1Scales | None = None
+        second: Sheet2Scales | None = None
+        try:
+            s1 = compose_sheet1(solution, RecordingBackend(page.width, page.height), lang)
+            first = s1.record
+        except MmtError:
+            first = None
+        if solution.forces is not None:
+            try:
+                s2 = compose_sheet2(solution, RecordingBackend(page.width, page.height), lang)
+                second = s2.record
+            except MmtError:
+                second = None
+        by_lang[lang] = (first, second)
+    return by_lang[lang]

@@ -4,11 +4,11 @@ Sheet 1 draws the mechanism at a standard μ_l that fills its field and picks
 μV, μa for its plans; sheet 2 picks a standard μ_l per drawing (the loaded
 mechanism, each group, the driving link), μF per force polygon and μV of
 Zhukovsky's lever. The note (note/) writes its millimetres at these scales,
-so that they are the lengths on the sheets; `sheet_scales` composes the
-sheets once onto a RecordingBackend to learn them.
+so that they are the lengths on the sheets; `sheets.compose.sheet_scales`
+composes the sheets once onto a RecordingBackend to learn them.
 
     >>> import mmt_plans
-    >>> from mmt_plans.sheets.scales_record import sheet_scales
+    >>> from mmt_plans.sheets.compose import sheet_scales
     >>> a = mmt_plans.solve(mmt_plans.load("samples/six_link_press.toml"))
     >>> s1, s2 = sheet_scales(a, "en")
     >>> s1.mu_l, s2.mu_F["group 4-5"]                      # doctest: +SKIP
@@ -17,23 +17,11 @@ sheets once onto a RecordingBackend to learn them.
 
 from __future__ import annotations
 
-import weakref
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import TYPE_CHECKING
 
-from ..drawing.page import Page
-from ..errors import MmtError
-from ..i18n import Language
-from ..render.recording import RecordingBackend
-
-if TYPE_CHECKING:  # pragma: no cover
-    from ..solution import Solution
-    from .sheet1 import Sheet1
-    from .sheet2 import Sheet2
-
-__all__ = ["Sheet1Scales", "Sheet2Scales", "sheet_scales"]
+__all__ = ["Sheet1Scales", "Sheet2Scales"]
 
 
 @dataclass(frozen=True)
@@ -46,8 +34,9 @@ class Sheet1Scales:
     mu_a: Mapping[int, float]
 
     @classmethod
-    def of(cls, sheet: Sheet1, positions: tuple[int, ...]) -> Sheet1Scales:
-        s = sheet.scales
+    def of(cls, s: Mapping[str, float], positions: Sequence[int]) -> Sheet1Scales:
+        """From sheet 1's scales by name ("mu_l", "mu_V", "mu_a": one μV and
+        one μa serve every plan position)."""
         return cls(
             float(s["mu_l"]),
             MappingProxyType({i: float(s["mu_V"]) for i in positions}),
@@ -68,56 +57,15 @@ class Sheet2Scales:
     mu_V: float
 
     @classmethod
-    def of(cls, sheet: Sheet2) -> Sheet2Scales:
-        s, fa = sheet.scales, sheet.forces
-        d = fa.driving_link.link
-        force = {f"group {g.name}": float(s[f"mu_F {g.name}"]) for g in fa.groups}
+    def of(cls, s: Mapping[str, float], groups: Sequence[str], d: int) -> Sheet2Scales:
+        """From sheet 2's scales by name ("mu_l", "mu_l 4-5", "mu_F 4-5", "mu_F 1",
+        "mu_V"), the groups' names and the driving link's number."""
+        force = {f"group {g}": float(s[f"mu_F {g}"]) for g in groups}
         force[f"link {d}"] = float(s[f"mu_F {d}"])
         return cls(
             mu_l=float(s["mu_l"]),
-            mu_l_group=MappingProxyType({g.name: float(s[f"mu_l {g.name}"]) for g in fa.groups}),
+            mu_l_group=MappingProxyType({g: float(s[f"mu_l {g}"]) for g in groups}),
             mu_l_driving=float(s[f"mu_l {d}"]),
             mu_F=MappingProxyType(force),
             mu_V=float(s["mu_V"]),
         )
-
-
-_Record = tuple[Sheet1Scales | None, Sheet2Scales | None]
-# id of a live Solution → its records by language (a Solution is not hashable:
-# kept by id, dropped when the Solution goes)
-_CACHE: dict[int, dict[str, _Record]] = {}
-
-
-def _cached(solution: Solution) -> dict[str, _Record]:
-    key = id(solution)
-    if key not in _CACHE:
-        _CACHE[key] = {}
-        weakref.finalize(solution, _CACHE.pop, key, None)
-    return _CACHE[key]
-
-
-def sheet_scales(solution: Solution, lang: Language = "en") -> _Record:
-    """The scales sheets 1 and 2 of `solution` draw at in `lang` (composed once
-    on a RecordingBackend, kept per Solution); None for a sheet that cannot be
-    composed (no plans, no force analysis, a layout that does not fit)."""
-    by_lang = _cached(solution)
-    if lang not in by_lang:
-        from .sheet1 import compose_sheet1
-        from .sheet2 import compose_sheet2
-
-        page = Page.of("A1")
-        first: Sheet1Scales | None = None
-        second: Sheet2Scales | None = None
-        try:
-            s1 = compose_sheet1(solution, RecordingBackend(page.width, page.height), lang)
-            first = s1.record
-        except MmtError:
-            first = None
-        if solution.forces is not None:
-            try:
-                s2 = compose_sheet2(solution, RecordingBackend(page.width, page.height), lang)
-                second = s2.record
-            except MmtError:
-                second = None
-        by_lang[lang] = (first, second)
-    return by_lang[lang]

@@ -93,7 +93,7 @@ class Sheet1:
     @property
     def record(self) -> Sheet1Scales:
         """The scales drawn, as a typed record (scales_record.py)."""
-        return Sheet1Scales.of(self, self.positions)
+        return Sheet1Scales.of(self.scales, self.positions)
 
     def fill(self) -> float:
         """How much of its field the mechanism's drawing fills: the larger of its

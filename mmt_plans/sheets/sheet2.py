@@ -89,7 +89,8 @@ class Sheet2:
     @property
     def record(self) -> Sheet2Scales:
         """The scales drawn, as a typed record (scales_record.py)."""
-        return Sheet2Scales.of(self)
+        fa = self.forces
+        return Sheet2Scales.of(self.scales, [g.name for g in fa.groups], fa.driving_link.link)
 
 
 def _words(lang: Language):
