@@ -218,17 +218,8 @@ class Labels:
     ) -> BaseGeometry:
         """Write `markup` beside `anchor`, first trying the side `towards` points to;
         inside a group `group` (class "label") if one is named."""
-        w, h, drop = self._extent(markup)
         x, y = float(anchor[0]), float(anchor[1])
-        dirs = np.array(_COMPASS)
-        if towards is not None and math.hypot(*towards) > 1e-12:
-            t = complex(towards[0], towards[1]) / math.hypot(*towards)
-            dirs = dirs[np.argsort(-(dirs.real * t.real + dirs.imag * t.imag), kind="stable")]
-        # every candidate at once, nearest ring first: the box's nearest corner
-        # (or edge middle) `ring` mm from the anchor
-        ring = (distance + self.rings)[:, None]
-        cx = (x + dirs.real * (ring + w / 2 * np.sqrt(np.abs(dirs.real)))).ravel()
-        cy = (y + dirs.imag * (ring + h / 2 * np.sqrt(np.abs(dirs.imag)))).ravel()
+        cx, cy, w, h, drop = self._around(np.array([x, y]), markup, towards, distance)
         return self._write(cx, cy, w, h, drop, markup, group, leader=((x, y), towards, distance))
 
     def place_arrow(
@@ -263,8 +254,9 @@ class Labels:
     def _around(
         self, anchor: np.ndarray, markup: str, towards: PointLike | None, distance: float
     ) -> tuple[np.ndarray, np.ndarray, float, float, float]:
-        """Centres of the boxes round `anchor`, nearest ring first, the side
-        `towards` first; the box's width, height and drop."""
+        """Centres of the boxes round `anchor`, every candidate at once, nearest
+        ring first (the box's nearest corner or edge middle `ring` mm from the
+        anchor), the side `towards` first; the box's width, height and drop."""
         w, h, drop = self._extent(markup)
         x, y = float(anchor[0]), float(anchor[1])
         dirs = np.array(_COMPASS)
