@@ -83,9 +83,12 @@ class Variant:
             plan = s.plan(i)
             points = [p for p in plan.velocity_images if p not in frame]
             links = [str(lid) for lid in plan.omega]
+            # μ is checked as V_A / pa (a_A / πa): the scale and its crank segment
             fields = [
                 Field("position", i, "mu_V", "", "μ", "V", "v/mm"),
+                Field("position", i, "velocity_plan_mm", "pa", "pa", "", "mm"),
                 Field("position", i, "mu_a", "", "μ", "a", "a/mm"),
+                Field("position", i, "acceleration_plan_mm", "pia", "πa", "", "mm"),
             ]
             fields += [Field("position", i, "velocity", p, "V", p, "m/s") for p in points]
             fields += [Field("position", i, "acceleration", p, "a", p, "m/s2") for p in points]
