@@ -163,6 +163,7 @@ def create_app(settings: Settings) -> Flask:
             "student": session.get("student"),
             "group": session.get("group"),
             "font": font_file is not None,
+            "check_word": lambda key: catalogue(lang).word("check", key),
         }
 
     @app.template_filter("num")
@@ -265,6 +266,8 @@ def create_app(settings: Settings) -> Flask:
                 svg=Markup(svg),  # our own drawing: svgwrite escapes every text in it
                 given=v.given(g.lang),
                 groups=v.field_groups(),
+                field_ids=set(v.fields()),
+                check_columns=_CHECK_COLUMNS,
                 values=values,
                 result=result,
                 errors={e.field: e.problem for e in errors or []},
@@ -584,6 +587,17 @@ def create_app(settings: Settings) -> Flask:
         )
 
     return app
+
+
+# the 5 % check's table on the form: (key, symbol, index, unit) by column
+_CHECK_COLUMNS = (
+    ("V_plan", "V", "plan", "m/s"),
+    ("V_diagram", "V", "diagram", "m/s"),
+    ("dV_percent", "δ", "V", "%"),
+    ("a_plan", "a", "plan", "m/s2"),
+    ("a_diagram", "a", "diagram", "m/s2"),
+    ("da_percent", "δ", "a", "%"),
+)
 
 
 def _units() -> dict[str, str]:
