@@ -6,6 +6,7 @@ that `analyze` and the other commands start without them."""
 from __future__ import annotations
 
 import secrets
+import sys
 from pathlib import Path
 
 import click
@@ -78,15 +79,29 @@ def serve(
     )
     n = len(app.extensions["mmt"]["tasks"].stems())
     shown_host = f"[{host}]" if ":" in host else host
+    try:
+        from waitress.server import create_server
+    except ImportError:  # pragma: no cover - waitress is a dependency
+        create_server = None
+    server = None
+    if create_server is not None:
+        try:  # bind before printing: a port in use is a clean error
+            server = create_server(app, host=host, port=port, threads=threads, ident="mmt-plans")
+        except OSError as err:
+            raise SpecError(
+                "--port",
+                f"{host}:{port}",
+                f"cannot listen there ({err.strerror or err})",
+                "give another --port, or stop the program that uses it",
+            ) from None
     click.echo(f"serving {n} variants of {tasks_dir} at http://{shown_host}:{port}/")
     click.echo(f"submissions: {db.resolve()}")
     click.echo(f"token: {token if password is None else '(the --password given)'}")
-    click.echo(f"instructor: http://{shown_host}:{port}/instructor")
-    try:
-        from waitress import serve as waitress_serve
-    except ImportError:
+    click.echo(f"instructor: http://{shown_host}:{port}/instructor", nl=True)
+    sys.stdout.flush()
+    if server is not None:
+        server.run()
+    else:  # pragma: no cover
         from werkzeug.serving import run_simple
 
         run_simple(host, port, app, threaded=True)
-    else:
-        waitress_serve(app, host=host, port=port, threads=threads, ident="mmt-plans")

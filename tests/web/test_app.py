@@ -473,3 +473,54 @@ def test_other_commands_start_without_flask():
     code = "import sys, mmt_plans.cli; assert 'flask' not in sys.modules, 'flask imported'"
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
+
+
+def test_a_variant_that_does_not_load_says_why(client, tasks_dir):
+    (tasks_dir / "broken_v1.toml").write_text("[drive]\nlink = 1\nrpm = -5\n", encoding="utf-8")
+    assert 'href="/variant/broken_v1"' in client.get("/").get_data(as_text=True)
+    r = client.get("/variant/broken_v1")
+    assert r.status_code == 422 and "broken_v1.toml" in r.get_data(as_text=True)
+
+
+def test_serve_prints_its_token_and_the_token_opens_the_instructors_pages(tasks_dir, tmp_path):
+    import socket
+    import urllib.error
+    import urllib.request
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "mmt_plans", "serve", str(tasks_dir), "--port", str(port),
+         "--db", str(tmp_path / "c.sqlite")],
+        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+    )
+    try:
+        lines = [proc.stdout.readline() for _ in range(4)]
+        assert lines[0].startswith(f"serving 2 variants of {tasks_dir} at http://127.0.0.1:{port}/")
+        token = lines[2].removeprefix("token: ").strip()
+        assert lines[2].startswith("token: ") and len(token) >= 20
+        url = f"http://127.0.0.1:{port}/instructor"
+        for _ in range(100):
+            try:
+                urllib.request.urlopen(f"http://127.0.0.1:{port}/", timeout=5)
+                break
+            except OSError:
+                import time
+
+                time.sleep(0.1)
+        req = urllib.request.Request(url, headers={"Authorization": f"Bearer {token}"})
+        assert urllib.request.urlopen(req, timeout=30).status == 200
+        with pytest.raises(urllib.error.HTTPError) as err:
+            urllib.request.urlopen(url, timeout=30)
+        assert err.value.code == 401
+        # a second server on the same port: one clean message, exit 2
+        r = subprocess.run(
+            [sys.executable, "-m", "mmt_plans", "serve", str(tasks_dir), "--port", str(port),
+             "--db", str(tmp_path / "c.sqlite")],
+            capture_output=True, text=True, timeout=120,
+        )
+        assert r.returncode == 2 and "cannot listen there" in r.stderr
+    finally:
+        proc.terminate()
+        proc.wait(timeout=10)
