@@ -216,7 +216,9 @@ def create_app(settings: Settings) -> Flask:
     # --- student pages --------------------------------------------------------------
     @app.get("/")
     def index() -> Any:
-        return render_template("index.html", tasks=list(tasks.tasks()))
+        return render_template(
+            "index.html", tasks=list(tasks.tasks()), title=lambda stem: tasks.title(stem, g.lang)
+        )
 
     @app.post("/student")
     def set_student() -> Any:
@@ -229,6 +231,7 @@ def create_app(settings: Settings) -> Flask:
                 render_template(
                     "index.html",
                     tasks=list(tasks.tasks()),
+                    title=lambda stem: tasks.title(stem, g.lang),
                     error=words(g.lang)["bad_student"].format(n=STUDENT_MAX),
                 ),
                 400,

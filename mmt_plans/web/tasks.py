@@ -263,6 +263,25 @@ class TaskDir:
                 self._svg[key] = v.schematic_svg(lang)
             return self._svg[key]
 
+    def title(self, stem: str, lang: Language) -> str:
+        """A variant's title as its file gives it (title_uk in Ukrainian), read
+        without solving; the stem where the file gives none or cannot be read."""
+        import tomllib
+
+        from ..errors import MmtError
+        from ..spec import read_text
+
+        path = self.path(stem)
+        if path is None:
+            return stem
+        try:
+            data = tomllib.loads(read_text(path))
+        except (MmtError, tomllib.TOMLDecodeError, RecursionError, ValueError):
+            return stem
+        text = data.get("title_uk") if lang == "uk" else None
+        text = text if isinstance(text, str) else data.get("title")
+        return text[:200] if isinstance(text, str) and text.isprintable() else stem
+
     def tasks(self) -> Iterator[tuple[str, list[str]]]:
         """The stems grouped by task ("task03" of "task03_v2"; else the stem itself)."""
         groups: dict[str, list[str]] = {}

@@ -524,3 +524,12 @@ def test_serve_prints_its_token_and_the_token_opens_the_instructors_pages(tasks_
     finally:
         proc.terminate()
         proc.wait(timeout=10)
+
+
+def test_the_index_names_each_task_by_its_title_and_a_student_can_change_name(client):
+    html = client.get("/").get_data(as_text=True)
+    assert "Seed 003 task 1 v1: six-link press (crank, rocker, rod, slider)" in html
+    assert "Завдання 1 (посібник 003), варіант 1" in client.get("/?lang=uk").get_data(as_text=True)
+    as_student(client)
+    assert 'id="name"' not in client.get("/").get_data(as_text=True)
+    assert 'value="Olena Koval"' in client.get("/?change=1").get_data(as_text=True)
