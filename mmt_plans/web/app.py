@@ -342,8 +342,9 @@ def create_app(settings: Settings) -> Flask:
             shown_report = student_report(result, g.lang, store.exact_released)
             for x, y in zip(shown_report["values"], report["values"]):
                 x["label"] = y["label"]
-            # causes as the student saw them (exact withheld), for the record
-            report["causes_shown"] = [x["cause"] for x in shown_report["values"]]
+            # the causes with their numbers withheld, for when the switch is off
+            withheld = student_report(result, g.lang, False)
+            report["causes_shown"] = [x["cause"] for x in withheld["values"]]
         sid = store.add_submission(
             student=student,
             group=group,

@@ -533,3 +533,21 @@ def test_the_index_names_each_task_by_its_title_and_a_student_can_change_name(cl
     as_student(client)
     assert 'id="name"' not in client.get("/").get_data(as_text=True)
     assert 'value="Olena Koval"' in client.get("/?change=1").get_data(as_text=True)
+
+
+def test_a_result_checked_while_released_is_withheld_again_with_the_switch(client, app):
+    """Released, a sign swapped shows the exact value in its cause; withheld
+    again, the same result shows it no more."""
+    store = app.extensions["mmt"]["store"]
+    store.release_exact(True)
+    as_student(client)
+    w2 = variant(app).solution.plan(3).omega[2]
+    token = csrf(client, f"/variant/{VARIANT}")
+    r = client.post(f"/variant/{VARIANT}/check", data={"position|3|omega|2": f"{-w2:.4g}", "csrf": token})
+    html = client.get(r.headers["Location"]).get_data(as_text=True)
+    assert f"sign or direction swapped: the exact value is {w2:.4g}" in html  # 4 digits
+    assert f"{w2:.6g}" in html  # the exact column
+    store.release_exact(False)
+    html = client.get(r.headers["Location"]).get_data(as_text=True)
+    assert "sign or direction swapped: the exact value is …" in html
+    assert f"{w2:.6g}" not in html and f"is {w2:.4g}" not in html
