@@ -40,6 +40,7 @@ from ..files import MAX_INPUT_BYTES, decode_input
 from ..i18n import LANGUAGES, Language, catalogue
 from .answers import (
     STUDENT_MAX,
+    FieldError,
     answers_from_fields,
     dump_toml,
     split_student,
@@ -48,7 +49,7 @@ from .answers import (
 )
 from .db import Store
 from .ratelimit import TokenBuckets
-from .tasks import STEM, TaskDir
+from .tasks import STEM, TaskDir, Variant
 
 __all__ = ["Settings", "create_app"]
 
@@ -202,7 +203,7 @@ def create_app(settings: Settings) -> Flask:
             err.code or 500,
         )
 
-    def _variant_or_404(stem: str):  # type: ignore[no-untyped-def]
+    def _variant_or_404(stem: str) -> Variant:
         if not STEM.fullmatch(stem):
             abort(404, description=words(g.lang)["no_variant"])
         try:
@@ -259,7 +260,16 @@ def create_app(settings: Settings) -> Flask:
                 result = _shown_report(sub.report, sub.lang, store.exact_released)
         return _variant_page(v, values, result=result)
 
-    def _variant_page(v, values, *, result=None, errors=None, message=None, toml="", status=200):  # type: ignore[no-untyped-def]
+    def _variant_page(
+        v: Variant,
+        values: dict[str, str],
+        *,
+        result: dict[str, Any] | None = None,
+        errors: list[FieldError] | None = None,
+        message: str | None = None,
+        toml: str = "",
+        status: int = 200,
+    ) -> tuple[str, int]:
         svg = tasks.schematic(v.stem, g.lang) or ""
         svg = svg[svg.find("<svg") :] if "<svg" in svg else ""
         return (
@@ -328,7 +338,9 @@ def create_app(settings: Settings) -> Flask:
             )
         return parse_toml(text, path)
 
-    def _check(v, text: str, student: str, group: str, source: str, path: str) -> tuple[int, Any]:  # type: ignore[no-untyped-def]
+    def _check(
+        v: Variant, text: str, student: str, group: str, source: str, path: str
+    ) -> tuple[int, dict[str, Any]]:
         from ..check import check, loads_answers
         from ..numerics import quiet_numerics
 
@@ -413,7 +425,8 @@ def create_app(settings: Settings) -> Flask:
 
     def _mark() -> str:
         """What the session keeps of a good token: a digest bound to this server's token."""
-        return hmac.new(app.secret_key.encode(), settings.token.encode(), "sha256").hexdigest()  # type: ignore[union-attr]
+        key = str(app.secret_key).encode()
+        return hmac.new(key, settings.token.encode(), "sha256").hexdigest()
 
     @app.get("/instructor")
     def instructor() -> Any:

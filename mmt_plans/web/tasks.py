@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Literal
 from ..i18n import Language, catalogue
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..forces import ForceAnalysis
     from ..solution import Solution
 
 __all__ = ["STEM", "Field", "FieldGroup", "TaskDir", "Variant"]
@@ -139,7 +140,8 @@ class Variant:
     def fields(self) -> dict[str, Field]:
         return {f.id: f for g in self.field_groups() for f in g.fields}
 
-    def forces(self):  # type: ignore[no-untyped-def]
+    def forces(self) -> ForceAnalysis | None:
+        """The force analysis at the force position, None where there is none."""
         from ..errors import MmtError
 
         try:
