@@ -187,8 +187,12 @@ def create_app(settings: Settings) -> Flask:
 
     @app.template_filter("subscript")
     def subscript(sub: str) -> str:
-        """An index the textbook writes differently by language (bal: зр)."""
-        return str(catalogue(g.lang).words("symbol_indices").get(sub, sub))
+        """An index the textbook writes differently by language (bal: зр; the
+        5 % check's plan, diagram as sheet 1 writes them)."""
+        cat = catalogue(g.lang)
+        if sub in ("plan", "diagram"):
+            return cat.word("sheet1", sub)
+        return str(cat.words("symbol_indices").get(sub, sub))
 
     def _csrf_ok() -> bool:
         sent = request.form.get("csrf", "")

@@ -551,3 +551,8 @@ def test_a_result_checked_while_released_is_withheld_again_with_the_switch(clien
     html = client.get(r.headers["Location"]).get_data(as_text=True)
     assert "sign or direction swapped: the exact value is …" in html
     assert f"{w2:.6g}" not in html and f"is {w2:.4g}" not in html
+
+
+def test_the_5_percent_check_table_writes_sheet_1s_words(client):
+    html = client.get(f"/variant/{VARIANT}?lang=uk").get_data(as_text=True)
+    assert "V<sub>план</sub></span>, м/с" in html and "a<sub>діагр.</sub></span>, м/с²" in html
