@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Literal
 
 from ..i18n import Language, catalogue
+from ..model import FRAME
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..forces import ForceAnalysis
@@ -185,6 +186,19 @@ class Variant:
                     cat.unit("N"),
                 )
             )
+        return out
+
+    def guides(self, lang: Language) -> list[tuple[str, str, str, str]]:
+        """(slider point, x, y, angle) of each guide on the frame: the line
+        through (x, y) mm at the angle (degrees) on which the slider moves."""
+        cat = catalogue(lang)
+        out = []
+        for pair in self.solution.mechanism.sliders:
+            if pair.guide != FRAME:
+                continue
+            x, y = (float(c) * 1000.0 for c in pair.through)
+            angle = math.degrees(math.atan2(float(pair.direction[1]), float(pair.direction[0])))
+            out.append((pair.slider_point, cat.number(x), cat.number(y), cat.number(angle % 180.0)))
         return out
 
     def schematic_svg(self, lang: Language) -> str:

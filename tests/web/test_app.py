@@ -556,3 +556,9 @@ def test_a_result_checked_while_released_is_withheld_again_with_the_switch(clien
 def test_the_5_percent_check_table_writes_sheet_1s_words(client):
     html = client.get(f"/variant/{VARIANT}?lang=uk").get_data(as_text=True)
     assert "V<sub>план</sub></span>, м/с" in html and "a<sub>діагр.</sub></span>, м/с²" in html
+
+
+def test_the_given_data_names_the_sliders_guide(client):
+    # task01_v1: "slider C (5) on the axis x-x through O1" (the file's [[slider]] through [0, 0], angle 0)
+    html = client.get(f"/variant/{VARIANT}").get_data(as_text=True)
+    assert "the guide of C passes through (0, 0) mm at 0°" in html
