@@ -518,6 +518,40 @@ def create_app(settings: Settings) -> Flask:
             headers={"Content-Disposition": "attachment; filename=submissions.csv"},
         )
 
+    @app.get("/instructor/values.csv")
+    def instructor_values_csv() -> Any:
+        """Every value of every submission, one row each, with the exact value."""
+        _instructor()
+        out = io.StringIO()
+        wr = csv.writer(out)
+        head = ["id", "time", "group", "student", "variant", "what", "position", "phi1_deg"]
+        wr.writerow([*head, "unit", "given", "exact", "error_percent", "passed", "cause"])
+        for s in store.submissions():
+            for x in s.report["values"]:
+                wr.writerow(
+                    [
+                        s.id,
+                        s.created,
+                        _cell(s.group),
+                        _cell(s.student),
+                        s.variant,
+                        x["what"],
+                        "" if x["position"] is None else x["position"],
+                        "" if x["phi1_deg"] is None else repr(x["phi1_deg"]),
+                        x["unit"],
+                        "" if x["given"] is None else repr(x["given"]),
+                        "" if x["exact"] is None else repr(x["exact"]),
+                        "" if x["error_percent"] is None else repr(x["error_percent"]),
+                        "yes" if x["passed"] else "no",
+                        _cell(x["cause"] or ""),
+                    ]
+                )
+        return Response(
+            out.getvalue(),
+            mimetype="text/csv",
+            headers={"Content-Disposition": "attachment; filename=values.csv"},
+        )
+
     @app.post("/instructor/release")
     def instructor_release() -> Any:
         _instructor()

@@ -69,3 +69,11 @@ def test_token_buckets_stay_bounded():
     for k in range(1000):
         b.take(f"c{k}")
     assert len(b._buckets) <= 101
+
+
+def test_the_web_words_have_the_same_keys_in_every_language():
+    from mmt_plans.i18n import LANGUAGES
+    from mmt_plans.web.app import words
+
+    keys = {lang: set(words(lang)) for lang in LANGUAGES}
+    assert keys["en"] == keys["uk"] and len(keys["en"]) > 50

@@ -353,7 +353,7 @@ def test_a_client_over_its_rate_gets_429(make_app):
 
 # --- the instructor's pages ------------------------------------------------------------------
 
-INSTRUCTOR_GETS = ["/instructor", "/instructor/submissions.csv", "/instructor/submission/1",
+INSTRUCTOR_GETS = ["/instructor", "/instructor/submissions.csv", "/instructor/values.csv", "/instructor/submission/1",
                    "/instructor/keys/task01_v1", "/instructor/keys/task01_v1/results.json",
                    "/instructor/keys.zip"]
 INSTRUCTOR_POSTS = ["/instructor/release", "/instructor/upload"]
@@ -416,6 +416,12 @@ def test_the_instructor_sees_every_submission_as_table_and_csv(client, app):
     assert by_group["MM-21"][3:9] == ["Olena", VARIANT, "form", "no", "5", "1"]
     assert CAUSE_INERTIA in by_group["MM-21"][9]
     assert by_group["MM-22"][3] == "'=HYPERLINK(1)"  # no formula in a spreadsheet
+    values = list(csv.DictReader(io.StringIO(
+        client.get("/instructor/values.csv", headers=auth).get_data(as_text=True))))
+    assert len(values) == 10
+    f_bal = next(r for r in values if r["what"] == "F_bal (plans)" and r["group"] == "MM-21")
+    assert float(f_bal["exact"]) == variant(app).solution.forces.balancing_force_plans
+    assert f_bal["passed"] == "no" and f_bal["cause"] == CAUSE_INERTIA
     html = client.get("/instructor/submission/1", headers=auth).get_data(as_text=True)
     assert f"{variant(app).solution.forces.balancing_force_plans:.6g}" in html  # the exact values
     assert client.get("/instructor/submission/99", headers=auth).status_code == 404
