@@ -7,7 +7,7 @@ STAMP   := $(VENV)/.installed
 SAMPLE  ?= samples/six_link_press.toml
 OUT     ?= out
 
-.PHONY: run test bench lint fonts clean fuzz
+.PHONY: run test bench lint fonts browser clean fuzz
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -27,11 +27,22 @@ fonts:
 	     (apt-get update -q >/dev/null 2>&1 && apt-get install -y -q $(FONT_PACKAGES) >/dev/null 2>&1)) ; } || \
 	  echo "fonts not installed ($(FONT_PACKAGES)): sheets and note use fallback fonts"
 
+# The browser test (tests/web/test_browser.py): Debian's Chromium and its
+# chromedriver, installed from Debian's packages where they are missing; a
+# machine without them (or without apt) skips that one test, saying why.
+BROWSER_PACKAGES := chromium chromium-driver
+browser:
+	@{ command -v chromium >/dev/null && command -v chromedriver >/dev/null; } || \
+	  { command -v apt-get >/dev/null && [ "$$(id -u)" = 0 ] && \
+	    (apt-get install -y -q $(BROWSER_PACKAGES) >/dev/null 2>&1 || \
+	     (apt-get update -q >/dev/null 2>&1 && apt-get install -y -q $(BROWSER_PACKAGES) >/dev/null 2>&1)) ; } || \
+	  echo "browser not installed ($(BROWSER_PACKAGES)): the browser test skips"
+
 run: $(STAMP) fonts
 	$(BIN)/mmt-plans analyze $(SAMPLE) --json $(OUT)/results.json
 	$(BIN)/mmt-plans draw $(SAMPLE) -o $(OUT)
 
-test: $(STAMP) fonts
+test: $(STAMP) fonts browser
 	$(BIN)/python -m pytest
 
 bench: $(STAMP)

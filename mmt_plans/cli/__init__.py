@@ -13,6 +13,7 @@ from .check import check
 from .draw import draw
 from .errors import reports_errors
 from .note import note
+from .serve import serve
 from .variants import variants
 
 
@@ -89,3 +90,4 @@ main.add_command(check)
 main.add_command(batch)
 main.add_command(variants)
 main.add_command(note)
+main.add_command(serve)
