@@ -70,6 +70,15 @@ __all__ = [
     "spectral_derivatives",
     "central_difference_derivatives",
     "textbook_derivatives",
+    "chord_derivatives",
+    "GRID_REFINEMENTS",
+    "ILL_CONDITIONED",
+    "InvestigatedValue",
+    "GridTrial",
+    "GridChoice",
+    "SheetCheck",
+    "choose_grid",
+    "judge",
 ]
 
 Array = np.ndarray  # NDArray[np.float64] to the type checker (annotations are strings)
@@ -743,10 +752,36 @@ def compare_with_plans(
 
 # A plan value under this share of its largest magnitude over the turn makes
 # formula (12)/(13) ill-conditioned: a small absolute error becomes a large
-# relative one. Such a value is reported by its absolute error, not failed.
+# relative one. Such a value is reported by its absolute error, not failed --
+# but only when no grid of the series passes it by (12)/(13) as written.
 ILL_CONDITIONED = 0.05
-# the grids tried, in divisions of one position step: positions stay grid points
+# The series of grids tried: n·k divisions of the turn, k in one position
+# step (the positions stay grid points), coarsest first.
 GRID_REFINEMENTS = (1, 2, 3, 4, 6, 8, 12)
+
+
+def chord_derivatives(s: ArrayLike, *, n1: float) -> tuple[Array, Array]:
+    """V and a at the n grid points by the construction of 1.7, in SI, without
+    drawing it: the chords' slopes at the middles of the intervals, the periodic
+    spline through them read at the grid points, and the same again for a.
+    Equal to `graphical_differentiation(s, ...).v, .a` at any scales (they cancel)."""
+    s_arr = _check_samples(s)
+    dt = 60.0 / (float(n1) * s_arr.size)
+    v = _chord_derivative(s_arr, dt)
+    return v, _chord_derivative(v, dt)
+
+
+def _chord_derivative(y: Array, dt: float) -> Array:
+    # slope of chord j sits at the middle of interval j; grid point i lies half
+    # way between the middles j = i − 1 and i, where the spline of
+    # `_periodic_spline_eval` is (y_j + y_j1)/2 − dt²/16·(M_j + M_j1)
+    slope = (np.roll(y, -1) - y) / dt
+    M = _periodic_spline_moments(slope, dt)
+    prev_slope, prev_M = np.roll(slope, 1), np.roll(M, 1)
+    return 0.5 * (prev_slope + slope) - dt * dt / 16.0 * (prev_M + M)
+
+
+JudgedBy = Literal["formula", "absolute_error"]
 
 
 @dataclass(frozen=True)
@@ -759,25 +794,58 @@ class InvestigatedValue:
     diagram: float
     error_percent: float  # (plan − diagram)/plan·100
     absolute_error: float  # |plan − diagram|
-    ill_conditioned: bool  # |plan| < ILL_CONDITIONED · its largest magnitude over the turn
-    passed: bool  # within the limit, or ill-conditioned (then judged by its absolute error)
+    # judged by its absolute error: |plan| is under ILL_CONDITIONED of its
+    # largest magnitude over the turn AND no grid of the series passes it by
+    # (12)/(13); everything else is judged by (12)/(13) as written
+    ill_conditioned: bool
+    passed: bool  # |error_percent| within the limit, or judged by its absolute error
+    plan_share_percent: float = 100.0  # |plan| over its largest magnitude over the turn, %
+
+    @property
+    def judged_by(self) -> JudgedBy:
+        return "absolute_error" if self.ill_conditioned else "formula"
+
+
+@dataclass(frozen=True)
+class GridTrial:
+    """One grid of the series: (12)/(13) at every investigated position on it."""
+
+    intervals: int  # n·k divisions of the turn
+    refinement: int  # k
+    errors: tuple[tuple[int, Literal["v", "a"], float], ...]  # (index, quantity, error %)
+    limit_percent: float
+
+    @property
+    def failing(self) -> tuple[tuple[int, Literal["v", "a"], float], ...]:
+        return tuple(e for e in self.errors if not abs(e[2]) <= self.limit_percent)
+
+    @property
+    def passed(self) -> bool:
+        """Every investigated position within the limit by (12)/(13) as written."""
+        return not self.failing
 
 
 @dataclass(frozen=True)
 class SheetCheck:
     """The 5 % check of seed 003 §1.8 at the investigated positions, judged on
     the diagrams the sheet draws: over `intervals` divisions of the turn
-    (`refinement` per position step), the fewest of GRID_REFINEMENTS that pass."""
+    (`refinement` per position step), the first grid of GRID_REFINEMENTS on
+    which every investigated position passes by (12)/(13)."""
 
     intervals: int
     refinement: int
     limit_percent: float
     values: tuple[InvestigatedValue, ...]
-    tried: tuple[tuple[int, bool], ...]  # (intervals, passed) for each grid tried
+    tried: tuple[tuple[int, bool], ...]  # (intervals, passed by (12)/(13)) for each grid tried
+    trials: tuple[GridTrial, ...] = ()  # the same grids with their errors
 
     @property
     def passed(self) -> bool:
         return all(v.passed for v in self.values)
+
+
+def _relative_percent(plan: float, diagram: float) -> float:
+    return (plan - diagram) / plan * 100.0 if plan != 0.0 else math.inf
 
 
 def judge(
@@ -787,11 +855,13 @@ def judge(
     diagram: float,
     largest: float,
     limit_percent: float = ERROR_LIMIT_PERCENT,
+    *,
+    exempt: bool = False,
 ) -> InvestigatedValue:
-    """One value of the check: relative error by (12)/(13), or, where that is
-    ill-conditioned, the absolute error."""
-    ill = abs(plan) < ILL_CONDITIONED * largest
-    err = (plan - diagram) / plan * 100.0 if plan != 0.0 else math.inf
+    """One value of the check by (12)/(13); `exempt` (no grid of the series
+    passes it, and it is ill-conditioned there) judges it by its absolute error."""
+    ill = exempt and abs(plan) < ILL_CONDITIONED * largest
+    err = _relative_percent(plan, diagram)
     passed = ill or abs(err) <= limit_percent
     return InvestigatedValue(
         index,
@@ -802,4 +872,58 @@ def judge(
         abs(plan - diagram),
         ill,
         bool(passed),
+        abs(plan) / largest * 100.0 if largest > 0 else 0.0,
     )
+
+
+@dataclass(frozen=True)
+class GridChoice:
+    """The grid a sheet draws its diagrams on, and the values judged by their
+    absolute error (ill-conditioned and passed by no grid of the series)."""
+
+    refinement: int
+    trials: tuple[GridTrial, ...]
+    exempt: frozenset[tuple[int, str]]
+
+
+def choose_grid(
+    s_of_n: Callable[[int], np.ndarray],
+    *,
+    n: int,
+    n1: float,
+    investigated: Sequence[int],
+    v_plan: ArrayLike,
+    a_plan: ArrayLike,
+    largest: tuple[float, float],
+    limit_percent: float = ERROR_LIMIT_PERCENT,
+    series: Sequence[int] = GRID_REFINEMENTS,
+) -> GridChoice:
+    """Seed 003 §1.8 on the grids of one series (n·k divisions, k in `series`):
+    the first grid on which every investigated position passes by (12)/(13) as
+    written. When none does, a value that passes on no grid and is under
+    ILL_CONDITIONED of its largest magnitude (`largest`: V, a) is judged by its
+    absolute error, and the grid is the first on which every other value passes;
+    failing that, the grid with the fewest failures (the check fails)."""
+    vp, ap = np.asarray(v_plan, float), np.asarray(a_plan, float)
+    trials: list[GridTrial] = []
+    for k in series:
+        v_d, a_d = chord_derivatives(s_of_n(n * k), n1=n1)
+        errors: list[tuple[int, Literal["v", "a"], float]] = []
+        for i in investigated:
+            errors.append((i, "v", _relative_percent(float(vp[i]), float(v_d[i * k]))))
+            errors.append((i, "a", _relative_percent(float(ap[i]), float(a_d[i * k]))))
+        trial = GridTrial(n * k, k, tuple(errors), float(limit_percent))
+        trials.append(trial)
+        if trial.passed:
+            return GridChoice(k, tuple(trials), frozenset())
+    never = set.intersection(*({(i, q) for i, q, _ in t.failing} for t in trials))
+    plan_of = {"v": vp, "a": ap}
+    big = {"v": largest[0], "a": largest[1]}
+    exempt = frozenset(
+        (i, q) for i, q in never if abs(float(plan_of[q][i])) < ILL_CONDITIONED * big[q]
+    )
+    for t in trials:
+        if all((i, q) in exempt for i, q, _ in t.failing):
+            return GridChoice(t.refinement, tuple(trials), exempt)
+    fewest = min(trials, key=lambda t: sum((i, q) not in exempt for i, q, _ in t.failing))
+    return GridChoice(fewest.refinement, tuple(trials), exempt)

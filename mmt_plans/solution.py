@@ -19,19 +19,19 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Literal, cast
 
 import numpy as np
 
 from .diagrams import (
     DIAGRAM_HEIGHT_MM,
     ERROR_LIMIT_PERCENT,
-    GRID_REFINEMENTS,
     TIME_AXIS,
     DiagramScales,
-    InvestigatedValue,
     KinematicDiagrams,
     PlanComparison,
     SheetCheck,
+    choose_grid,
     compare_with_plans,
     diagram_scales,
     graphical_differentiation,
@@ -51,6 +51,7 @@ from .structure import Structure, analyse_structure
 __all__ = ["Position", "Diagrams", "Solution", "solve", "sweep", "EXTREME_TOL_DEG"]
 
 EXTREME_TOL_DEG = 1e-9
+PLAN_TIE_DEG = 1e-6  # two positions this equally near the middle of a stroke are a tie
 GRID = 1440
 DENSE = 181  # crank angles of the trajectories drawn on sheet 1 (position 0 twice)
 
@@ -305,7 +306,8 @@ def _diagrams(
     """The graphical differentiation and its 5 % check against the plans (seed
     003 §1.7–1.8), judged at the investigated positions on the diagrams drawn:
     the S diagram over n·k divisions of the turn (the positions among them),
-    with the fewest k of GRID_REFINEMENTS that pass."""
+    the first grid of the series n·k (diagrams.choose_grid) on which every
+    investigated position passes by (12)/(13) as written."""
     if turn.limits is not None:
         raise MmtError(
             "no kinematic diagrams: the crank does not make a whole turn "
@@ -321,26 +323,51 @@ def _diagrams(
     # the time axis: the standard μ_t that draws one turn in 150 … 240 mm
     T = 60.0 / n1
     L = T / scale_for(T, TIME_AXIS)
-    tried: list[tuple[int, bool]] = []
-    for refinement in GRID_REFINEMENTS:
-        s_grid, v_grid, a_grid = turn.along_grid(n * refinement)
-        # the scales cancel in the values (module docstring of diagrams): the
-        # grid is judged at any, the construction then drawn at the sheet's
-        construction = graphical_differentiation(s_grid, n1=n1, mu_S=mu_l, L=L, H1=40.0, H2=40.0)
-        values = _judged(construction, v, a, v_grid, a_grid, investigated, refinement)
-        passed = all(x.passed for x in values)
-        tried.append((n * refinement, passed))
-        if passed:
-            break
+    # the largest magnitudes over the turn: the fine grid of the extreme search
+    # and the positions themselves
+    largest = (
+        max(turn.largest[0], float(np.max(np.abs(v)))),
+        max(turn.largest[1], float(np.max(np.abs(a)))),
+    )
+    # seed 003 §1.8 on the grids of the series n·k: the first on which every
+    # investigated position passes by (12)/(13) as written
+    choice = choose_grid(
+        turn.displacements,
+        n=n,
+        n1=n1,
+        investigated=investigated,
+        v_plan=v,
+        a_plan=a,
+        largest=largest,
+    )
+    refinement = choice.refinement
+    s_grid = turn.displacements(n * refinement)
     # μ_S = μ_l unless a diagram would be taller than sheet 1 holds, then up
     # the series; round poles from ROUND_POLE_DISTANCES_MM (diagram_scales)
     scales = diagram_scales(s_grid, n1=n1, L=L, mu_l=mu_l, max_height=DIAGRAM_HEIGHT_MM)
     construction = graphical_differentiation(
         s_grid, n1=n1, mu_S=scales.mu_S, L=L, H1=scales.H1, H2=scales.H2
     )
-    values = _judged(construction, v, a, v_grid, a_grid, investigated, refinement)
+    values = []
+    for i in investigated:
+        for q, plan, drawn, big in (
+            ("v", v, construction.v, largest[0]),
+            ("a", a, construction.a, largest[1]),
+        ):
+            quantity = cast(Literal["v", "a"], q)
+            values.append(
+                judge(
+                    i,
+                    quantity,
+                    float(plan[i]),
+                    float(drawn[i * refinement]),
+                    big,
+                    exempt=(i, q) in choice.exempt,
+                )
+            )
+    tried = tuple((t.intervals, t.passed) for t in choice.trials)
     sheet_check = SheetCheck(
-        n * refinement, refinement, ERROR_LIMIT_PERCENT, tuple(values), tuple(tried)
+        n * refinement, refinement, ERROR_LIMIT_PERCENT, tuple(values), tried, choice.trials
     )
     at_positions = slice(None, None, refinement)
     check = compare_with_plans(
@@ -353,24 +380,6 @@ def _diagrams(
         candidates=(),
     )
     return Diagrams(construction, check, v, a, sheet_check, refinement, scales)
-
-
-def _judged(
-    construction: KinematicDiagrams,
-    v: np.ndarray,
-    a: np.ndarray,
-    v_grid: np.ndarray,
-    a_grid: np.ndarray,
-    investigated: tuple[int, ...],
-    refinement: int,
-) -> list[InvestigatedValue]:
-    """Formulas (12) and (13) at the investigated positions, read off `construction`."""
-    vmax, amax = float(np.max(np.abs(v_grid))), float(np.max(np.abs(a_grid)))
-    values = []
-    for i in investigated:
-        values.append(judge(i, "v", float(v[i]), float(construction.v[i * refinement]), vmax))
-        values.append(judge(i, "a", float(a[i]), float(construction.a[i * refinement]), amax))
-    return values
 
 
 def _stroke_of(
@@ -395,6 +404,7 @@ class _Turn:
         self.mech, self.chain = mech, chain
         self.sense = 1 if mech.drive.sense == "ccw" else -1
         self.limits: tuple[float, float] | None = None
+        self.largest = (0.0, 0.0)  # |V|, |a| of the output over the turn, the fine grid's
         if not branches.whole_turn:
             lo, hi = max(branches.ranges, key=lambda r: (r[1] - r[0]) % 360.0)
             self.limits = (lo, hi) if self.sense > 0 else (hi, lo)
@@ -431,10 +441,13 @@ class _Turn:
         else:
             grid = self.limits[0] + self.sense * self.span_deg * (np.arange(1, GRID) / GRID)
         sw = self.chain.sweep(grid)
-        s, ds, _ = self.along(sw)
+        s, v, a = output_along(self.mech, sw)
+        w = self.mech.drive.signed_omega
+        ds = v / w
         ok = sw.ok & np.isfinite(s) & np.isfinite(ds)
         if not ok.any():
             raise sw.problem(0) or StructureError("the mechanism assembles at no crank angle")
+        self.largest = (float(np.max(np.abs(v[ok]))), float(np.max(np.abs(a[ok]))))
         if np.ptp(s[ok]) < 1e-12 * max(1.0, float(np.max(np.abs(s[ok])))):
             raise StructureError(
                 f"{self.mech.path}: output {self.mech.study.output} does not move along the "
@@ -531,7 +544,10 @@ class _Turn:
                 for p in positions
                 if p.index is not None
             ]
-            picks.append(int(np.argmin(dist)))
+            # a tie (within PLAN_TIE_DEG, SPEC_FORMAT) goes to the lower index,
+            # not to whichever rounding made a hair nearer
+            nearest = min(dist)
+            picks.append(next(i for i, d in enumerate(dist) if d <= nearest + PLAN_TIE_DEG))
         return tuple(picks)
 
     def along_grid(self, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
