@@ -41,12 +41,13 @@ from .errors import ForceError, MmtError, StructureError, partial_turn_error
 from .forces import ForceAnalysis, force_analysis_at
 from .forces.reduction import Reduction, reduce_sweep
 from .forces.state import PositionState, from_sweep
-from .kinematics.branches import Branches, build_chain
+from .kinematics.branches import Branches
 from .kinematics.chain import Chain, Sweep
+from .kinematics.handle import Kinematics, kinematics
 from .kinematics.plans import PlanView, plan_view
 from .model import Mechanism, Stroke
 from .scales import LENGTH_MANTISSA_TEXT, DrawnLength, scale_for
-from .structure import Structure, analyse_structure
+from .structure import Structure
 
 __all__ = ["Position", "Diagrams", "Solution", "solve", "sweep", "EXTREME_TOL_DEG"]
 
@@ -110,6 +111,7 @@ class Solution:
     forces: ForceAnalysis | None
     forces_problem: str | None
     reduction: Reduction
+    kinematics: Kinematics  # the chain built once: `kinematics.sweep(angles)`, `.at(angle)`
 
     # --- reading ---------------------------------------------------------------------
     @property
@@ -164,7 +166,11 @@ class Solution:
     # --- more angles, for the check and the tests ----------------------------------------
     def sweep_at(self, phi1_deg: Sequence[float] | np.ndarray) -> Sweep:
         """The kinematics at other crank angles, on the same branches."""
-        return self.chain.sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=float)))
+        return self.kinematics.sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=float)))
+
+    def at(self, phi1_deg: float) -> Sweep:
+        """The kinematics at one crank angle (`Kinematics.at`)."""
+        return self.kinematics.at(phi1_deg)
 
     def state(self, index: int | None = None, *, phi1_deg: float | None = None) -> PositionState:
         """Where every link is and how it moves at position `index`, or at any crank angle."""
@@ -200,8 +206,9 @@ class Solution:
 def sweep(mechanism: Mechanism, phi1_deg: Sequence[float] | np.ndarray) -> Sweep:
     """Positions, velocities and accelerations of every point, ω and ε of every
     link, over many crank angles at once (NaN where a group cannot assemble;
-    see `Sweep.check()`)."""
-    return build_chain(mechanism).sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=float)))
+    see `Sweep.check()`). The chain is built on the first call for a Mechanism
+    and reused after (`kinematics(mechanism)`)."""
+    return kinematics(mechanism).sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=float)))
 
 
 def output_along(mech: Mechanism, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -226,9 +233,8 @@ def solve(
     `partial_turn=True` opts in. `forces=False` leaves out the force analysis
     (sheet 1 alone)."""
     mech = mechanism if not partial_turn else mechanism.with_partial_turn()
-    structure = analyse_structure(mech)
-    chain = build_chain(mech, structure)
-    branches = chain.choice
+    handle = kinematics(mech)
+    structure, chain, branches = handle.structure, handle.chain, handle.branches
     if not branches.whole_turn and (not mech.study.partial_turn or not branches.ranges):
         # refused; also when opted in, if it assembles at no crank angle at all
         raise partial_turn_error(mech, branches)
@@ -281,6 +287,7 @@ def solve(
         forces=force_analysis,
         forces_problem=forces_problem,
         reduction=reduction,
+        kinematics=handle,
     )
 
 
