@@ -52,6 +52,7 @@ from .structure import Structure
 __all__ = ["Position", "Diagrams", "Solution", "solve", "sweep", "EXTREME_TOL_DEG"]
 
 EXTREME_TOL_DEG = 1e-9
+EXTREME_TIE = 1e-9  # of the stroke: two extreme positions this equal in s are a tie
 PLAN_TIE_DEG = 1e-6  # two positions this equally near the middle of a stroke are a tie
 GRID = 1440
 DENSE = 181  # crank angles of the trajectories drawn on sheet 1 (position 0 twice)
@@ -412,6 +413,7 @@ class _Turn:
         self.sense = 1 if mech.drive.sense == "ccw" else -1
         self.limits: tuple[float, float] | None = None
         self.largest = (0.0, 0.0)  # |V|, |a| of the output over the turn, the fine grid's
+        self._displacements: dict[int, np.ndarray] = {}  # by the number of steps
         if not branches.whole_turn:
             lo, hi = max(branches.ranges, key=lambda r: (r[1] - r[0]) % 360.0)
             self.limits = (lo, hi) if self.sense > 0 else (hi, lo)
@@ -431,10 +433,17 @@ class _Turn:
         a, b = self.limits
         return ((b - a) * self.sense) % 360.0
 
-    def along(self, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def output(self, phi1_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Where the chain is solved, and s, V, a of the output along the working
+        direction (SI, signed) at the crank angles: the searches' kernel."""
+        ok, P, V, A = self.chain.point_motion(phi1_deg, self.mech.study.output)
+        wd = np.conj(complex(*self.mech.study.working_direction))
+        return ok, (P * wd).real, (V * wd).real, (A * wd).real
+
+    def along(self, phi1_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """s, ds/dφ and d²s/dφ² of the output along the working direction (ε1 = 0)."""
         w = self.mech.drive.signed_omega
-        s, v, a = output_along(self.mech, sweep)
+        _, s, v, a = self.output(phi1_deg)
         return s, v / w, a / (w * w)
 
     def _extremes(self) -> tuple[float, float] | None:
@@ -447,13 +456,14 @@ class _Turn:
             grid = np.linspace(0.0, 360.0, GRID, endpoint=False)
         else:
             grid = self.limits[0] + self.sense * self.span_deg * (np.arange(1, GRID) / GRID)
-        sw = self.chain.sweep(grid)
-        s, v, a = output_along(self.mech, sw)
+        solved, s, v, a = self.output(grid)
         w = self.mech.drive.signed_omega
         ds = v / w
-        ok = sw.ok & np.isfinite(s) & np.isfinite(ds)
+        ok = solved & np.isfinite(s) & np.isfinite(ds)
         if not ok.any():
-            raise sw.problem(0) or StructureError("the mechanism assembles at no crank angle")
+            raise self.chain.sweep(grid[:1]).problem(0) or StructureError(
+                "the mechanism assembles at no crank angle"
+            )
         self.largest = (float(np.max(np.abs(v[ok]))), float(np.max(np.abs(a[ok]))))
         if np.ptp(s[ok]) < 1e-12 * max(1.0, float(np.max(np.abs(s[ok])))):
             raise StructureError(
@@ -472,33 +482,44 @@ class _Turn:
         lo_b = grid[idx]
         hi_b = lo_b + (step if self.limits is None else self.sense * step)
         roots = self._root(np.minimum(lo_b, hi_b), np.maximum(lo_b, hi_b))
-        s_roots, _, _ = self.along(self.chain.sweep(roots))
-        return (
-            float(roots[int(np.argmin(s_roots))] % 360.0),
-            float(roots[int(np.argmax(s_roots))] % 360.0),
+        s_roots, _, _ = self.along(roots)
+        # Two extremes of equal s (the output passing its farthest place twice a
+        # turn) are a tie, not a choice for rounding to make: of the tied ones,
+        # the pair that makes the working stroke longest.
+        tol = EXTREME_TIE * max(float(np.ptp(s_roots)), np.finfo(float).tiny)
+        lows = roots[s_roots <= s_roots.min() + tol] % 360.0
+        highs = roots[s_roots >= s_roots.max() - tol] % 360.0
+        lo, hi = max(
+            ((float(x), float(y)) for x in lows for y in highs),
+            key=lambda pair: ((pair[1] - pair[0]) * self.sense) % 360.0,
         )
+        return lo, hi
 
     def _root(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
         """Zeros of ds/dφ in the brackets [a, b] (deg, ds/dφ changes sign in
         each): Newton's steps where they stay in the bracket, bisection where
         they would leave it (rtsafe), all brackets at once."""
-        _, fa, _ = self.along(self.chain.sweep(a))
+        _, fa, _ = self.along(a)
         a, b = a.astype(float).copy(), b.astype(float).copy()
         phi = 0.5 * (a + b)
+        done = np.zeros(phi.shape, dtype=bool)
         for _ in range(200):
-            _, f, df = self.along(self.chain.sweep(phi))
+            _, f, df = self.along(phi)
             same = np.sign(f) == np.sign(fa)  # keep the sign-change bracket
             a = np.where(same, phi, a)
             fa = np.where(same, f, fa)
             b = np.where(same, b, phi)
             with np.errstate(divide="ignore", invalid="ignore"):
                 newton = phi - np.degrees(f / df)
-            inside = np.isfinite(newton) & (newton > a) & (newton < b)
+            # a Newton step onto an end of the bracket is still inside it: near
+            # the root rounding puts it there, and bisection would crawl from afar
+            inside = np.isfinite(newton) & (newton >= a) & (newton <= b)
             new = np.where(inside, newton, 0.5 * (a + b))
-            done = (f == 0) | (
-                np.abs(new - phi) <= 4 * np.finfo(float).eps * np.maximum(1.0, np.abs(phi))
-            )
-            phi = np.where(f == 0, phi, new)
+            tol = 4 * np.finfo(float).eps * np.maximum(1.0, np.abs(phi))
+            converged = (f == 0) | (np.abs(new - phi) <= tol) | (b - a <= tol)
+            # a bracket once converged stays where it converged
+            phi = np.where(done | (f == 0), phi, new)
+            done |= converged
             if done.all():
                 break
         return phi
@@ -557,16 +578,14 @@ class _Turn:
             picks.append(next(i for i, d in enumerate(dist) if d <= nearest + PLAN_TIE_DEG))
         return tuple(picks)
 
-    def along_grid(self, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """s (from position 0), V and a of the output at n equal crank steps
-        from position 0 in the drive's sense (SI)."""
-        phi = self.phi0 + self.sense * 360.0 * np.arange(n) / n
-        s, v, a = output_along(self.mech, self.chain.sweep(phi))
-        return s - s[0], v, a
-
     def displacements(self, n: int) -> np.ndarray:
         """s of the output at n equal crank steps from position 0 (s = 0 there), m:
-        the smooth S curve of the diagram, and the trials of the 5 % check."""
-        phi = self.phi0 + self.sense * 360.0 * np.arange(n) / n
-        s, _, _ = output_along(self.mech, self.chain.sweep(phi))
-        return s - s[0]
+        the smooth S curve of the diagram, and the grids of the 5 % check."""
+        found = self._displacements.get(n)
+        if found is None:
+            phi = self.phi0 + self.sense * 360.0 * np.arange(n) / n
+            _, s, _, _ = self.output(phi)
+            found = s - s[0]
+            found.setflags(write=False)
+            self._displacements[n] = found
+        return found

@@ -460,6 +460,29 @@ class Chain:
         assert arena is not None
         return arena.sweep(phi1_deg)
 
+    def point_motion(
+        self, phi1_deg: np.ndarray, name: str
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Where the chain is solved (every group assembled, its plan regular)
+        and the position, velocity and acceleration of one point (complex) over
+        the angles: the same kernels as `sweep`, without its records, for the
+        searches over many angles that read one point (the extreme positions,
+        the diagrams' grids). NaN where `ok` is False."""
+        phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+        m, failed, singular, _ = self._solve(np.radians(phi1_deg))
+        bad = np.zeros(phi1_deg.shape, dtype=bool)
+        for mask in (*failed.values(), *singular.values()):
+            bad |= mask
+        lid, p = self.locate[name]
+        mo = m[lid]
+        shape = phi1_deg.shape
+        return (
+            ~bad,
+            np.broadcast_to(mo.at(p), shape),
+            np.broadcast_to(mo.vel_at(p), shape),
+            np.broadcast_to(mo.acc_at(p), shape),
+        )
+
     def _solve(self, phi_rad: np.ndarray):
         """Positions, then the plans group by group: the links' motion, and
         where each group fails to assemble or its plan is singular."""
