@@ -55,6 +55,9 @@ EXTREME_TOL_DEG = 1e-9
 EXTREME_TIE = 1e-9  # of the stroke: two extreme positions this equal in s are a tie
 PLAN_TIE_DEG = 1e-6  # two positions this equally near the middle of a stroke are a tie
 GRID = 1440
+# the fine grid the displacements are read from: 24 steps to a position step,
+# so that every grid n·k of the 5 % check's series (k = 1 … 12) is among them
+BASE_STEPS = 24
 DENSE = 181  # crank angles of the trajectories drawn on sheet 1 (position 0 twice)
 
 
@@ -295,8 +298,8 @@ def solve(
 def _mechanism_scale(mech: Mechanism, chain: Chain) -> float:
     """Scale of the mechanism drawing: the standard value that draws the span
     of every point's trajectory in 150–300 mm (μ_l = l_OA / OA, (2))."""
-    grid = chain.sweep(np.linspace(0.0, 360.0, 72, endpoint=False))
-    pts = np.concatenate([grid.position_of(n)[grid.ok] for n in mech.point_owners])
+    pts = chain.positions_of(np.linspace(0.0, 360.0, 72, endpoint=False), mech.point_owners)
+    pts = pts[np.isfinite(pts)]
     span = max(np.ptp(pts.real), np.ptp(pts.imag), mech.crank_length)
     return scale_for(
         float(span), DrawnLength("mechanism", 150.0, 300.0, 220.0), LENGTH_MANTISSA_TEXT
@@ -481,8 +484,11 @@ class _Turn:
         step = 360.0 / GRID if self.limits is None else self.span_deg / GRID
         lo_b = grid[idx]
         hi_b = lo_b + (step if self.limits is None else self.sense * step)
-        roots = self._root(np.minimum(lo_b, hi_b), np.maximum(lo_b, hi_b))
-        s_roots, _, _ = self.along(roots)
+        # ds/dφ at each bracket's ends, read off the grid
+        ascending = lo_b <= hi_b
+        fa = np.where(ascending, ds[idx], ds[nxt[idx]])
+        fb = np.where(ascending, ds[nxt[idx]], ds[idx])
+        roots, s_roots = self._root(np.minimum(lo_b, hi_b), np.maximum(lo_b, hi_b), fa, fb)
         # Two extremes of equal s (the output passing its farthest place twice a
         # turn) are a tie, not a choice for rounding to make: of the tied ones,
         # the pair that makes the working stroke longest.
@@ -495,16 +501,26 @@ class _Turn:
         )
         return lo, hi
 
-    def _root(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    def _root(
+        self, a: np.ndarray, b: np.ndarray, fa: np.ndarray, fb: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray]:
         """Zeros of ds/dφ in the brackets [a, b] (deg, ds/dφ changes sign in
-        each): Newton's steps where they stay in the bracket, bisection where
-        they would leave it (rtsafe), all brackets at once."""
-        _, fa, _ = self.along(a)
+        each, fa and fb its values at the ends): from the chord's zero,
+        Newton's steps where they stay in the bracket, bisection where they
+        would leave it (rtsafe), all brackets at once. With s at each zero, from
+        the last step (which moved φ by a few ulps at most, where ds/dφ = 0: s
+        is the same to far below rounding)."""
         a, b = a.astype(float).copy(), b.astype(float).copy()
-        phi = 0.5 * (a + b)
+        # the chord's zero: a grid step's worth of curvature from the root, so
+        # Newton's quadratic steps reach machine precision in two or three
+        with np.errstate(divide="ignore", invalid="ignore"):
+            chord = a - fa * (b - a) / (fb - fa)
+        phi = np.where(np.isfinite(chord) & (chord > a) & (chord < b), chord, 0.5 * (a + b))
         done = np.zeros(phi.shape, dtype=bool)
+        s_at = np.zeros(phi.shape)
         for _ in range(200):
-            _, f, df = self.along(phi)
+            s, f, df = self.along(phi)
+            s_at = np.where(done, s_at, s)
             same = np.sign(f) == np.sign(fa)  # keep the sign-change bracket
             a = np.where(same, phi, a)
             fa = np.where(same, f, fa)
@@ -522,7 +538,7 @@ class _Turn:
             done |= converged
             if done.all():
                 break
-        return phi
+        return phi, s_at
 
     def _phi0(self) -> float:
         if self.limits is not None:  # half a step in from the first limit of assembly
@@ -583,9 +599,15 @@ class _Turn:
         the smooth S curve of the diagram, and the grids of the 5 % check."""
         found = self._displacements.get(n)
         if found is None:
-            phi = self.phi0 + self.sense * 360.0 * np.arange(n) / n
-            _, s, _, _ = self.output(phi)
-            found = s - s[0]
+            # every grid of the 5 % check's series, and the S curve of most
+            # grids drawn, is every so many steps of one fine grid: one sweep
+            fine = self.mech.study.positions * BASE_STEPS
+            if n != fine and fine % n == 0:
+                found = self.displacements(fine)[:: fine // n]
+            else:
+                phi = self.phi0 + self.sense * 360.0 * np.arange(n) / n
+                _, s, _, _ = self.output(phi)
+                found = s - s[0]
             found.setflags(write=False)
             self._displacements[n] = found
         return found

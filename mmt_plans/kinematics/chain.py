@@ -5,6 +5,7 @@ they are attached, each solved in closed form over all crank angles at once.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
@@ -15,6 +16,7 @@ from ..errors import AssemblyError, SingularPlanError, UnsupportedError
 from ..model import FRAME, Mechanism
 from ..structure import Structure, analyse_structure
 from .dyads import DYADS, DyadSolver, GroupPlan, Motion
+from .geometry import quiet
 
 # a plan whose direction lines meet at an angle with a sine below this is
 # reported as singular rather than solved (see tests/kinematics/test_hard_cases.py)
@@ -312,7 +314,8 @@ class Sweep:
         if self.solved_plans is not None:
             return self.solved_plans
         m = {lid: Motion.of(state) for lid, state in self.links.items()}
-        return tuple(solver.plan(m, place=False) for solver in self.chain.solvers)
+        with quiet():
+            return tuple(solver.plan(m, place=False) for solver in self.chain.solvers)
 
     @property
     def ok(self) -> np.ndarray:
@@ -427,7 +430,7 @@ class Chain:
         """Positions of the first `upto` groups (all by default) with their
         branches; `margins` receives each group's `margin` before it is placed."""
         m = {FRAME: self.frame(), self.mech.drive.link: self.crank(phi_rad)}
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        with quiet():
             for solver in self.solvers[:upto]:
                 if margins is not None:
                     margins.append(solver.margin(m))
@@ -483,9 +486,24 @@ class Chain:
             np.broadcast_to(mo.acc_at(p), shape),
         )
 
+    def positions_of(self, phi1_deg: np.ndarray, names: Iterable[str]) -> np.ndarray:
+        """Where the named points are (complex, one row per name), positions
+        only: no plans. NaN where a group cannot assemble."""
+        phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+        m = self.place_all(np.radians(phi1_deg), self.branches)
+        rows = []
+        for name in names:
+            lid, p = self.locate[name]
+            rows.append(np.broadcast_to(m[lid].at(p), phi1_deg.shape))
+        return np.array(rows)
+
     def _solve(self, phi_rad: np.ndarray):
         """Positions, then the plans group by group: the links' motion, and
         where each group fails to assemble or its plan is singular."""
+        with quiet():
+            return self._solve_quietly(phi_rad)
+
+    def _solve_quietly(self, phi_rad: np.ndarray):
         m = self.place_all(phi_rad, self.branches)
         failed, singular, plans = {}, {}, []
         for solver in self.solvers:
