@@ -104,18 +104,49 @@ def _slider(D, VD, aD, l: float, y: float):
     VE = VD.real - w * u.imag
     eps = (w * w * u.imag - aD.imag) / u.real
     aE = aD.real - eps * u.imag - w * w * u.real
-    return E, VE, aE, w, eps
+    return E, VE + 0j, aE + 0j, w, eps
 
 
-def reference_a(phi_deg: np.ndarray) -> tuple[np.ndarray, ...]:
-    """Case A in closed form: A, B with their V and a, ω2, ε2."""
-    A, VA, aA = _crank(phi_deg)
-    B, VB, aB, w2, e2 = _slider(A, VA, aA, 0.8, -0.07)
-    return A, VA, aA, B, VB, aB, w2, e2
+def _as_sweep(points: dict[str, tuple[np.ndarray, ...]], frame: dict[str, complex], n: int):
+    """What `Sweep` gives, as a numpy user would write it: every point's
+    position, velocity and acceleration as [x, y] rows, the frame's points
+    still. (A centre of mass in the middle of a link moves as the mean of its
+    ends: a link's velocity and acceleration fields are affine.)"""
+    out = []
+    for k in range(3):
+        field = {name: np.stack((z[k].real, z[k].imag), axis=-1) for name, z in points.items()}
+        for name, z in frame.items():
+            c = z if k == 0 else 0j
+            field[name] = np.broadcast_to(np.array([c.real, c.imag]), (n, 2))
+        out.append(field)
+    return out
 
 
-def reference_b(phi_deg: np.ndarray) -> tuple[np.ndarray, ...]:
-    """Case B in closed form: A, B, D, E with V and a, ω and ε of links 2–4."""
+def _mid(P: tuple[np.ndarray, ...], Q: tuple[np.ndarray, ...]) -> tuple[np.ndarray, ...]:
+    return tuple(0.5 * (p + q) for p, q in zip(P, Q))
+
+
+def reference_a(phi_deg: np.ndarray) -> tuple[object, ...]:
+    """Case A in closed form: every point (A, B, the centres of mass S1–S3) with
+    V and a as [x, y], ω and ε of links 1–3."""
+    n = phi_deg.size
+    A = _crank(phi_deg)
+    B, VB, aB, w2, e2 = _slider(*A, 0.8, -0.07)
+    Bm = (B, VB, aB)
+    O = (np.zeros(n, complex),) * 3
+    fields = _as_sweep(
+        {"A": A, "B": Bm, "S1": _mid(O, A), "S2": _mid(A, Bm), "S3": Bm}, {"O": 0j}, n
+    )
+    zero = np.zeros(n)
+    omega = {1: np.full(n, OMEGA), 2: w2, 3: zero}
+    eps = {1: zero, 2: e2, 3: zero}
+    return fields, omega, eps
+
+
+def reference_b(phi_deg: np.ndarray) -> tuple[object, ...]:
+    """Case B in closed form: every point (A, B, D, E, the centres of mass
+    S1–S5) with V and a as [x, y], ω and ε of links 1–5."""
+    n = phi_deg.size
     A, VA, aA = _crank(phi_deg)
     C = 0.75 - 0.08j
     l2, l3 = 0.85, 1.0
@@ -130,14 +161,35 @@ def reference_b(phi_deg: np.ndarray) -> tuple[np.ndarray, ...]:
     R = -aA + w2 * w2 * u - w3 * w3 * w
     e2 = -(cw * R).real / (cw * u).imag
     e3 = (cu * R).real / (cu * w).imag
-    VB, aB = 1j * w3 * w, (1j * e3 - w3 * w3) * w
+    Bm = (B, 1j * w3 * w, (1j * e3 - w3 * w3) * w)
     Dr = 0.6 * w
-    D, VD, aD = C + Dr, 1j * w3 * Dr, (1j * e3 - w3 * w3) * Dr
-    E, VE, aE, w4, e4 = _slider(D, VD, aD, 0.8, -0.9)
-    return A, VA, aA, B, VB, aB, D, VD, aD, E, VE, aE, w2, w3, w4, e2, e3, e4
+    Dm = (C + Dr, 1j * w3 * Dr, (1j * e3 - w3 * w3) * Dr)
+    E, VE, aE, w4, e4 = _slider(*Dm, 0.8, -0.9)
+    Am, Em = (A, VA, aA), (E, VE, aE)
+    Cm = (np.full(n, C), np.zeros(n, complex), np.zeros(n, complex))
+    O = (np.zeros(n, complex),) * 3
+    fields = _as_sweep(
+        {
+            "A": Am,
+            "B": Bm,
+            "D": Dm,
+            "E": Em,
+            "S1": _mid(O, Am),
+            "S2": _mid(Am, Bm),
+            "S3": _mid(Cm, Bm),
+            "S4": _mid(Dm, Em),
+            "S5": Em,
+        },
+        {"O": 0j, "C": C},
+        n,
+    )
+    zero = np.zeros(n)
+    omega = {1: np.full(n, OMEGA), 2: w2, 3: w3, 4: w4, 5: zero}
+    eps = {1: zero, 2: e2, 3: e3, 4: e4, 5: zero}
+    return fields, omega, eps
 
 
-def mechanisms() -> dict[str, tuple[Mechanism, Callable[[np.ndarray], tuple[np.ndarray, ...]]]]:
+def mechanisms() -> dict[str, tuple[Mechanism, Callable[[np.ndarray], tuple[object, ...]]]]:
     from ..spec import loads
 
     return {

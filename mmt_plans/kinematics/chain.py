@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 from typing import Any
 
 import numpy as np
@@ -66,16 +66,29 @@ def _full(x, n: int, dtype) -> np.ndarray:
     """x as a read-only (n,) array; a number (the frame's, a constant ω) is
     spread out without a copy."""
     if not isinstance(x, np.ndarray):
-        x = np.ndarray((n,), dtype=dtype, buffer=np.array([x], dtype=dtype), strides=(0,))
-    elif x.dtype != dtype:
+        return _spread(x, n, dtype)
+    if x.dtype != dtype:
         x = x.astype(dtype)
     x.setflags(write=False)
     return x
 
 
+@lru_cache(maxsize=512)
+def _spread(x, n: int, dtype) -> np.ndarray:
+    """A number seen at n angles: one value, stride 0, read-only (so shared by
+    every sweep of that many angles: the frame's, a crank's constant ω)."""
+    out = np.ndarray((n,), dtype=dtype, buffer=np.array([x], dtype=dtype), strides=(0,))
+    out.setflags(write=False)
+    return out
+
+
+@lru_cache(maxsize=512)
 def _still(z: complex, n: int) -> np.ndarray:
-    """A frame point's [x, y] at every angle (one pair, not copied)."""
-    return np.broadcast_to(np.array([z.real, z.imag]), (n, 2))
+    """A frame point's [x, y] at every angle (one pair, not copied, read-only)."""
+    pair = np.array([z.real, z.imag])
+    out = np.ndarray((n, 2), dtype=np.float64, buffer=pair, strides=(0, pair.itemsize))
+    out.setflags(write=False)
+    return out
 
 
 _STATE = (
@@ -273,11 +286,14 @@ class Sweep:
         else:
             block = np.empty(shape, dtype=complex)
             _work_out_fields(block, self.links, points, known)
+        # the whole block seen as [x, y] pairs once (its rows are then views)
+        pairs = block.view(np.float64).reshape(shape + (2,))
+        pairs.setflags(write=False)
         fields = []
-        for (base, _), rows, held in zip(_FIELD_PARTS, block, known):
+        for (base, _), rows, held in zip(_FIELD_PARTS, pairs, known):
             field = {}
             for row, (name, lid, p), same in zip(rows, points, held):
-                field[name] = _xy(row if same is None else same)
+                field[name] = row if same is None else _xy(same)
             fields.append(
                 {
                     name: field[name] if lid != FRAME else _still(p if base == "o" else 0j, n)
