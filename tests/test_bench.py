@@ -36,3 +36,19 @@ def test_the_bench_baselines_compute_what_the_sweep_does():
             for lid in ours:
                 scale = max(1.0, float(np.abs(theirs[lid]).max()))
                 assert np.allclose(ours[lid], theirs[lid], rtol=0, atol=1e-12 * scale), (name, lid)
+
+
+def test_the_sweep_table_gives_a_ratio_for_each_case():
+    from mmt_plans.bench.sweeps import sweep_rows
+
+    rows = sweep_rows(1, counts=(12,))
+    assert [r[0] for r in rows] == ["A", "B"]
+    for row in rows:
+        assert math.isfinite(float(row[4])) and float(row[4]) > 0.0
+        assert row[5] == "2.0"
+
+
+def test_the_overview_rows_read_measured_over_goal():
+    from mmt_plans.bench.overview import _row
+
+    assert _row("solve", 1.5e-3, "ms", "goal", 3e-3) == ["solve", "1.5 ms", "goal", "3 ms", "0.50"]
