@@ -16,7 +16,7 @@ import numpy as np
 
 from ..model import Mechanism
 from ..report import table
-from .timing import best_time
+from .timing import best_cpu_times
 
 OMEGA = 2.0 * np.pi * 100.0 / 60.0
 COUNTS = (12, 360, 36_000)
@@ -200,7 +200,7 @@ def mechanisms() -> dict[str, tuple[Mechanism, Callable[[np.ndarray], tuple[obje
 
 def sweep_rows(repeat: int, counts: Sequence[int] = COUNTS) -> list[list[str]]:
     """One row per case and N: µs per angle of `mmt_plans.sweep` (the cached
-    chain) and of the closed form, and their ratio."""
+    chain) and of the closed form, and their ratio (CPU time, runs in turn)."""
     import mmt_plans
 
     rows = []
@@ -208,14 +208,16 @@ def sweep_rows(repeat: int, counts: Sequence[int] = COUNTS) -> list[list[str]]:
         mmt_plans.sweep(mech, [0.0])  # the chain built once, as a caller sweeping in a loop
         for n in counts:
             phi = np.linspace(0.0, 360.0, n, endpoint=False)
-            number = max(1, 20_000 // n)
+            number = max(1, 2_000 // n)
 
             def ours() -> object:
                 sw = mmt_plans.sweep(mech, phi)
                 return sw.points, sw.v, sw.a, sw.omega, sw.eps
 
-            t_ours = best_time(ours, repeat, number)
-            t_ref = best_time(lambda: reference(phi), repeat, number)
+            def ref() -> object:
+                return reference(phi)
+
+            t_ours, t_ref = best_cpu_times((ours, ref), 3 * repeat, number)
             rows.append(
                 [
                     name,
