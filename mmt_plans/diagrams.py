@@ -192,12 +192,13 @@ def diagram_scales(
             tall_v = h_v * ref.mu_V / mu_V
             if tall_v > max_height * (1 + 1e-9):
                 continue
+            standard_v = is_standard(mu_V)
             for H2 in ROUND_POLE_DISTANCES_MM:
                 mu_a = derived_scale(mu_V, mu_t, H2)
                 tall_a = h_a * ref.mu_a / mu_a
                 if tall_a > max_height * (1 + 1e-9):
                     continue
-                standard = is_standard(mu_V) and is_standard(mu_a)
+                standard = standard_v and is_standard(mu_a)
                 inside = sum(textbook[0] <= H <= textbook[1] for H in (H1, H2))
                 key = (float(standard), float(inside), min(tall_v, tall_a), tall_v + tall_a)
                 found = DiagramScales(mu_S, H1, H2, steps, standard)
@@ -245,6 +246,41 @@ def _periodic_spline_eval(x: Array, x0: float, h: float, y: Array, M: Array) -> 
     j1 = (j + 1) % n
     linear = (1.0 - tau) * y[j] + tau * y[j1]
     return linear - h**2 / 6.0 * tau * (1.0 - tau) * ((2.0 - tau) * M[j] + (1.0 + tau) * M[j1])
+
+
+def _spline_at_nodes(y: Array, M: Array, h: float) -> Array:
+    """The spline through the middles of the intervals, read at the grid points:
+    each half way (τ = ½) between the middles j − 1 (wrapping) and j, where
+    `_periodic_spline_eval` is (y_j−1 + y_j)/2 − h²/16·(M_j−1 + M_j)."""
+    out = y + np.concatenate((y[-1:], y[:-1]))
+    out *= 0.5
+    out -= h * h / 16.0 * (M + np.concatenate((M[-1:], M[:-1])))
+    return out
+
+
+@lru_cache(maxsize=64)
+def _grid_weights(n: int, per_interval: int) -> tuple[Array, Array, Array, Array, Array, Array]:
+    """Where the samples i/per_interval of the grid's steps (i = 0 … n·per_interval)
+    fall between the middles of the intervals: the indices j, j + 1 and the
+    weights of y_j, y_j+1, M_j, M_j+1 (the latter times h²) of
+    `_periodic_spline_eval`, with τ exact (u = i/per_interval − ½)."""
+    i = np.arange(n * per_interval + 1)
+    u = np.mod(i / per_interval - 0.5, n)
+    j = np.minimum(np.floor(u).astype(np.int64), n - 1)
+    tau = u - j
+    j1 = (j + 1) % n
+    bend = -tau * (1.0 - tau) / 6.0
+    return tuple(  # type: ignore[return-value]
+        _frozen(a) if a.dtype == np.float64 else a
+        for a in (j, j1, 1.0 - tau, tau, bend * (2.0 - tau), bend * (1.0 + tau))
+    )
+
+
+def _spline_on_grid(y: Array, M: Array, h: float, per_interval: int) -> Array:
+    """The spline through the middles, sampled `per_interval` times a step from
+    the first grid point to the last (the drawn curve)."""
+    j, j1, wy0, wy1, wm0, wm1 = _grid_weights(y.size, per_interval)
+    return wy0 * y[j] + wy1 * y[j1] + (h * h) * (wm0 * M[j] + wm1 * M[j1])
 
 
 # --------------------------------------------------------------------------- the construction
@@ -343,8 +379,8 @@ def _differentiate(
     M = _periodic_spline_moments(mid[:, 1], h)
     L = float(x[-1])
     xs = np.linspace(0.0, L, n * samples_per_interval + 1)
-    curve = np.column_stack([xs, _periodic_spline_eval(xs, float(x_mid[0]), h, mid[:, 1], M)])
-    ordinates = _periodic_spline_eval(x[:-1], float(x_mid[0]), h, mid[:, 1], M)
+    curve = np.column_stack([xs, _spline_on_grid(mid[:, 1], M, h, samples_per_interval)])
+    ordinates = _spline_at_nodes(mid[:, 1], M, h)
 
     return GraphicalDerivative(
         pole_distance=float(H),

@@ -26,7 +26,9 @@ def best_time(fn: Callable[[], object], repeat: int, number: int = 1) -> float:
     return best
 
 
-def best_cpu_times(fns: Sequence[Callable[[], object]], repeat: int, number: int = 1) -> list[float]:
+def best_cpu_times(
+    fns: Sequence[Callable[[], object]], repeat: int, number: int = 1
+) -> list[float]:
     """The least CPU time of this process (s per call) of each of `fns`, their
     runs taken in turn, so that a machine shared with other work weighs on
     each alike: for comparing in-process figures side by side (a ratio)."""
