@@ -248,9 +248,9 @@ def solve(
     plan_positions = turn.plan_positions(positions)
     fp = mech.study.force_position
     force_position = plan_positions[0] if fp is None else fp
-    mu_l = _mechanism_scale(mech, chain)
     phi0 = positions[0].phi1_deg
     dense = chain.sweep(np.linspace(phi0, phi0 + 360.0, DENSE))
+    mu_l = _mechanism_scale(mech, dense)
     diagrams, diagrams_problem, s_dense = None, None, None
     try:
         diagrams = _diagrams(mech, turn, positions, sw, mu_l, plan_positions)
@@ -295,11 +295,11 @@ def solve(
     )
 
 
-def _mechanism_scale(mech: Mechanism, chain: Chain) -> float:
+def _mechanism_scale(mech: Mechanism, dense: Sweep) -> float:
     """Scale of the mechanism drawing: the standard value that draws the span
-    of every point's trajectory in 150–300 mm (μ_l = l_OA / OA, (2))."""
-    pts = chain.positions_of(np.linspace(0.0, 360.0, 72, endpoint=False), mech.point_owners)
-    pts = pts[np.isfinite(pts)]
+    of every point's trajectory (the dense sweep's, over one turn) in
+    150–300 mm (μ_l = l_OA / OA, (2))."""
+    pts = np.concatenate([dense.position_of(n)[dense.ok] for n in mech.point_owners])
     span = max(np.ptp(pts.real), np.ptp(pts.imag), mech.crank_length)
     return scale_for(
         float(span), DrawnLength("mechanism", 150.0, 300.0, 220.0), LENGTH_MANTISSA_TEXT

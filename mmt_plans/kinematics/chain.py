@@ -5,7 +5,6 @@ they are attached, each solved in closed form over all crank angles at once.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 from typing import Any
@@ -229,6 +228,14 @@ def _work_out_fields(block: np.ndarray, links: dict, points: list, known: list) 
             if same is None:
                 # the product in warm scratch memory, then one pass over the row
                 np.add(getattr(links[lid], base), getattr(links[lid], per_unit) * p, out=row)
+
+
+def _over(x, shape: tuple[int, ...]) -> np.ndarray:
+    """x over the angles: an array of that shape as it is (no call into numpy's
+    broadcasting machinery), a number or a smaller array spread out (a copy)."""
+    if isinstance(x, np.ndarray) and x.shape == shape:
+        return x
+    return np.broadcast_to(x, shape).copy()
 
 
 def _ro(a) -> np.ndarray:
@@ -495,23 +502,7 @@ class Chain:
         lid, p = self.locate[name]
         mo = m[lid]
         shape = phi1_deg.shape
-        return (
-            ~bad,
-            np.broadcast_to(mo.at(p), shape),
-            np.broadcast_to(mo.vel_at(p), shape),
-            np.broadcast_to(mo.acc_at(p), shape),
-        )
-
-    def positions_of(self, phi1_deg: np.ndarray, names: Iterable[str]) -> np.ndarray:
-        """Where the named points are (complex, one row per name), positions
-        only: no plans. NaN where a group cannot assemble."""
-        phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
-        m = self.place_all(np.radians(phi1_deg), self.branches)
-        rows = []
-        for name in names:
-            lid, p = self.locate[name]
-            rows.append(np.broadcast_to(m[lid].at(p), phi1_deg.shape))
-        return np.array(rows)
+        return ~bad, _over(mo.at(p), shape), _over(mo.vel_at(p), shape), _over(mo.acc_at(p), shape)
 
     def _solve(self, phi_rad: np.ndarray):
         """Positions, then the plans group by group: the links' motion, and
@@ -527,13 +518,10 @@ class Chain:
             L1, L2 = m[solver.L1], m[solver.L2]
             # one sum is finite exactly where all four are (NaN and ±inf carry)
             # broadcast: a group fixed to the frame only has plain numbers
-            failed[name] = _ro(
-                np.broadcast_to(~np.isfinite(L1.o + L2.o + L1.e + L2.e), phi_rad.shape).copy()
-            )
+            shape = phi_rad.shape
+            failed[name] = _ro(_over(~np.isfinite(L1.o + L2.o + L1.e + L2.e), shape))
             plan = solver.plan(m)
-            singular[name] = _ro(
-                ~failed[name] & ~np.broadcast_to(plan.sin_angle > SINGULAR_SIN, phi_rad.shape)
-            )
+            singular[name] = _ro(~failed[name] & ~_over(plan.sin_angle > SINGULAR_SIN, shape))
             plans.append(plan)
         return m, failed, singular, tuple(plans)
 

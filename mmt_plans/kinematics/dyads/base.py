@@ -192,6 +192,7 @@ class DyadSolver:
     def __init__(self, mech: Mechanism, group: AssurGroup) -> None:
         self.mech = mech
         self.group = group
+        self._locs: dict[tuple[int, str], complex] = {}  # local coordinates, read once
         self.L1, self.L2 = group.links
         # the kind fixes which pairs are revolute and which prismatic
         self.outer1: Any
@@ -204,9 +205,12 @@ class DyadSolver:
 
     # local coordinates as complex numbers
     def loc(self, link: int, name: str) -> complex:
-        pts = self.mech.frame if link == 0 else self.mech.links[link].points
-        p = pts[name]
-        return complex(p[0], p[1])
+        found = self._locs.get((link, name))
+        if found is None:
+            pts = self.mech.frame if link == 0 else self.mech.links[link].points
+            p = pts[name]
+            found = self._locs[link, name] = complex(p[0], p[1])
+        return found
 
     def prism_line(self, pair: Prismatic, m: dict, unknown: int, Q_local: complex, e):
         """The line (P0, u) on which the point Q of the unknown link lies, its angle e known."""
