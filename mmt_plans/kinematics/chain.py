@@ -163,7 +163,7 @@ class _Arena:
             self.singular[g][part] = singular[g]
         block = self.fields.reshape(3, -1, self.n)[:, :, part]
         points = _moving_points(self.chain)
-        _work_out_fields(block, m, points, _all_known(m, self.chain.carried, points))
+        _work_out_fields(block, m, points, _all_known(m, self.chain.carried, points, self.chain))
 
     def sweep(self, phi1_deg: np.ndarray) -> Sweep:
         states = {}
@@ -198,24 +198,32 @@ def _is_origin(p: complex, origin) -> bool:
 
 
 def _known(links: dict, carried: dict, base: str, name: str, lid: int, p: complex):
-    """The array a point's row would repeat, if there is one: the origin
+    """Which link's array a point's row would repeat, if one does: the origin
     quantity of its link (a point at the origin), or the velocity or
     acceleration of a link whose origin sits on the point (`DyadSolver.carried`)."""
-    origin = getattr(links[lid], base)
-    if _is_origin(p, origin):
-        return origin
+    if _is_origin(p, getattr(links[lid], base)):
+        return lid
     if base != "o" and name in carried:
-        same = getattr(links[carried[name]], base)
-        if _is_origin(0j, same):
-            return same
+        if _is_origin(0j, getattr(links[carried[name]], base)):
+            return carried[name]
     return None
 
 
-def _all_known(links: dict, carried: dict, points: list) -> list[list]:
-    """`_known` for every quantity and point."""
+def _all_known(links: dict, carried: dict, points: list, chain: Chain | None = None) -> list[list]:
+    """For every quantity and point, the link array its row repeats (or None).
+    Which rows repeat which arrays follows from the chain's structure alone,
+    so a chain works it out once."""
+    sources = getattr(chain, "_known_sources", None)
+    if sources is None:
+        sources = [
+            [_known(links, carried, base, name, lid, p) for name, lid, p in points]
+            for base, _ in _FIELD_PARTS
+        ]
+        if chain is not None:
+            chain._known_sources = sources  # type: ignore[attr-defined]
     return [
-        [_known(links, carried, base, name, lid, p) for name, lid, p in points]
-        for base, _ in _FIELD_PARTS
+        [None if src is None else getattr(links[src], base) for src in row]
+        for (base, _), row in zip(_FIELD_PARTS, sources)
     ]
 
 
@@ -287,7 +295,7 @@ class Sweep:
         n = len(self.phi1_deg)
         points = _moving_points(self.chain)
         shape = (len(_FIELD_PARTS), len(points), n)
-        known = _all_known(self.links, self.chain.carried, points)
+        known = _all_known(self.links, self.chain.carried, points, self.chain)
         if self.worked_out is not None:
             block = self.worked_out.reshape(shape)
         else:
