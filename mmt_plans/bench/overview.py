@@ -45,13 +45,17 @@ GOALS = {
 KEY_WORKERS = 2
 
 
+def _figure(x: float) -> str:
+    return f"{x:.0f}" if abs(x) >= 100 else f"{x:.3g}"
+
+
 def _row(what: str, measured: float, unit: str, reference: str, goal: float) -> list[str]:
     scale = {"ms": 1e3, "s": 1.0}[unit]
     return [
         what,
-        f"{measured * scale:.3g} {unit}",
+        f"{_figure(measured * scale)} {unit}",
         reference,
-        f"{goal * scale:.3g} {unit}",
+        f"{_figure(goal * scale)} {unit}",
         f"{measured / goal:.2f}",
     ]
 
