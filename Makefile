@@ -45,8 +45,10 @@ run: $(STAMP) fonts
 test: $(STAMP) fonts browser
 	$(BIN)/python -m pytest
 
+# KEYS=1 adds the 55 seed-task keys on two workers (about a minute);
+# SUMMARY=1 prints only the overview table
 bench: $(STAMP)
-	$(BIN)/python -m mmt_plans bench
+	$(BIN)/python -m mmt_plans bench $(if $(KEYS),--keys) $(if $(SUMMARY),--summary)
 
 # 20,000 seeded mutants of the samples, in-process (tests/fuzz.py): counts of
 # clean errors, analysed, unexpected exceptions, non-finite outputs and slow

@@ -6,6 +6,7 @@ Mechanisms course project, exact and drawn.
     >>> solution = mmt_plans.solve(mech)
     >>> solution.structure.formula
     'I(0,1) <- II(2,3) <- II(4,5)'
+    >>> sw = mmt_plans.kinematics(mech).sweep([0.0, 30.0])   # built once, swept often
 """
 
 from .errors import (
@@ -16,6 +17,7 @@ from .errors import (
     SpecError,
     StructureError,
 )
+from .kinematics.handle import Kinematics, kinematics
 from .model import Mechanism
 from .solution import Solution, solve, sweep
 from .spec import load, loads
@@ -25,6 +27,8 @@ __all__ = [
     "loads",
     "solve",
     "sweep",
+    "kinematics",
+    "Kinematics",
     "Mechanism",
     "Solution",
     "MmtError",

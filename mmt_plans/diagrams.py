@@ -40,6 +40,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Literal, cast
 
@@ -70,6 +71,15 @@ __all__ = [
     "spectral_derivatives",
     "central_difference_derivatives",
     "textbook_derivatives",
+    "chord_derivatives",
+    "GRID_REFINEMENTS",
+    "ILL_CONDITIONED",
+    "InvestigatedValue",
+    "GridTrial",
+    "GridChoice",
+    "SheetCheck",
+    "choose_grid",
+    "judge",
 ]
 
 Array = np.ndarray  # NDArray[np.float64] to the type checker (annotations are strings)
@@ -182,12 +192,13 @@ def diagram_scales(
             tall_v = h_v * ref.mu_V / mu_V
             if tall_v > max_height * (1 + 1e-9):
                 continue
+            standard_v = is_standard(mu_V)
             for H2 in ROUND_POLE_DISTANCES_MM:
                 mu_a = derived_scale(mu_V, mu_t, H2)
                 tall_a = h_a * ref.mu_a / mu_a
                 if tall_a > max_height * (1 + 1e-9):
                     continue
-                standard = is_standard(mu_V) and is_standard(mu_a)
+                standard = standard_v and is_standard(mu_a)
                 inside = sum(textbook[0] <= H <= textbook[1] for H in (H1, H2))
                 key = (float(standard), float(inside), min(tall_v, tall_a), tall_v + tall_a)
                 found = DiagramScales(mu_S, H1, H2, steps, standard)
@@ -214,9 +225,16 @@ def _periodic_spline_moments(y: Array, h: float) -> Array:
     the discrete Fourier transform diagonalises it; 4 + 2 cos θ ≥ 2 never vanishes.
     """
     n = y.size
-    theta = 2.0 * np.pi * np.arange(n) / n
-    rhs = np.fft.fft(y) * (6.0 / h**2) * (2.0 * np.cos(theta) - 2.0)
-    return np.fft.ifft(rhs / (4.0 + 2.0 * np.cos(theta))).real
+    return np.fft.irfft(np.fft.rfft(y) * (_spline_factor(n) / (h * h)), n)
+
+
+@lru_cache(maxsize=64)
+def _spline_factor(n: int) -> Array:
+    """6·(2 cos θ − 2)/(4 + 2 cos θ) at the harmonics θ = 2πk/n, k = 0 … n/2: the
+    circulant system of the periodic spline, divided out (a real signal's
+    spectrum is symmetric, so half of it says all)."""
+    c = np.cos(2.0 * np.pi * np.arange(n // 2 + 1) / n)
+    return _frozen(6.0 * (2.0 * c - 2.0) / (4.0 + 2.0 * c))
 
 
 def _periodic_spline_eval(x: Array, x0: float, h: float, y: Array, M: Array) -> Array:
@@ -228,6 +246,41 @@ def _periodic_spline_eval(x: Array, x0: float, h: float, y: Array, M: Array) -> 
     j1 = (j + 1) % n
     linear = (1.0 - tau) * y[j] + tau * y[j1]
     return linear - h**2 / 6.0 * tau * (1.0 - tau) * ((2.0 - tau) * M[j] + (1.0 + tau) * M[j1])
+
+
+def _spline_at_nodes(y: Array, M: Array, h: float) -> Array:
+    """The spline through the middles of the intervals, read at the grid points:
+    each half way (τ = ½) between the middles j − 1 (wrapping) and j, where
+    `_periodic_spline_eval` is (y_j−1 + y_j)/2 − h²/16·(M_j−1 + M_j)."""
+    out = y + np.concatenate((y[-1:], y[:-1]))
+    out *= 0.5
+    out -= h * h / 16.0 * (M + np.concatenate((M[-1:], M[:-1])))
+    return out
+
+
+@lru_cache(maxsize=64)
+def _grid_weights(n: int, per_interval: int) -> tuple[Array, Array, Array, Array, Array, Array]:
+    """Where the samples i/per_interval of the grid's steps (i = 0 … n·per_interval)
+    fall between the middles of the intervals: the indices j, j + 1 and the
+    weights of y_j, y_j+1, M_j, M_j+1 (the latter times h²) of
+    `_periodic_spline_eval`, with τ exact (u = i/per_interval − ½)."""
+    i = np.arange(n * per_interval + 1)
+    u = np.mod(i / per_interval - 0.5, n)
+    j = np.minimum(np.floor(u).astype(np.int64), n - 1)
+    tau = u - j
+    j1 = (j + 1) % n
+    bend = -tau * (1.0 - tau) / 6.0
+    return tuple(  # type: ignore[return-value]
+        _frozen(a) if a.dtype == np.float64 else a
+        for a in (j, j1, 1.0 - tau, tau, bend * (2.0 - tau), bend * (1.0 + tau))
+    )
+
+
+def _spline_on_grid(y: Array, M: Array, h: float, per_interval: int) -> Array:
+    """The spline through the middles, sampled `per_interval` times a step from
+    the first grid point to the last (the drawn curve)."""
+    j, j1, wy0, wy1, wm0, wm1 = _grid_weights(y.size, per_interval)
+    return wy0 * y[j] + wy1 * y[j1] + (h * h) * (wm0 * M[j] + wm1 * M[j1])
 
 
 # --------------------------------------------------------------------------- the construction
@@ -326,8 +379,8 @@ def _differentiate(
     M = _periodic_spline_moments(mid[:, 1], h)
     L = float(x[-1])
     xs = np.linspace(0.0, L, n * samples_per_interval + 1)
-    curve = np.column_stack([xs, _periodic_spline_eval(xs, float(x_mid[0]), h, mid[:, 1], M)])
-    ordinates = _periodic_spline_eval(x[:-1], float(x_mid[0]), h, mid[:, 1], M)
+    curve = np.column_stack([xs, _spline_on_grid(mid[:, 1], M, h, samples_per_interval)])
+    ordinates = _spline_at_nodes(mid[:, 1], M, h)
 
     return GraphicalDerivative(
         pole_distance=float(H),
@@ -444,6 +497,7 @@ def spectral_derivatives(s: ArrayLike, *, n1: float) -> tuple[Array, Array]:
     return _frozen(v), _frozen(a)
 
 
+@lru_cache(maxsize=32)
 def _central_weights(derivative: int, half_width: int) -> Array:
     """Weights c_j, j = −m…m, with Σ c_j j^p / p! = δ(p, derivative): Taylor's conditions."""
     j = np.arange(-half_width, half_width + 1, dtype=np.float64)
@@ -451,7 +505,7 @@ def _central_weights(derivative: int, half_width: int) -> Array:
     A = j[None, :] ** p[:, None] / np.array([math.factorial(int(q)) for q in p])[:, None]
     rhs = np.zeros(p.size)
     rhs[derivative] = 1.0
-    return np.linalg.solve(A, rhs)
+    return _frozen(np.linalg.solve(A, rhs))
 
 
 def central_difference_derivatives(
@@ -472,8 +526,10 @@ def central_difference_derivatives(
     dt = 60.0 / (n1 * s_arr.size)
     v = np.zeros_like(s_arr)
     a = np.zeros_like(s_arr)
+    n = s_arr.size
+    wrapped = np.concatenate((s_arr[n - m :], s_arr, s_arr[:m]))  # m either side, over the turn
     for offset, c1, c2 in zip(range(-m, m + 1), _central_weights(1, m), _central_weights(2, m)):
-        shifted = np.roll(s_arr, -offset)  # s_{i+offset}, wrapping over the turn
+        shifted = wrapped[m + offset : m + offset + n]  # s_{i+offset}
         v += c1 * shifted
         a += c2 * shifted
     return _frozen(v / dt), _frozen(a / dt**2)
@@ -743,10 +799,42 @@ def compare_with_plans(
 
 # A plan value under this share of its largest magnitude over the turn makes
 # formula (12)/(13) ill-conditioned: a small absolute error becomes a large
-# relative one. Such a value is reported by its absolute error, not failed.
+# relative one. Such a value is reported by its absolute error, not failed --
+# but only when no grid of the series passes it by (12)/(13) as written.
 ILL_CONDITIONED = 0.05
-# the grids tried, in divisions of one position step: positions stay grid points
+# The series of grids tried: n·k divisions of the turn, k in one position
+# step (the positions stay grid points), coarsest first.
 GRID_REFINEMENTS = (1, 2, 3, 4, 6, 8, 12)
+
+
+def chord_derivatives(s: ArrayLike, *, n1: float) -> tuple[Array, Array]:
+    """V and a at the n grid points by the construction of 1.7, in SI, without
+    drawing it: the chords' slopes at the middles of the intervals, the periodic
+    spline through them read at the grid points, and the same again for a.
+    Equal to `graphical_differentiation(s, ...).v, .a` at any scales (they cancel)."""
+    s_arr = _check_samples(s)
+    dt = 60.0 / (float(n1) * s_arr.size)
+    v = _chord_derivative(s_arr, dt)
+    return v, _chord_derivative(v, dt)
+
+
+def _chord_derivative(y: Array, dt: float) -> Array:
+    # slope of chord j sits at the middle of interval j; grid point i lies half
+    # way between the middles j = i − 1 and i, where the spline of
+    # `_periodic_spline_eval` is (y_j + y_j1)/2 − dt²/16·(M_j + M_j1)
+    slope = np.empty_like(y)
+    np.subtract(y[1:], y[:-1], out=slope[:-1])
+    slope[-1] = y[0] - y[-1]
+    slope /= dt
+    M = _periodic_spline_moments(slope, dt)
+    # each grid point from its two neighbouring middles: j − 1 (wrapping) and j
+    out = slope + np.concatenate((slope[-1:], slope[:-1]))
+    out *= 0.5
+    out -= dt * dt / 16.0 * (M + np.concatenate((M[-1:], M[:-1])))
+    return out
+
+
+JudgedBy = Literal["formula", "absolute_error"]
 
 
 @dataclass(frozen=True)
@@ -759,25 +847,58 @@ class InvestigatedValue:
     diagram: float
     error_percent: float  # (plan − diagram)/plan·100
     absolute_error: float  # |plan − diagram|
-    ill_conditioned: bool  # |plan| < ILL_CONDITIONED · its largest magnitude over the turn
-    passed: bool  # within the limit, or ill-conditioned (then judged by its absolute error)
+    # judged by its absolute error: |plan| is under ILL_CONDITIONED of its
+    # largest magnitude over the turn AND no grid of the series passes it by
+    # (12)/(13); everything else is judged by (12)/(13) as written
+    ill_conditioned: bool
+    passed: bool  # |error_percent| within the limit, or judged by its absolute error
+    plan_share_percent: float = 100.0  # |plan| over its largest magnitude over the turn, %
+
+    @property
+    def judged_by(self) -> JudgedBy:
+        return "absolute_error" if self.ill_conditioned else "formula"
+
+
+@dataclass(frozen=True)
+class GridTrial:
+    """One grid of the series: (12)/(13) at every investigated position on it."""
+
+    intervals: int  # n·k divisions of the turn
+    refinement: int  # k
+    errors: tuple[tuple[int, Literal["v", "a"], float], ...]  # (index, quantity, error %)
+    limit_percent: float
+
+    @property
+    def failing(self) -> tuple[tuple[int, Literal["v", "a"], float], ...]:
+        return tuple(e for e in self.errors if not abs(e[2]) <= self.limit_percent)
+
+    @property
+    def passed(self) -> bool:
+        """Every investigated position within the limit by (12)/(13) as written."""
+        return not self.failing
 
 
 @dataclass(frozen=True)
 class SheetCheck:
     """The 5 % check of seed 003 §1.8 at the investigated positions, judged on
     the diagrams the sheet draws: over `intervals` divisions of the turn
-    (`refinement` per position step), the fewest of GRID_REFINEMENTS that pass."""
+    (`refinement` per position step), the first grid of GRID_REFINEMENTS on
+    which every investigated position passes by (12)/(13)."""
 
     intervals: int
     refinement: int
     limit_percent: float
     values: tuple[InvestigatedValue, ...]
-    tried: tuple[tuple[int, bool], ...]  # (intervals, passed) for each grid tried
+    tried: tuple[tuple[int, bool], ...]  # (intervals, passed by (12)/(13)) for each grid tried
+    trials: tuple[GridTrial, ...] = ()  # the same grids with their errors
 
     @property
     def passed(self) -> bool:
         return all(v.passed for v in self.values)
+
+
+def _relative_percent(plan: float, diagram: float) -> float:
+    return (plan - diagram) / plan * 100.0 if plan != 0.0 else math.inf
 
 
 def judge(
@@ -787,11 +908,13 @@ def judge(
     diagram: float,
     largest: float,
     limit_percent: float = ERROR_LIMIT_PERCENT,
+    *,
+    exempt: bool = False,
 ) -> InvestigatedValue:
-    """One value of the check: relative error by (12)/(13), or, where that is
-    ill-conditioned, the absolute error."""
-    ill = abs(plan) < ILL_CONDITIONED * largest
-    err = (plan - diagram) / plan * 100.0 if plan != 0.0 else math.inf
+    """One value of the check by (12)/(13); `exempt` (no grid of the series
+    passes it, and it is ill-conditioned there) judges it by its absolute error."""
+    ill = exempt and abs(plan) < ILL_CONDITIONED * largest
+    err = _relative_percent(plan, diagram)
     passed = ill or abs(err) <= limit_percent
     return InvestigatedValue(
         index,
@@ -802,4 +925,58 @@ def judge(
         abs(plan - diagram),
         ill,
         bool(passed),
+        abs(plan) / largest * 100.0 if largest > 0 else 0.0,
     )
+
+
+@dataclass(frozen=True)
+class GridChoice:
+    """The grid a sheet draws its diagrams on, and the values judged by their
+    absolute error (ill-conditioned and passed by no grid of the series)."""
+
+    refinement: int
+    trials: tuple[GridTrial, ...]
+    exempt: frozenset[tuple[int, str]]
+
+
+def choose_grid(
+    s_of_n: Callable[[int], np.ndarray],
+    *,
+    n: int,
+    n1: float,
+    investigated: Sequence[int],
+    v_plan: ArrayLike,
+    a_plan: ArrayLike,
+    largest: tuple[float, float],
+    limit_percent: float = ERROR_LIMIT_PERCENT,
+    series: Sequence[int] = GRID_REFINEMENTS,
+) -> GridChoice:
+    """Seed 003 §1.8 on the grids of one series (n·k divisions, k in `series`):
+    the first grid on which every investigated position passes by (12)/(13) as
+    written. When none does, a value that passes on no grid and is under
+    ILL_CONDITIONED of its largest magnitude (`largest`: V, a) is judged by its
+    absolute error, and the grid is the first on which every other value passes;
+    failing that, the grid with the fewest failures (the check fails)."""
+    vp, ap = np.asarray(v_plan, float), np.asarray(a_plan, float)
+    trials: list[GridTrial] = []
+    for k in series:
+        v_d, a_d = chord_derivatives(s_of_n(n * k), n1=n1)
+        errors: list[tuple[int, Literal["v", "a"], float]] = []
+        for i in investigated:
+            errors.append((i, "v", _relative_percent(float(vp[i]), float(v_d[i * k]))))
+            errors.append((i, "a", _relative_percent(float(ap[i]), float(a_d[i * k]))))
+        trial = GridTrial(n * k, k, tuple(errors), float(limit_percent))
+        trials.append(trial)
+        if trial.passed:
+            return GridChoice(k, tuple(trials), frozenset())
+    never = set.intersection(*({(i, q) for i, q, _ in t.failing} for t in trials))
+    plan_of = {"v": vp, "a": ap}
+    big = {"v": largest[0], "a": largest[1]}
+    exempt = frozenset(
+        (i, q) for i, q in never if abs(float(plan_of[q][i])) < ILL_CONDITIONED * big[q]
+    )
+    for t in trials:
+        if all((i, q) in exempt for i, q, _ in t.failing):
+            return GridChoice(t.refinement, tuple(trials), exempt)
+    fewest = min(trials, key=lambda t: sum((i, q) not in exempt for i, q, _ in t.failing))
+    return GridChoice(fewest.refinement, tuple(trials), exempt)

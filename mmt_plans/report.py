@@ -209,12 +209,17 @@ def diagrams_report(analysis: Solution) -> list[str]:
         f"of the turn; 5 % check at the investigated positions: "
         f"{'passed' if d['passed'] else 'NOT passed'}"
     )
+    tried = ", ".join(
+        f"{g['intervals']} {'passed' if g['passed'] else 'not passed'}" for g in d["grids_tried"]
+    )
+    out.append(f"  grids tried by (12)/(13): {tried}")
     for v in d["investigated"]:
         q = "V" if v["quantity"] == "v" else "a"
         if v["ill_conditioned"]:
             out.append(
-                f"  position {v['index']}, {q}: ill-conditioned (under 5 % of its largest "
-                f"value), absolute error {v['absolute_error']:.3g}"
+                f"  position {v['index']}, {q}: {v['plan_share_percent']:.2g} % of its largest "
+                f"value, passed by (12)/(13) on no grid of the series (ill-conditioned): "
+                f"absolute error {v['absolute_error']:.3g}"
             )
         elif not v["passed"]:
             out.append(f"  ! position {v['index']}, {q}: {v['error_percent']:.2f} %")

@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from .diagrams import GRID_REFINEMENTS
 from .errors import AssemblyError
 from .forces import ForceAnalysis
 from .forces.reduction import Reduction
@@ -126,10 +127,31 @@ def diagrams_json(solution: Solution) -> dict[str, Any]:
                 "absolute_error": v.absolute_error,
                 "ill_conditioned": v.ill_conditioned,
                 "passed": v.passed,
+                # "formula": (12)/(13) as written; "absolute_error": under 5 % of
+                # its largest magnitude and passed on no grid of the series
+                "judged_by": v.judged_by,
+                "plan_share_percent": v.plan_share_percent,
             }
             for v in sc.values
         ],
-        "grids_tried": [{"intervals": i, "passed": p} for i, p in sc.tried],
+        # the series n·k tried in turn, coarsest first, up to the one drawn (or all)
+        "grid_series": [n * k for k in GRID_REFINEMENTS],
+        "grids_tried": [
+            {
+                "intervals": t.intervals,
+                "passed": t.passed,
+                "refinement": t.refinement,
+                "errors": [
+                    {
+                        "index": i,
+                        "quantity": q,
+                        "error_percent": e if math.isfinite(e) else None,
+                    }
+                    for i, q, e in t.errors
+                ],
+            }
+            for t in sc.trials
+        ],
         "flags": [
             {
                 "quantity": f.quantity,

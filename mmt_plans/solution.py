@@ -19,19 +19,19 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Literal, cast
 
 import numpy as np
 
 from .diagrams import (
     DIAGRAM_HEIGHT_MM,
     ERROR_LIMIT_PERCENT,
-    GRID_REFINEMENTS,
     TIME_AXIS,
     DiagramScales,
-    InvestigatedValue,
     KinematicDiagrams,
     PlanComparison,
     SheetCheck,
+    choose_grid,
     compare_with_plans,
     diagram_scales,
     graphical_differentiation,
@@ -41,17 +41,23 @@ from .errors import ForceError, MmtError, StructureError, partial_turn_error
 from .forces import ForceAnalysis, force_analysis_at
 from .forces.reduction import Reduction, reduce_sweep
 from .forces.state import PositionState, from_sweep
-from .kinematics.branches import Branches, build_chain
+from .kinematics.branches import Branches
 from .kinematics.chain import Chain, Sweep
+from .kinematics.handle import Kinematics, kinematics
 from .kinematics.plans import PlanView, plan_view
 from .model import Mechanism, Stroke
 from .scales import LENGTH_MANTISSA_TEXT, DrawnLength, scale_for
-from .structure import Structure, analyse_structure
+from .structure import Structure
 
 __all__ = ["Position", "Diagrams", "Solution", "solve", "sweep", "EXTREME_TOL_DEG"]
 
 EXTREME_TOL_DEG = 1e-9
+EXTREME_TIE = 1e-9  # of the stroke: two extreme positions this equal in s are a tie
+PLAN_TIE_DEG = 1e-6  # two positions this equally near the middle of a stroke are a tie
 GRID = 1440
+# the fine grid the displacements are read from: 24 steps to a position step,
+# so that every grid n·k of the 5 % check's series (k = 1 … 12) is among them
+BASE_STEPS = 24
 DENSE = 181  # crank angles of the trajectories drawn on sheet 1 (position 0 twice)
 
 
@@ -109,6 +115,7 @@ class Solution:
     forces: ForceAnalysis | None
     forces_problem: str | None
     reduction: Reduction
+    kinematics: Kinematics  # the chain built once: `kinematics.sweep(angles)`, `.at(angle)`
 
     # --- reading ---------------------------------------------------------------------
     @property
@@ -163,7 +170,11 @@ class Solution:
     # --- more angles, for the check and the tests ----------------------------------------
     def sweep_at(self, phi1_deg: Sequence[float] | np.ndarray) -> Sweep:
         """The kinematics at other crank angles, on the same branches."""
-        return self.chain.sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=float)))
+        return self.kinematics.sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=float)))
+
+    def at(self, phi1_deg: float) -> Sweep:
+        """The kinematics at one crank angle (`Kinematics.at`)."""
+        return self.kinematics.at(phi1_deg)
 
     def state(self, index: int | None = None, *, phi1_deg: float | None = None) -> PositionState:
         """Where every link is and how it moves at position `index`, or at any crank angle."""
@@ -199,8 +210,9 @@ class Solution:
 def sweep(mechanism: Mechanism, phi1_deg: Sequence[float] | np.ndarray) -> Sweep:
     """Positions, velocities and accelerations of every point, ω and ε of every
     link, over many crank angles at once (NaN where a group cannot assemble;
-    see `Sweep.check()`)."""
-    return build_chain(mechanism).sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=float)))
+    see `Sweep.check()`). The chain is built on the first call for a Mechanism
+    and reused after (`kinematics(mechanism)`)."""
+    return kinematics(mechanism).sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=float)))
 
 
 def output_along(mech: Mechanism, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -225,9 +237,8 @@ def solve(
     `partial_turn=True` opts in. `forces=False` leaves out the force analysis
     (sheet 1 alone)."""
     mech = mechanism if not partial_turn else mechanism.with_partial_turn()
-    structure = analyse_structure(mech)
-    chain = build_chain(mech, structure)
-    branches = chain.choice
+    handle = kinematics(mech)
+    structure, chain, branches = handle.structure, handle.chain, handle.branches
     if not branches.whole_turn and (not mech.study.partial_turn or not branches.ranges):
         # refused; also when opted in, if it assembles at no crank angle at all
         raise partial_turn_error(mech, branches)
@@ -237,9 +248,9 @@ def solve(
     plan_positions = turn.plan_positions(positions)
     fp = mech.study.force_position
     force_position = plan_positions[0] if fp is None else fp
-    mu_l = _mechanism_scale(mech, chain)
     phi0 = positions[0].phi1_deg
     dense = chain.sweep(np.linspace(phi0, phi0 + 360.0, DENSE))
+    mu_l = _mechanism_scale(mech, dense)
     diagrams, diagrams_problem, s_dense = None, None, None
     try:
         diagrams = _diagrams(mech, turn, positions, sw, mu_l, plan_positions)
@@ -280,14 +291,15 @@ def solve(
         forces=force_analysis,
         forces_problem=forces_problem,
         reduction=reduction,
+        kinematics=handle,
     )
 
 
-def _mechanism_scale(mech: Mechanism, chain: Chain) -> float:
+def _mechanism_scale(mech: Mechanism, dense: Sweep) -> float:
     """Scale of the mechanism drawing: the standard value that draws the span
-    of every point's trajectory in 150–300 mm (μ_l = l_OA / OA, (2))."""
-    grid = chain.sweep(np.linspace(0.0, 360.0, 72, endpoint=False))
-    pts = np.concatenate([grid.position_of(n)[grid.ok] for n in mech.point_owners])
+    of every point's trajectory (the dense sweep's, over one turn) in
+    150–300 mm (μ_l = l_OA / OA, (2))."""
+    pts = np.concatenate([dense.position_of(n)[dense.ok] for n in mech.point_owners])
     span = max(np.ptp(pts.real), np.ptp(pts.imag), mech.crank_length)
     return scale_for(
         float(span), DrawnLength("mechanism", 150.0, 300.0, 220.0), LENGTH_MANTISSA_TEXT
@@ -305,7 +317,8 @@ def _diagrams(
     """The graphical differentiation and its 5 % check against the plans (seed
     003 §1.7–1.8), judged at the investigated positions on the diagrams drawn:
     the S diagram over n·k divisions of the turn (the positions among them),
-    with the fewest k of GRID_REFINEMENTS that pass."""
+    the first grid of the series n·k (diagrams.choose_grid) on which every
+    investigated position passes by (12)/(13) as written."""
     if turn.limits is not None:
         raise MmtError(
             "no kinematic diagrams: the crank does not make a whole turn "
@@ -321,26 +334,51 @@ def _diagrams(
     # the time axis: the standard μ_t that draws one turn in 150 … 240 mm
     T = 60.0 / n1
     L = T / scale_for(T, TIME_AXIS)
-    tried: list[tuple[int, bool]] = []
-    for refinement in GRID_REFINEMENTS:
-        s_grid, v_grid, a_grid = turn.along_grid(n * refinement)
-        # the scales cancel in the values (module docstring of diagrams): the
-        # grid is judged at any, the construction then drawn at the sheet's
-        construction = graphical_differentiation(s_grid, n1=n1, mu_S=mu_l, L=L, H1=40.0, H2=40.0)
-        values = _judged(construction, v, a, v_grid, a_grid, investigated, refinement)
-        passed = all(x.passed for x in values)
-        tried.append((n * refinement, passed))
-        if passed:
-            break
+    # the largest magnitudes over the turn: the fine grid of the extreme search
+    # and the positions themselves
+    largest = (
+        max(turn.largest[0], float(np.max(np.abs(v)))),
+        max(turn.largest[1], float(np.max(np.abs(a)))),
+    )
+    # seed 003 §1.8 on the grids of the series n·k: the first on which every
+    # investigated position passes by (12)/(13) as written
+    choice = choose_grid(
+        turn.displacements,
+        n=n,
+        n1=n1,
+        investigated=investigated,
+        v_plan=v,
+        a_plan=a,
+        largest=largest,
+    )
+    refinement = choice.refinement
+    s_grid = turn.displacements(n * refinement)
     # μ_S = μ_l unless a diagram would be taller than sheet 1 holds, then up
     # the series; round poles from ROUND_POLE_DISTANCES_MM (diagram_scales)
     scales = diagram_scales(s_grid, n1=n1, L=L, mu_l=mu_l, max_height=DIAGRAM_HEIGHT_MM)
     construction = graphical_differentiation(
         s_grid, n1=n1, mu_S=scales.mu_S, L=L, H1=scales.H1, H2=scales.H2
     )
-    values = _judged(construction, v, a, v_grid, a_grid, investigated, refinement)
+    values = []
+    for i in investigated:
+        for q, plan, drawn, big in (
+            ("v", v, construction.v, largest[0]),
+            ("a", a, construction.a, largest[1]),
+        ):
+            quantity = cast(Literal["v", "a"], q)
+            values.append(
+                judge(
+                    i,
+                    quantity,
+                    float(plan[i]),
+                    float(drawn[i * refinement]),
+                    big,
+                    exempt=(i, q) in choice.exempt,
+                )
+            )
+    tried = tuple((t.intervals, t.passed) for t in choice.trials)
     sheet_check = SheetCheck(
-        n * refinement, refinement, ERROR_LIMIT_PERCENT, tuple(values), tuple(tried)
+        n * refinement, refinement, ERROR_LIMIT_PERCENT, tuple(values), tried, choice.trials
     )
     at_positions = slice(None, None, refinement)
     check = compare_with_plans(
@@ -353,24 +391,6 @@ def _diagrams(
         candidates=(),
     )
     return Diagrams(construction, check, v, a, sheet_check, refinement, scales)
-
-
-def _judged(
-    construction: KinematicDiagrams,
-    v: np.ndarray,
-    a: np.ndarray,
-    v_grid: np.ndarray,
-    a_grid: np.ndarray,
-    investigated: tuple[int, ...],
-    refinement: int,
-) -> list[InvestigatedValue]:
-    """Formulas (12) and (13) at the investigated positions, read off `construction`."""
-    vmax, amax = float(np.max(np.abs(v_grid))), float(np.max(np.abs(a_grid)))
-    values = []
-    for i in investigated:
-        values.append(judge(i, "v", float(v[i]), float(construction.v[i * refinement]), vmax))
-        values.append(judge(i, "a", float(a[i]), float(construction.a[i * refinement]), amax))
-    return values
 
 
 def _stroke_of(
@@ -395,6 +415,8 @@ class _Turn:
         self.mech, self.chain = mech, chain
         self.sense = 1 if mech.drive.sense == "ccw" else -1
         self.limits: tuple[float, float] | None = None
+        self.largest = (0.0, 0.0)  # |V|, |a| of the output over the turn, the fine grid's
+        self._displacements: dict[int, np.ndarray] = {}  # by the number of steps
         if not branches.whole_turn:
             lo, hi = max(branches.ranges, key=lambda r: (r[1] - r[0]) % 360.0)
             self.limits = (lo, hi) if self.sense > 0 else (hi, lo)
@@ -414,10 +436,17 @@ class _Turn:
         a, b = self.limits
         return ((b - a) * self.sense) % 360.0
 
-    def along(self, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def output(self, phi1_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Where the chain is solved, and s, V, a of the output along the working
+        direction (SI, signed) at the crank angles: the searches' kernel."""
+        ok, P, V, A = self.chain.point_motion(phi1_deg, self.mech.study.output)
+        wd = np.conj(complex(*self.mech.study.working_direction))
+        return ok, (P * wd).real, (V * wd).real, (A * wd).real
+
+    def along(self, phi1_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """s, ds/dφ and d²s/dφ² of the output along the working direction (ε1 = 0)."""
         w = self.mech.drive.signed_omega
-        s, v, a = output_along(self.mech, sweep)
+        _, s, v, a = self.output(phi1_deg)
         return s, v / w, a / (w * w)
 
     def _extremes(self) -> tuple[float, float] | None:
@@ -430,11 +459,15 @@ class _Turn:
             grid = np.linspace(0.0, 360.0, GRID, endpoint=False)
         else:
             grid = self.limits[0] + self.sense * self.span_deg * (np.arange(1, GRID) / GRID)
-        sw = self.chain.sweep(grid)
-        s, ds, _ = self.along(sw)
-        ok = sw.ok & np.isfinite(s) & np.isfinite(ds)
+        solved, s, v, a = self.output(grid)
+        w = self.mech.drive.signed_omega
+        ds = v / w
+        ok = solved & np.isfinite(s) & np.isfinite(ds)
         if not ok.any():
-            raise sw.problem(0) or StructureError("the mechanism assembles at no crank angle")
+            raise self.chain.sweep(grid[:1]).problem(0) or StructureError(
+                "the mechanism assembles at no crank angle"
+            )
+        self.largest = (float(np.max(np.abs(v[ok]))), float(np.max(np.abs(a[ok]))))
         if np.ptp(s[ok]) < 1e-12 * max(1.0, float(np.max(np.abs(s[ok])))):
             raise StructureError(
                 f"{self.mech.path}: output {self.mech.study.output} does not move along the "
@@ -451,37 +484,61 @@ class _Turn:
         step = 360.0 / GRID if self.limits is None else self.span_deg / GRID
         lo_b = grid[idx]
         hi_b = lo_b + (step if self.limits is None else self.sense * step)
-        roots = self._root(np.minimum(lo_b, hi_b), np.maximum(lo_b, hi_b))
-        s_roots, _, _ = self.along(self.chain.sweep(roots))
-        return (
-            float(roots[int(np.argmin(s_roots))] % 360.0),
-            float(roots[int(np.argmax(s_roots))] % 360.0),
+        # ds/dφ at each bracket's ends, read off the grid
+        ascending = lo_b <= hi_b
+        fa = np.where(ascending, ds[idx], ds[nxt[idx]])
+        fb = np.where(ascending, ds[nxt[idx]], ds[idx])
+        roots, s_roots = self._root(np.minimum(lo_b, hi_b), np.maximum(lo_b, hi_b), fa, fb)
+        # Two extremes of equal s (the output passing its farthest place twice a
+        # turn) are a tie, not a choice for rounding to make: of the tied ones,
+        # the pair that makes the working stroke longest.
+        tol = EXTREME_TIE * max(float(np.ptp(s_roots)), np.finfo(float).tiny)
+        lows = roots[s_roots <= s_roots.min() + tol] % 360.0
+        highs = roots[s_roots >= s_roots.max() - tol] % 360.0
+        lo, hi = max(
+            ((float(x), float(y)) for x in lows for y in highs),
+            key=lambda pair: ((pair[1] - pair[0]) * self.sense) % 360.0,
         )
+        return lo, hi
 
-    def _root(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    def _root(
+        self, a: np.ndarray, b: np.ndarray, fa: np.ndarray, fb: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray]:
         """Zeros of ds/dφ in the brackets [a, b] (deg, ds/dφ changes sign in
-        each): Newton's steps where they stay in the bracket, bisection where
-        they would leave it (rtsafe), all brackets at once."""
-        _, fa, _ = self.along(self.chain.sweep(a))
+        each, fa and fb its values at the ends): from the chord's zero,
+        Newton's steps where they stay in the bracket, bisection where they
+        would leave it (rtsafe), all brackets at once. With s at each zero, from
+        the last step (which moved φ by a few ulps at most, where ds/dφ = 0: s
+        is the same to far below rounding)."""
         a, b = a.astype(float).copy(), b.astype(float).copy()
-        phi = 0.5 * (a + b)
+        # the chord's zero: a grid step's worth of curvature from the root, so
+        # Newton's quadratic steps reach machine precision in two or three
+        with np.errstate(divide="ignore", invalid="ignore"):
+            chord = a - fa * (b - a) / (fb - fa)
+        phi = np.where(np.isfinite(chord) & (chord > a) & (chord < b), chord, 0.5 * (a + b))
+        done = np.zeros(phi.shape, dtype=bool)
+        s_at = np.zeros(phi.shape)
         for _ in range(200):
-            _, f, df = self.along(self.chain.sweep(phi))
+            s, f, df = self.along(phi)
+            s_at = np.where(done, s_at, s)
             same = np.sign(f) == np.sign(fa)  # keep the sign-change bracket
             a = np.where(same, phi, a)
             fa = np.where(same, f, fa)
             b = np.where(same, b, phi)
             with np.errstate(divide="ignore", invalid="ignore"):
                 newton = phi - np.degrees(f / df)
-            inside = np.isfinite(newton) & (newton > a) & (newton < b)
+            # a Newton step onto an end of the bracket is still inside it: near
+            # the root rounding puts it there, and bisection would crawl from afar
+            inside = np.isfinite(newton) & (newton >= a) & (newton <= b)
             new = np.where(inside, newton, 0.5 * (a + b))
-            done = (f == 0) | (
-                np.abs(new - phi) <= 4 * np.finfo(float).eps * np.maximum(1.0, np.abs(phi))
-            )
-            phi = np.where(f == 0, phi, new)
+            tol = 4 * np.finfo(float).eps * np.maximum(1.0, np.abs(phi))
+            converged = (f == 0) | (np.abs(new - phi) <= tol) | (b - a <= tol)
+            # a bracket once converged stays where it converged
+            phi = np.where(done | (f == 0), phi, new)
+            done |= converged
             if done.all():
                 break
-        return phi
+        return phi, s_at
 
     def _phi0(self) -> float:
         if self.limits is not None:  # half a step in from the first limit of assembly
@@ -531,19 +588,26 @@ class _Turn:
                 for p in positions
                 if p.index is not None
             ]
-            picks.append(int(np.argmin(dist)))
+            # a tie (within PLAN_TIE_DEG, SPEC_FORMAT) goes to the lower index,
+            # not to whichever rounding made a hair nearer
+            nearest = min(dist)
+            picks.append(next(i for i, d in enumerate(dist) if d <= nearest + PLAN_TIE_DEG))
         return tuple(picks)
-
-    def along_grid(self, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """s (from position 0), V and a of the output at n equal crank steps
-        from position 0 in the drive's sense (SI)."""
-        phi = self.phi0 + self.sense * 360.0 * np.arange(n) / n
-        s, v, a = output_along(self.mech, self.chain.sweep(phi))
-        return s - s[0], v, a
 
     def displacements(self, n: int) -> np.ndarray:
         """s of the output at n equal crank steps from position 0 (s = 0 there), m:
-        the smooth S curve of the diagram, and the trials of the 5 % check."""
-        phi = self.phi0 + self.sense * 360.0 * np.arange(n) / n
-        s, _, _ = output_along(self.mech, self.chain.sweep(phi))
-        return s - s[0]
+        the smooth S curve of the diagram, and the grids of the 5 % check."""
+        found = self._displacements.get(n)
+        if found is None:
+            # every grid of the 5 % check's series, and the S curve of most
+            # grids drawn, is every so many steps of one fine grid: one sweep
+            fine = self.mech.study.positions * BASE_STEPS
+            if n != fine and fine % n == 0:
+                found = self.displacements(fine)[:: fine // n]
+            else:
+                phi = self.phi0 + self.sense * 360.0 * np.arange(n) / n
+                _, s, _, _ = self.output(phi)
+                found = s - s[0]
+            found.setflags(write=False)
+            self._displacements[n] = found
+        return found

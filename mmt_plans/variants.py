@@ -35,7 +35,8 @@ import numpy as np
 
 from .errors import MmtError
 from .files import read_input
-from .kinematics.branches import build_chain, turns_fully
+from .kinematics.branches import turns_fully
+from .kinematics.handle import kinematics
 from .spec import loads
 from .structure import analyse_structure
 
@@ -185,12 +186,12 @@ def make_variants(
     data = tomllib.loads(text.lstrip("\ufeff"))
     source = loads(text, str(path))
     structure = analyse_structure(source)
-    chain0 = build_chain(source, structure)
-    if not chain0.choice.whole_turn:
+    handle = kinematics(source, structure)
+    if not handle.branches.whole_turn:
         raise VariantError(f"{path}: the source itself does not turn fully")
-    signs = dict(chain0.choice.signs)
+    signs = dict(handle.branches.signs)
     kinds = [g.kind for g in structure.groups]
-    floor = min(TRANSMISSION_FLOOR_DEG, 0.9 * _transmission_min_deg(chain0))
+    floor = min(TRANSMISSION_FLOOR_DEG, 0.9 * _transmission_min_deg(handle))
     rng = random.Random(f"{seed}")
     kept: list[Variant] = []
     seen = [_lengths(data)]
@@ -218,8 +219,8 @@ def make_variants(
                 continue
             d["sketch"] = _sketch(chain, mech)
             body = to_toml(d)
-            check = build_chain(loads(body, "variant"))
-            if dict(check.choice.signs) != signs or not check.choice.whole_turn:
+            check = kinematics(loads(body, "variant")).branches
+            if dict(check.signs) != signs or not check.whole_turn:
                 continue
         except (MmtError, ValueError, ArithmeticError):
             continue

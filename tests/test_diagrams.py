@@ -28,13 +28,17 @@ from hypothesis import strategies as st
 
 from mmt_plans.diagrams import (
     DIFFERENTIATION_METHODS,
+    GRID_REFINEMENTS,
     ErrorFlag,
     GraphicalDerivative,
     KinematicDiagrams,
     central_difference_derivatives,
+    choose_grid,
+    chord_derivatives,
     compare_with_plans,
     derived_scale,
     graphical_differentiation,
+    judge,
     pole_distance,
     spectral_derivatives,
     textbook_derivatives,
@@ -490,3 +494,87 @@ def test_the_solution_holds_one_mu_S_and_round_poles(path):
     js = diagrams_json(sol)["scales"]
     assert (js["mu_S"], js["H1_mm"], js["H2_mm"]) == (sc.mu_S, sc.H1, sc.H2)
     assert js["mu_S_steps"] == sc.mu_S_steps
+
+
+# --- the 5 % check on the grids of one series (seed 003 §1.8) ---------------------------
+
+
+def test_chord_derivatives_are_the_drawn_constructions_values():
+    """The check's trials read V and a without drawing; the drawn construction
+    at any scales gives the same values (the scales cancel)."""
+    s = np.random.default_rng(1).normal(size=24)
+    drawn = graphical_differentiation(s, n1=37.0, mu_S=0.004, L=200.0, H1=35.0, H2=45.0)
+    v, a = chord_derivatives(s, n1=37.0)
+    assert np.allclose(v, drawn.v, rtol=0, atol=1e-13 * np.abs(v).max())
+    assert np.allclose(a, drawn.a, rtol=0, atol=1e-13 * np.abs(a).max())
+
+
+def _two_harmonics(delta_deg: float, b: float = -0.3):
+    """s = cos θ + b·cos 2θ at θ = 2πj/m − δ, n1 = 60 rpm (ω = 2π rad/s): V and a
+    at the 12 positions in closed form, and their largest magnitudes."""
+    w, delta = 2.0 * np.pi, np.radians(delta_deg)
+
+    def s_of_n(m):
+        th = 2.0 * np.pi * np.arange(m) / m - delta
+        return np.cos(th) + b * np.cos(2.0 * th)
+
+    th = 2.0 * np.pi * np.arange(12) / 12 - delta
+    v = -w * (np.sin(th) + 2.0 * b * np.sin(2.0 * th))
+    a = -w * w * (np.cos(th) + 4.0 * b * np.cos(2.0 * th))
+    fine = np.linspace(0.0, 2.0 * np.pi, 200_001)
+    largest = (
+        float(np.abs(w * (np.sin(fine) + 2 * b * np.sin(2 * fine))).max()),
+        float(np.abs(w * w * (np.cos(fine) + 4 * b * np.cos(2 * fine))).max()),
+    )
+    return s_of_n, v, a, largest
+
+
+def _independent_error(s_of_n, m, i, q, plan):
+    d = graphical_differentiation(s_of_n(m), n1=60.0, mu_S=0.01, L=240.0, H1=40.0, H2=40.0)
+    k = m // 12
+    return (plan - (d.v if q == "v" else d.a)[i * k]) / plan * 100.0
+
+
+def test_a_small_value_a_finer_grid_passes_is_not_exempted():
+    """V at position 0 is 0.5 % of its largest magnitude (ill-conditioned), yet
+    the grid of 36 passes it by (12) as written: no exemption, 36 is drawn,
+    12 and 24 were tried and fail."""
+    s_of_n, v, a, largest = _two_harmonics(2.0)
+    assert abs(v[0]) < 0.05 * largest[0]
+    choice = choose_grid(
+        s_of_n, n=12, n1=60.0, investigated=(0, 3), v_plan=v, a_plan=a, largest=largest
+    )
+    assert choice.exempt == frozenset()
+    assert [t.intervals for t in choice.trials] == [12, 24, 36]
+    assert choice.refinement == 3
+    for t in choice.trials:
+        errs = [_independent_error(s_of_n, t.intervals, i, q, (v if q == "v" else a)[i])
+                for i in (0, 3) for q in "va"]
+        assert t.passed == all(abs(e) <= 5.0 for e in errs)
+        assert [e for _, _, e in t.errors] == pytest.approx(errs, rel=1e-9)
+    assert not choice.trials[0].passed and not choice.trials[1].passed
+    assert choice.trials[2].passed
+
+
+def test_a_zero_plan_value_is_judged_by_its_absolute_error_on_the_first_grid_passing_the_rest():
+    """At an extreme position V_plan = 0: (12) is undefined on every grid, so V
+    there is the one value judged by its absolute error; the grid is the first
+    on which every other value passes by (12)/(13)."""
+    s_of_n, v, a, largest = _two_harmonics(0.0)
+    v = v.copy()
+    v[0] = 0.0
+    choice = choose_grid(
+        s_of_n, n=12, n1=60.0, investigated=(0, 3), v_plan=v, a_plan=a, largest=largest
+    )
+    assert choice.exempt == {(0, "v")}
+    assert [t.intervals for t in choice.trials] == [12 * k for k in GRID_REFINEMENTS]
+    chosen = next(t for t in choice.trials if t.refinement == choice.refinement)
+    assert [(i, q) for i, q, _ in chosen.failing] == [(0, "v")]
+    for t in choice.trials:
+        if t.refinement < choice.refinement:
+            assert any((i, q) != (0, "v") for i, q, _ in t.failing)
+    val = judge(0, "v", 0.0, 1e-3, largest[0], exempt=True)
+    assert val.ill_conditioned and val.passed and val.judged_by == "absolute_error"
+    assert val.absolute_error == pytest.approx(1e-3)
+    # without the exemption (12)/(13) fails it, whatever the share
+    assert not judge(0, "v", 0.01, 0.02, largest[0]).passed

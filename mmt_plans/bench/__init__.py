@@ -38,8 +38,17 @@ def sweep_time(path: Path, count: int, repeat: int) -> float:
     return float(done.stdout.strip().splitlines()[-1])
 
 
-def run_benchmarks(sample_dir: Path, quick: bool = False, echo=print) -> None:
+def run_benchmarks(
+    sample_dir: Path, quick: bool = False, echo=print, keys: bool = False, summary: bool = False
+) -> None:
+    """The overview of issue 25's figures (`overview`), then, unless `summary`,
+    every detailed section; `keys` adds the 55 seed-task keys on two workers."""
+    from .overview import bench_overview
+
     repeat = 3 if quick else 7
+    bench_overview(Path(sample_dir), repeat, echo, keys)
+    if summary:
+        return
     files = sorted(Path(sample_dir).glob("*.toml"))
     rows = []
     for path in files:
@@ -71,10 +80,10 @@ def run_benchmarks(sample_dir: Path, quick: bool = False, echo=print) -> None:
 
 def _extra_sections() -> list[Callable]:
     """Benchmarks of the later stages: forces, diagrams, sheets, the batch."""
-    from .batch import bench_batch
     from .diagrams import bench_diagrams
     from .forces import bench_forces
     from .sheets import bench_sheets
     from .startup import bench_startup
 
-    return [bench_startup, bench_forces, bench_diagrams, bench_sheets, bench_batch]
+    # the seed-003 batch is the overview's keys row (`--keys`), on two workers
+    return [bench_startup, bench_forces, bench_diagrams, bench_sheets]

@@ -84,10 +84,8 @@ class Exact:
             if w.index is not None:
                 self._plans[w.key] = self.solution.plan(w.index)
             else:
-                sweep = self.solution.sweep_at([w.phi1_deg % 360.0])
-                problem = sweep.problem(0)
-                if problem is not None:
-                    raise problem
+                # the solution's kinematic handle: its problem raised, if any
+                sweep = self.solution.at(w.phi1_deg % 360.0)
                 self._plans[w.key] = plan_view(sweep, 0, None)
         return self._plans[w.key]
 

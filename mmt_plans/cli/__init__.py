@@ -77,12 +77,14 @@ def analyze(file: Path, json_out: Path | None, quiet: bool, partial_turn: bool) 
     type=click.Path(file_okay=False, path_type=Path),
 )
 @click.option("--quick", is_flag=True, help="Fewer repeats (for a smoke run).")
+@click.option("--keys", is_flag=True, help="Also the 55 seed-task keys on two workers.")
+@click.option("--summary", is_flag=True, help="Only the overview table of the figures.")
 @reports_errors
-def bench(sample_dir: Path, quick: bool) -> None:
+def bench(sample_dir: Path, quick: bool, keys: bool, summary: bool) -> None:
     """Time the analysis of every sample and the vectorised sweep."""
     from ..bench import run_benchmarks
 
-    run_benchmarks(sample_dir, quick=quick, echo=click.echo)
+    run_benchmarks(sample_dir, quick=quick, echo=click.echo, keys=keys, summary=summary)
 
 
 main.add_command(draw)

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 from typing import Any
 
 import numpy as np
@@ -15,6 +15,7 @@ from ..errors import AssemblyError, SingularPlanError, UnsupportedError
 from ..model import FRAME, Mechanism
 from ..structure import Structure, analyse_structure
 from .dyads import DYADS, DyadSolver, GroupPlan, Motion
+from .geometry import quiet
 
 # a plan whose direction lines meet at an angle with a sine below this is
 # reported as singular rather than solved (see tests/kinematics/test_hard_cases.py)
@@ -64,16 +65,29 @@ def _full(x, n: int, dtype) -> np.ndarray:
     """x as a read-only (n,) array; a number (the frame's, a constant ω) is
     spread out without a copy."""
     if not isinstance(x, np.ndarray):
-        x = np.ndarray((n,), dtype=dtype, buffer=np.array([x], dtype=dtype), strides=(0,))
-    elif x.dtype != dtype:
+        return _spread(x, n, dtype)
+    if x.dtype != dtype:
         x = x.astype(dtype)
     x.setflags(write=False)
     return x
 
 
+@lru_cache(maxsize=512)
+def _spread(x, n: int, dtype) -> np.ndarray:
+    """A number seen at n angles: one value, stride 0, read-only (so shared by
+    every sweep of that many angles: the frame's, a crank's constant ω)."""
+    out = np.ndarray((n,), dtype=dtype, buffer=np.array([x], dtype=dtype), strides=(0,))
+    out.setflags(write=False)
+    return out
+
+
+@lru_cache(maxsize=512)
 def _still(z: complex, n: int) -> np.ndarray:
-    """A frame point's [x, y] at every angle (one pair, not copied)."""
-    return np.broadcast_to(np.array([z.real, z.imag]), (n, 2))
+    """A frame point's [x, y] at every angle (one pair, not copied, read-only)."""
+    pair = np.array([z.real, z.imag])
+    out = np.ndarray((n, 2), dtype=np.float64, buffer=pair, strides=(0, pair.itemsize))
+    out.setflags(write=False)
+    return out
 
 
 _STATE = (
@@ -149,7 +163,7 @@ class _Arena:
             self.singular[g][part] = singular[g]
         block = self.fields.reshape(3, -1, self.n)[:, :, part]
         points = _moving_points(self.chain)
-        _work_out_fields(block, m, points, _all_known(m, self.chain.carried, points))
+        _work_out_fields(block, m, points, _all_known(m, self.chain.carried, points, self.chain))
 
     def sweep(self, phi1_deg: np.ndarray) -> Sweep:
         states = {}
@@ -184,24 +198,32 @@ def _is_origin(p: complex, origin) -> bool:
 
 
 def _known(links: dict, carried: dict, base: str, name: str, lid: int, p: complex):
-    """The array a point's row would repeat, if there is one: the origin
+    """Which link's array a point's row would repeat, if one does: the origin
     quantity of its link (a point at the origin), or the velocity or
     acceleration of a link whose origin sits on the point (`DyadSolver.carried`)."""
-    origin = getattr(links[lid], base)
-    if _is_origin(p, origin):
-        return origin
+    if _is_origin(p, getattr(links[lid], base)):
+        return lid
     if base != "o" and name in carried:
-        same = getattr(links[carried[name]], base)
-        if _is_origin(0j, same):
-            return same
+        if _is_origin(0j, getattr(links[carried[name]], base)):
+            return carried[name]
     return None
 
 
-def _all_known(links: dict, carried: dict, points: list) -> list[list]:
-    """`_known` for every quantity and point."""
+def _all_known(links: dict, carried: dict, points: list, chain: Chain | None = None) -> list[list]:
+    """For every quantity and point, the link array its row repeats (or None).
+    Which rows repeat which arrays follows from the chain's structure alone,
+    so a chain works it out once."""
+    sources = getattr(chain, "_known_sources", None)
+    if sources is None:
+        sources = [
+            [_known(links, carried, base, name, lid, p) for name, lid, p in points]
+            for base, _ in _FIELD_PARTS
+        ]
+        if chain is not None:
+            chain._known_sources = sources  # type: ignore[attr-defined]
     return [
-        [_known(links, carried, base, name, lid, p) for name, lid, p in points]
-        for base, _ in _FIELD_PARTS
+        [None if src is None else getattr(links[src], base) for src in row]
+        for (base, _), row in zip(_FIELD_PARTS, sources)
     ]
 
 
@@ -214,6 +236,14 @@ def _work_out_fields(block: np.ndarray, links: dict, points: list, known: list) 
             if same is None:
                 # the product in warm scratch memory, then one pass over the row
                 np.add(getattr(links[lid], base), getattr(links[lid], per_unit) * p, out=row)
+
+
+def _over(x, shape: tuple[int, ...]) -> np.ndarray:
+    """x over the angles: an array of that shape as it is (no call into numpy's
+    broadcasting machinery), a number or a smaller array spread out (a copy)."""
+    if isinstance(x, np.ndarray) and x.shape == shape:
+        return x
+    return np.broadcast_to(x, shape).copy()
 
 
 def _ro(a) -> np.ndarray:
@@ -265,17 +295,20 @@ class Sweep:
         n = len(self.phi1_deg)
         points = _moving_points(self.chain)
         shape = (len(_FIELD_PARTS), len(points), n)
-        known = _all_known(self.links, self.chain.carried, points)
+        known = _all_known(self.links, self.chain.carried, points, self.chain)
         if self.worked_out is not None:
             block = self.worked_out.reshape(shape)
         else:
             block = np.empty(shape, dtype=complex)
             _work_out_fields(block, self.links, points, known)
+        # the whole block seen as [x, y] pairs once (its rows are then views)
+        pairs = block.view(np.float64).reshape(shape + (2,))
+        pairs.setflags(write=False)
         fields = []
-        for (base, _), rows, held in zip(_FIELD_PARTS, block, known):
+        for (base, _), rows, held in zip(_FIELD_PARTS, pairs, known):
             field = {}
             for row, (name, lid, p), same in zip(rows, points, held):
-                field[name] = _xy(row if same is None else same)
+                field[name] = row if same is None else _xy(same)
             fields.append(
                 {
                     name: field[name] if lid != FRAME else _still(p if base == "o" else 0j, n)
@@ -312,7 +345,8 @@ class Sweep:
         if self.solved_plans is not None:
             return self.solved_plans
         m = {lid: Motion.of(state) for lid, state in self.links.items()}
-        return tuple(solver.plan(m, place=False) for solver in self.chain.solvers)
+        with quiet():
+            return tuple(solver.plan(m, place=False) for solver in self.chain.solvers)
 
     @property
     def ok(self) -> np.ndarray:
@@ -427,7 +461,7 @@ class Chain:
         """Positions of the first `upto` groups (all by default) with their
         branches; `margins` receives each group's `margin` before it is placed."""
         m = {FRAME: self.frame(), self.mech.drive.link: self.crank(phi_rad)}
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        with quiet():
             for solver in self.solvers[:upto]:
                 if margins is not None:
                     margins.append(solver.margin(m))
@@ -460,9 +494,31 @@ class Chain:
         assert arena is not None
         return arena.sweep(phi1_deg)
 
+    def point_motion(
+        self, phi1_deg: np.ndarray, name: str
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Where the chain is solved (every group assembled, its plan regular)
+        and the position, velocity and acceleration of one point (complex) over
+        the angles: the same kernels as `sweep`, without its records, for the
+        searches over many angles that read one point (the extreme positions,
+        the diagrams' grids). NaN where `ok` is False."""
+        phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+        m, failed, singular, _ = self._solve(np.radians(phi1_deg))
+        bad = np.zeros(phi1_deg.shape, dtype=bool)
+        for mask in (*failed.values(), *singular.values()):
+            bad |= mask
+        lid, p = self.locate[name]
+        mo = m[lid]
+        shape = phi1_deg.shape
+        return ~bad, _over(mo.at(p), shape), _over(mo.vel_at(p), shape), _over(mo.acc_at(p), shape)
+
     def _solve(self, phi_rad: np.ndarray):
         """Positions, then the plans group by group: the links' motion, and
         where each group fails to assemble or its plan is singular."""
+        with quiet():
+            return self._solve_quietly(phi_rad)
+
+    def _solve_quietly(self, phi_rad: np.ndarray):
         m = self.place_all(phi_rad, self.branches)
         failed, singular, plans = {}, {}, []
         for solver in self.solvers:
@@ -470,13 +526,10 @@ class Chain:
             L1, L2 = m[solver.L1], m[solver.L2]
             # one sum is finite exactly where all four are (NaN and ±inf carry)
             # broadcast: a group fixed to the frame only has plain numbers
-            failed[name] = _ro(
-                np.broadcast_to(~np.isfinite(L1.o + L2.o + L1.e + L2.e), phi_rad.shape).copy()
-            )
+            shape = phi_rad.shape
+            failed[name] = _ro(_over(~np.isfinite(L1.o + L2.o + L1.e + L2.e), shape))
             plan = solver.plan(m)
-            singular[name] = _ro(
-                ~failed[name] & ~np.broadcast_to(plan.sin_angle > SINGULAR_SIN, phi_rad.shape)
-            )
+            singular[name] = _ro(~failed[name] & ~_over(plan.sin_angle > SINGULAR_SIN, shape))
             plans.append(plan)
         return m, failed, singular, tuple(plans)
 

@@ -17,6 +17,26 @@ import numpy as np
 ROUNDING = 8 * np.finfo(float).eps
 
 
+class quiet:
+    """`np.errstate(all="ignore")` for a whole computation over the angles (NaN
+    and ±inf are its data, checked where it ends): the outermost use sets it,
+    nested uses cost a counter, not numpy's context machinery."""
+
+    __slots__ = ("_outer",)
+    _depth = 0
+
+    def __enter__(self) -> None:
+        if quiet._depth == 0:
+            self._outer = np.errstate(all="ignore")
+            self._outer.__enter__()
+        quiet._depth += 1
+
+    def __exit__(self, *exc: Any) -> None:
+        quiet._depth -= 1
+        if quiet._depth == 0:
+            self._outer.__exit__(*exc)
+
+
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """z-component of a × b."""
     return a.real * b.imag - a.imag * b.real
@@ -50,7 +70,7 @@ def circle_circle(A: np.ndarray, r1: float, C: np.ndarray, r2: float, sign: int)
     L = np.sqrt(L2)
     along = (r1 * r1 - r2 * r2 + L2) / (2 * L)
     h2 = _at_limit(r1 * r1 - along * along, lambda: r1 * r1 + L2)
-    with np.errstate(invalid="ignore"):
+    with quiet():
         h = np.sqrt(h2)
     return A + (d * (1 / L)) * (along + 1j * sign * h)  # d / L to the last bit, see turn_between
 
@@ -61,7 +81,7 @@ def circle_line(A: np.ndarray, r: float, P0: np.ndarray, u: np.ndarray, sign: in
     b = dot(w, u)
     foot = w - b * u  # from A to the nearest point of the line
     half2 = _at_limit(r * r - (foot.real**2 + foot.imag**2), lambda: r * r + dot(w, w))
-    with np.errstate(invalid="ignore"):
+    with quiet():
         half = np.sqrt(half2)
     return A + foot + sign * half * u
 
@@ -69,7 +89,7 @@ def circle_line(A: np.ndarray, r: float, P0: np.ndarray, u: np.ndarray, sign: in
 def line_line(P1: np.ndarray, u1: np.ndarray, P2: np.ndarray, u2: np.ndarray) -> np.ndarray:
     """Intersection of P1 + t·u1 and P2 + s·u2 (NaN where they are parallel)."""
     det = cross(u1, u2)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with quiet():
         t = np.where(det != 0, cross(P2 - P1, u2) / np.where(det != 0, det, 1.0), np.nan)
     return P1 + t * u1
 
@@ -87,7 +107,7 @@ def turn_between(p_local: complex, q_local: complex, P: Any, Q: Any) -> Any:
     if not isinstance(q, np.ndarray) or not q.ndim:  # a group fixed to the frame: numbers
         q = complex(q)
         return q / abs(q) if q else complex("nan")
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with quiet():
         size = np.abs(q)
         np.divide(1.0, size, out=size)
         q *= size

@@ -28,7 +28,7 @@ import numpy as np
 
 from ...model import Mechanism, Prismatic, Revolute
 from ...structure import AssurGroup
-from ..geometry import cross
+from ..geometry import cross, quiet
 
 LegKind = Literal["rotation", "slide"]
 
@@ -174,7 +174,7 @@ def solve_two_lines(d1, b1, d2, b2):
 def _cramer(det, d1, d2, rhs):
     """Cramer's rule with the determinant cross(d2, d1) given (the velocity and
     the acceleration plan share it); NaN, not ±inf, where the lines are parallel."""
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with quiet():
         x1 = cross(d2, rhs) / det
         x2 = cross(d1, rhs) / det
     singular = det == 0
@@ -192,6 +192,7 @@ class DyadSolver:
     def __init__(self, mech: Mechanism, group: AssurGroup) -> None:
         self.mech = mech
         self.group = group
+        self._locs: dict[tuple[int, str], complex] = {}  # local coordinates, read once
         self.L1, self.L2 = group.links
         # the kind fixes which pairs are revolute and which prismatic
         self.outer1: Any
@@ -204,9 +205,12 @@ class DyadSolver:
 
     # local coordinates as complex numbers
     def loc(self, link: int, name: str) -> complex:
-        pts = self.mech.frame if link == 0 else self.mech.links[link].points
-        p = pts[name]
-        return complex(p[0], p[1])
+        found = self._locs.get((link, name))
+        if found is None:
+            pts = self.mech.frame if link == 0 else self.mech.links[link].points
+            p = pts[name]
+            found = self._locs[link, name] = complex(p[0], p[1])
+        return found
 
     def prism_line(self, pair: Prismatic, m: dict, unknown: int, Q_local: complex, e):
         """The line (P0, u) on which the point Q of the unknown link lies, its angle e known."""
@@ -272,7 +276,7 @@ class DyadSolver:
         self.after_velocities(m, leg1, leg2)
         leg1.n, leg2.n = leg1.normal(m), leg2.normal(m)
         leg1.y, leg2.y = _cramer(det, leg1.d, leg2.d, (leg2.a0 + leg2.n) - (leg1.a0 + leg1.n))
-        with np.errstate(invalid="ignore", divide="ignore"):
+        with quiet():
             sin_angle = np.abs(det) / (np.abs(leg1.d) * np.abs(leg2.d))
         plan = GroupPlan(self.group, X_name, X, (leg1, leg2), sin_angle)
         if place:

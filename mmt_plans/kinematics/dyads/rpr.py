@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...model import Prismatic
-from ..geometry import cross
+from ..geometry import cross, quiet
 from .base import DyadSolver, Leg, Motion, entry
 
 
@@ -31,7 +31,7 @@ class RPR(DyadSolver):
         s, g, Ps, Pg, ps, pg, d, offset = self._parts(m)
         w = Ps - Pg
         # cross(w, e·d) = -offset: |w|·sin(arg(e·d) - arg(w)) = -offset
-        with np.errstate(invalid="ignore", divide="ignore"):
+        with quiet():
             psi = np.arcsin(-offset / np.abs(w))
         if sign < 0:
             psi = np.pi - psi
