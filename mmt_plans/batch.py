@@ -445,9 +445,43 @@ def _run(
     return process_file(*args)
 
 
-def _worker_ignores_ctrl_c() -> None:
+_PR_SET_PDEATHSIG = 1  # linux/prctl.h
+_PARENT_WATCH_SECONDS = 1.0
+
+
+def _die_with_parent(parent: int, *, pdeathsig: bool = True) -> None:
+    """This worker ends when the process `parent` does, even killed by
+    SIGKILL (which lets it clean up nothing): on Linux the kernel sends us
+    SIGKILL then (prctl PR_SET_PDEATHSIG); everywhere, a thread that sees
+    our parent change ends us within a second. A batch killed with -9 leaves
+    no worker waiting for ever."""
+    import sys
+    import threading
+
+    if pdeathsig and sys.platform.startswith("linux"):
+        try:
+            import ctypes
+
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        except (OSError, AttributeError):
+            pass  # the watching thread below still ends us
+    if os.getppid() != parent:  # the parent died before prctl took effect
+        os._exit(1)
+
+    def watch() -> None:
+        while True:
+            time.sleep(_PARENT_WATCH_SECONDS)
+            if os.getppid() != parent:
+                os._exit(1)
+
+    threading.Thread(target=watch, name="mmt-parent-watch", daemon=True).start()
+
+
+def _worker_start(parent: int) -> None:
     # Ctrl-C is the parent's to handle: workers print no traceback of their own.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _die_with_parent(parent)
 
 
 def run_batch(
@@ -496,7 +530,9 @@ def run_batch(
                 progress(results[i])  # type: ignore[arg-type]
     else:
         pool = ProcessPoolExecutor(
-            max_workers=min(jobs, len(tasks)), initializer=_worker_ignores_ctrl_c
+            max_workers=min(jobs, len(tasks)),
+            initializer=_worker_start,
+            initargs=(os.getpid(),),
         )
         try:
             futures = {pool.submit(_run, task): i for i, task in zip(index, tasks)}

@@ -28,7 +28,7 @@ def sheet_formats(ctx: click.Context, param: click.Parameter, value: str) -> tup
     "out_dir",
     default="out",
     show_default=True,
-    type=click.Path(file_okay=False, path_type=Path),
+    type=click.Path(path_type=Path),  # the kind of node: files.check_output
     help="Directory for the sheets.",
 )
 @click.option(
