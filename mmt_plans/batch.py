@@ -500,10 +500,15 @@ def run_batch(
     the order of `files`. `progress(result)` is called as each file finishes.
     With `force` False a file finished by an earlier run (its manifest matches,
     its outputs are there) is kept rather than redone."""
-    from .files import ensure_dir
+    from .files import ensure_dir, sweep_stale_temporaries
 
     out = ensure_dir(out)
     targets = plan_outputs(list(files), out)
+    # the temporaries a killed earlier run left, also in the folders of files
+    # kept from it (a kept file writes nothing there to sweep them)
+    for t in targets:
+        if _inside(t, out):
+            sweep_stale_temporaries(t)
     results: list[FileResult | None] = [None] * len(targets)
     pairs: Fields = tuple(sorted((fields or {}).items()))
     tasks: list[tuple[str, str, str, bool, tuple[str, ...], tuple[str, ...], Fields]] = []
