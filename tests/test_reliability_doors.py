@@ -412,3 +412,13 @@ def test_names_from_file_names_with_newline_cr_bidi_are_escaped(tmp_path, name):
         assert ch not in svg
     bad = invoke("analyze", tmp_path / ("missing" + name))  # the message escapes it too
     assert bad.exit_code == 2 and bad.stderr.count("\n") == 2 and "\u202e" not in bad.stderr
+
+
+def test_a_fifo_where_a_sheet_goes_is_refused_before_the_work(tmp_path, monkeypatch):
+    import mmt_plans.solution
+
+    os.mkfifo(tmp_path / "sheet1.svg")
+    monkeypatch.setattr(mmt_plans.solution, "solve", lambda *a, **k: pytest.fail("solved"))
+    clean_exit_2(invoke("draw", SMALL, "-o", tmp_path, "--format", "svg"),
+                 "sheet1.svg: is a FIFO (named pipe)")
+    assert stat.S_ISFIFO(os.lstat(tmp_path / "sheet1.svg").st_mode)
