@@ -24,6 +24,7 @@ import json
 import math
 import os
 import signal
+import stat
 import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -103,16 +104,22 @@ def find_files(inputs: Iterable[str | os.PathLike[str]]) -> list[Path]:
     seen: set[Path] = set()
     for item in inputs:
         p = Path(item)
-        if p.is_dir():
+        try:  # not Path.is_dir(): it raises on a name too long (ENAMETOOLONG)
+            mode = os.stat(p).st_mode
+        except FileNotFoundError:
+            raise BatchError(f"{shown(p)}: no such file or directory") from None
+        except OSError as err:
+            raise BatchError(
+                f"{shown(p)}: cannot be read ({err.strerror})\n  fix: check the path"
+            ) from None
+        if stat.S_ISDIR(mode):
             found = _tomls_under(p)
             if not found:
                 raise BatchError(
                     f"{shown(p)}: no *.toml files in this directory (searched recursively)"
                 )
-        elif p.exists():
-            found = [p]
         else:
-            raise BatchError(f"{shown(p)}: no such file or directory")
+            found = [p]
         for f in found:
             key = f.resolve()
             if key not in seen:

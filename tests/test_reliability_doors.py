@@ -422,3 +422,13 @@ def test_a_fifo_where_a_sheet_goes_is_refused_before_the_work(tmp_path, monkeypa
     clean_exit_2(invoke("draw", SMALL, "-o", tmp_path, "--format", "svg"),
                  "sheet1.svg: is a FIFO (named pipe)")
     assert stat.S_ISFIFO(os.lstat(tmp_path / "sheet1.svg").st_mode)
+
+
+@pytest.mark.parametrize("command", [["analyze"], ["draw", "-o", "{tmp}/o"],
+                                     ["note", "-o", "{tmp}/n.pdf"], ["batch", "-o", "{tmp}/b"],
+                                     ["variants", "-o", "{tmp}/v"]])
+def test_an_input_name_over_255_bytes_is_a_clean_error(tmp_path, command):
+    name, *rest = command
+    args = [name, tmp_path / f"{LONG}.toml", *[a.replace("{tmp}", str(tmp_path)) for a in rest]]
+    clean_exit_2(invoke(*args), "File name too long")
+    assert os.listdir(tmp_path) == []
