@@ -1021,7 +1021,6 @@ def run(seed: int, cases: int, start: int = 0, echo=print, save: Path | None = N
             path = folder / m.name
             outcome = check(m.data, str(path), draw=draw)
             path.unlink(missing_ok=True)
-            timed.append((m, outcome))
             if outcome.drawn:
                 counts["drawn" if outcome.drawn == "drawn" else "draw: clean error"] += 1
             kind = outcome.kind
@@ -1030,9 +1029,12 @@ def run(seed: int, cases: int, start: int = 0, echo=print, save: Path | None = N
                 if known is not None:
                     known.append((m, outcome, known_bug(outcome)))
             counts[kind] += 1
-            if outcome.slow:
-                counts["slow"] += 1
-            if kind not in ("analysed", "clean error", "known bug") or outcome.slow:
+            if kind != "known bug":  # counted once, as the bug it is (a hang is not slow besides)
+                timed.append((m, outcome))
+                if outcome.slow:
+                    counts["slow"] += 1
+            if kind not in ("analysed", "clean error", "known bug") or (
+                    kind != "known bug" and outcome.slow):
                 findings.append((m, outcome))
                 if save is not None:
                     save.mkdir(parents=True, exist_ok=True)
