@@ -7,13 +7,19 @@ that would fill the memory), and then text that is not UTF-8. Every refusal
 is a `SpecError(path, "file", problem, fix)`.
 
 Outputs are written atomically: into a hidden temporary file next to the
-target (`.NAME.tmp-<pid>-<random>`), renamed onto the target only once it is
-complete, removed on any failure. An interrupted run leaves each output
-either as it was or complete, never half-written (a rename is atomic on one
-file system; a power cut may still lose the data of the last files, as we
-do not fsync). A target that cannot be written (a read-only folder, a path
-under an existing file, a folder where a file should go) is an
-`OutputError` naming the path and the fix.
+target (`.NAME.tmp-<pid>-<random>`), synced to the disk, renamed onto the
+target only once it is complete (then the folder is synced), removed on any
+failure: an interrupted run or a power cut leaves each output either as it
+was or complete, never half-written. A killed run cannot remove its
+temporary file: the next run writing into that folder sweeps it
+(`sweep_stale_temporaries`: our pattern, older than this run, of a process
+no longer alive). An output goes only where a file belongs, a regular file
+or a new path: a symbolic link, FIFO, device or socket there is refused, as
+replacing it would destroy it. A target that cannot be written (a read-only
+folder or full disk, said in words; a path under an existing file; a folder
+where a file should go; a name over NAME_MAX bytes) is an `OutputError`
+naming the path and the fix. `SOURCE_DATE_EPOCH` is read here, once, for
+every dated output.
 
 `finite_json` turns results into JSON text, naming the first number that is
 not finite instead of letting json raise a bare ValueError.
