@@ -94,7 +94,7 @@ def test_a_case_ten_times_its_family_median_is_slow():
     timed = _timed([0.2] * 10 + [2.5, 1.5])
     slow = fuzz.slow_cases(timed)
     assert [m.case for m, _, _ in slow] == [10]  # 12.5x; 7.5x is not
-    assert "the median 0.200 s of offset_slider_crank:geometry" in slow[0][2]
+    assert "the median 0.200 s of offset_slider_crank:geometry:analysed" in slow[0][2]
 
 
 def test_timer_noise_below_the_floor_is_not_slow():
