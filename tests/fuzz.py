@@ -742,8 +742,10 @@ class Mutant:
 
     @property
     def family(self) -> str:
-        """Mutants whose times compare: one source, one kind of mutation."""
-        return f"{self.source.stem}:{self.kind}"
+        """Mutants whose times compare: one source, one kind of mutation, the
+        same order of size (a file made 100 times longer takes longer to read)."""
+        size = "" if len(self.data) < 50_000 else ":large"
+        return f"{self.source.stem}:{self.kind}{size}"
 
     def describe(self) -> str:
         where = f" as {self.name!r}" if self.name != "mutant.toml" else ""
