@@ -24,6 +24,7 @@ import json
 import math
 import os
 import signal
+import stat
 import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -103,16 +104,22 @@ def find_files(inputs: Iterable[str | os.PathLike[str]]) -> list[Path]:
     seen: set[Path] = set()
     for item in inputs:
         p = Path(item)
-        if p.is_dir():
+        try:  # not Path.is_dir(): it raises on a name too long (ENAMETOOLONG)
+            mode = os.stat(p).st_mode
+        except FileNotFoundError:
+            raise BatchError(f"{shown(p)}: no such file or directory") from None
+        except OSError as err:
+            raise BatchError(
+                f"{shown(p)}: cannot be read ({err.strerror})\n  fix: check the path"
+            ) from None
+        if stat.S_ISDIR(mode):
             found = _tomls_under(p)
             if not found:
                 raise BatchError(
                     f"{shown(p)}: no *.toml files in this directory (searched recursively)"
                 )
-        elif p.exists():
-            found = [p]
         else:
-            raise BatchError(f"{shown(p)}: no such file or directory")
+            found = [p]
         for f in found:
             key = f.resolve()
             if key not in seen:
@@ -445,9 +452,43 @@ def _run(
     return process_file(*args)
 
 
-def _worker_ignores_ctrl_c() -> None:
+_PR_SET_PDEATHSIG = 1  # linux/prctl.h
+_PARENT_WATCH_SECONDS = 1.0
+
+
+def _die_with_parent(parent: int, *, pdeathsig: bool = True) -> None:
+    """This worker ends when the process `parent` does, even killed by
+    SIGKILL (which lets it clean up nothing): on Linux the kernel sends us
+    SIGKILL then (prctl PR_SET_PDEATHSIG); everywhere, a thread that sees
+    our parent change ends us within a second. A batch killed with -9 leaves
+    no worker waiting for ever."""
+    import sys
+    import threading
+
+    if pdeathsig and sys.platform.startswith("linux"):
+        try:
+            import ctypes
+
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        except (OSError, AttributeError):
+            pass  # the watching thread below still ends us
+    if os.getppid() != parent:  # the parent died before prctl took effect
+        os._exit(1)
+
+    def watch() -> None:
+        while True:
+            time.sleep(_PARENT_WATCH_SECONDS)
+            if os.getppid() != parent:
+                os._exit(1)
+
+    threading.Thread(target=watch, name="mmt-parent-watch", daemon=True).start()
+
+
+def _worker_start(parent: int) -> None:
     # Ctrl-C is the parent's to handle: workers print no traceback of their own.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _die_with_parent(parent)
 
 
 def run_batch(
@@ -466,10 +507,15 @@ def run_batch(
     the order of `files`. `progress(result)` is called as each file finishes.
     With `force` False a file finished by an earlier run (its manifest matches,
     its outputs are there) is kept rather than redone."""
-    from .files import ensure_dir
+    from .files import ensure_dir, sweep_stale_temporaries
 
     out = ensure_dir(out)
     targets = plan_outputs(list(files), out)
+    # the temporaries a killed earlier run left, also in the folders of files
+    # kept from it (a kept file writes nothing there to sweep them)
+    for t in targets:
+        if _inside(t, out):
+            sweep_stale_temporaries(t)
     results: list[FileResult | None] = [None] * len(targets)
     pairs: Fields = tuple(sorted((fields or {}).items()))
     tasks: list[tuple[str, str, str, bool, tuple[str, ...], tuple[str, ...], Fields]] = []
@@ -496,7 +542,9 @@ def run_batch(
                 progress(results[i])  # type: ignore[arg-type]
     else:
         pool = ProcessPoolExecutor(
-            max_workers=min(jobs, len(tasks)), initializer=_worker_ignores_ctrl_c
+            max_workers=min(jobs, len(tasks)),
+            initializer=_worker_start,
+            initargs=(os.getpid(),),
         )
         try:
             futures = {pool.submit(_run, task): i for i, task in zip(index, tasks)}

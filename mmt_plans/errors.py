@@ -46,6 +46,11 @@ class SpecError(MmtError, ValueError):
         super().__init__(text)
 
 
+class SettingError(MmtError, ValueError):
+    """An environment variable or option set to a value the tool cannot use
+    (SOURCE_DATE_EPOCH=1.5); the message names it and the fix."""
+
+
 class StructureError(MmtError, ValueError):
     """The links and pairs do not form a mechanism we can decompose or move."""
 

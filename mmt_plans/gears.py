@@ -365,14 +365,27 @@ def _read_motor_rpm(table: Mapping[str, Any], path: str) -> float:
             path, "gears.motor_rpm", "missing", "add motor_rpm = 1450 (the motor speed, 1/min)"
         )
     rpm = table["motor_rpm"]
-    if not _is_number(rpm) or not math.isfinite(rpm) or rpm <= 0:
+    try:
+        finite = _is_number(rpm) and math.isfinite(rpm)
+    except OverflowError:  # an integer too large for a float (310 digits)
+        finite = False
+    if not finite or rpm <= 0:
         raise SpecError(
             path,
             "gears.motor_rpm",
-            f"must be a positive number of rpm, got {rpm!r}",
+            f"must be a positive number of rpm, got {_shown_number(rpm)}",
             "write the motor speed in 1/min, e.g. motor_rpm = 1450",
         )
     return float(rpm)
+
+
+def _shown_number(x: object) -> str:
+    text = (
+        repr(x)
+        if not isinstance(x, int) or abs(x) < 10**30
+        else f"an integer of {len(str(abs(x)))} digits"
+    )
+    return text
 
 
 def _choice(value: object, allowed: Sequence[str], entry: str, path: str) -> str:

@@ -159,7 +159,16 @@ def load(path: str | Path) -> Mechanism:
 
 
 def loads(text: str, path: str = "<string>") -> Mechanism:
-    return _Reader(path).mechanism(parse_toml(text, path))
+    data = parse_toml(text, path)
+    try:
+        mech = _Reader(path).mechanism(data)
+    except (OverflowError, MemoryError):
+        # an integer too large for a float met by some reader: named here
+        check_integer_sizes(data, path)
+        raise
+    # the entries' own limits spoke first; what they let pass is still 64-bit
+    check_integer_sizes(data, path)
+    return mech
 
 
 def read_text(path: str | Path, what: str = "mechanism file") -> str:
@@ -168,10 +177,44 @@ def read_text(path: str | Path, what: str = "mechanism file") -> str:
     return read_input(path, what)
 
 
+INTEGER_MIN, INTEGER_MAX = -(2**63), 2**63 - 1
+"""TOML's integers: 64-bit, signed ("an integer that cannot be represented
+losslessly must be an error", toml.io v1.0.0); tomllib reads any size."""
+
+
+def _entry_name(keys: list[str | int]) -> str:
+    out = ""
+    for k in keys:
+        out += f"[{k + 1}]" if isinstance(k, int) else (f".{k}" if out else str(k))
+    return out
+
+
+def check_integer_sizes(data: Any, path: str) -> None:
+    """Refuse an integer outside TOML's 64 bits, naming its entry, before any
+    code reads it (a 310-digit motor_rpm would overflow float())."""
+    stack: list[tuple[list[str | int], Any]] = [([], data)]
+    while stack:
+        keys, value = stack.pop()
+        if isinstance(value, dict):
+            stack.extend((keys + [k], v) for k, v in value.items())
+        elif isinstance(value, list):
+            stack.extend((keys + [i], v) for i, v in enumerate(value))
+        elif isinstance(value, int) and not isinstance(value, bool):
+            if not INTEGER_MIN <= value <= INTEGER_MAX:
+                digits = len(str(abs(value))) if abs(value) < 10**4000 else 4000
+                raise SpecError(
+                    path,
+                    _entry_name(keys) or "TOML",
+                    f"an integer of {digits} digits, beyond TOML's 64-bit integers "
+                    f"({INTEGER_MIN} to {INTEGER_MAX})",
+                    "write a number of a sane size (mm, kg, N, rpm); README lists the input limits",
+                )
+
+
 def parse_toml(text: str, path: str) -> dict[str, Any]:
     """The tables of an input file's TOML, or a SpecError at the line that is wrong."""
     try:
-        return tomllib.loads(text)
+        data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as err:
         raise SpecError(path, "TOML", str(err), "fix the TOML syntax at that line") from None
     except RecursionError:
@@ -188,6 +231,7 @@ def parse_toml(text: str, path: str) -> dict[str, Any]:
             f"a value cannot be read: {err}",
             "write numbers of a sane size (mm, kg, N, rpm)",
         ) from None
+    return data
 
 
 class _Reader:
@@ -267,9 +311,10 @@ class _Reader:
                 if hi
                 else f"at least {lo}{u}"
             )
+            value = f"{x:g}{u}" if math.isfinite(x) else "a number beyond 1e308"
             raise self.fail(
                 entry,
-                f"is {x:g}{u}, out of the range this tool accepts: {span}",
+                f"is {value}, out of the range this tool accepts: {span}",
                 "check the value and its unit (mechanism files use mm, kg, N, "
                 "rpm or rad/s); README lists the input limits",
             )
@@ -664,7 +709,7 @@ class _Reader:
         if isinstance(table, dict):
             if "motor_rpm" in table:
                 rpm = _real(table["motor_rpm"])
-                if rpm is not None and math.isfinite(rpm) and rpm > 0:
+                if rpm is not None and rpm > 0:  # inf: an integer of hundreds of digits
                     self.bounded(rpm, "gears.motor_rpm", SPEED_MIN, SPEED_MAX, "1/min")
             stages = table.get("stage")
             if isinstance(stages, list):

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from itertools import combinations
 from typing import Literal
 
-from .errors import StructureError
+from .errors import StructureError, shown
 from .model import FRAME, Mechanism, Pair, Prismatic
 
 DyadKind = Literal["RRR", "RRP", "RPR", "PRP", "RPP"]
@@ -99,14 +99,35 @@ def analyse_structure(mech: Mechanism) -> Structure:
         group = _farthest_group(remaining, driver, pairs, higher, distance)
         if group is None:
             raise StructureError(
-                f"links {sorted(remaining)} do not split into Assur groups "
+                f"{shown(mech.path)}: links {sorted(remaining)} do not split into Assur groups "
                 f"(W = {W}); check the pairs of these links"
             )
         removed.append(group)
         remaining -= set(group.links)
     groups = tuple(reversed(removed))
+    _check_driven(groups, driver, mech.path)
     mclass = max([1] + [g.group_class for g in groups])
     return Structure(n=n, p5=p5, p4=p4, W=W, driver=driver, groups=groups, mechanism_class=mclass)
+
+
+def _check_driven(groups: tuple[AssurGroup, ...], driver: int, path: str) -> None:
+    """Every group, in the order of attachment, must hold by a pair to a link
+    that moves (the driving link or a group before it): a group whose outer
+    pairs all join the frame is a rigid truss, not a structural group of the
+    mechanism (the decomposition would hang it on some other group)."""
+    moving = {driver}
+    for g in groups:
+        outer = [p for p in g.pairs if not set(p.links) <= set(g.links)]
+        joined = {other for p in outer for other in p.links if other not in g.links}
+        if not joined & moving:
+            where = ", ".join(p.name for p in outer)
+            raise StructureError(
+                f"{shown(path)}: group {g.label} (links {', '.join(map(str, g.links))}) has all its outer "
+                f"pairs ({where}) on the frame and no pair to a moving link: it cannot move "
+                f"(a rigid truss)\n  fix: join one of its outer pairs to a moving link, "
+                f"or remove the links {', '.join(map(str, g.links))}"
+            )
+        moving |= set(g.links)
 
 
 def _distances_from(driver: int, mech: Mechanism) -> dict[int, int]:

@@ -182,5 +182,8 @@ def test_document_date(monkeypatch):
     assert document_date() == "2000-01-01T00:00:00Z"
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
     assert document_date() == "2023-11-14T22:13:20Z"
-    monkeypatch.setenv("SOURCE_DATE_EPOCH", "not a number")
-    assert document_date() == "2000-01-01T00:00:00Z"
+    # #26: a value that is not whole seconds is refused, not silently 2000-01-01
+    for bad in ("not a number", "1.5", "-5", "99999999999999999"):
+        monkeypatch.setenv("SOURCE_DATE_EPOCH", bad)
+        with pytest.raises(mmt_plans.MmtError, match="SOURCE_DATE_EPOCH: '"):
+            document_date()

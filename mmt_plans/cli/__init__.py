@@ -37,7 +37,8 @@ def main(debug: bool) -> None:
     "--json",
     "json_out",
     type=click.Path(dir_okay=False, path_type=Path),
-    help="Write the results JSON here.",
+    help="Write the results JSON here (a regular file or a new path; - for "
+    "standard output, without the text report).",
 )
 @click.option("--quiet", is_flag=True, help="Print nothing but errors.")
 @click.option(
@@ -49,23 +50,24 @@ def main(debug: bool) -> None:
 @reports_errors
 def analyze(file: Path, json_out: Path | None, quiet: bool, partial_turn: bool) -> None:
     """Structural, kinematic (and force) analysis of FILE."""
-    from ..files import check_output, finite_json, write_text_atomic
+    from ..files import STDOUT, check_output, finite_json, write_output
     from ..report import text_report
     from ..results_json import results as results_json
     from ..solution import solve
     from ..spec import load
 
     if json_out is not None:
-        check_output(json_out)
+        check_output(json_out, stdout=True)
+        quiet = quiet or str(json_out) == STDOUT  # standard output carries the JSON alone
     analysis = solve(load(file), partial_turn=partial_turn)
     results = results_json(analysis)
     text = finite_json(results, str(file)) if json_out is not None else ""
     if not quiet:
         click.echo(text_report(analysis))
     if json_out is not None:
-        write_text_atomic(json_out, text)
+        where = write_output(json_out, text)
         if not quiet:
-            click.echo(f"results written to {json_out}")
+            click.echo(f"results written to {where}")
 
 
 @main.command()

@@ -10,6 +10,9 @@ import click
 from .draw import sheet_formats
 from .errors import reports_errors
 from .fields import field_option
+from .options import tolerance_percent
+
+MAX_JOBS = 256  # more processes than this only exhaust the memory
 
 
 @click.command()
@@ -19,14 +22,14 @@ from .fields import field_option
     "--out",
     "out_dir",
     required=True,
-    type=click.Path(file_okay=False, path_type=Path),
+    type=click.Path(path_type=Path),  # the kind of node: files.check_output
     help="Directory for OUT/<file stem>/ and OUT/summary.csv.",
 )
 @click.option(
     "--jobs",
-    type=click.IntRange(min=1),
+    type=click.IntRange(min=1, max=MAX_JOBS),
     default=None,
-    help="Processes to run at once  [default: every core]",
+    help=f"Processes to run at once, 1 to {MAX_JOBS}  [default: every core]",
 )
 @click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
 @click.option("--force", is_flag=True, help="Redo every file, also those an earlier run finished.")
@@ -45,7 +48,8 @@ from .fields import field_option
 )
 @click.option(
     "--tolerance",
-    type=click.FloatRange(0.0, 100.0, min_open=True),
+    type=float,
+    callback=tolerance_percent,  # check's own door: nan and inf refused alike
     default=5.0,
     show_default=True,
     metavar="PERCENT",
@@ -71,8 +75,9 @@ def batch(
     Exit code 1 if some file failed."""
     from ..batch import find_files, run_batch, summary_table, write_summary_csv
     from ..errors import shown
-    from ..files import ensure_dir
+    from ..files import check_output, ensure_dir
 
+    check_output(out_dir, folder=True)
     files = find_files(inputs)
     ensure_dir(out_dir)
     with click.progressbar(

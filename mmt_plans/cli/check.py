@@ -12,17 +12,7 @@ from pathlib import Path
 import click
 
 from .errors import reports_errors
-
-
-def _tolerance(ctx: click.Context, param: click.Parameter, value: float | None) -> float | None:
-    """A finite percentage in (0, 100] (click's FloatRange lets nan through)."""
-    from ..check import TOLERANCE_MAX
-
-    if value is not None and not (0 < value <= TOLERANCE_MAX):  # False for nan
-        raise click.BadParameter(
-            f"{value} is not a percentage in (0, {TOLERANCE_MAX:g}]; give e.g. --tolerance 5"
-        )
-    return value
+from .options import tolerance_percent
 
 
 @click.command()
@@ -32,7 +22,7 @@ def _tolerance(ctx: click.Context, param: click.Parameter, value: float | None) 
     "--tolerance",
     type=float,
     default=None,
-    callback=_tolerance,
+    callback=tolerance_percent,
     metavar="PERCENT",
     help="Pass/fail limit in percent (default: the answers file's "
     "check.tolerance_percent, else 5).",
@@ -43,7 +33,8 @@ def _tolerance(ctx: click.Context, param: click.Parameter, value: float | None) 
     type=click.Path(dir_okay=False, path_type=Path),
     default=None,
     metavar="REPORT",
-    help="Also write the verdict as JSON: passed, and every value with its cause.",
+    help="Also write the verdict as JSON: passed, and every value with its cause "
+    "(- for standard output, without the table).",
 )
 @click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
 @reports_errors
@@ -52,11 +43,14 @@ def check(
 ) -> None:
     """Check the values of ANSWERS (a student's hand drawing) against FILE's exact ones."""
     from ..check import check_file
-    from ..files import write_text_atomic
+    from ..files import STDOUT, check_output, write_output
 
+    if json_path is not None:
+        check_output(json_path, stdout=True)
     result = check_file(file, answers, tolerance)
     if json_path is not None:
-        write_text_atomic(json_path, result.json(lang))  # type: ignore[arg-type]
-    click.echo(result.text(lang))  # type: ignore[arg-type]
+        write_output(json_path, result.json(lang))  # type: ignore[arg-type]
+    if json_path is None or str(json_path) != STDOUT:  # standard output carries the JSON alone
+        click.echo(result.text(lang))  # type: ignore[arg-type]
     if not result.passed:
         sys.exit(1)

@@ -28,7 +28,7 @@ def sheet_formats(ctx: click.Context, param: click.Parameter, value: str) -> tup
     "out_dir",
     default="out",
     show_default=True,
-    type=click.Path(file_okay=False, path_type=Path),
+    type=click.Path(path_type=Path),  # the kind of node: files.check_output
     help="Directory for the sheets.",
 )
 @click.option(
@@ -65,6 +65,9 @@ def draw(
 
     check_output(out_dir, folder=True)
     numbers = sorted(available_sheets()) if sheet == "all" else [int(sheet)]
+    for n in numbers:  # a link, FIFO or device where a sheet goes: refused before the work
+        for fmt in formats:
+            check_output(out_dir / f"sheet{n}.{fmt}")
     solution = solve(
         with_fields(load(file), fields), partial_turn=partial_turn, forces=2 in numbers
     )

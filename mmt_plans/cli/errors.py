@@ -22,6 +22,7 @@ import os
 import sys
 import traceback
 from functools import wraps
+from pathlib import Path
 
 import click
 
@@ -72,15 +73,32 @@ def _subject(kwargs: dict) -> str:
     return "mmt-plans"
 
 
+def _named(err: MmtError, kwargs: dict) -> str:
+    """The message of `err`, with the file the command worked on in front
+    when the message names no file of its own (a layout, an assembly or a
+    force error raised far from the file)."""
+    text = str(err)
+    if kwargs.get("file") is None or getattr(err, "path", None):
+        return text
+    subject = shown(kwargs["file"])
+    first = text.split("\n", 1)[0]
+    if subject in first or Path(subject).name in first or first.startswith("SOURCE_DATE"):
+        return text
+    return f"{subject}: {text}"
+
+
 def reports_errors(fn):
     @wraps(fn)
     def wrapper(*args, **kwargs):
         try:
             with quiet_numerics():
+                from ..files import check_environment
+
+                check_environment()  # SOURCE_DATE_EPOCH: refused at the door, by every command
                 return fn(*args, **kwargs)
         except MmtError as err:
             # each line printable: no terminal control sequence from an input
-            text = "\n".join(shown(line, 10_000) for line in str(err).split("\n"))
+            text = "\n".join(shown(line, 10_000) for line in _named(err, kwargs).split("\n"))
             click.echo(f"error: {text}", err=True)
             sys.exit(EXIT_BAD_INPUT)
         except KeyboardInterrupt:

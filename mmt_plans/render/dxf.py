@@ -162,16 +162,11 @@ def encode_text(text: str) -> str:
 
 
 def source_date() -> datetime:
-    """$SOURCE_DATE_EPOCH as a UTC date, else 2000-01-01."""
-    raw = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
-    if not raw:
-        return _DEFAULT_DATE
-    try:
-        return datetime.fromtimestamp(int(raw), tz=UTC)
-    except (ValueError, OverflowError, OSError):
-        raise ValueError(
-            f"SOURCE_DATE_EPOCH must be whole seconds since 1970, got {raw!r}"
-        ) from None
+    """$SOURCE_DATE_EPOCH as a UTC date, else 2000-01-01; a SettingError for a
+    value that is not whole seconds (files.source_date_epoch, as the PDF)."""
+    from ..files import source_date_epoch
+
+    return source_date_epoch() or _DEFAULT_DATE
 
 
 class _Bounds:

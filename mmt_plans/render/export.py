@@ -1,8 +1,8 @@
 """SVG to PDF (vector) and PNG through cairosvg.
 
 cairosvg (and Cairo under it) is imported inside the functions, so that the
-rest of mmt_plans works on a machine without Cairo. Files are written
-atomically (files.atomic_path); a PDF goes through note/pdf.py's writer,
+rest of mmt_plans works on a machine without Cairo. Pages are rendered in
+memory and written atomically (files.write_bytes_atomic); a PDF goes through note/pdf.py's writer,
 which fixes the document's dates, so that two runs give the same bytes.
 """
 
@@ -92,15 +92,9 @@ def svg_to_pdf(svg: SvgSource, target: str | os.PathLike[str]) -> Path:
 
 def svg_to_png(svg: SvgSource, target: str | os.PathLike[str], dpi: float = 96.0) -> Path:
     """Write a PNG of the page at `dpi` (the SVG is sized in mm, so dpi sets pixels)."""
-    import cairosvg
+    from ..files import write_bytes_atomic
 
-    from ..files import atomic_path
-
-    target = Path(target)
-    data = _svg_bytes(svg)
-    with atomic_path(target) as tmp:
-        cairosvg.svg2png(bytestring=data, write_to=str(tmp), dpi=dpi)
-    return target
+    return write_bytes_atomic(Path(target), svg_to_png_bytes(svg, dpi))
 
 
 def svg_to_pdf_bytes(svg: SvgSource) -> bytes:
@@ -119,13 +113,16 @@ def svg_to_png_bytes(svg: SvgSource, dpi: float = 96.0) -> bytes:
 
 def svgs_to_pdf(svgs: Iterable[str], target: str | os.PathLike[str]) -> Path:
     """Write the SVG documents `svgs` (text) as the pages of one vector PDF,
-    atomically (files.atomic_path)."""
-    from ..files import atomic_path
+    atomically (files.write_bytes_atomic).
 
-    target = Path(target)
-    with atomic_path(target) as tmp:
-        _pdf(svgs, str(tmp))
-    return target
+    Cairo renders into memory and our own write puts the bytes on the disk:
+    a full or read-only disk is then an OSError with its errno, said in words,
+    not Cairo's bare status code ("cannot be written: 11")."""
+    from ..files import write_bytes_atomic
+
+    out = io.BytesIO()
+    _pdf(svgs, out)
+    return write_bytes_atomic(Path(target), out.getvalue())
 
 
 def _pdf(svgs: Iterable[str], target: Any) -> None:

@@ -1165,7 +1165,15 @@ def compose_sheet2(
     composer = _Composer(fa, solution, backend.look, lang, page)
     steps = composer.first_fit()
     if steps is None:
-        raise LayoutError(f"sheet 2 does not fit on {page.name or 'the page'}: {composer.last}")
+        what = composer.last or (
+            f"its {len(composer.drawings)} drawings ({', '.join(composer.drawings)}) and "
+            "tables find no arrangement at any scale tried"
+        )
+        raise LayoutError(
+            f"sheet 2 does not fit on {page.name or 'the page'}: {what}\n  fix: a mechanism "
+            "of this many groups needs more than one sheet 2; draw sheet 1 alone (--sheet 1) "
+            "and the force analysis in parts"
+        )
     steps = composer.fill(steps)
     scales = composer.scales(steps)
     sketches, arms = composer.sketches(scales)
