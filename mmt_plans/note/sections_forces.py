@@ -163,6 +163,15 @@ def loads(wr: Writer, fa: ForceAnalysis) -> None:
             f"{u['mm']}"
         )
         wr.text(w["shift_side"].format(lid=lid))
+    drawings = [(2, ("force-mechanism",))]
+    if wr.has_figure(drawings):
+        mu_l, ML = wr.drawn.loaded()
+        n_fig = wr.next_figure
+        wr.text(w["loads_drawn"].format(mu=wr.v(mu_l, ML)) + wr.cite(n_fig) + ".")
+        wr.figure(
+            drawings,
+            w["fig_loads"].format(i=wr.i(fa.index or 0, "J['forces']['index']"), mu=wr.v(mu_l, ML)),
+        )
 
 
 def _sense(wr: Writer, x: float) -> str:
@@ -292,6 +301,19 @@ def group(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, step: str) -> N
     for r in g.reactions:
         _reaction_line(wr, r, *mu_f)
     _guide_points(wr, fa, j, g, own)
+    drawings = [(2, (f"group-{g.name}",)), (2, (f"force-polygon-{g.name}",))]
+    if wr.has_figure(drawings):
+        mu_l, ML = wr.drawn.group(g.name)
+        n_fig = wr.next_figure
+        wr.text(
+            w["group_drawn"].format(name=g.name, mu=wr.v(mu_l, ML), mf=wr.v(*mu_f))
+            + wr.cite(n_fig)
+            + "."
+        )
+        wr.figure(
+            drawings,
+            w["fig_group"].format(name=g.name, mu=wr.v(mu_l, ML), mf=wr.v(*mu_f)),
+        )
 
 
 def _slot_reaction(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: set[str]) -> None:
@@ -462,10 +484,18 @@ def _polygon(
         return
     mu, MU = scale
     wr.text(w["mu_F"])
-    wr.eq(
-        f"μ_F = F_{{max}}/|F_{{max}}| = {wr.v(poly.largest, f'{base}.largest')}/"
-        f"{wr.v(poly.largest / mu, f'{base}.largest/{MU}')} = {wr.v(mu, MU)} {u['N/mm']}"
-    )
+    # seed 003 (20): μ_F from the largest force known before the plan is drawn (F_PR)
+    known = [(v.magnitude, m, v) for m, v in enumerate(poly.vectors) if v.known and v.magnitude]
+    if known:
+        big, m, v = max(known, key=lambda t: t[0])
+        VS = f"hyp({base}.vectors[{m}].vector)"
+        name = force_markup(v.label)
+        wr.eq(
+            f"μ_F = {name}/|{name}| = {wr.v(big, VS)}/"
+            f"{wr.v(big / mu, f'{VS}/{MU}')} = {wr.v(mu, MU)} {u['N/mm']}"
+        )
+    else:
+        wr.eq(f"μ_F = {wr.v(mu, MU)} {u['N/mm']}")
     wr.text(w["sides"])
     for m, v in enumerate(poly.vectors):
         if not v.known or v.magnitude == 0:
@@ -549,6 +579,12 @@ def driving_link(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     _polygon(wr, dl.polygon, "F.driving_link.polygon", True, mu_f, head)
     wr.text(w["R01"].format(O=O, d=dl.link))
     _reaction_line(wr, dl.reaction, *mu_f)
+    drawings = [(2, ("driving-link",)), (2, (f"force-polygon-{dl.link}",))]
+    if wr.has_figure(drawings):
+        mu_l, ML = wr.drawn.driving()
+        n_fig = wr.next_figure
+        wr.text(w["driving_drawn"].format(mu=wr.v(mu_l, ML), mf=wr.v(*mu_f)) + wr.cite(n_fig) + ".")
+        wr.figure(drawings, w["fig_driving"].format(d=dl.link, mu=wr.v(mu_l, ML), mf=wr.v(*mu_f)))
 
 
 def reactions(wr: Writer, fa: ForceAnalysis, step: str) -> None:
@@ -566,7 +602,7 @@ def reactions(wr: Writer, fa: ForceAnalysis, step: str) -> None:
                 wr.v(r.magnitude, f"hyp({R})"),
             )
         )
-    wr.add("table", rows=rows, widths=(24, 22, 32, 32, 32))
+    wr.add("table", w["tab_reactions"], rows=rows, widths=(24, 22, 32, 32, 32))
 
 
 # --- Zhukovsky's lever --------------------------------------------------------------------------
@@ -597,7 +633,12 @@ def lever(wr: Writer, fa: ForceAnalysis, step: str) -> None:
                 wr.v(f.moment / mu_v, f"lever_moment({LF})/{MV}"),
             )
         )
-    wr.add("table", rows=rows, widths=(24, 16, 30, 30, 36))
+    wr.add("table", w["tab_lever"], rows=rows, widths=(24, 16, 30, 30, 36))
+    drawings = [(2, ("zhukovsky-lever",))]
+    if wr.has_figure(drawings):
+        n_fig = wr.next_figure
+        wr.text(w["lever_drawn"].format(mv=wr.v(mu_v, MV)) + wr.cite(n_fig) + ".")
+        wr.figure(drawings, w["fig_lever"].format(mv=wr.v(mu_v, MV)))
     TOT = f"sum(lever_moment(f) for f in F.lever.forces)/{MV}"
     wr.text(w["F_bal_z"])
     sign = "+" if s > 0 else "-"
