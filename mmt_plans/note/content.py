@@ -22,6 +22,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING, Literal
 
 from ..i18n import Language, catalogue, check_language
+from ..titles import title_in
 from .sections_forces import sheet2
 from .sections_gears import conclusions, gear_train, reduction
 from .sections_kinematics import sheet1
@@ -128,7 +129,7 @@ def note_content(
         raise ValueError(f"the sheets were composed in {composed.lang!r}, the note is in {lang!r}")
     wr = Writer(analysis, lang, composed)
     w = wr.w
-    title = analysis.mechanism.title_in(lang)
+    title = title_in(analysis.mechanism, lang)
     wr.add("title", f"{w['title']}: {title}")
     gear_train(wr)
     wr.add("section", w["sheet1"], "sheet1")

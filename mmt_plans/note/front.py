@@ -21,7 +21,9 @@ import numpy as np
 
 from ..errors import MmtError
 from ..i18n import Language, catalogue
+from ..titles import title_in
 from .content import Block
+from .writer import plural
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..solution import Solution
@@ -89,13 +91,17 @@ def _task_of(path: str) -> tuple[int, int] | None:
     return (int(m.group(1)), int(m.group(2))) if m else None
 
 
+def _counted(lang: Language, n: int, forms: Any) -> str:
+    return f"{n}\u00a0{plural(lang, n, list(forms))}"
+
+
 def title_info(analysis: Solution, lang: Language) -> TitleInfo:
     mech = analysis.mechanism
     w = catalogue(lang).words("note_front")
     sheet = {k: str(v) for k, v in dict(getattr(mech, "sheet", None) or {}).items() if str(v)}
     blank = str(w["blank"])
     short = str(w["short_blank"])
-    title = mech.title_in(lang) if hasattr(mech, "title_in") else mech.title
+    title = title_in(mech, lang)
     variant = sheet.get("variant", "")
     if variant:
         variant = w["variant"].format(variant=variant)
@@ -300,10 +306,10 @@ def abstract(analysis: Solution, info: TitleInfo, counts: Counts, lang: Language
         Block(
             "text",
             w["abstract_counts"].format(
-                pages=counts.pages,
-                figures=counts.figures,
-                tables=counts.tables,
-                refs=counts.references,
+                pages=_counted(lang, counts.pages, w["n_pages"]),
+                figures=_counted(lang, counts.figures, w["n_figures"]),
+                tables=_counted(lang, counts.tables, w["n_tables"]),
+                refs=_counted(lang, counts.references, w["n_refs"]),
             ),
         ),
         Block("text", w["abstract_object"].format(title=info.title)),

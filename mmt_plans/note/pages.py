@@ -18,7 +18,7 @@ from __future__ import annotations
 import functools
 import re
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Literal
 
 from ..drawing.page import Page, Rect, draw_frame
@@ -255,10 +255,24 @@ class _Layout:
 
     # --- placing --------------------------------------------------------------------
     def new_page(self, form: str = "2a") -> None:
+        """Start a page of `form`; headings that would end the page left go
+        with what follows them (a heading never ends a page)."""
+        last = self.pages[-1]
+        k = len(last)
+        while k > 0 and last[k - 1].kind in ("section", "subsection"):
+            k -= 1
+        carried = last[k:] if 0 < k < len(last) else []
+        if carried:
+            del last[k:]
         self.pages.append([])
         self.forms.append(form)
         self.box = text_box(self.page, form)
-        self.y = self.box.top
+        if carried:
+            shift = (self.box.top - self.body) - carried[0].y
+            self.pages[-1] = [replace(ln, y=ln.y + shift) for ln in carried]
+            self.y += shift
+        else:
+            self.y = self.box.top
 
     @property
     def next_form(self) -> str:
@@ -355,7 +369,10 @@ class _Layout:
             n = 1
         else:
             return 0.0
-        # a lead-in ending in ':' keeps the line after it
+        # a lead-in ending in ':' keeps what it introduces (paragraph(): up to
+        # three lines of an equation) and, with it, the heading above it
+        if block.kind in ("text", "problem") and block.text.endswith(":"):
+            return (min(n, 3) + 3) * self.pitch
         n = n if n <= 3 else 2
         return (n + (block.text.endswith(":") and n == 1)) * self.pitch
 

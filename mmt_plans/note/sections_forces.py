@@ -17,7 +17,7 @@ import numpy as np
 
 from ..drawing.markup import image_markup
 from . import sources as src
-from .writer import Writer, sub
+from .writer import Writer, and_list, sub
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..forces import ForceAnalysis, ForcePolygon, GroupForces
@@ -96,7 +96,8 @@ def loads(wr: Writer, fa: ForceAnalysis) -> None:
             )
     massless = [str(lid) for lid, ll in fa.loads.links.items() if not ll.mass]
     if massless:
-        wr.text(w["massless"].format(links=", ".join(massless)))
+        key = "massless" if len(massless) > 1 else "massless_one"
+        wr.text(w[key].format(links=and_list(massless, w["and"])))
     wr.heading("2.2")
     wr.text(w["inertia_rule"])
     for lid, ll in fa.loads.links.items():
@@ -301,6 +302,7 @@ def group(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, step: str) -> N
     for r in g.reactions:
         _reaction_line(wr, r, *mu_f)
     _guide_points(wr, fa, j, g, own)
+    _guide_couples(wr, fa, j, g)
     drawings = [(2, (f"group-{g.name}",)), (2, (f"force-polygon-{g.name}",))]
     if wr.has_figure(drawings):
         mu_l, ML = wr.drawn.group(g.name)
@@ -461,6 +463,37 @@ def _guide_points(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: se
             f"{hn} = -ΣM_{sub(P_name)}/{name} = {wr.neg(total, sum_src)}/{wr.vp(value, N_src)} = "
             f"{wr.v(h, H)} {u['m']}; {hn}/μ_l = {wr.vp(h, H)}/{wr.v(mu_l, ML)} = "
             f"{wr.v(h / mu_l, f'({H})/{ML}')} {u['mm']}"
+        )
+
+
+def _guide_couples(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces) -> None:
+    """A prismatic pair whose normal force is zero (a crosshead on its guide
+    loaded along it) still holds its link against turning: its reaction is a
+    couple M, from ΣM of the link about the slider's point Q, where the
+    reaction is placed: ΣM_Q(loads) + M = 0."""
+    w, u = wr.w, wr.u
+    scale = wr.drawn.group(g.name)
+    for r in g.reactions:
+        if r.kind != "P" or not r.couple:
+            continue
+        D = f"J['forces']['reaction_details'][{r.name!r}]"
+        C = D + "['couple']"
+        P = np.asarray(r.point, dtype=float)
+        P_src = f"{D}['point']"
+        Q = next((p.slider_point for p in wr.mech.sliders if p.name == r.pair), r.pair)
+        lid = r.on
+        name = force_markup(r.name)
+        M = f"M_{{{r.name[1:]}}}"
+        base = f"F.groups[{j}].free_bodies[{lid}]"
+        terms = _terms(wr, fa, g.free_bodies[lid], {r.name, r.reversed().name}, base)
+        wr.text(w["guide_couple"].format(R=name, M=M, lid=lid, Q=Q))
+        total, parts = _moment_terms(wr, fa, terms, P, P_src, Q, scale)
+        sum_src = "+".join(f"moment({t[4]}, {P_src})" for t in terms) or "0"
+        lhs = " + ".join(parts + [M])
+        wr.eq(f"ΣM_{sub(Q)}({lid}) = {lhs} = 0;")
+        wr.eq(
+            f"{M} = -ΣM_{sub(Q)} = {wr.neg(total, sum_src)} = "
+            f"{wr.v(r.couple, C)} {u['Nm']}" + _sense(wr, r.couple)
         )
 
 

@@ -571,19 +571,19 @@ def diagrams(wr: Writer) -> None:
     c = dg.construction
     D = "J['diagrams']"
     sc = f"{D}['scales']"
+    grid = dg.sheet_check.intervals
+    wr.text(
+        w["chord_method"].format(
+            n=wr.i(grid, f"{D}['grid_intervals']"),
+            step=wr.v(360.0 / grid, f"360/{D}['grid_intervals']"),
+        )
+    )
     wr.text(
         w["diagram_scales"].format(
             out=wr.mech.study.output,
             L=wr.v(c.L, f"{sc}['L_mm']"),
             H1=wr.v(c.H1, f"{sc}['H1_mm']"),
             H2=wr.v(c.H2, f"{sc}['H2_mm']"),
-        )
-    )
-    grid = dg.sheet_check.intervals
-    wr.text(
-        w["chord_method"].format(
-            n=wr.i(grid, f"{D}['grid_intervals']"),
-            step=wr.v(360.0 / grid, f"360/{D}['grid_intervals']"),
         )
     )
     MUS, MUT, MUV, MUA = (

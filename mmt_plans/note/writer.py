@@ -35,7 +35,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from .drawn import Drawn
     from .figures import FigureSpec
 
-__all__ = ["Printed", "Writer", "sub", "paren_markup"]
+__all__ = ["Printed", "Writer", "and_list", "plural", "sub", "paren_markup"]
 
 _OPEN, _CLOSE = "\ue000", "\ue001"
 _MARK = re.compile(_OPEN + r"(\d+)" + _CLOSE)
@@ -81,6 +81,26 @@ class _Pending:
     value: float
     sig: int
     source: str
+
+
+def plural(lang: str, n: int, forms: Sequence[str]) -> str:
+    """The form of a noun after the number n: English (one, many); Ukrainian
+    (one, few, many): 1 рисунок, 2 рисунки, 5 рисунків, 21 рисунок."""
+    if lang == "uk" and len(forms) >= 3:
+        if n % 10 == 1 and n % 100 != 11:
+            return forms[0]
+        if 2 <= n % 10 <= 4 and not 12 <= n % 100 <= 14:
+            return forms[1]
+        return forms[2]
+    return forms[0] if n == 1 else forms[-1]
+
+
+def and_list(items: Sequence[str], conj: str) -> str:
+    """ "4", "4 and 5", "2, 4 and 5" (`conj` the language's "and")."""
+    items = list(items)
+    if len(items) < 2:
+        return "".join(items)
+    return f"{', '.join(items[:-1])} {conj} {items[-1]}"
 
 
 def sub(name: str) -> str:
