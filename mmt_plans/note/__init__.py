@@ -229,6 +229,10 @@ def write_note(
     """Write the note as one multi-page A4 PDF at `target` (atomically, with
     fixed dates: note/pdf.py), in forms 2/2a or 5/5a (note_form), from the
     sheets `composed` (composed here when not given)."""
-    from .pdf import svgs_to_pdf
+    from .pdf import pages_to_pdf
 
-    return svgs_to_pdf(note_svgs(analysis, lang, form, composed), Path(target))
+    look = note_look()
+    pages = draw_note(
+        analysis, lambda w, h, title: RecordingBackend(w, h, look), lang, form, composed
+    )
+    return pages_to_pdf(pages, Path(target))

@@ -116,8 +116,8 @@ def note_content(
 ) -> NoteContent:
     """The calculation note of `analysis` as blocks, in seed 003 §IV order: the
     gear train (seed 002 task 1) where the file has one, sheet 1 (1.1–1.8),
-    sheet 2 (2.1–2.11), the reduction to the crank (seed 002 tasks 5–6) with
-    the gear train, and the conclusions; every number with its source.
+    sheet 2 (2.1–2.11), the reduction to the crank (seed 002 tasks 5–6) and
+    the conclusions; every number with its source.
     `composed`: the sheets of `analysis` in `lang` composed once (composed
     here when not given): the note's millimetres, scales and figures are theirs."""
     check_language(lang)

@@ -146,10 +146,27 @@ def words(text: str) -> list[str]:
 
 
 def _wrap(let: Lettering, text: str, size: float, width: float, first: float = 0.0) -> list[str]:
-    """Break at spaces into lines no wider than `width`, the first `first` mm narrower."""
-    return let.wrap(
-        text, size, width, measure=lambda t, s: markup_width(let, t, s), first_indent=first
-    )
+    """Break at spaces into lines no wider than `width`, the first `first` mm
+    narrower (Lettering.wrap's rule: a word wider than a line stays alone on
+    its line). A line's width is the sum of its words' and spaces' widths
+    (an index never holds a breaking space: typeset()), each word measured once."""
+    space = let.advance_width(" ", size)
+    lines: list[str] = []
+    for paragraph in text.split("\n"):
+        current: list[str] = []
+        used = 0.0
+        for word in paragraph.split(" "):
+            w = markup_width(let, word, size)
+            room = width - (first if not lines else 0.0)
+            trial = used + (space if current else 0.0) + w
+            if current and trial > room + 1e-9:
+                lines.append(" ".join(current))
+                current, used = [word], w
+            else:
+                current.append(word)
+                used = trial
+        lines.append(" ".join(current))
+    return lines
 
 
 def _text_lines(let: Lettering, text: str, size: float, width: float, first: float) -> list[str]:
