@@ -74,7 +74,8 @@ def _extra_sections() -> list[Callable]:
     from .batch import bench_batch
     from .diagrams import bench_diagrams
     from .forces import bench_forces
+    from .note import bench_note
     from .sheets import bench_sheets
     from .startup import bench_startup
 
-    return [bench_startup, bench_forces, bench_diagrams, bench_sheets, bench_batch]
+    return [bench_startup, bench_forces, bench_diagrams, bench_sheets, bench_note, bench_batch]

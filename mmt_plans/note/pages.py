@@ -515,7 +515,8 @@ class _Layout:
         sizes = tuple(s for s in let.sizes if s >= cap(7.0, let) - 1e-9 and s <= size + 1e-9)
         title = typeset(self.w["table"].format(n=n) + (f" – {block.text}" if block.text else ""))
         head = self.caption_lines(title, self.body, self.box.width)
-        rows = [tuple(typeset(c, False) for c in r) for r in block.rows]
+        # a cell is not broken into lines: only its minus signs are set
+        rows = [tuple(_MINUS.sub(MINUS, c) for c in r) for r in block.rows]
         header, body = rows[0], rows[1:]
 
         def cells(row: Sequence[str]) -> tuple[float, ...]:
