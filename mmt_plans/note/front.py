@@ -2,7 +2,8 @@
 §1): the title page, the task sheet with the scheme and the initial data, the
 abstract with its counts, the contents, and the references at the end.
 
-The words come from the catalogue's [note_front] and [note_refs]; the names
+The words come from the catalogue's [note_front], the references from
+literature.py (one list for both languages); the names
 from the file's [sheet] table (or `--field KEY=VALUE`), blanks to be filled
 in by hand where neither gives them; the numbers from the Mechanism and the
 Solution, as written in the file (lengths in mm as the task gives them).
@@ -362,7 +363,10 @@ def contents(entries: Sequence[Block], lang: Language) -> list[Block]:
 
 
 def reference_items(lang: Language) -> list[str]:
-    return [str(t) for t in catalogue(lang).words("note_refs")["items"]]
+    """The references in `lang`: one list for both languages (literature.py)."""
+    from .literature import entries
+
+    return entries(lang)
 
 
 def references(lang: Language) -> list[Block]:

@@ -17,6 +17,7 @@ import numpy as np
 
 from ..drawing.markup import image_markup
 from . import sources as src
+from .literature import cite
 from .writer import Writer, and_list, sub
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -645,7 +646,7 @@ def lever(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     mu_v, MV = wr.drawn.lever(lv.pa)
     _step(wr, step, w["lever"])
     s = 1.0 if wr.mech.drive.sense == "ccw" else -1.0
-    wr.text(w["lever_text"].format(turn=w["against"]))
+    wr.text(w["lever_text"].format(turn=w["against"], ref=cite("dovbush2018", "kinytskyi2002")))
     pa = lv.pa / mu_v
     wr.eq(
         f"pa = V_A/μ_V = {wr.v(lv.pa, 'F.lever.pa')}/{wr.v(mu_v, MV)} = "

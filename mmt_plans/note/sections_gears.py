@@ -12,6 +12,7 @@ import numpy as np
 
 from ..gears import GearPair, PlanetaryStage
 from . import sources as src
+from .literature import cite
 from .sections_forces import force_markup
 from .writer import Writer
 
@@ -80,7 +81,7 @@ def gear_train(wr: Writer) -> None:
                 f"{held} = {'·'.join(symbols)} = {'·'.join(numbers)} = "
                 f"{wr.v(stage.carrier_held_ratio, f'{S}.carrier_held_ratio')}"
             )
-            wr.text(w["gears_willis"].format(fixed=last))
+            wr.text(w["gears_willis"].format(fixed=last, ref=cite("strilets2025", "kinytskyi2002")))
             wr.eq(
                 f"{name} = 1 - {held} = 1 - {wr.vp(stage.carrier_held_ratio, f'{S}.carrier_held_ratio')}"
                 f" = {wr.v(stage.ratio, f'{S}.ratio')}"

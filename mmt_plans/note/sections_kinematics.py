@@ -16,6 +16,7 @@ import numpy as np
 from ..drawing.markup import image_markup
 from ..errors import MmtError
 from . import sources as src
+from .literature import cite
 from .writer import Writer, sub
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -26,6 +27,14 @@ __all__ = ["sheet1", "plan_scales"]
 
 def sheet1(wr: Writer) -> None:
     a = wr.solution
+    wr.text(
+        wr.w["method_refs"].format(
+            guide=cite("dovbush2018"),
+            self=cite("strilets2025"),
+            books=cite("artobolevskiy1954", "kinytskyi2002", "koreniako1993"),
+            dstu=cite("dstu3008"),
+        )
+    )
     views: dict[int, PlanView | MmtError] = {}
     for i in a.plan_positions:
         try:
@@ -63,7 +72,7 @@ def structure(wr: Writer) -> None:
                 links=", ".join(wr.i(x, f"{G}['links'][{m}]") for m, x in enumerate(links)),
                 cls=wr.i(g.group_class, f"{G}['class']"),
                 order=wr.i(g.order, f"{G}['order']"),
-                kind=g.kind or "-",
+                kind=_kind(wr, g.kind),
                 pairs=", ".join(p.name for p in g.pairs),
             )
         )
@@ -72,6 +81,21 @@ def structure(wr: Writer) -> None:
             cls=wr.i(st.mechanism_class, f"{S}['mechanism_class']"), formula=st.formula
         )
     )
+
+
+# the kinds of the class II groups in the textbook's order: "2-го виду" is RRP
+DYAD_KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
+
+
+def _kind(wr: Writer, kind: str | None) -> str:
+    """A group's kind as the textbook numbers it: "kind 2 (RRP)", "2-го виду (ВВП)"."""
+    if not kind:
+        return "-"
+    letters = dict(wr.w["kind_letters"])
+    local = "".join(letters.get(ch, ch) for ch in kind)
+    if kind not in DYAD_KINDS:
+        return local
+    return str(wr.w["kind_n"]).format(n=DYAD_KINDS.index(kind) + 1, kind=local)
 
 
 # --- 1.2 -------------------------------------------------------------------------------------
@@ -574,6 +598,7 @@ def diagrams(wr: Writer) -> None:
     grid = dg.sheet_check.intervals
     wr.text(
         w["chord_method"].format(
+            ref=cite("dovbush2018"),
             n=wr.i(grid, f"{D}['grid_intervals']"),
             step=wr.v(360.0 / grid, f"360/{D}['grid_intervals']"),
         )
