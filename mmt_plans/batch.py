@@ -311,7 +311,7 @@ def _process_file(
     from .files import ensure_dir, finite_json, write_text_atomic
     from .note import write_note
     from .results_json import results as results_json
-    from .sheets.compose import available_sheets, write_sheets
+    from .sheets.compose import ComposedSheets, available_sheets, compose, write_composed
     from .solution import solve
     from .spec import load
 
@@ -368,18 +368,22 @@ def _process_file(
         written.append(str(target))
         info["json"] = data
 
+    # the sheets composed once: written as sheets, read by the note (its scales, its figures)
+    composed = cast(
+        "ComposedSheets | None",
+        stage("sheets", lambda: compose(solution, cast("Language", lang), available_sheets())),
+    )
+
     def sheets() -> None:
-        paths = write_sheets(
-            solution,
-            out,
-            formats=formats,
-            lang=lang,  # type: ignore[arg-type]
-            sheets=sorted(available_sheets()),
-        )
+        assert composed is not None
+        paths = write_composed(composed, solution, out, formats, sorted(available_sheets()))
         written.extend(str(p) for p in paths)
 
     def note() -> None:
-        written.append(str(write_note(solution, out / "note.pdf", lang=lang)))  # type: ignore[arg-type]
+        assert composed is not None
+        target = out / "note.pdf"
+        path = write_note(solution, target, lang=cast("Language", lang), composed=composed)
+        written.append(str(path))
 
     def scheme() -> None:
         # the variant's kinematic scheme, for the quiz (batch --moodle)
@@ -395,8 +399,9 @@ def _process_file(
         written.append(str(write_drawing(recording, out / SCHEME_NAME, "png")))
 
     stage("results", results)
-    stage("sheets", sheets)
-    stage("note", note)
+    if composed is not None:
+        stage("sheets", sheets)
+        stage("note", note)
     if "scheme" in extras:
         stage("scheme", scheme)
     data = info.get("json", {})

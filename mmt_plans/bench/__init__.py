@@ -82,8 +82,9 @@ def _extra_sections() -> list[Callable]:
     """Benchmarks of the later stages: forces, diagrams, sheets, the batch."""
     from .diagrams import bench_diagrams
     from .forces import bench_forces
+    from .note import bench_note
     from .sheets import bench_sheets
     from .startup import bench_startup
 
     # the seed-003 batch is the overview's keys row (`--keys`), on two workers
-    return [bench_startup, bench_forces, bench_diagrams, bench_sheets]
+    return [bench_startup, bench_forces, bench_diagrams, bench_sheets, bench_note]

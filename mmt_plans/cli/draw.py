@@ -59,7 +59,7 @@ def draw(
 ) -> None:
     """Draw the A1 sheets of FILE."""
     from ..files import check_output
-    from ..sheets.compose import available_sheets, write_sheets
+    from ..sheets.compose import available_sheets, compose, write_composed
     from ..solution import solve
     from ..spec import load
 
@@ -71,5 +71,6 @@ def draw(
     solution = solve(
         with_fields(load(file), fields), partial_turn=partial_turn, forces=2 in numbers
     )
-    for path in write_sheets(solution, out_dir, formats, lang, numbers):  # type: ignore[arg-type]
+    composed = compose(solution, lang, numbers)  # type: ignore[arg-type]
+    for path in write_composed(composed, solution, out_dir, formats, numbers):
         click.echo(f"written {path}")

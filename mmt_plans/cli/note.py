@@ -56,8 +56,12 @@ def note(
     from ..note import write_note
     from ..solution import solve
     from ..spec import load
+    from ..titles import title_warning
 
     check_output(target)
     solution = solve(with_fields(load(file), fields), partial_turn=partial_turn)
     path = write_note(solution, target, lang=lang, form=form)  # type: ignore[arg-type]
+    warning = title_warning(solution.mechanism, lang)
+    if warning:
+        click.echo(f"warning: {warning}", err=True)
     click.echo(f"written {path}")

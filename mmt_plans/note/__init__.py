@@ -49,6 +49,7 @@ from .pages import (
 )
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..sheets.compose import ComposedSheets
     from ..solution import Solution
 
 __all__ = [
@@ -76,6 +77,8 @@ class NoteDocument:
     pages: tuple[NotePage, ...]
     counts: Counts
     stamp: Stamp
+    # the sheets the note's scales and figures are read from (sheets.compose)
+    composed: ComposedSheets | None = None
 
 
 def _count(content: NoteContent, pages: int, refs: int) -> Counts:
@@ -109,16 +112,29 @@ def note_form(analysis: Solution, form: str | None = None) -> str:
 
 
 def note_document(
-    analysis: Solution, lang: Language = "en", form: str | None = None
+    analysis: Solution,
+    lang: Language = "en",
+    form: str | None = None,
+    composed: ComposedSheets | None = None,
 ) -> NoteDocument:
     """The note with its front and back matter, laid out: title page, task
     sheet, abstract (form 2 or 5), contents, the calculation, references;
-    `form` as note_form() chooses."""
+    `form` as note_form() chooses; `composed` the sheets of `analysis` in
+    `lang` (sheets.compose.compose; composed here when not given)."""
     check_language(lang)
     chosen = note_form(analysis, form)
-    written = note_content(analysis, lang)
+    if composed is None:
+        from ..sheets.compose import compose
+
+        composed = compose(analysis, lang)
+    written = note_content(analysis, lang, composed)
     # the title page names the document: the calculation starts at its first section
-    body = NoteContent(written.title, lang, tuple(b for b in written.blocks if b.kind != "title"))
+    body = NoteContent(
+        written.title,
+        lang,
+        tuple(b for b in written.blocks if b.kind != "title"),
+        figures=written.figures,
+    )
     info = title_info(analysis, lang)
     back = references(lang)
     refs = len(reference_items(lang))
@@ -136,7 +152,7 @@ def note_document(
             *body.blocks,
             *back,
         ]
-        doc = NoteContent(body.title, lang, tuple(blocks))
+        doc = NoteContent(body.title, lang, tuple(blocks), figures=body.figures)
         pages = layout_note(doc, first_form="none", toc=toc)
         new_toc = heading_pages(pages)
         new_counts = _count(doc, len(pages), refs)
@@ -147,21 +163,25 @@ def note_document(
         pages = [replace(p, form=FORM5.get(p.form, p.form)) for p in pages]  # type: ignore[arg-type]
     s = stamp_fields(info, lang)
     stamp = Stamp(pages=len(pages), **s)
-    return NoteDocument(doc, tuple(pages), counts, stamp)
+    return NoteDocument(doc, tuple(pages), counts, stamp, composed)
 
 
 def draw_note(
-    analysis: Solution, backend_factory: Any, lang: Language = "en", form: str | None = None
+    analysis: Solution,
+    backend_factory: Any,
+    lang: Language = "en",
+    form: str | None = None,
+    composed: ComposedSheets | None = None,
 ) -> list[Any]:
     """Draw every page of the note on a new backend from `backend_factory(width,
     height, title)`; returns the backends (SvgBackend, RecordingBackend ...).
     The pages are drawn in the note's look (templates/note_look.toml)."""
     from .figures import figure_drawers
 
-    document = note_document(analysis, lang, form)
+    document = note_document(analysis, lang, form, composed)
     page = note_page()
     look = note_look()
-    figures = figure_drawers(analysis)
+    figures = figure_drawers(analysis, document.composed, document.content.figures)
     backends = []
     for p in document.pages:
         backend = backend_factory(
@@ -182,7 +202,12 @@ def draw_note(
     return backends
 
 
-def note_svgs(analysis: Solution, lang: Language = "en", form: str | None = None) -> list[str]:
+def note_svgs(
+    analysis: Solution,
+    lang: Language = "en",
+    form: str | None = None,
+    composed: ComposedSheets | None = None,
+) -> list[str]:
     """The pages of the note as SVG documents (render's factory by format)."""
     titles: list[str] = []
 
@@ -190,7 +215,7 @@ def note_svgs(analysis: Solution, lang: Language = "en", form: str | None = None
         titles.append(title)
         return RecordingBackend(width, height, note_look())
 
-    pages = draw_note(analysis, factory, lang, form)
+    pages = draw_note(analysis, factory, lang, form, composed)
     return [render(page, "svg", title).decode("utf-8") for page, title in zip(pages, titles)]
 
 
@@ -199,9 +224,15 @@ def write_note(
     target: str | os.PathLike[str],
     lang: Language = "en",
     form: str | None = None,
+    composed: ComposedSheets | None = None,
 ) -> Path:
     """Write the note as one multi-page A4 PDF at `target` (atomically, with
-    fixed dates: note/pdf.py), in forms 2/2a or 5/5a (note_form)."""
-    from .pdf import svgs_to_pdf
+    fixed dates: note/pdf.py), in forms 2/2a or 5/5a (note_form), from the
+    sheets `composed` (composed here when not given)."""
+    from .pdf import pages_to_pdf
 
-    return svgs_to_pdf(note_svgs(analysis, lang, form), Path(target))
+    look = note_look()
+    pages = draw_note(
+        analysis, lambda w, h, title: RecordingBackend(w, h, look), lang, form, composed
+    )
+    return pages_to_pdf(pages, Path(target))

@@ -16,18 +16,22 @@ superscript; `plain()` drops the braces for tests and text output.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from dataclasses import dataclass
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from types import MappingProxyType
 from typing import TYPE_CHECKING, Literal
 
 from ..i18n import Language, catalogue, check_language
+from ..titles import title_in
 from .sections_forces import sheet2
 from .sections_gears import conclusions, gear_train, reduction
 from .sections_kinematics import sheet1
 from .writer import Printed, Writer
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..sheets.compose import ComposedSheets
     from ..solution import Solution
+    from .figures import FigureSpec
 
 BlockKind = Literal[
     "title",
@@ -74,6 +78,8 @@ class NoteContent:
     blocks: tuple[Block, ...]
     # every number printed in the blocks, with its source (writer.Printed)
     numbers: tuple[Printed, ...] = ()
+    # the figures of the calculation by their blocks' keys (note/figures.py)
+    figures: Mapping[str, FigureSpec] = field(default_factory=dict)
 
     @property
     def steps(self) -> list[str]:
@@ -105,14 +111,25 @@ def number(x: float, lang: Language = "en", sig: int = 4) -> str:
     return catalogue(lang).number(x, sig)
 
 
-def note_content(analysis: Solution, lang: Language = "en") -> NoteContent:
+def note_content(
+    analysis: Solution, lang: Language = "en", composed: ComposedSheets | None = None
+) -> NoteContent:
     """The calculation note of `analysis` as blocks, in seed 003 §IV order: the
     gear train (seed 002 task 1) where the file has one, sheet 1 (1.1–1.8),
-    sheet 2 (2.1–2.11), the reduction to the crank (seed 002 tasks 5–6) with
-    the gear train, and the conclusions; every number with its source."""
-    wr = Writer(analysis, check_language(lang))
+    sheet 2 (2.1–2.11), the reduction to the crank (seed 002 tasks 5–6) and
+    the conclusions; every number with its source.
+    `composed`: the sheets of `analysis` in `lang` composed once (composed
+    here when not given): the note's millimetres, scales and figures are theirs."""
+    check_language(lang)
+    if composed is None:
+        from ..sheets.compose import compose
+
+        composed = compose(analysis, lang)
+    elif composed.lang != lang:
+        raise ValueError(f"the sheets were composed in {composed.lang!r}, the note is in {lang!r}")
+    wr = Writer(analysis, lang, composed)
     w = wr.w
-    title = analysis.mechanism.title_in(lang)
+    title = title_in(analysis.mechanism, lang)
     wr.add("title", f"{w['title']}: {title}")
     gear_train(wr)
     wr.add("section", w["sheet1"], "sheet1")
@@ -121,8 +138,11 @@ def note_content(analysis: Solution, lang: Language = "en") -> NoteContent:
     sheet2(wr)
     reduction(wr)
     conclusions(wr)
-    blocks = tuple(Block(b.kind, b.text, b.step, b.rows, b.widths) for b in wr.blocks)  # type: ignore[arg-type]
-    return NoteContent(title, wr.lang, blocks, tuple(wr.printed))
+    blocks = tuple(
+        Block(b.kind, b.text, b.step, b.rows, b.widths, b.figure, b.height)  # type: ignore[arg-type]
+        for b in wr.blocks
+    )
+    return NoteContent(title, wr.lang, blocks, tuple(wr.printed), MappingProxyType(wr.figures))
 
 
 def step_order() -> Sequence[str]:

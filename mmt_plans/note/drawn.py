@@ -1,7 +1,8 @@
 """The scales of the sheets' drawings, with their sources, for the note's millimetres.
 
 A segment, a side or an arm the note gives in mm is the one drawn on the
-sheet: value/μ with μ the sheet's (sheets/scales_record.py, sheets.compose.sheet_scales). Each scale comes
+sheet: value/μ with μ the sheet's (sheets/scales_record.py, read from the
+sheets composed once: sheets.compose.compose). Each scale comes
 with its source expression (writer.py): `sheet1.mu_l`, `sheet1.mu_V[2]`,
 `sheet2.mu_F['group 4-5']` ..., the record a reader gets by composing the
 sheets. Where a sheet cannot be composed, the calculation's scale stands in
@@ -14,12 +15,11 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..scales import ACCELERATION_PLAN, FORCE_PLAN, VELOCITY_PLAN, scale_for
-from ..sheets.compose import sheet_scales
 from . import sources as src
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..forces import ForcePolygon
-    from ..i18n import Language
+    from ..sheets.compose import ComposedSheets
     from ..solution import Solution
 
 __all__ = ["Drawn"]
@@ -30,9 +30,10 @@ Scale = tuple[float, str]
 class Drawn:
     """μ of every drawing of sheets 1 and 2, each with its source."""
 
-    def __init__(self, solution: Solution, lang: Language) -> None:
+    def __init__(self, solution: Solution, composed: ComposedSheets) -> None:
         self.solution = solution
-        self.first, self.second = sheet_scales(solution, lang)
+        self.composed = composed
+        self.first, self.second = composed.scales
 
     # sheet 1 ----------------------------------------------------------------------------
     def mechanism(self) -> Scale:

@@ -1,22 +1,231 @@
-"""The note's figures: a key of a "figure" block → what draws it into its
-rectangle on the page. "scheme" is the kinematic scheme of the mechanism at
-position 0 as sheets/schematic.py draws it."""
+"""The note's figures: the sheets' own drawings, replayed onto the A4 page.
+
+A figure of the calculation is one or more drawings of the composed sheets
+(sheets.compose.ComposedSheets): the recorded calls of a drawing's group
+("velocity-plan-2", "group-4-5", "force-polygon-4-5", "zhukovsky-lever" ...)
+cropped to their bounding box, scaled by one factor to the page's text width
+(never enlarged) and replayed through the same drawing interface. There is no
+second drawing code: what the note shows is what the sheet draws.
+
+"scheme" is the kinematic scheme of the mechanism at position 0 as
+sheets/schematic.py draws it (the task sheet's figure).
+"""
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import TYPE_CHECKING
+import math
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Literal
 
 from ..drawing.page import Rect
 from ..i18n import check_language
 from ..render.backend import Backend
+from ..render.recording import Call
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..sheets.compose import ComposedSheets
     from ..solution import Solution
 
-__all__ = ["FIGURES", "figure_drawers"]
+__all__ = [
+    "FigurePart",
+    "FigureSpec",
+    "figure_drawers",
+    "figure_height",
+    "replay_scaled",
+]
 
-Drawer = Callable[["Solution", Backend, Rect, str], None]
+Drawer = Callable[[Backend, Rect, str], None]
+Arrangement = Literal["row", "column"]
+
+GAP = 8.0  # between the parts of a figure, mm
+PART_LABEL = 2.8  # the height of a part's letter "a)" under it, mm
+MAX_HEIGHT = 190.0  # the tallest a figure is set on an A4 page, mm
+# capital heights of the sheets' drawings are 2.5-5 mm: a part smaller than this
+# share of the sheet is turned round (a row → a column) if that draws it larger
+MIN_SCALE = 0.55
+
+
+@dataclass(frozen=True)
+class FigurePart:
+    """One drawing of a sheet: the groups `groups` of sheet `sheet` (their
+    union), lettered `label` ("a)") under it when the figure has parts."""
+
+    sheet: int
+    groups: tuple[str, ...]
+    label: str = ""
+
+
+@dataclass(frozen=True)
+class FigureSpec:
+    """A figure: its parts, side by side or one above the other."""
+
+    key: str
+    parts: tuple[FigurePart, ...]
+
+
+def _calls(composed: ComposedSheets, part: FigurePart) -> tuple[Call, ...]:
+    sheet = composed.sheet(part.sheet)
+    out: list[Call] = []
+    for g in part.groups:
+        out += sheet.group(g)
+    return tuple(out)
+
+
+def _text_box(
+    c: Call, width_of: Callable[[str, float, float | None], float]
+) -> list[tuple[float, float]]:
+    x, y = c["pos"]
+    size = c["size"]
+    w = width_of(c["content"], size, c["max_width"])
+    x0 = {"left": 0.0, "center": -w / 2, "right": -w}[c["anchor"]]
+    y0 = {"baseline": 0.0, "middle": -size / 2, "top": -size}[c["valign"]]
+    a = math.radians(c["rotation"])
+    ca, sa = math.cos(a), math.sin(a)
+    corners = [
+        (x0, y0 - 0.3 * size),
+        (x0 + w, y0 - 0.3 * size),
+        (x0, y0 + size),
+        (x0 + w, y0 + size),
+    ]
+    return [(x + u * ca - v * sa, y + u * sa + v * ca) for u, v in corners]
+
+
+def bounds(composed: ComposedSheets, part: FigurePart) -> tuple[float, float, float, float]:
+    """(xmin, ymin, xmax, ymax) of a part's calls on its sheet, text included, mm."""
+    look = composed.sheet(part.sheet).look
+    xs: list[float] = []
+    ys: list[float] = []
+    for c in _calls(composed, part):
+        if c.name == "text":
+            pts = _text_box(c, look.lettering.width)
+        elif c.name == "arrow":
+            pts = [c["start"], c["end"]]
+        else:
+            pts = c.points()
+        for x, y in pts:
+            xs.append(x)
+            ys.append(y)
+    if not xs:
+        return (0.0, 0.0, 1.0, 1.0)
+    return (min(xs), min(ys), max(xs), max(ys))
+
+
+def _arrangement(
+    composed: ComposedSheets, spec: FigureSpec, width: float
+) -> tuple[Arrangement, float, list[tuple[float, float, float, float]]]:
+    """How the parts go (a row or a column), the one scale factor that fits
+    them into `width` mm and MAX_HEIGHT, and each part's bounds."""
+    boxes = [bounds(composed, p) for p in spec.parts]
+    ws = [b[2] - b[0] for b in boxes]
+    hs = [b[3] - b[1] for b in boxes]
+    n = len(boxes)
+    label = PART_LABEL + 2.0 if n > 1 else 0.0
+    row = min(
+        1.0,
+        (width - GAP * (n - 1)) / max(sum(ws), 1e-9),
+        (MAX_HEIGHT - label) / max(max(hs), 1e-9),
+    )
+    column = min(
+        1.0,
+        width / max(max(ws), 1e-9),
+        (MAX_HEIGHT - (GAP + label) * (n - 1) - label) / max(sum(hs), 1e-9),
+    )
+    if n > 1 and row < MIN_SCALE and column > row:
+        return "column", column, boxes
+    return "row", row, boxes
+
+
+def figure_height(composed: ComposedSheets, spec: FigureSpec, width: float) -> float:
+    """The height (mm) the figure takes set `width` mm wide."""
+    how, k, boxes = _arrangement(composed, spec, width)
+    n = len(boxes)
+    label = PART_LABEL + 2.0 if n > 1 else 0.0
+    hs = [(b[3] - b[1]) * k for b in boxes]
+    if how == "row":
+        return max(hs) + label
+    return sum(hs) + n * label + GAP * (n - 1)
+
+
+def replay_scaled(calls: Sequence[Call], backend: Backend, k: float, dx: float, dy: float) -> None:
+    """Draw `calls` again on `backend`, every length times `k`, then shifted
+    by (dx, dy): x' = k·x + dx. Line types stay those of the page's look."""
+
+    def t(p: Sequence[float]) -> tuple[float, float]:
+        return (k * p[0] + dx, k * p[1] + dy)
+
+    for c in calls:
+        a = c.args
+        if c.name == "line":
+            backend.line(t(a["start"]), t(a["end"]), a["line"])
+        elif c.name == "polyline":
+            backend.polyline([t(p) for p in a["points"]], a["line"])
+        elif c.name == "polygon":
+            backend.polygon([t(p) for p in a["points"]], a["line"], a["fill"])
+        elif c.name == "circle":
+            backend.circle(t(a["center"]), k * a["radius"], a["line"], a["fill"])
+        elif c.name == "arc":
+            backend.arc(t(a["center"]), k * a["radius"], a["start_deg"], a["end_deg"], a["line"])
+        elif c.name == "arrow":
+            backend.arrow(
+                t(a["start"]),
+                t(a["end"]),
+                a["line"],
+                head_length=k * a["head_length"],
+                head_width=k * a["head_width"],
+            )
+        elif c.name == "text":
+            backend.text(
+                t(a["pos"]),
+                a["content"],
+                k * a["size"],
+                anchor=a["anchor"],
+                valign=a["valign"],
+                rotation=a["rotation"],
+                max_width=None if a["max_width"] is None else k * a["max_width"],
+            )
+        elif c.name in ("begin_group", "end_group"):
+            continue
+        else:  # pragma: no cover - a new primitive must be added here
+            raise ValueError(f"cannot replay {c.name!r}")
+
+
+def draw_figure(composed: ComposedSheets, spec: FigureSpec, backend: Backend, rect: Rect) -> None:
+    """The figure's parts in `rect`: scaled by one factor, centred, each
+    lettered under it when there are several."""
+    how, k, boxes = _arrangement(composed, spec, rect.width)
+    n = len(boxes)
+    label = PART_LABEL + 2.0 if n > 1 else 0.0
+    ws = [(b[2] - b[0]) * k for b in boxes]
+    hs = [(b[3] - b[1]) * k for b in boxes]
+    # the layout may have set the figure less tall than asked: shrink to it
+    natural = figure_height(composed, spec, rect.width)
+    if natural > rect.height + 1e-6:
+        f = max((rect.height - n * label) / max(natural - n * label, 1e-9), 0.1)
+        k *= f
+        ws, hs = [w * f for w in ws], [h * f for h in hs]
+    size = 2.8
+    if how == "row":
+        total = sum(ws) + GAP * (n - 1)
+        x = rect.x + (rect.width - total) / 2
+        top = rect.top
+        for part, box, w, h in zip(spec.parts, boxes, ws, hs):
+            y0 = top - max(hs) + (max(hs) - h) / 2
+            replay_scaled(_calls(composed, part), backend, k, x - k * box[0], y0 - k * box[1])
+            if n > 1:
+                backend.text(
+                    (x + w / 2, top - max(hs) - label + 0.5), part.label, size, anchor="center"
+                )
+            x += w + GAP
+    else:
+        y = rect.top
+        for part, box, w, h in zip(spec.parts, boxes, ws, hs):
+            x0 = rect.x + (rect.width - w) / 2
+            replay_scaled(_calls(composed, part), backend, k, x0 - k * box[0], y - h - k * box[1])
+            y -= h + label
+            if n > 1:
+                backend.text((rect.x + rect.width / 2, y + 0.5), part.label, size, anchor="center")
+            y -= GAP
 
 
 def _scheme(solution: Solution, backend: Backend, rect: Rect, lang: str) -> None:
@@ -28,13 +237,19 @@ def _scheme(solution: Solution, backend: Backend, rect: Rect, lang: str) -> None
     sketch.replay(backend, rect.x, rect.y)
 
 
-FIGURES: dict[str, Drawer] = {"scheme": _scheme}
-
-
-def figure_drawers(solution: Solution) -> dict[str, Callable[[Backend, Rect, str], None]]:
-    """The drawers of `FIGURES` bound to `solution`."""
-
-    def bind(fn: Drawer) -> Callable[[Backend, Rect, str], None]:
-        return lambda backend, rect, lang: fn(solution, backend, rect, lang)
-
-    return {key: bind(fn) for key, fn in FIGURES.items()}
+def figure_drawers(
+    solution: Solution,
+    composed: ComposedSheets | None = None,
+    specs: Mapping[str, FigureSpec] | None = None,
+) -> dict[str, Drawer]:
+    """Key of a figure block → what draws it into its rectangle: "scheme",
+    and every figure of `specs` from the composed sheets."""
+    out: dict[str, Drawer] = {
+        "scheme": lambda backend, rect, lang: _scheme(solution, backend, rect, lang)
+    }
+    if composed is not None:
+        for key, spec in (specs or {}).items():
+            out[key] = lambda backend, rect, lang, spec=spec: draw_figure(  # type: ignore[misc]
+                composed, spec, backend, rect
+            )
+    return out

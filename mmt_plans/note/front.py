@@ -2,7 +2,8 @@
 §1): the title page, the task sheet with the scheme and the initial data, the
 abstract with its counts, the contents, and the references at the end.
 
-The words come from the catalogue's [note_front] and [note_refs]; the names
+The words come from the catalogue's [note_front], the references from
+literature.py (one list for both languages); the names
 from the file's [sheet] table (or `--field KEY=VALUE`), blanks to be filled
 in by hand where neither gives them; the numbers from the Mechanism and the
 Solution, as written in the file (lengths in mm as the task gives them).
@@ -21,7 +22,9 @@ import numpy as np
 
 from ..errors import MmtError
 from ..i18n import Language, catalogue
+from ..titles import title_in
 from .content import Block
+from .writer import plural
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..solution import Solution
@@ -89,13 +92,17 @@ def _task_of(path: str) -> tuple[int, int] | None:
     return (int(m.group(1)), int(m.group(2))) if m else None
 
 
+def _counted(lang: Language, n: int, forms: Any) -> str:
+    return f"{n}\u00a0{plural(lang, n, list(forms))}"
+
+
 def title_info(analysis: Solution, lang: Language) -> TitleInfo:
     mech = analysis.mechanism
     w = catalogue(lang).words("note_front")
     sheet = {k: str(v) for k, v in dict(getattr(mech, "sheet", None) or {}).items() if str(v)}
     blank = str(w["blank"])
     short = str(w["short_blank"])
-    title = mech.title_in(lang) if hasattr(mech, "title_in") else mech.title
+    title = title_in(mech, lang)
     variant = sheet.get("variant", "")
     if variant:
         variant = w["variant"].format(variant=variant)
@@ -300,10 +307,10 @@ def abstract(analysis: Solution, info: TitleInfo, counts: Counts, lang: Language
         Block(
             "text",
             w["abstract_counts"].format(
-                pages=counts.pages,
-                figures=counts.figures,
-                tables=counts.tables,
-                refs=counts.references,
+                pages=_counted(lang, counts.pages, w["n_pages"]),
+                figures=_counted(lang, counts.figures, w["n_figures"]),
+                tables=_counted(lang, counts.tables, w["n_tables"]),
+                refs=_counted(lang, counts.references, w["n_refs"]),
             ),
         ),
         Block("text", w["abstract_object"].format(title=info.title)),
@@ -356,7 +363,10 @@ def contents(entries: Sequence[Block], lang: Language) -> list[Block]:
 
 
 def reference_items(lang: Language) -> list[str]:
-    return [str(t) for t in catalogue(lang).words("note_refs")["items"]]
+    """The references in `lang`: one list for both languages (literature.py)."""
+    from .literature import entries
+
+    return entries(lang)
 
 
 def references(lang: Language) -> list[Block]:

@@ -16,8 +16,9 @@ numbered above them, figures below them, in the order they come.
 from __future__ import annotations
 
 import functools
+import re
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Literal
 
 from ..drawing.page import Page, Rect, draw_frame
@@ -145,10 +146,36 @@ def words(text: str) -> list[str]:
 
 
 def _wrap(let: Lettering, text: str, size: float, width: float, first: float = 0.0) -> list[str]:
-    """Break at spaces into lines no wider than `width`, the first `first` mm narrower."""
-    return let.wrap(
-        text, size, width, measure=lambda t, s: markup_width(let, t, s), first_indent=first
-    )
+    """Break at spaces into lines no wider than `width`, the first `first` mm
+    narrower (Lettering.wrap's rule: a word wider than a line stays alone on
+    its line). A line's width is the sum of its words' and spaces' widths
+    (an index never holds a breaking space: typeset()), each word measured once."""
+    space = let.advance_width(" ", size)
+    lines: list[str] = []
+    for paragraph in text.split("\n"):
+        current: list[str] = []
+        used = 0.0
+        for word in paragraph.split(" "):
+            w = markup_width(let, word, size)
+            room = width - (first if not lines else 0.0)
+            trial = used + (space if current else 0.0) + w
+            if current and trial > room + 1e-9:
+                lines.append(" ".join(current))
+                current, used = [word], w
+            else:
+                current.append(word)
+                used = trial
+        lines.append(" ".join(current))
+    return lines
+
+
+def _text_lines(let: Lettering, text: str, size: float, width: float, first: float) -> list[str]:
+    """A paragraph typeset and broken into lines; where a formula run kept
+    whole would be wider than a line, its "=" may break after all."""
+    lines = _wrap(let, typeset(text), size, width, first)
+    if any(markup_width(let, t, size) > width + 1e-6 for t in lines):
+        lines = _wrap(let, typeset(text, False), size, width, first)
+    return lines
 
 
 def _equation_lines(
@@ -175,6 +202,44 @@ def _equation_lines(
 
 
 FORM5_OF = {v: k for k, v in FORM5.items()}
+
+NBSP = "\u00a0"
+MINUS = "\u2212"
+# a hyphen that is a minus: after a space, a bracket, an operator or the start,
+# before a number, a symbol or a bracket ("4-5", "counter-clockwise" keep theirs)
+_MINUS = re.compile(r"(?:(?<=^)|(?<=[\s(\[{=/·;,]))-(?=[\d(\[{A-Za-zΑ-Ωα-ωА-Яа-яІіЇїЄєҐґ√πΣΔ])")
+# a number and what it counts or measures: "12403 N", "5 %", "58.8 °"
+_NUMBER_UNIT = re.compile(r"(?<=\d) (?=[^\s=+\-−·/;:,.)\d])")
+# a figure's, a table's, a formula's number stays with its word
+_NUMBERED = re.compile(
+    r"(?i)\b(figure|fig\.|table|position|positions|link|links|рисунок|рис\.|таблиця|"
+    r"положення|ланка|ланки|group|група) (?=\d)"
+)
+
+
+def _inside_braces(text: str) -> str:
+    """Spaces inside index braces become non-breaking: a subscript stays whole."""
+    out, depth = [], 0
+    for ch in text:
+        depth += {"{": 1, "}": -1}.get(ch, 0)
+        out.append(NBSP if ch == " " and depth > 0 else ch)
+    return "".join(out)
+
+
+def typeset(text: str, formula_runs: bool = True) -> str:
+    """The note's typography of a line of markup before it is broken into
+    lines: a true minus (U+2212) for a hyphen that is one, a non-breaking
+    space between a number and its unit, in an index, after "figure" and the
+    like, the structural formula's arrows kept with the group they point to,
+    and (`formula_runs`) round "=" so that "φ_1 = 58.83°" is never broken."""
+    text = _MINUS.sub(MINUS, text)
+    text = _inside_braces(text)
+    text = _NUMBER_UNIT.sub(NBSP, text)
+    text = _NUMBERED.sub(lambda m: m.group(1) + NBSP, text)
+    text = text.replace(" <- ", " ←" + NBSP).replace(" <-", " ←")
+    if formula_runs:
+        text = re.sub(r" (=|≤|≥|>|<|≈) ", lambda m: NBSP + m.group(1) + NBSP, text)
+    return text
 
 
 def text_box(page: Page, form: str) -> Rect:
@@ -207,10 +272,24 @@ class _Layout:
 
     # --- placing --------------------------------------------------------------------
     def new_page(self, form: str = "2a") -> None:
+        """Start a page of `form`; headings that would end the page left go
+        with what follows them (a heading never ends a page)."""
+        last = self.pages[-1]
+        k = len(last)
+        while k > 0 and last[k - 1].kind in ("section", "subsection"):
+            k -= 1
+        carried = last[k:] if 0 < k < len(last) else []
+        if carried:
+            del last[k:]
         self.pages.append([])
         self.forms.append(form)
         self.box = text_box(self.page, form)
-        self.y = self.box.top
+        if carried:
+            shift = (self.box.top - self.body) - carried[0].y
+            self.pages[-1] = [replace(ln, y=ln.y + shift) for ln in carried]
+            self.y += shift
+        else:
+            self.y = self.box.top
 
     @property
     def next_form(self) -> str:
@@ -295,9 +374,9 @@ class _Layout:
         width = self.box.width
         if block.kind in ("text", "problem"):
             first = PARAGRAPH if not block.indent else 0.0
-            n = len(_wrap(self.let, block.text, self.body, width - block.indent, first))
+            n = len(_text_lines(self.let, block.text, self.body, width - block.indent, first))
         elif block.kind == "equation":
-            n = len(_equation_lines(self.let, block.text, self.body, width))
+            n = len(_equation_lines(self.let, typeset(block.text, False), self.body, width))
         elif block.kind == "table":
             head = self.caption_lines(block.text, self.body, width)
             return self.pitch + (len(head) - 1) * pitch(BODY_PT) + 2 * (pitch(TABLE_PT) + CELL_PAD)
@@ -307,7 +386,10 @@ class _Layout:
             n = 1
         else:
             return 0.0
-        # a lead-in ending in ':' keeps the line after it
+        # a lead-in ending in ':' keeps what it introduces (paragraph(): up to
+        # three lines of an equation) and, with it, the heading above it
+        if block.kind in ("text", "problem") and block.text.endswith(":"):
+            return (min(n, 3) + 3) * self.pitch
         n = n if n <= 3 else 2
         return (n + (block.text.endswith(":") and n == 1)) * self.pitch
 
@@ -379,11 +461,15 @@ class _Layout:
             self.y -= self.pitch / 4
         elif kind in ("text", "problem"):
             first = PARAGRAPH if not block.indent else 0.0
-            lines = _wrap(let, block.text, self.body, width - block.indent, first)
+            lines = _text_lines(let, block.text, self.body, width - block.indent, first)
             placed = [(t, block.indent + (first if j == 0 else 0.0)) for j, t in enumerate(lines)]
             self.paragraph(placed, kind, justify=True)
         elif kind == "equation":
-            self.paragraph(_equation_lines(let, block.text, self.body, width), kind, justify=False)
+            self.paragraph(
+                _equation_lines(let, typeset(block.text, False), self.body, width),
+                kind,
+                justify=False,
+            )
         elif kind == "toc":
             self.toc_line(block, toc.get(block.step))
         elif kind == "table":
@@ -427,9 +513,11 @@ class _Layout:
         scale = min(1.0, self.box.width / sum(block.widths)) if block.widths else 1.0
         widths = tuple(w * scale for w in block.widths)
         sizes = tuple(s for s in let.sizes if s >= cap(7.0, let) - 1e-9 and s <= size + 1e-9)
-        title = self.w["table"].format(n=n) + (f" – {block.text}" if block.text else "")
+        title = typeset(self.w["table"].format(n=n) + (f" – {block.text}" if block.text else ""))
         head = self.caption_lines(title, self.body, self.box.width)
-        header, body = block.rows[0], block.rows[1:]
+        # a cell is not broken into lines: only its minus signs are set
+        rows = [tuple(_MINUS.sub(MINUS, c) for c in r) for r in block.rows]
+        header, body = rows[0], rows[1:]
 
         def cells(row: Sequence[str]) -> tuple[float, ...]:
             return tuple(
@@ -491,7 +579,9 @@ class _Layout:
     def figure(self, block: Block) -> None:
         self.figures += 1
         size = cap(CAPTION_PT, self.let)
-        text = self.w["figure"].format(n=self.figures) + (f" – {block.text}" if block.text else "")
+        text = typeset(
+            self.w["figure"].format(n=self.figures) + (f" – {block.text}" if block.text else "")
+        )
         lines = self.caption_lines(text, size, self.box.width - 2 * PARAGRAPH)
         cap_h = len(lines) * pitch(CAPTION_PT)
         height = min(block.height, self.box.height - cap_h - self.pitch)

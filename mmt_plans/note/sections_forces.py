@@ -17,7 +17,8 @@ import numpy as np
 
 from ..drawing.markup import image_markup
 from . import sources as src
-from .writer import Writer, sub
+from .literature import cite
+from .writer import Writer, and_list, sub
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..forces import ForceAnalysis, ForcePolygon, GroupForces
@@ -96,7 +97,8 @@ def loads(wr: Writer, fa: ForceAnalysis) -> None:
             )
     massless = [str(lid) for lid, ll in fa.loads.links.items() if not ll.mass]
     if massless:
-        wr.text(w["massless"].format(links=", ".join(massless)))
+        key = "massless" if len(massless) > 1 else "massless_one"
+        wr.text(w[key].format(links=and_list(massless, w["and"])))
     wr.heading("2.2")
     wr.text(w["inertia_rule"])
     for lid, ll in fa.loads.links.items():
@@ -163,6 +165,15 @@ def loads(wr: Writer, fa: ForceAnalysis) -> None:
             f"{u['mm']}"
         )
         wr.text(w["shift_side"].format(lid=lid))
+    drawings = [(2, ("force-mechanism",))]
+    if wr.has_figure(drawings):
+        mu_l, ML = wr.drawn.loaded()
+        n_fig = wr.next_figure
+        wr.text(w["loads_drawn"].format(mu=wr.v(mu_l, ML)) + wr.cite(n_fig) + ".")
+        wr.figure(
+            drawings,
+            w["fig_loads"].format(i=wr.i(fa.index or 0, "J['forces']['index']"), mu=wr.v(mu_l, ML)),
+        )
 
 
 def _sense(wr: Writer, x: float) -> str:
@@ -292,6 +303,20 @@ def group(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, step: str) -> N
     for r in g.reactions:
         _reaction_line(wr, r, *mu_f)
     _guide_points(wr, fa, j, g, own)
+    _guide_couples(wr, fa, j, g)
+    drawings = [(2, (f"group-{g.name}",)), (2, (f"force-polygon-{g.name}",))]
+    if wr.has_figure(drawings):
+        mu_l, ML = wr.drawn.group(g.name)
+        n_fig = wr.next_figure
+        wr.text(
+            w["group_drawn"].format(name=g.name, mu=wr.v(mu_l, ML), mf=wr.v(*mu_f))
+            + wr.cite(n_fig)
+            + "."
+        )
+        wr.figure(
+            drawings,
+            w["fig_group"].format(name=g.name, mu=wr.v(mu_l, ML), mf=wr.v(*mu_f)),
+        )
 
 
 def _slot_reaction(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: set[str]) -> None:
@@ -442,6 +467,37 @@ def _guide_points(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, own: se
         )
 
 
+def _guide_couples(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces) -> None:
+    """A prismatic pair whose normal force is zero (a crosshead on its guide
+    loaded along it) still holds its link against turning: its reaction is a
+    couple M, from ΣM of the link about the slider's point Q, where the
+    reaction is placed: ΣM_Q(loads) + M = 0."""
+    w, u = wr.w, wr.u
+    scale = wr.drawn.group(g.name)
+    for r in g.reactions:
+        if r.kind != "P" or not r.couple:
+            continue
+        D = f"J['forces']['reaction_details'][{r.name!r}]"
+        C = D + "['couple']"
+        P = np.asarray(r.point, dtype=float)
+        P_src = f"{D}['point']"
+        Q = next((p.slider_point for p in wr.mech.sliders if p.name == r.pair), r.pair)
+        lid = r.on
+        name = force_markup(r.name)
+        M = f"M_{{{r.name[1:]}}}"
+        base = f"F.groups[{j}].free_bodies[{lid}]"
+        terms = _terms(wr, fa, g.free_bodies[lid], {r.name, r.reversed().name}, base)
+        wr.text(w["guide_couple"].format(R=name, M=M, lid=lid, Q=Q))
+        total, parts = _moment_terms(wr, fa, terms, P, P_src, Q, scale)
+        sum_src = "+".join(f"moment({t[4]}, {P_src})" for t in terms) or "0"
+        lhs = " + ".join(parts + [M])
+        wr.eq(f"ΣM_{sub(Q)}({lid}) = {lhs} = 0;")
+        wr.eq(
+            f"{M} = -ΣM_{sub(Q)} = {wr.neg(total, sum_src)} = "
+            f"{wr.v(r.couple, C)} {u['Nm']}" + _sense(wr, r.couple)
+        )
+
+
 def _polygon(
     wr: Writer,
     poly: ForcePolygon,
@@ -462,10 +518,18 @@ def _polygon(
         return
     mu, MU = scale
     wr.text(w["mu_F"])
-    wr.eq(
-        f"μ_F = F_{{max}}/|F_{{max}}| = {wr.v(poly.largest, f'{base}.largest')}/"
-        f"{wr.v(poly.largest / mu, f'{base}.largest/{MU}')} = {wr.v(mu, MU)} {u['N/mm']}"
-    )
+    # seed 003 (20): μ_F from the largest force known before the plan is drawn (F_PR)
+    known = [(v.magnitude, m, v) for m, v in enumerate(poly.vectors) if v.known and v.magnitude]
+    if known:
+        big, m, v = max(known, key=lambda t: t[0])
+        VS = f"hyp({base}.vectors[{m}].vector)"
+        name = force_markup(v.label)
+        wr.eq(
+            f"μ_F = {name}/|{name}| = {wr.v(big, VS)}/"
+            f"{wr.v(big / mu, f'{VS}/{MU}')} = {wr.v(mu, MU)} {u['N/mm']}"
+        )
+    else:
+        wr.eq(f"μ_F = {wr.v(mu, MU)} {u['N/mm']}")
     wr.text(w["sides"])
     for m, v in enumerate(poly.vectors):
         if not v.known or v.magnitude == 0:
@@ -549,6 +613,12 @@ def driving_link(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     _polygon(wr, dl.polygon, "F.driving_link.polygon", True, mu_f, head)
     wr.text(w["R01"].format(O=O, d=dl.link))
     _reaction_line(wr, dl.reaction, *mu_f)
+    drawings = [(2, ("driving-link",)), (2, (f"force-polygon-{dl.link}",))]
+    if wr.has_figure(drawings):
+        mu_l, ML = wr.drawn.driving()
+        n_fig = wr.next_figure
+        wr.text(w["driving_drawn"].format(mu=wr.v(mu_l, ML), mf=wr.v(*mu_f)) + wr.cite(n_fig) + ".")
+        wr.figure(drawings, w["fig_driving"].format(d=dl.link, mu=wr.v(mu_l, ML), mf=wr.v(*mu_f)))
 
 
 def reactions(wr: Writer, fa: ForceAnalysis, step: str) -> None:
@@ -566,7 +636,7 @@ def reactions(wr: Writer, fa: ForceAnalysis, step: str) -> None:
                 wr.v(r.magnitude, f"hyp({R})"),
             )
         )
-    wr.add("table", rows=rows, widths=(24, 22, 32, 32, 32))
+    wr.add("table", w["tab_reactions"], rows=rows, widths=(24, 22, 32, 32, 32))
 
 
 # --- Zhukovsky's lever --------------------------------------------------------------------------
@@ -576,7 +646,7 @@ def lever(wr: Writer, fa: ForceAnalysis, step: str) -> None:
     mu_v, MV = wr.drawn.lever(lv.pa)
     _step(wr, step, w["lever"])
     s = 1.0 if wr.mech.drive.sense == "ccw" else -1.0
-    wr.text(w["lever_text"].format(turn=w["against"]))
+    wr.text(w["lever_text"].format(turn=w["against"], ref=cite("dovbush2018", "kinytskyi2002")))
     pa = lv.pa / mu_v
     wr.eq(
         f"pa = V_A/μ_V = {wr.v(lv.pa, 'F.lever.pa')}/{wr.v(mu_v, MV)} = "
@@ -597,7 +667,12 @@ def lever(wr: Writer, fa: ForceAnalysis, step: str) -> None:
                 wr.v(f.moment / mu_v, f"lever_moment({LF})/{MV}"),
             )
         )
-    wr.add("table", rows=rows, widths=(24, 16, 30, 30, 36))
+    wr.add("table", w["tab_lever"], rows=rows, widths=(24, 16, 30, 30, 36))
+    drawings = [(2, ("zhukovsky-lever",))]
+    if wr.has_figure(drawings):
+        n_fig = wr.next_figure
+        wr.text(w["lever_drawn"].format(mv=wr.v(mu_v, MV)) + wr.cite(n_fig) + ".")
+        wr.figure(drawings, w["fig_lever"].format(mv=wr.v(mu_v, MV)))
     TOT = f"sum(lever_moment(f) for f in F.lever.forces)/{MV}"
     wr.text(w["F_bal_z"])
     sign = "+" if s > 0 else "-"

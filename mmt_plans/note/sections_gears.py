@@ -12,6 +12,7 @@ import numpy as np
 
 from ..gears import GearPair, PlanetaryStage
 from . import sources as src
+from .literature import cite
 from .sections_forces import force_markup
 from .writer import Writer
 
@@ -80,7 +81,7 @@ def gear_train(wr: Writer) -> None:
                 f"{held} = {'·'.join(symbols)} = {'·'.join(numbers)} = "
                 f"{wr.v(stage.carrier_held_ratio, f'{S}.carrier_held_ratio')}"
             )
-            wr.text(w["gears_willis"].format(fixed=last))
+            wr.text(w["gears_willis"].format(fixed=last, ref=cite("strilets2025", "kinytskyi2002")))
             wr.eq(
                 f"{name} = 1 - {held} = 1 - {wr.vp(stage.carrier_held_ratio, f'{S}.carrier_held_ratio')}"
                 f" = {wr.v(stage.ratio, f'{S}.ratio')}"
@@ -119,8 +120,6 @@ def gear_train(wr: Writer) -> None:
 def reduction(wr: Writer) -> None:
     """Seed 002 tasks 5 and 6 at the force position (the task's φ_1)."""
     a = wr.solution
-    if wr.mech.drive.gear_train is None:
-        return
     w, u = wr.w, wr.u
     red = a.reduction
     i = a.force_position
@@ -175,9 +174,9 @@ def reduction(wr: Writer) -> None:
             sym.append(f"J_{{S{lid}}}·ω_{{{lid}}}^2")
             num.append(f"{wr.v(link.J, f'M.links[{lid}].J')}·{wr.v(om, OM)}^2")
     JR = f"S.reduction.reduced_inertia[{k}]"
-    wr.eq(f"J_{{red}} = ({' + '.join(sym) or '0'})/ω_1^2 =")
     wr.eq(
-        f"= ({' + '.join(num) or '0'})/{wr.v(w1, W1)}^2 = "
+        f"J_{{red}} = ({' + '.join(sym) or '0'})/ω_1^2 = "
+        f"({' + '.join(num) or '0'})/{wr.v(w1, W1)}^2 = "
         f"{wr.v(float(red.reduced_inertia[k]), JR)} {u['kgm2']}"
     )
 

@@ -16,6 +16,7 @@ import numpy as np
 from ..drawing.markup import image_markup
 from ..errors import MmtError
 from . import sources as src
+from .literature import cite
 from .writer import Writer, sub
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -26,6 +27,14 @@ __all__ = ["sheet1", "plan_scales"]
 
 def sheet1(wr: Writer) -> None:
     a = wr.solution
+    wr.text(
+        wr.w["method_refs"].format(
+            guide=cite("dovbush2018"),
+            self=cite("strilets2025"),
+            books=cite("artobolevskiy1954", "kinytskyi2002", "koreniako1993"),
+            dstu=cite("dstu3008"),
+        )
+    )
     views: dict[int, PlanView | MmtError] = {}
     for i in a.plan_positions:
         try:
@@ -63,7 +72,7 @@ def structure(wr: Writer) -> None:
                 links=", ".join(wr.i(x, f"{G}['links'][{m}]") for m, x in enumerate(links)),
                 cls=wr.i(g.group_class, f"{G}['class']"),
                 order=wr.i(g.order, f"{G}['order']"),
-                kind=g.kind or "-",
+                kind=_kind(wr, g.kind),
                 pairs=", ".join(p.name for p in g.pairs),
             )
         )
@@ -72,6 +81,21 @@ def structure(wr: Writer) -> None:
             cls=wr.i(st.mechanism_class, f"{S}['mechanism_class']"), formula=st.formula
         )
     )
+
+
+# the kinds of the class II groups in the textbook's order: "2-го виду" is RRP
+DYAD_KINDS = ("RRR", "RRP", "RPR", "PRP", "RPP")
+
+
+def _kind(wr: Writer, kind: str | None) -> str:
+    """A group's kind as the textbook numbers it: "kind 2 (RRP)", "2-го виду (ВВП)"."""
+    if not kind:
+        return "-"
+    letters = dict(wr.w["kind_letters"])
+    local = "".join(letters.get(ch, ch) for ch in kind)
+    if kind not in DYAD_KINDS:
+        return local
+    return str(wr.w["kind_n"]).format(n=DYAD_KINDS.index(kind) + 1, kind=local)
 
 
 # --- 1.2 -------------------------------------------------------------------------------------
@@ -86,6 +110,11 @@ def positions(wr: Writer) -> None:
         f"μ_l = l_{{OA}}/OA = {wr.v(l_oa, 'M.crank_length')}/{wr.v(oa, f'M.crank_length/{ML}')}"
         f" = {wr.v(mu_l, ML)} {u['m/mm']}"
     )
+    caption = w["fig_mechanism"].format(mu=wr.v(mu_l, ML))
+    n_fig = wr.next_figure
+    if wr.has_figure([(1, ("mechanism",))]):
+        wr.text(w["mechanism_drawn"].format(mu=wr.v(mu_l, ML)) + wr.cite(n_fig) + ".")
+        wr.figure([(1, ("mechanism",))], caption)
     if a.extremes is None:
         wr.problem(w["no_extremes"].format(out=wr.mech.study.output))
     else:
@@ -122,7 +151,11 @@ def positions(wr: Writer) -> None:
                 wr.v((s[k] - s0) * 1e3, S) if np.isfinite(s[k]) else "-",
             )
         )
-    wr.add("table", rows=rows, widths=(16, 26, 28, 26))
+    wr.add("table", w["tab_positions"], rows=rows, widths=(16, 26, 28, 26))
+    if any(pos.index is None for pos in a.positions):
+        wr.text(
+            w["tab_positions_star"].format(out=wr.mech.study.output, n=wr.i(n, "M.study.positions"))
+        )
     wr.text(w["positions_table"])
 
 
@@ -293,7 +326,19 @@ def velocity_plans(wr: Writer, views: dict[int, Any]) -> None:
 
 def _velocity_plan(wr: Writer, i: int, view: PlanView, mu_v: float, mv: str) -> None:
     w, u, a = wr.w, wr.u, wr.solution
-    wr.text(w["figure_plans"].format(i=wr.i(i, f"J['plans'][{a.plan_positions.index(i)}]")))
+    mu_a, ma = wr.drawn.acceleration(i)
+    I = f"J['plans'][{a.plan_positions.index(i)}]"
+    drawings = [(1, (f"velocity-plan-{i}",)), (1, (f"acceleration-plan-{i}",))]
+    n_fig = wr.next_figure if wr.has_figure(drawings) else None
+    wr.text(
+        w["plans_drawn"].format(i=wr.i(i, I), mv=wr.v(mu_v, mv), ma=wr.v(mu_a, ma))
+        + wr.cite(n_fig)
+        + "."
+    )
+    if n_fig is not None:
+        wr.figure(
+            drawings, w["fig_plans"].format(i=wr.i(i, I), mv=wr.v(mu_v, mv), ma=wr.v(mu_a, ma))
+        )
     similar = _Similarity(wr, i, view, "v", mu_v, mv)
     similar.flush()
     for gi, g in enumerate(view.groups):
@@ -485,7 +530,8 @@ def _acceleration_plan(wr: Writer, i: int, view: PlanView, mu_a: float, ma: str)
             if guide is None:
                 wr.text(w["leg_rotation_a"].format(rel=rel, X=X, base=base))
             else:
-                wr.text(w["leg_slide_a"].format(rel=rel, X=X, k=guide))
+                key = "leg_fixed_a" if guide == "0" else "leg_slide_a"
+                wr.text(w[key].format(rel=rel, X=X, k=guide))
         comps = list(g.acceleration)
         for ci, c in enumerate(comps):
             base, rel, guide = legs[ci // 2]
@@ -549,6 +595,14 @@ def diagrams(wr: Writer) -> None:
     c = dg.construction
     D = "J['diagrams']"
     sc = f"{D}['scales']"
+    grid = dg.sheet_check.intervals
+    wr.text(
+        w["chord_method"].format(
+            ref=cite("dovbush2018"),
+            n=wr.i(grid, f"{D}['grid_intervals']"),
+            step=wr.v(360.0 / grid, f"360/{D}['grid_intervals']"),
+        )
+    )
     wr.text(
         w["diagram_scales"].format(
             out=wr.mech.study.output,
@@ -582,7 +636,13 @@ def diagrams(wr: Writer) -> None:
         f"{wr.v(c.H2, H2)}) = "
         f"{wr.v(c.mu_a, MUA)} {u['a/mm']}"
     )
-    wr.text(w["diagram_read"])
+    drawings = [(1, ("diagram-s",)), (1, ("diagram-v",)), (1, ("diagram-a",))]
+    n_fig = wr.next_figure if wr.has_figure(drawings) else None
+    wr.text(w["diagram_read"][:-1] + wr.cite(n_fig) + ".")
+    if n_fig is not None:
+        wr.figure(
+            drawings, w["fig_diagrams"].format(out=wr.mech.study.output, mu=wr.v(c.mu_S, MUS))
+        )
     wr.heading("1.8")
     plans = set(a.plan_positions)
     check = dg.check
@@ -601,7 +661,16 @@ def diagrams(wr: Writer) -> None:
                 "-" if ea is None else wr.v(ea, f"{D}['error_percent']['a'][{k}]", 3),
             )
         )
-    wr.add("table", rows=rows, widths=(13, 25, 25, 18, 27, 27, 18))
+    wr.add(
+        "table",
+        w["tab_check"].format(out=wr.mech.study.output),
+        rows=rows,
+        widths=(13, 25, 25, 18, 27, 27, 18),
+    )
+    marked = ", ".join(
+        wr.i(i, f"J['plans'][{j}]") + "*" for j, i in enumerate(a.plan_positions) if i in plans
+    )
+    wr.text(w["tab_check_star"].format(marked=marked))
     sheet = dg.sheet_check
     wr.text(
         w["grid"].format(

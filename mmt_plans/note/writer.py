@@ -22,6 +22,7 @@ so a number in the note is never taken on the writer's word.
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import TYPE_CHECKING, Any
@@ -29,10 +30,12 @@ from typing import TYPE_CHECKING, Any
 from ..i18n import Language, catalogue, check_language
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..sheets.compose import ComposedSheets
     from ..solution import Solution
     from .drawn import Drawn
+    from .figures import FigureSpec
 
-__all__ = ["Printed", "Writer", "sub", "paren_markup"]
+__all__ = ["Printed", "Writer", "and_list", "plural", "sub", "paren_markup"]
 
 _OPEN, _CLOSE = "\ue000", "\ue001"
 _MARK = re.compile(_OPEN + r"(\d+)" + _CLOSE)
@@ -62,6 +65,14 @@ class RawBlock:
     step: str = ""
     rows: tuple[tuple[str, ...], ...] = ()
     widths: tuple[float, ...] = ()
+    figure: str = ""
+    height: float = 0.0
+
+
+# figures before the calculation: the task sheet's kinematic scheme (front.py)
+FRONT_FIGURES = 1
+# the width a figure is set at: the text's width on an A4 page (pages.text_box)
+FIGURE_WIDTH = 170.0
 
 
 @dataclass
@@ -70,6 +81,26 @@ class _Pending:
     value: float
     sig: int
     source: str
+
+
+def plural(lang: str, n: int, forms: Sequence[str]) -> str:
+    """The form of a noun after the number n: English (one, many); Ukrainian
+    (one, few, many): 1 рисунок, 2 рисунки, 5 рисунків, 21 рисунок."""
+    if lang == "uk" and len(forms) >= 3:
+        if n % 10 == 1 and n % 100 != 11:
+            return forms[0]
+        if 2 <= n % 10 <= 4 and not 12 <= n % 100 <= 14:
+            return forms[1]
+        return forms[2]
+    return forms[0] if n == 1 else forms[-1]
+
+
+def and_list(items: Sequence[str], conj: str) -> str:
+    """ "4", "4 and 5", "2, 4 and 5" (`conj` the language's "and")."""
+    items = list(items)
+    if len(items) < 2:
+        return "".join(items)
+    return f"{', '.join(items[:-1])} {conj} {items[-1]}"
 
 
 def sub(name: str) -> str:
@@ -87,8 +118,10 @@ class Writer:
 
     solution: Solution
     lang: Language
+    composed: ComposedSheets
     blocks: list[RawBlock] = field(default_factory=list)
     printed: list[Printed] = field(default_factory=list)
+    figures: dict[str, FigureSpec] = field(default_factory=dict)
     _pending: dict[int, _Pending] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
@@ -106,7 +139,7 @@ class Writer:
         """The scales the sheets draw at (drawn.py): the note's mm are the sheets'."""
         from .drawn import Drawn
 
-        return Drawn(self.solution, self.lang)
+        return Drawn(self.solution, self.composed)
 
     # --- numbers ------------------------------------------------------------------------
     def v(self, x: float, source: str, sig: int = 4) -> str:
@@ -183,6 +216,54 @@ class Writer:
 
     def sub_heading(self, text: str) -> None:
         self.add("subsection", text)
+
+    @property
+    def next_figure(self) -> int:
+        """The number the next figure gets in the note."""
+        return FRONT_FIGURES + sum(1 for x in self.blocks if x.kind == "figure") + 1
+
+    def has_figure(self, parts: Sequence[tuple[int, Sequence[str]]]) -> bool:
+        """Whether every drawing of `parts` is on the composed sheets."""
+        for n, groups in parts:
+            try:
+                sheet = self.composed.sheet(n)
+            except Exception:
+                return False
+            if not all(g in sheet.drawings for g in groups):
+                return False
+        return True
+
+    def figure(self, parts: Sequence[tuple[int, Sequence[str]]], caption: str) -> int | None:
+        """A figure of the drawings `parts` ((sheet, group ids) each, lettered
+        a), b) ... when more than one) of the composed sheets, with its
+        caption; returns its number in the note (None where a drawing is not
+        on the composed sheets: no figure)."""
+        from .figures import FigurePart, FigureSpec, figure_height
+
+        composed = self.composed
+        if not self.has_figure(parts):
+            return None
+        chosen: list[FigurePart] = []
+        for k, (n, groups) in enumerate(parts):
+            letter = (
+                self.w["part"].format(p=str(self.w["part_letters"])[k]) if len(parts) > 1 else ""
+            )
+            chosen.append(FigurePart(n, tuple(groups), letter))
+        key = "+".join(f"{p.sheet}:{','.join(p.groups)}" for p in chosen)
+        spec = FigureSpec(key, tuple(chosen))
+        self.figures[key] = spec
+        height = figure_height(composed, spec, FIGURE_WIDTH)
+        b = len(self.blocks)
+        self.blocks.append(
+            RawBlock(
+                "figure", self._resolve(self.symbol(caption), b, -1, -1), figure=key, height=height
+            )
+        )
+        return FRONT_FIGURES + sum(1 for x in self.blocks if x.kind == "figure")
+
+    def cite(self, n: int | None) -> str:
+        """ " (Fig. n)" after a sentence's words, "" where there is no figure."""
+        return "" if n is None else "\u00a0" + self.w["cite_figure"].format(n=n)
 
     def problem(self, err: Exception | str) -> None:
         self.add("problem", self.w["problem"].format(msg=str(err)))

@@ -1,4 +1,12 @@
-"""Writing the A1 sheets of a Solution to files, in every format of render.output.
+"""Composing the A1 sheets of a Solution once, and writing them to files in
+every format of render.output.
+
+`compose(solution, lang)` draws each sheet once on a RecordingBackend and
+keeps what was drawn (`ComposedSheets`): the recorded calls of each sheet,
+where each drawing went and the scales each drawing uses. The sheet writer
+(`write_composed`), the note (note/: its millimetres at these scales, its
+figures replayed from these calls) and batch read that one object, so a
+number in the note never depends on a second, separate layout.
 
 Each file is written atomically (files.py): an interrupted run leaves no
 half-written sheet. PDFs carry a fixed date, so two runs give the same bytes."""
@@ -6,17 +14,19 @@ half-written sheet. PDFs carry a fixed date, so two runs give the same bytes."""
 from __future__ import annotations
 
 import os
-import weakref
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
 from pathlib import Path
+from types import MappingProxyType
 from typing import Any
 
 from ..drawing.page import Page
 from ..errors import MmtError
 from ..files import ensure_dir
 from ..i18n import Language
+from ..render.look import Look
 from ..render.output import FORMATS, write_drawing
-from ..render.recording import RecordingBackend
+from ..render.recording import Call, RecordingBackend
 from ..solution import Solution
 from .scales_record import Sheet1Scales, Sheet2Scales
 from .sheet1 import compose_sheet1
@@ -24,9 +34,12 @@ from .sheet2 import compose_sheet2
 
 __all__ = [
     "FORMATS",
+    "ComposedSheet",
+    "ComposedSheets",
     "SheetNotAvailable",
     "available_sheets",
-    "sheet_scales",
+    "compose",
+    "write_composed",
     "write_sheets",
 ]
 
@@ -40,21 +53,70 @@ def available_sheets() -> dict[int, Callable[..., Any]]:
     return {1: compose_sheet1, 2: compose_sheet2}
 
 
-def write_sheets(
-    solution: Solution,
-    out_dir: str | os.PathLike[str],
-    formats: Sequence[str] = ("svg", "pdf", "png"),
-    lang: Language = "en",
-    sheets: Iterable[int] = (1,),
-) -> list[Path]:
-    """Compose each sheet once and write sheet<N>.<format> into out_dir (render's
-    factory by format: svg, pdf, png, dxf); returns the paths."""
-    formats = tuple(formats)
-    unknown = [f for f in formats if f not in FORMATS]
-    if unknown:
-        raise ValueError(
-            f"unknown format {', '.join(unknown)}; expected some of {', '.join(FORMATS)}"
-        )
+@dataclass(frozen=True)
+class ComposedSheet:
+    """One sheet as drawn: its recorded calls (each inside the group of its
+    drawing: "mechanism", "velocity-plan-2", "group-4-5", "force-polygon-1",
+    "zhukovsky-lever" ...), the page size and look it was drawn in, the
+    rectangle each drawing was placed in and the scales it drew at."""
+
+    number: int
+    calls: tuple[Call, ...]
+    width: float
+    height: float
+    look: Look
+    placed: Mapping[str, Any]
+    scales: Sheet1Scales | Sheet2Scales
+
+    def recording(self) -> RecordingBackend:
+        """A RecordingBackend holding the sheet's calls, to replay or write."""
+        rec = RecordingBackend(self.width, self.height, self.look)
+        rec.calls = list(self.calls)
+        return rec
+
+    def group(self, group_id: str) -> tuple[Call, ...]:
+        """The calls of one drawing (group `group_id`, at any depth)."""
+        return tuple(c for c in self.calls if group_id in c.groups and not c.name.endswith("group"))
+
+    @property
+    def drawings(self) -> tuple[str, ...]:
+        """The ids of the sheet's drawings (its outermost groups), in drawing order."""
+        return tuple(c.args["id"] for c in self.calls if c.name == "begin_group" and not c.groups)
+
+
+@dataclass(frozen=True)
+class ComposedSheets:
+    """Sheets 1 and 2 of one Solution in one language, each composed once.
+    A sheet not asked for, or one that cannot be composed (no plans, no force
+    analysis, a layout that does not fit), is None with its error in `errors`."""
+
+    lang: Language
+    first: ComposedSheet | None
+    second: ComposedSheet | None
+    errors: Mapping[int, MmtError] = field(default_factory=lambda: MappingProxyType({}))
+
+    def sheet(self, n: int) -> ComposedSheet:
+        """Sheet `n`, or the error that kept it from being composed."""
+        got = {1: self.first, 2: self.second}.get(n)
+        if got is None:
+            raise self.errors.get(n) or SheetNotAvailable(f"sheet {n} was not composed")
+        return got
+
+    @property
+    def scales(self) -> tuple[Sheet1Scales | None, Sheet2Scales | None]:
+        """The scales of sheets 1 and 2 (None for a sheet not composed)."""
+        first = self.first.scales if self.first is not None else None
+        second = self.second.scales if self.second is not None else None
+        assert first is None or isinstance(first, Sheet1Scales)
+        assert second is None or isinstance(second, Sheet2Scales)
+        return first, second
+
+
+def compose(
+    solution: Solution, lang: Language = "en", sheets: Iterable[int] = (1, 2)
+) -> ComposedSheets:
+    """Compose the sheets `sheets` of `solution` once each, in `lang`. Sheet 2
+    is left out (without an error) where the Solution has no force analysis."""
     composers = available_sheets()
     wanted = list(sheets)
     missing = [n for n in wanted if n not in composers]
@@ -63,55 +125,70 @@ def write_sheets(
             f"sheet {', '.join(map(str, missing))} does not exist; the sheets are "
             f"{', '.join(map(str, sorted(composers)))}"
         )
-    out = ensure_dir(out_dir)
-    written: list[Path] = []
     page = Page.of("A1")
-    records: dict[int, Any] = {}
+    done: dict[int, ComposedSheet] = {}
+    errors: dict[int, MmtError] = {}
     for n in wanted:
         recording = RecordingBackend(page.width, page.height)
-        records[n] = composers[n](solution, recording, lang).record
+        try:
+            drawn = composers[n](solution, recording, lang)
+        except MmtError as err:
+            errors[n] = err
+            continue
         recording.close()
-        title = f"{solution.mechanism.title_in(lang)}, sheet {n}"
+        done[n] = ComposedSheet(
+            n,
+            tuple(recording.calls),
+            recording.width,
+            recording.height,
+            recording.look,
+            MappingProxyType(dict(drawn.placed)),
+            drawn.record,
+        )
+    return ComposedSheets(lang, done.get(1), done.get(2), MappingProxyType(errors))
+
+
+def write_composed(
+    composed: ComposedSheets,
+    solution: Solution,
+    out_dir: str | os.PathLike[str],
+    formats: Sequence[str] = ("svg", "pdf", "png"),
+    sheets: Iterable[int] = (1,),
+) -> list[Path]:
+    """Write sheet<N>.<format> of the composed sheets `sheets` into out_dir
+    (render's factory by format: svg, pdf, png, dxf); returns the paths. A
+    sheet that could not be composed raises its error after the sheets
+    before it are written."""
+    formats = tuple(formats)
+    unknown = [f for f in formats if f not in FORMATS]
+    if unknown:
+        raise ValueError(
+            f"unknown format {', '.join(unknown)}; expected some of {', '.join(FORMATS)}"
+        )
+    out = ensure_dir(out_dir)
+    written: list[Path] = []
+    for n in sheets:
+        recording = composed.sheet(n).recording()
+        title = f"{solution.mechanism.title_in(composed.lang)}, sheet {n}"
         for fmt in formats:
             written.append(write_drawing(recording, out / f"sheet{n}.{fmt}", fmt, title))
-    if set(records) == {1, 2}:  # the note of the same Solution composes them no more
-        _cached(solution).setdefault(lang, (records[1], records[2]))
     return written
 
 
-_Record = tuple[Sheet1Scales | None, Sheet2Scales | None]
-# id of a live Solution → its records by language (a Solution is not hashable:
-# kept by id, dropped when the Solution goes)
-_CACHE: dict[int, dict[str, _Record]] = {}
-
-
-def _cached(solution: Solution) -> dict[str, _Record]:
-    key = id(solution)
-    if key not in _CACHE:
-        _CACHE[key] = {}
-        weakref.finalize(solution, _CACHE.pop, key, None)
-    return _CACHE[key]
-
-
-def sheet_scales(solution: Solution, lang: Language = "en") -> _Record:
-    """The scales sheets 1 and 2 of `solution` draw at in `lang` (composed once
-    on a RecordingBackend, kept per Solution); None for a sheet that cannot be
-    composed (no plans, no force analysis, a layout that does not fit)."""
-    by_lang = _cached(solution)
-    if lang not in by_lang:
-        page = Page.of("A1")
-        first: Sheet1Scales | None = None
-        second: Sheet2Scales | None = None
-        try:
-            s1 = compose_sheet1(solution, RecordingBackend(page.width, page.height), lang)
-            first = s1.record
-        except MmtError:
-            first = None
-        if solution.forces is not None:
-            try:
-                s2 = compose_sheet2(solution, RecordingBackend(page.width, page.height), lang)
-                second = s2.record
-            except MmtError:
-                second = None
-        by_lang[lang] = (first, second)
-    return by_lang[lang]
+def write_sheets(
+    solution: Solution,
+    out_dir: str | os.PathLike[str],
+    formats: Sequence[str] = ("svg", "pdf", "png"),
+    lang: Language = "en",
+    sheets: Iterable[int] = (1,),
+) -> list[Path]:
+    """Compose each sheet once and write sheet<N>.<format> into out_dir;
+    returns the paths (compose, then write_composed)."""
+    wanted = list(sheets)
+    formats = tuple(formats)
+    unknown = [f for f in formats if f not in FORMATS]
+    if unknown:
+        raise ValueError(
+            f"unknown format {', '.join(unknown)}; expected some of {', '.join(FORMATS)}"
+        )
+    return write_composed(compose(solution, lang, wanted), solution, out_dir, formats, wanted)

@@ -4,13 +4,14 @@ Sheet 1 draws the mechanism at a standard μ_l that fills its field and picks
 μV, μa for its plans; sheet 2 picks a standard μ_l per drawing (the loaded
 mechanism, each group, the driving link), μF per force polygon and μV of
 Zhukovsky's lever. The note (note/) writes its millimetres at these scales,
-so that they are the lengths on the sheets; `sheets.compose.sheet_scales`
-composes the sheets once onto a RecordingBackend to learn them.
+so that they are the lengths on the sheets; `sheets.compose.compose`
+composes the sheets once onto a RecordingBackend and keeps them with the
+recorded drawings (`ComposedSheets.scales`).
 
     >>> import mmt_plans
-    >>> from mmt_plans.sheets.compose import sheet_scales
+    >>> from mmt_plans.sheets.compose import compose
     >>> a = mmt_plans.solve(mmt_plans.load("samples/six_link_press.toml"))
-    >>> s1, s2 = sheet_scales(a, "en")
+    >>> s1, s2 = compose(a, "en").scales
     >>> s1.mu_l, s2.mu_F["group 4-5"]                      # doctest: +SKIP
     (0.005, 40.0)
 """

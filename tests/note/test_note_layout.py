@@ -175,7 +175,7 @@ def test_note_form_option_and_a_wrong_field(tmp_path):
 
 
 def test_the_notes_catalogue_tables_agree_and_are_used():
-    """[note], [note_front], [note_refs], [gears]: the same keys in en and uk,
+    """[note], [note_front], [gears]: the same keys in en and uk,
     and every [note] key read by some module of the package (by name, or as
     an item number, a stroke or a mesh the modules look up)."""
     import tomllib
@@ -183,7 +183,7 @@ def test_the_notes_catalogue_tables_agree_and_are_used():
     i18n = ROOT / "mmt_plans" / "i18n"
     en = tomllib.loads((i18n / "en.toml").read_text(encoding="utf-8"))
     uk = tomllib.loads((i18n / "uk.toml").read_text(encoding="utf-8"))
-    for table in ("note", "note_front", "note_refs", "gears"):
+    for table in ("note", "note_front", "gears"):
         assert set(en[table]) == set(uk[table]), table
     assert "step_phrases" not in en and "step_phrases" not in uk
     source = "\n".join(p.read_text(encoding="utf-8") for p in (ROOT / "mmt_plans").rglob("*.py"))

@@ -17,6 +17,7 @@ from fractions import Fraction
 from pathlib import Path
 from types import SimpleNamespace
 
+import numpy as np
 import pytest
 
 import mmt_plans
@@ -172,7 +173,11 @@ def test_every_section_present(case):
     assert steps[-1] == "conclusions"
     gears = a.mechanism.drive.gear_train is not None
     assert ("gears" in steps) == gears
-    assert ("reduction" in steps) == (gears and a.forces is not None)
+    # the reduction to the crank (M_red, J_red) in every note, gears or not (issue 22),
+    # where the force position solved
+    k = a.entry(a.force_position)
+    solved_there = bool(np.isfinite(a.reduction.reduced_inertia[k]))
+    assert ("reduction" in steps) == solved_there
     if gears:
         assert steps.index("gears") < steps.index("sheet1")
 
@@ -236,6 +241,10 @@ def test_no_number_is_printed_without_a_source(case):
             rest = re.sub(r"\(\d+\)", " ", rest)  # equation numbers (7)
             rest = re.sub(r"[A-Za-zА-Яа-яЄєІіЇїҐґα-ωΑ-Ω_^{(,'/]\d+", " ", rest)  # S2, R_{34}
             rest = re.sub(r"\d+'?(-\d+'?)+(-H)?", " ", rest)  # groups 2-3, gears 3-4-4'-5-H
+            rest = re.sub(r"\[\d+(, \d+)*\]", " ", rest)  # citations [2, 6]
+            rest = re.sub(r"\((figure|рисунок)\s\d+\)", " ", rest)  # (figure 3)
+            rest = re.sub(r"(DSTU|ДСТУ) \d+:\d+", " ", rest)  # the standard's name
+            rest = re.sub(r"kind \d \(|\d-го виду \(", " ", rest)  # a dyad's kind, 1..5
             left = re.findall(r"\d+(?:[.,]\d+)?", rest)
             assert set(left) <= constants, (text, left)
 
