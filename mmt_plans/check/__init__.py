@@ -141,7 +141,8 @@ def check(
         if joined is not None:
             named[k] = joined
     out = tuple(
-        CheckedValue(a, x, dev, passed, named.get(k)) for k, (a, x, dev, passed) in enumerate(rows)
+        CheckedValue(a, float(x), None if dev is None else float(dev), bool(passed), named.get(k))
+        for k, (a, x, dev, passed) in enumerate(rows)
     )
     return CheckResult(mechanism or str(analysis.mechanism.path), answers.path, tol, out)
 

@@ -492,21 +492,32 @@ class _Reader:
         return None
 
     def segment(self, name: str, kind: str, plan: PlanView, entry: str) -> tuple[str, str]:
-        """The two images a segment like "pb", "ab", "πb", "pis2", "a-s2" joins."""
+        """The two images a segment like "pb", "ab", "πb", "pis2", "a-s2" joins.
+
+        A token written as a pole (p; pi, π or p) is the pole, never an image;
+        a point's image is its name in lower case or as the mechanism writes
+        it, and a point whose lower-case name is a pole's (P, Pi) is written
+        in capitals: "p-P" (or "pP") is the pole to P's image, "P-a" P's
+        image to a's, "p-a" the pole to a's."""
         poles = VELOCITY_POLES if kind == "velocity_plan_mm" else ACCELERATION_POLES
-        images = {p.lower(): p for p in plan.velocity_images}
+        images: dict[str, set[str]] = {}
+        for p in plan.velocity_images:
+            for spelling in {p, p.lower(), p.upper()}:
+                if spelling not in poles:
+                    images.setdefault(spelling, set()).add(p)
 
         def ends(token: str) -> set[str]:
-            return ({POLE} if token in poles else set()) | (
-                {images[token]} if token in images else set()
-            )
+            if token in poles:
+                return {POLE}
+            if token in images:
+                return images[token]
+            return {POLE} if token.lower() in poles else set()
 
-        key = name.lower()
-        if "-" in key:
-            parts = key.split("-")
+        if "-" in name:
+            parts = name.split("-")
             splits = [(parts[0], parts[1])] if len(parts) == 2 else []
         else:
-            splits = [(key[:i], key[i:]) for i in range(1, len(key))]
+            splits = [(name[:i], name[i:]) for i in range(1, len(name))]
         found = {(x, y) for left, right in splits for x in ends(left) for y in ends(right)}
         pole = poles[0] if kind == "velocity_plan_mm" else "pi"
         comps = [
@@ -516,7 +527,9 @@ class _Reader:
         ]
         fix = (
             f"name the two ends by their images: the pole {pole} and lower-case point "
-            f"names ({', '.join(images)}), e.g. {pole}b or ab; a dash may separate them: a-s2; "
+            f"names ({', '.join(sorted({p.lower() for p in plan.velocity_images}))}), e.g. "
+            f"{pole}b or ab (a point named like a pole in capitals: {pole}-P); "
+            "a dash may separate them: a-s2; "
             f"or a component: {', '.join(comps)}"
         )
         plan_name = "velocity plan" if kind == "velocity_plan_mm" else "acceleration plan"
@@ -785,8 +798,12 @@ class _Reader:
 
 
 def segment_name(kind: str, segment: tuple[str, str], *, dash: bool = False) -> str:
+    """The segment as an answers file writes it (a point named like a pole in capitals)."""
     pole = "p" if kind == "velocity_plan_mm" else "pi"
-    return ("-" if dash else "").join(pole if e == POLE else e.lower() for e in segment)
+    poles = VELOCITY_POLES if kind == "velocity_plan_mm" else ACCELERATION_POLES
+    return ("-" if dash else "").join(
+        pole if e == POLE else e.lower() if e.lower() not in poles else e.upper() for e in segment
+    )
 
 
 def _inside(phi: float, ranges: tuple[tuple[float, float], ...]) -> bool:

@@ -16,6 +16,7 @@ match is "wrong, cause unknown".
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -63,6 +64,10 @@ KINEMATIC = {
 }
 
 
+# the fields of a cause that are values of the exact solution (`--hide-exact` hides them)
+REVEALING = ("value", "exact", "mm")
+
+
 @dataclass(frozen=True)
 class Cause:
     """A named mistake: a catalogue key of [check] and its fields (numbers are
@@ -73,12 +78,17 @@ class Cause:
     fields: tuple[tuple[str, Any], ...] = ()
     group: str | None = None
 
-    def text(self, cat: Any) -> str:
+    def text(self, cat: Any, *, hide_values: bool = False) -> str:
+        """In the catalogue's language; `hide_values` leaves out the numbers
+        that would give an exact value away (`--hide-exact`)."""
+        hidden = cat.word("check", "hidden_value")
         fields = {
             k: (
-                cat.number(v, 4)
+                hidden
+                if hide_values and k in REVEALING
+                else cat.number(v, 4)
                 if isinstance(v, float)
-                else v.text(cat)
+                else v.text(cat, hide_values=hide_values)
                 if isinstance(v, Cause)
                 else str(v)
             )
@@ -514,7 +524,8 @@ def rank(value: float, exact_value: float, candidates: list[Candidate]) -> list[
     to the exact value explains nothing."""
     merged: list[tuple[float, list[Cause]]] = []
     for c in candidates:
-        if not np.isfinite(c.value) or c.value == 0:
+        # a zero candidate stays: a force left out is a 0 in the student's plan
+        if not np.isfinite(c.value):
             continue
         if abs(c.value - exact_value) <= SAME * max(abs(exact_value), abs(c.value)):
             continue
@@ -524,9 +535,17 @@ def rank(value: float, exact_value: float, candidates: list[Candidate]) -> list[
                 break
         else:
             merged.append((c.value, [c.cause]))
-    out = [Ranked(abs(value - v) / abs(v), tuple(causes)) for v, causes in merged]
+    out = [Ranked(miss(value, v), tuple(causes)) for v, causes in merged]
     out.sort(key=lambda r: r.miss)
     return out
+
+
+def miss(value: float, candidate: float) -> float:
+    """|value − candidate| / |candidate|; against a zero candidate, 0 for a
+    zero (the force left out) and infinitely far for anything else."""
+    if candidate == 0.0:
+        return 0.0 if value == 0.0 else math.inf
+    return abs(value - candidate) / abs(candidate)
 
 
 def clear(ranked: list[Ranked], tol: float) -> Ranked | None:
