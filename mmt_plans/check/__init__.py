@@ -37,6 +37,7 @@ from .causes import (
     pick,
     rank,
 )
+from .mistakes import diagnose
 from .quantities import Answer, Exact, Where, force_value
 from .report import CheckedValue, CheckResult
 
@@ -116,8 +117,19 @@ def check(
                 else force_candidates(a, exact, x)
             )
             ranked[k] = rank(a.value, x, cands)
-    # Pass 1: clear matches; a force mistake two of them show is confirmed.
-    named: dict[int, Cause] = {}
+    # The joint diagnosis: the mistakes recomputed through the construction
+    # that explain the failing values together (mistakes.py).
+    failing = {k for k, (a, _, _, passed) in enumerate(rows) if not passed}
+    named: dict[int, Cause] = diagnose(
+        exact,
+        list(answers.values),
+        [x for _, x, _, _ in rows],
+        {k for k in failing if answers.values[k].kind != "check_verdict"},
+        frac,
+        _exact,
+    )
+    ranked = {k: r for k, r in ranked.items() if k not in named}
+    # The rest, value by value: clear matches; a force mistake two of them show is confirmed.
     votes: dict[tuple, int] = {}
     for k, r in ranked.items():
         best = clear(r, frac)

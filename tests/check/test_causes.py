@@ -100,13 +100,15 @@ def test_inertia_left_out_by_a_crank_turning_slowly(tmp_path, example):
             assert math.isclose(v.exact, v.answer.value, rel_tol=0.05)
             continue
         assert v.group in ("inertia_others", "inertia_all"), (v.answer.label, v.cause)
-    assert by_label(res)["F_bal (plans)"].cause_key == "cause_inertia_links"
-    # The crank's own inertia force is radial: only R01 tells the two apart.
+    # The crank's own inertia force is radial: only R01 tells "links 2–5" from
+    # "every link"; the joint diagnosis names the one mistake that explains
+    # every failing value, R01 too (issue 23; it named links 2–5 for F_bal).
+    assert by_label(res)["F_bal (plans)"].cause_key == "cause_inertia_all"
     assert by_label(res)["R01"].group == "inertia_all"
     assert sum(not v.passed for v in res.values) >= 5
     # the cause is said once for the group in the text
     text = res.text()
-    assert text.count("inertia forces and moments of links 2–5 left out") == 1
+    assert text.count("inertia forces and moments of every link left out") == 1
     assert fa.balancing_force_plans != pytest.approx(wrong["balancing_force_plans"], rel=0.05)
 
 

@@ -121,5 +121,16 @@ def test_hide_exact_shows_verdicts_and_causes_without_values(tmp_path):
     shown = invoke(tmp_path, PRESS, text).output
     hidden = invoke(tmp_path, PRESS, text, "--hide-exact")
     assert hidden.exit_code == 1
-    assert "taken from position 8" in hidden.output and "(hidden)" in hidden.output
+    assert "drawn at position 8" in hidden.output
     assert f"{exact:.6g}" in shown and f"{exact:.6g}" not in hidden.output
+
+
+def test_hide_exact_hides_the_values_a_cause_quotes(tmp_path):
+    solution = mmt_plans.solve(mmt_plans.load(PRESS))
+    plan = solution.plan(2)
+    v_a = float(np.hypot(*plan.velocity_images["A"]))
+    text = f"[[position]]\nindex = 2\nvelocity = {{ B = {v_a} }}\n"
+    shown = invoke(tmp_path, PRESS, text).output
+    hidden = invoke(tmp_path, PRESS, text, "--hide-exact").output
+    assert "another point's image on the same plan: A, " in shown
+    assert "another point's image on the same plan: A, (hidden)" in hidden
