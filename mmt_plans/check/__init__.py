@@ -123,7 +123,8 @@ def check(
     named: dict[int, Cause] = diagnose(
         exact,
         list(answers.values),
-        [x for _, x, _, _ in rows],
+        # the exact values as computed (not the zeros a row shows for them)
+        [x if x or a.kind == "check_verdict" else _exact(exact, a) for a, x, _, _ in rows],
         {k for k in failing if answers.values[k].kind != "check_verdict"},
         frac,
         _exact,

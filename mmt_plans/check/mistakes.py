@@ -87,7 +87,15 @@ class Mistaken(Exact):
 
             phi, _ = self._angle(w)
             sweep = construct(self.solution, phi, self.model.construction or Construction())
-            self._plans[w.key] = plan_view(sweep, 0, w.index)
+            view = plan_view(sweep, 0, w.index)
+            # the image a group's two equations give (where a mistake makes the
+            # fields of its two links disagree there, the plan's point is this one)
+            images = dict(view.acceleration_images)
+            for plan in sweep.plans:
+                if plan.group.kind in ("RRR", "RRP"):
+                    z = complex(np.asarray(plan.a_X).reshape(-1)[0])
+                    images[plan.X_name] = _xy(z)
+            self._plans[w.key] = replace(view, acceleration_images=images)
         return self._plans[w.key]
 
     def forces(self, w: Where, **mistake: Any) -> ForceAnalysis:
@@ -123,6 +131,12 @@ class Mistaken(Exact):
         if c is not None and c.angle == "rad_as_deg":
             return math.radians(w.phi1_deg) % 360.0, None
         return w.phi1_deg, w.index
+
+
+def _xy(z: complex) -> np.ndarray:
+    arr = np.array([z.real, z.imag])
+    arr.setflags(write=False)
+    return arr
 
 
 def construct(solution: Solution, phi1_deg: float, c: Construction) -> Sweep:
@@ -355,6 +369,7 @@ class Explained:
     model: Model
     values: frozenset[int]
     predicted: dict[int, float]
+    everywhere: dict[int, float]  # its value of every answer it gives one for
 
 
 def diagnose(
@@ -390,6 +405,7 @@ def diagnose(
         mistaken = Mistaken(exact.solution, model, exact)
         explained: set[int] = set()
         predicted: dict[int, float] = {}
+        everywhere: dict[int, float] = {}
         admissible = True
         for k, a in enumerate(answers):
             if a.kind in _DIAGRAM_KINDS and not _scales_diagrams(model):
@@ -400,6 +416,7 @@ def diagnose(
                 continue  # the mistake removes the quantity (an arm of a force left out)
             if v is None or not math.isfinite(v):
                 continue
+            everywhere[k] = v
             x = exact_values[k]
             moved = abs(v - x) > 1e-9 * max(abs(x), abs(v))
             if not moved:
@@ -413,9 +430,29 @@ def diagnose(
                 admissible = False
                 break
         if admissible and explained:
-            candidates.append(Explained(model, frozenset(explained), predicted))
+            candidates.append(Explained(model, frozenset(explained), predicted, everywhere))
+
+    def _joins(c: Explained, a: Any, k: int, r0d: bool) -> bool:
+        """Whether the model (with R0d without F_bal) reproduces the value within
+        the tolerance, nearer than the exact value."""
+        model = c.model
+        if r0d:
+            if a.kind not in _FORCE_KINDS or model.reach != "forces":
+                return False
+            model = replace(
+                model, key=model.key + "+r0d", options=(*model.options, ("balancing_in_r0d", False))
+            )
+        if not model.changes(a.where, "forces" if a.kind in _FORCE_KINDS else "kinematics"):
+            return False
+        x = exact_values[k]
+        try:
+            v = _predict(Mistaken(exact.solution, model, exact), model, a, x, value_of)
+        except (MmtError, KeyError, StopIteration, ValueError, ZeroDivisionError):
+            return False
+        return v is not None and miss(a.value, v) <= frac and miss(a.value, v) < miss(a.value, x)
+
     named: dict[int, Cause] = {}
-    chosen: list[tuple[Explained, Cause]] = []
+    chosen: list[tuple[list[Explained], set[int]]] = []
     left = set(failing)
     while left:
         best: list[Explained] = []
@@ -443,52 +480,44 @@ def diagnose(
                 left -= covered  # two mistakes fit it with other numbers: not named here
                 continue
             same = [c for c in others]
-        # one model of a family (one link's or every link's) where they give the same numbers
-        one: dict[str, Explained] = {}
-        for c in same:
-            one.setdefault(_family(c.model.key), c)
-        cause = _either(
-            [replace(c.model.cause, group=c.model.key.split("@")[0]) for c in one.values()]
-        )
+        # of one kind of mistake (one link's, links 2–n, every link) giving the
+        # same numbers for every value, the most specific one
+        one: dict[tuple, Explained] = {}
+        for c in sorted(same, key=lambda c: _specific(c.model.key)):
+            numbers = tuple(sorted((k, f"{v:.9g}") for k, v in c.everywhere.items()))
+            one.setdefault((_family(c.model.key), numbers), c)
+        alternatives = list(one.values())
         for k in covered:
-            named[k] = cause
+            named[k] = _cause_of(alternatives)
         left -= covered
         if gain > 1:
-            chosen.append((first, cause))
+            chosen.append((alternatives, set(covered)))
     # The failing values of a construction that a mistake explaining several
     # of its values reproduces within the tolerance, nearer than the exact
     # value, join it (a drawing's own error on top of the mistake); a
     # reaction of the frame on the driving link may also have been taken
-    # from the link's polygon without F_bal.
-    for c, cause in chosen:
-        mistaken = Mistaken(exact.solution, c.model, exact)
-        r0d = replace(
-            c.model,
-            key=c.model.key + "+r0d",
-            options=(*c.model.options, ("balancing_in_r0d", False)),
-        )
+    # from the link's polygon without F_bal. A value that only some of the
+    # alternatives ("either … or …") reproduce tells them apart.
+    for alternatives, group in chosen:
+        joined: dict[int, tuple[list[Explained], bool]] = {}
         for k in sorted(left):
-            a = answers[k]
-            if not c.model.changes(a.where, "forces" if a.kind in _FORCE_KINDS else "kinematics"):
+            fits = [c for c in alternatives if _joins(c, answers[k], k, False)]
+            r0d = False
+            if not fits:
+                fits = [c for c in alternatives if _joins(c, answers[k], k, True)]
+                r0d = True
+            if fits:
+                joined[k] = (fits, r0d)
+        for fits, _ in joined.values():
+            if len(fits) < len(alternatives):
+                alternatives = fits
+        for k, (fits, r0d) in joined.items():
+            if not any(c in alternatives for c in fits):
                 continue
-            try:
-                v = _predict(mistaken, c.model, a, exact_values[k], value_of)
-            except (MmtError, KeyError, StopIteration, ValueError, ZeroDivisionError):
-                continue
-            x = exact_values[k]
-            if v is not None and miss(a.value, v) <= frac and miss(a.value, v) < miss(a.value, x):
-                named[k] = cause
-                left.discard(k)
-                continue
-            if a.kind not in _FORCE_KINDS or c.model.reach != "forces":
-                continue
-            try:
-                v = _predict(Mistaken(exact.solution, r0d, exact), r0d, a, x, value_of)
-            except (MmtError, KeyError, StopIteration, ValueError, ZeroDivisionError):
-                continue
-            if v is not None and miss(a.value, v) <= frac and miss(a.value, v) < miss(a.value, x):
-                fa = exact.forces(a.where)
-                named[k] = Cause(
+            cause = _cause_of(alternatives)
+            if r0d:
+                fa = exact.forces(answers[k].where)
+                cause = Cause(
                     "cause_r0d_without_fbal_and",
                     (
                         ("name", fa.driving_link.reaction.name),
@@ -497,7 +526,10 @@ def diagnose(
                     ),
                     cause.group,
                 )
-                left.discard(k)
+            named[k] = cause
+            left.discard(k)
+        for k in group:
+            named[k] = _cause_of(alternatives)
     return named
 
 
@@ -558,8 +590,22 @@ def _family(key: str) -> str:
     return "inertia" if base in ("inertia_others", "inertia_all") else base
 
 
+def _specific(key: str) -> int:
+    """0 for a mistake of one link or group, 1 for links 2–n, 2 for every link."""
+    import re
+
+    base = key.split("@")[0]
+    if re.search(r"_[\d\-]+$", base):
+        return 0
+    return 1 if base.endswith("others") else 2
+
+
 def _equal(x: float, y: float) -> bool:
     return abs(x - y) <= 1e-9 * max(abs(x), abs(y), 1e-300)
+
+
+def _cause_of(alternatives: list[Explained]) -> Cause:
+    return _either([replace(c.model.cause, group=c.model.key.split("@")[0]) for c in alternatives])
 
 
 def _either(causes: list[Cause]) -> Cause:

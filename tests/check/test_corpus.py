@@ -1,0 +1,363 @@
+"""The diagnoser against a corpus of student work made by an independent
+construction (corpus.py): the rates of README's table.
+
+Each answers file is a student's sheet: the plans at one or two positions,
+the force analysis at one, every value read off with a drawing's error. A
+file makes one or two mistakes really (in corpus.py's own construction);
+the values a mistake leaves unchanged carry 2–4 % drawing error, the values
+it changes 0–1 % reading error on top of it. The rates:
+
+- right causes: of the failing values a listed mistake made, those whose
+  cause names that mistake (alone or among "either … or …");
+- false causes: of the failing values, those named with another mistake;
+- false fails: values no mistake changed that fail (drawn within 4 %).
+
+    PYTHONPATH=. python -m tests.check.test_corpus     # prints README's table
+"""
+
+from __future__ import annotations
+
+import math
+from collections import defaultdict
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import mmt_plans
+from mmt_plans.check import check, loads_answers
+
+from .corpus import MECHANISMS, ForceMethod, Forces, Kin, Mechanism, Method, forces
+
+RPM = 30.0 / math.pi
+MU_V, MU_A, MU_F = 0.02, 0.5, 50.0
+
+
+@dataclass(frozen=True)
+class Sheet:
+    """One student's answers file: where they drew and what they did wrong."""
+
+    name: str
+    mistakes: tuple[str, ...]  # the tool's model families it should name
+    kin_at: tuple[int, ...]
+    force_at: int
+    method: Method = Method()  # their construction of the plans (every position)
+    force_method: ForceMethod = ForceMethod()
+    plans_from: dict[int, int] = field(default_factory=dict)  # position -> drawn at
+    forces_from: int | None = None  # the force analysis made at this position
+    method_at: int | None = None  # the construction's mistake made at this position only
+
+
+POINTS = {
+    "shaper": ("A", "B", "D", "S3", "S4"),
+    "crosshead": ("A", "B", "D", "S2", "S4", "S5"),
+    "press": ("A", "B", "D", "E", "S2", "S3", "S4"),
+}
+SEGMENTS = {
+    "shaper": (("", "B"), ("", "D"), ("B", "D")),
+    "crosshead": (("", "B"), ("", "D"), ("A", "B")),
+    "press": (("", "B"), ("", "E"), ("D", "E"), ("A", "B")),
+}
+TURNS = {"shaper": (2, 3, 4), "crosshead": (2, 4, 5), "press": (2, 3, 4)}
+TURNING = {"shaper": 3, "crosshead": 5, "press": 3}
+OUTPUT_LINK = 5
+
+
+def sheets(kind: str, mech: Mechanism) -> list[Sheet]:
+    t = TURNING[kind]
+    out = [
+        Sheet("right", (), (1, 4), 4),
+        Sheet("a^n left out", ("normal_left_out",), (2,), 2, Method(normal=0.0)),
+        Sheet(
+            f"a^τ of link {t} reversed",
+            (f"tangential_reversed_{t}",),
+            (1,),
+            1,
+            Method(eps_reversed=(t,)),
+        ),
+        Sheet("rpm as rad/s", ("rpm_as_rad",), (2, 5), 5, Method(omega_factor=RPM)),
+        Sheet("plans at another position", ("plans_at_3",), (2,), 5, plans_from={2: 3}),
+        Sheet("forces at another position", ("forces_at_6",), (1,), 5, forces_from=6),
+        # the cranks carry no inertia (their centres of mass on the pivots, J = 0):
+        # "every link" and "links 2–5" are the same mistake
+        Sheet(
+            "inertia left out",
+            ("inertia_all", "inertia_others"),
+            (1,),
+            2,
+            force_method=ForceMethod(()),
+        ),
+        Sheet(
+            "inertia of links 2–5 left out",
+            ("inertia_others",),
+            (4,),
+            3,
+            force_method=ForceMethod((1,)),
+        ),
+        Sheet("weights left out", ("gravity",), (1,), 1, force_method=ForceMethod(gravity=False)),
+        Sheet(
+            "lever not turned",
+            ("lever_not_turned",),
+            (2,),
+            2,
+            force_method=ForceMethod(lever_turned=False),
+        ),
+        Sheet(
+            "F_in5 left out",
+            ("inertia_5",),
+            (3,),
+            4,
+            force_method=ForceMethod((1, 2, 3, 4)),
+        ),
+        Sheet(
+            "a^n left out at 1; weights left out at 4",
+            ("normal_left_out", "gravity"),
+            (1,),
+            4,
+            Method(normal=0.0),
+            ForceMethod(gravity=False),
+            method_at=1,
+        ),
+    ]
+    if kind == "shaper":
+        out += [
+            Sheet("Coriolis reversed", ("coriolis_reversed",), (1, 2), 2, Method(coriolis=-1.0)),
+            Sheet("Coriolis left out", ("coriolis_left_out",), (5,), 5, Method(coriolis=0.0)),
+            Sheet(
+                "Coriolis reversed at 2; lever not turned at 4",
+                ("coriolis_reversed", "lever_not_turned"),
+                (2,),
+                4,
+                Method(coriolis=-1.0),
+                ForceMethod(lever_turned=False),
+                method_at=2,
+            ),
+        ]
+    return out
+
+
+def values_of(mech: Mechanism, kind: str, k: Kin, fo: Forces | None) -> dict:
+    """Every value a sheet gives from one construction, keyed (section, key, name)."""
+    out: dict[tuple[str, str, str], float] = {}
+    if fo is None:
+        for p in POINTS[kind]:
+            out["velocity", p] = abs(k.V[p])
+            out["acceleration", p] = abs(k.A[p])
+        for lid in TURNS[kind]:
+            out["omega", str(lid)] = k.w[lid]
+            out["eps", str(lid)] = k.e[lid]
+        for a, b in SEGMENTS[kind]:
+            va = k.V[a] if a else 0j
+            aa = k.A[a] if a else 0j
+            name = ("p" if not a else a.lower()) + b.lower()
+            out["velocity_plan_mm", name] = abs(k.V[b] - va) / MU_V
+            out["acceleration_plan_mm", "pi" + name[1:] if not a else name] = abs(k.A[b] - aa) / MU_A
+        return out
+    out["balancing_force_plans", ""] = fo.F_bal
+    out["balancing_force_lever", ""] = fo.F_bal_lever
+    out["balancing_moment", ""] = fo.F_bal * mech.crank
+    for n, r in fo.reactions.items():
+        out["reactions", n] = r
+    for lk in mech.links[1:]:
+        out["inertia_forces", str(lk.id)] = fo.F_in[lk.id]
+        if lk.J:
+            out["inertia_moments", str(lk.id)] = fo.M_in[lk.id]
+    out["weights", "5"] = fo.G[5]
+    out["force_plan_mm", "R12"] = fo.reactions["R12"] / MU_F
+    out["force_plan_mm", "G5"] = fo.G[5] / MU_F
+    out["force_plan_mm", "F_in5"] = fo.F_in[5] / MU_F
+    return out
+
+
+def student(mech: Mechanism, kind: str, sheet: Sheet, angles: list[float], rng) -> tuple[str, dict]:
+    """The answers file's text and, per value, (right value, student's, changed)."""
+    given: dict = {}
+    text = []
+    for i in sheet.kin_at:
+        right = values_of(mech, kind, mech.kin(angles[i]), None)
+        drawn_at = sheet.plans_from.get(i, i)
+        method = sheet.method if sheet.method_at in (None, i) else Method()
+        wrong = values_of(mech, kind, mech.kin(angles[drawn_at], method), None)
+        rows = _spoil(right, wrong, rng)
+        given.update({(i, *key): v for key, v in rows.items()})
+        text.append(_section("[[position]]", i, rows, {"mu_V": MU_V, "mu_a": MU_A}))
+    f = sheet.force_at
+    right = values_of(mech, kind, mech.kin(angles[f]), forces(mech, mech.kin(angles[f])))
+    method = sheet.method if sheet.method_at in (None, f) else Method()
+    at = sheet.forces_from if sheet.forces_from is not None else f
+    k = mech.kin(angles[at], method)
+    wrong = values_of(mech, kind, k, forces(mech, k, sheet.force_method))
+    # a force left out of the force plans is a 0 there (the loads table, computed
+    # before the plans, still has it: forces() gives G, F_in, M_in regardless)
+    kept = sheet.force_method.inertia
+    for lid in range(1, 6):
+        if kept is not None and lid not in kept and ("force_plan_mm", f"F_in{lid}") in wrong:
+            wrong["force_plan_mm", f"F_in{lid}"] = 0.0
+    if not sheet.force_method.gravity:
+        wrong["force_plan_mm", "G5"] = 0.0
+    rows = _spoil(right, wrong, rng)
+    given.update({(f, *key): v for key, v in rows.items()})
+    text.append(_section("[forces]", f, rows, {"mu_F": MU_F}))
+    return "\n".join(text), given
+
+
+def _spoil(right: dict, wrong: dict, rng) -> dict:
+    """The student's values: right ones with 2–4 % drawing error, the ones the
+    mistake changed with 0–1 % reading error."""
+    out = {}
+    for key, x in right.items():
+        w = wrong[key]
+        changed = abs(w - x) > 1e-6 * max(abs(x), 1e-12)
+        if changed:
+            v = w * (1 + rng.uniform(-0.01, 0.01))
+        else:
+            v = x * (1 + rng.choice([-1, 1]) * rng.uniform(0.02, 0.04))
+        if key[0] not in ("omega", "eps", "balancing_force_plans", "balancing_force_lever",
+                          "balancing_moment"):
+            v = abs(v)
+        out[key] = (x, v, changed)
+    return out
+
+
+def _section(head: str, i: int, rows: dict, scales: dict) -> str:
+    tables: dict[str, dict] = defaultdict(dict)
+    singles = {}
+    for (key, name), (_, v, _) in rows.items():
+        if name:
+            tables[key][name] = float(v)
+        else:
+            singles[key] = float(v)
+    lines = [head, f"index = {i}"]
+    lines += [f"{k} = {v!r}" for k, v in scales.items()]
+    lines += [f"{k} = {v!r}" for k, v in singles.items()]
+    for key, t in tables.items():
+        lines.append(f"{key} = {{ " + ", ".join(f'"{n}" = {v!r}' for n, v in t.items()) + " }")
+    return "\n".join(lines) + "\n"
+
+
+def groups_of(cause) -> set[str]:
+    out = set()
+    if cause is None:
+        return out
+    if cause.group:
+        out.add(cause.group)
+    for _, v in cause.fields:
+        if hasattr(v, "fields"):
+            out |= groups_of(v)
+    return out
+
+
+def _matches(groups: set[str], mistakes: tuple[str, ...]) -> bool:
+    return any(g == m or g.startswith(m + "_") or g.startswith(m) for g in groups for m in mistakes)
+
+
+def run_corpus(tmp: Path) -> dict:
+    """Every sheet of every mechanism checked: counts per mistake, and the files."""
+    rng = np.random.default_rng(23)
+    table: dict[str, dict[str, int]] = defaultdict(lambda: defaultdict(int))
+    for kind, mech in MECHANISMS.items():
+        path = tmp / f"{kind}.toml"
+        path.write_text(mech.toml, encoding="utf-8")
+        solution = mmt_plans.solve(mmt_plans.load(path))
+        angles = [p.phi1_deg for p in solution.positions]
+        for sheet in sheets(kind, mech):
+            text, given = student(mech, kind, sheet, angles, rng)
+            answers = loads_answers(text, solution, f"{kind}: {sheet.name}")
+            result = check(solution, answers)
+            row = table[f"{kind}: {sheet.name}"]
+            for v in result.values:
+                a = v.answer
+                if a.kind in ("mu_V", "mu_a"):
+                    continue
+                key = _key(a)
+                _, value, changed = given[key]
+                row["values"] += 1
+                if not changed:
+                    row["false fails"] += not v.passed
+                    continue
+                if v.passed:
+                    row["changed, within tolerance"] += 1
+                    continue
+                row["wrong"] += 1
+                groups = groups_of(v.named)
+                if not groups:
+                    row["cause unknown"] += 1
+                elif _matches(groups, sheet.mistakes):
+                    row["right cause"] += 1
+                else:
+                    row["false cause"] += 1
+    return table
+
+
+def _key(a) -> tuple:
+    section = {
+        "velocity": "velocity",
+        "acceleration": "acceleration",
+        "omega": "omega",
+        "eps": "eps",
+        "velocity_plan_mm": "velocity_plan_mm",
+        "acceleration_plan_mm": "acceleration_plan_mm",
+        "reaction": "reactions",
+        "weight": "weights",
+        "inertia_force": "inertia_forces",
+        "inertia_moment": "inertia_moments",
+        "force_plan_mm": "force_plan_mm",
+    }.get(a.kind, a.kind)
+    return (a.where.index, section, a.name)
+
+
+def totals(table: dict) -> dict[str, int]:
+    out: dict[str, int] = defaultdict(int)
+    for row in table.values():
+        for k, n in row.items():
+            out[k] += n
+    return out
+
+
+def markdown(table: dict) -> str:
+    cols = ["values", "wrong", "right cause", "false cause", "cause unknown", "false fails"]
+    lines = ["| sheet | " + " | ".join(cols) + " |", "|---" * (len(cols) + 1) + "|"]
+    for name, row in table.items():
+        lines.append(f"| {name} | " + " | ".join(str(row.get(c, 0)) for c in cols) + " |")
+    t = totals(table)
+    lines.append("| **all** | " + " | ".join(f"**{t.get(c, 0)}**" for c in cols) + " |")
+    return "\n".join(lines)
+
+
+@pytest.fixture(scope="module")
+def corpus(tmp_path_factory):
+    return run_corpus(tmp_path_factory.mktemp("corpus"))
+
+
+def test_the_independent_construction_agrees_with_the_tool(tmp_path):
+    """corpus.py's own closed forms, plans and equilibrium give the exact values."""
+    for kind, mech in MECHANISMS.items():
+        path = tmp_path / f"{kind}.toml"
+        path.write_text(mech.toml, encoding="utf-8")
+        solution = mmt_plans.solve(mmt_plans.load(path))
+        for i in (1, 4):
+            plan = solution.plan(i)
+            k = mech.kin(plan.phi1_deg)
+            for p in POINTS[kind]:
+                assert abs(complex(*plan.acceleration_images[p]) - k.A[p]) < 1e-9 * abs(k.A["A"])
+            fa = solution.forces_at(i)
+            fo = forces(mech, k)
+            assert fa.balancing_force_plans == pytest.approx(fo.F_bal, rel=1e-9)
+            for n, r in fo.reactions.items():
+                assert fa.reaction(int(n[1]), int(n[2])).magnitude == pytest.approx(r, rel=1e-9)
+
+
+def test_corpus_rates(corpus):
+    t = totals(corpus)
+    assert t["false fails"] == 0, markdown(corpus)
+    assert t["wrong"] >= 150
+    assert t["right cause"] >= 0.80 * t["wrong"], markdown(corpus)
+    assert t["false cause"] <= 0.02 * t["wrong"], markdown(corpus)
+
+
+if __name__ == "__main__":  # README's table
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as tmp:
+        print(markdown(run_corpus(Path(tmp))))
