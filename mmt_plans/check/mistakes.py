@@ -34,7 +34,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from ..solution import Solution
 
 # what a model changes: the plans (and the forces built on them), or only the forces
-Reach = Literal["kinematics", "forces"]
+Reach = Literal["kinematics", "forces", "images"]
 
 
 @dataclass(frozen=True)
@@ -63,11 +63,14 @@ class Model:
     options: tuple[tuple[str, Any], ...] = ()
     at: tuple | None = None
     instead: Where | None = None
+    swapped: tuple[str, str, str] = ("", "", "")  # two points' images swapped on a plan
 
     def changes(self, where: Where, kind: Reach) -> bool:
         """Whether the model changes the construction `kind` at `where`."""
         if self.at is not None and self.at != where.key:
             return False
+        if self.reach == "images":
+            return kind == "kinematics"
         return kind == "forces" or self.reach == "kinematics"
 
 
@@ -82,6 +85,15 @@ class Mistaken(Exact):
     def plan(self, w: Where) -> PlanView:
         if not self.model.changes(w, "kinematics"):
             return self.exact.plan(w)
+        if self.model.reach == "images":
+            view = self.exact.plan(w)
+            b, d, plans = self.model.swapped
+            v_img, a_img = dict(view.velocity_images), dict(view.acceleration_images)
+            if "velocity" in plans:
+                v_img[b], v_img[d] = v_img[d], v_img[b]
+            if "acceleration" in plans:
+                a_img[b], a_img[d] = a_img[d], a_img[b]
+            return replace(view, velocity_images=v_img, acceleration_images=a_img)
         if w.key not in self._plans:
             from ..kinematics.plans import plan_view
 
@@ -200,7 +212,7 @@ def construct(solution: Solution, phi1_deg: float, c: Construction) -> Sweep:
 # --- the models of a solution and an answers file ----------------------------------------
 
 
-def models(exact: Exact, kinematic_at: list[Where], force_at: list[Where]) -> list[Model]:
+def models(exact: Exact, kin_at: list[Where], force_at: list[Where]) -> list[Model]:
     """Every mistake model for answers given at these positions: the
     construction's mistakes in every plan and at each position alone; the
     plans or forces of a position made at another one; the force analysis'
@@ -254,12 +266,37 @@ def models(exact: Exact, kinematic_at: list[Where], force_at: list[Where]) -> li
         ("rad_as_rpm", Cause("cause_rad_as_rpm"), Construction(omega_factor=1.0 / rpm)),
         ("deg_as_rad", Cause("cause_deg_as_rad"), Construction(angle="deg_as_rad")),
     ]
-    places = list({w.key: w for w in [*kinematic_at, *force_at]}.values())
+    places = list({w.key: w for w in [*kin_at, *force_at]}.values())
     for key, cause, c in constructions:
         out.append(Model(key, cause, "kinematics", c))
         if len(places) > 1 and not key.startswith(("rpm", "rad_as")):
             for w in places:
                 out.append(Model(f"{key}@{w.key}", _at(cause, w), "kinematics", c, at=w.key))
+    # two images swapped on a plan (the labels b and d written the other way round)
+    points = [
+        name for lid, link in mech.links.items() for name in link.points if name not in mech.frame
+    ]
+    points = list(dict.fromkeys(points))
+    for w in kin_at:
+        for i, b in enumerate(points):
+            for d in points[i + 1 :]:
+                for plans, what in (
+                    ("velocity acceleration", "both"),
+                    ("velocity", "velocity"),
+                    ("acceleration", "acceleration"),
+                ):
+                    pair = (("first", b.lower()), ("second", d.lower()))
+                    out.append(
+                        Model(
+                            f"images_{b}_{d}_{what}@{w.key}",
+                            _at(Cause(f"cause_images_swapped_{what}", pair), w)
+                            if len(kin_at) > 1
+                            else Cause(f"cause_images_swapped_{what}", pair),
+                            "images",
+                            at=w.key,
+                            swapped=(b, d, plans),
+                        )
+                    )
     # the plans or the forces of a position made at another position
     n = mech.study.positions
     for w in places:
@@ -273,7 +310,7 @@ def models(exact: Exact, kinematic_at: list[Where], force_at: list[Where]) -> li
             except MmtError:
                 continue
             fields = (("position", str(j)),)
-            if any(w.key == k.key for k in kinematic_at):
+            if any(w.key == k.key for k in kin_at):
                 out.append(
                     Model(
                         f"plans_at_{j}@{w.key}",
@@ -429,7 +466,8 @@ def diagnose(
             elif abs(v - x) > frac * abs(x) and not close:
                 admissible = False
                 break
-        if admissible and explained:
+        # two images swapped show in two values at least (one is another point's image)
+        if admissible and len(explained) >= (2 if model.reach == "images" else 1):
             candidates.append(Explained(model, frozenset(explained), predicted, everywhere))
 
     def _joins(c: Explained, a: Any, k: int, r0d: bool) -> bool:
@@ -586,7 +624,8 @@ def _family(key: str) -> str:
     """A model's kind without its link or group: shift_reversed_2 and shift_reversed."""
     import re
 
-    base = re.sub(r"_[\d\-]+$", "", key.split("@")[0])
+    base = re.sub(r"_(both|velocity|acceleration)$", "", key.split("@")[0])
+    base = re.sub(r"_[\d\-]+$", "", base)
     return "inertia" if base in ("inertia_others", "inertia_all") else base
 
 
@@ -595,7 +634,7 @@ def _specific(key: str) -> int:
     import re
 
     base = key.split("@")[0]
-    if re.search(r"_[\d\-]+$", base):
+    if re.search(r"_[\d\-]+$", base) or base.endswith(("_velocity", "_acceleration")):
         return 0
     return 1 if base.endswith("others") else 2
 

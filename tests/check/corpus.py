@@ -525,6 +525,8 @@ class ForceMethod:
     inertia: tuple[int, ...] | None = None  # links whose F_in, M_in are kept (None: all)
     gravity: bool = True
     lever_turned: bool = True
+    moments: bool = True  # False: M_in left out (F_in at S)
+    weight_at: tuple[tuple[int, str], ...] = ()  # G of a link at this point, not at S
 
 
 def forces(mech: Mechanism, k: Kin, fm: ForceMethod = ForceMethod()) -> Forces:
@@ -566,9 +568,10 @@ def forces(mech: Mechanism, k: Kin, fm: ForceMethod = ForceMethod()) -> Forces:
         m_in = -lk.J * k.e[lk.id]
         F_in[lk.id], M_in[lk.id], Gs[lk.id] = abs(f_in), abs(m_in), abs(g)
         if fm.gravity:
-            loads.append((lk.id, g, S, 0.0))
+            at = dict(fm.weight_at).get(lk.id)
+            loads.append((lk.id, g, S if at is None else k.P[at], 0.0))
         if fm.inertia is None or lk.id in fm.inertia:
-            loads.append((lk.id, f_in, S, m_in))
+            loads.append((lk.id, f_in, S, m_in if fm.moments else 0.0))
     V_at = k.V[mech.loads_at]
     F_pr = -mech.F_PR * V_at / abs(V_at) if abs(V_at) > 1e-12 else 0j
     link_pr = next(p.b for p in mech.pairs if p.point == mech.loads_at and p.kind == "R")
