@@ -88,7 +88,7 @@ def check(
         else DEFAULT_TOLERANCE_PERCENT
     )
     frac = tol / 100.0
-    exact = Exact(analysis)
+    exact = Exact(analysis, answers.grid)
     drawn = _drawn(analysis, answers, exact)
     rows: list[tuple[Answer, float, float | None, bool]] = []
     ranked: dict[int, list] = {}
@@ -97,10 +97,13 @@ def check(
         if a.kind == "check_verdict":  # true or false: no deviation
             rows.append((a, x, None, a.value == x))
             continue
+        band = _band(exact, a)
         if a.kind == "check_delta":  # a percentage: its deviation in percentage points
             deviation = a.value - x
-            rows.append((a, x, deviation, abs(deviation) <= tol))
-            if abs(deviation) > tol:
+            # on the student's grid: the points its diagram value's band gives δ
+            limit = tol if band is None else tol * band
+            rows.append((a, x, deviation, abs(deviation) <= limit))
+            if abs(deviation) > limit:
                 ranked[k] = rank(a.value, x, list(kinematic_candidates(a, exact, x, drawn)))
             continue
         largest = _largest(exact, a)
@@ -109,6 +112,8 @@ def check(
             continue
         deviation = (a.value - x) / abs(x) * 100.0
         passed = abs(deviation) <= tol
+        if band is not None:  # a hand-drawn curve: good to a share of its height
+            passed = abs(a.value - x) <= frac * band
         rows.append((a, x, deviation, passed))
         if not passed:
             cands: list[Candidate] = list(
@@ -157,7 +162,17 @@ def check(
         CheckedValue(a, float(x), None if dev is None else float(dev), bool(passed), named.get(k))
         for k, (a, x, dev, passed) in enumerate(rows)
     )
-    return CheckResult(mechanism or str(analysis.mechanism.path), answers.path, tol, out)
+    grid = None
+    if any(
+        a.kind in ("diagram", "check_V", "check_a", "check_delta", "check_verdict")
+        for a in answers.values
+    ):
+        grid = (
+            (answers.grid.divisions, True)
+            if answers.grid is not None
+            else (analysis.require_diagrams().sheet_check.intervals, False)
+        )
+    return CheckResult(mechanism or str(analysis.mechanism.path), answers.path, tol, out, grid)
 
 
 def check_file(
@@ -170,6 +185,36 @@ def check_file(
     analysis = solve(load(mechanism_path))
     answers = load_answers(answers_path, analysis)
     return check(analysis, answers, tolerance_percent, mechanism=str(mechanism_path))
+
+
+def _band(exact: Exact, a: Answer) -> float | None:
+    """On the student's grid (answers' `divisions`), a diagram's value is
+    judged within the tolerance of the diagram's largest ordinate over the
+    turn, not of its own size (a smooth curve drawn by hand through the
+    chords' mid points is good to a share of its height, and a value near
+    the axis has no relative precision): that largest value, in the answer's
+    terms (mm for an ordinate, m/s or m/s² for the check's diagram column;
+    for δ its largest over |plan| · 100 in percentage points / the tolerance
+    in percent, i.e. largest / |plan|). None: judged as any value."""
+    if exact.grid is None:
+        return None
+    sol = exact.solution
+    n = sol.mechanism.study.positions
+    if a.kind == "diagram" and a.extra[0] in ("V", "a"):
+        col = 0 if a.extra[0] == "V" else 1
+        return max(abs(exact.on_grid(i)[col]) for i in range(n)) / (a.mu or 1.0)
+    if a.kind in ("check_V", "check_a") and a.extra[0] == "diagram":
+        col = 0 if a.extra[1] == "v" else 1
+        return max(abs(exact.on_grid(i)[col]) for i in range(n))
+    if a.kind == "check_delta":
+        col = 0 if a.extra[1] == "v" else 1
+        largest = max(abs(exact.on_grid(i)[col]) for i in range(n))
+        sc = sol.require_diagrams().sheet_check
+        plan = next(
+            v.plan for v in sc.values if v.index == a.where.index and v.quantity == a.extra[1]
+        )
+        return largest / abs(plan)
+    return None
 
 
 def _exact(exact: Exact, a: Answer) -> float:

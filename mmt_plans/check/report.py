@@ -74,6 +74,8 @@ class CheckResult:
     answers: str  # the answers file
     tolerance_percent: float
     values: tuple[CheckedValue, ...]
+    # the grid the diagrams' values were judged on: (divisions, given by the answers)
+    grid: tuple[int, bool] | None = None
 
     @property
     def passed(self) -> bool:
@@ -145,6 +147,9 @@ class CheckResult:
                     assert first.named is not None
                     said = first.named.text(cat, hide_values=True)
                 out.append(f"  {marks[t]} {said}: {labels}")
+        if self.grid is not None:
+            key = "grid_given" if self.grid[1] else "grid_tool"
+            out += ["", cat.word("check", key, divisions=self.grid[0])]
         n, bad = len(self.values), len(self.failures)
         out += [
             "",
@@ -177,7 +182,10 @@ class CheckResult:
                     else v.named.text(cat, hide_values=hide_exact),
                 }
             )
-        return {"passed": bool(self.passed), "values": values}
+        data: dict[str, Any] = {"passed": bool(self.passed), "values": values}
+        if self.grid is not None:
+            data["diagrams_grid"] = {"divisions": self.grid[0], "from_answers": self.grid[1]}
+        return data
 
     def json(self, lang: Language = "en", *, hide_exact: bool = False) -> str:
         data = self.json_data(lang, hide_exact=hide_exact)
