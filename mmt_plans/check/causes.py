@@ -558,7 +558,23 @@ def clear(ranked: list[Ranked], tol: float) -> Ranked | None:
         second = ranked[1].miss
         if second <= tol / 4 and second - ranked[0].miss <= READING:
             return None
+    # a slip among many like it (another position's, point's, segment's,
+    # link's value): a random error lands near one of them by chance, so it
+    # must match to a reading's precision
+    if ranked[0].miss > READING and all(c.key in MANY for c in ranked[0].causes):
+        return None
     return ranked[0]
+
+
+MANY = {
+    "cause_other_position",
+    "cause_other_point",
+    "cause_other_segment",
+    "cause_other_link",
+    "cause_other_reaction",
+    "cause_other_arm",
+    "cause_arm_from",
+}
 
 
 def joins(ranked: list[Ranked], tol: float, confirmed: set[str]) -> Cause | None:

@@ -445,6 +445,8 @@ def diagnose(
         everywhere: dict[int, float] = {}
         admissible = True
         for k, a in enumerate(answers):
+            if model.at is not None and a.where.key != model.at:
+                continue  # made in another construction: the value is unchanged
             if a.kind in _DIAGRAM_KINDS and not _scales_diagrams(model):
                 continue
             try:
