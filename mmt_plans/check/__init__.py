@@ -133,6 +133,7 @@ def check(
         {k for k in failing if answers.values[k].kind != "check_verdict"},
         frac,
         _exact,
+        lambda k: _slips(answers.values[k], exact, rows[k][1], drawn),
     )
     ranked = {k: r for k, r in ranked.items() if k not in named}
     # The rest, value by value: clear matches; a force mistake two of them show is confirmed.
@@ -185,6 +186,15 @@ def check_file(
     analysis = solve(load(mechanism_path))
     answers = load_answers(answers_path, analysis)
     return check(analysis, answers, tolerance_percent, mechanism=str(mechanism_path))
+
+
+def _slips(a: Answer, exact: Exact, x: float, drawn: list[Where]) -> list[Candidate]:
+    """The candidates of a value's single-reading slips."""
+    if a.kind == "check_verdict":
+        return []
+    if a.kind in KINEMATIC:
+        return list(kinematic_candidates(a, exact, x, drawn))
+    return list(force_candidates(a, exact, x))
 
 
 def _band(exact: Exact, a: Answer) -> float | None:

@@ -416,6 +416,7 @@ def diagnose(
     failing: set[int],
     frac: float,
     value_of: Any,
+    slips: Any = None,
 ) -> dict[int, Cause]:
     """The smallest set of mistakes that explains the failing values together
     (README, "Causes"): a model explains a failing value when its
@@ -528,7 +529,7 @@ def diagnose(
             one.setdefault((_family(c.model.key), numbers), c)
         alternatives = list(one.values())
         for k in covered:
-            named[k] = _cause_of(alternatives)
+            named[k] = _cause_of(alternatives, _same_slips(slips, k, first.predicted[k]))
         left -= covered
         if gain > 1:
             chosen.append((alternatives, set(covered)))
@@ -569,7 +570,9 @@ def diagnose(
             named[k] = cause
             left.discard(k)
         for k in group:
-            named[k] = _cause_of(alternatives)
+            named[k] = _cause_of(
+                alternatives, _same_slips(slips, k, alternatives[0].predicted.get(k))
+            )
     return named
 
 
@@ -645,8 +648,27 @@ def _equal(x: float, y: float) -> bool:
     return abs(x - y) <= 1e-9 * max(abs(x), abs(y), 1e-300)
 
 
-def _cause_of(alternatives: list[Explained]) -> Cause:
-    return _either([replace(c.model.cause, group=c.model.key.split("@")[0]) for c in alternatives])
+def _cause_of(alternatives: list[Explained], slips: tuple[Cause, ...] = ()) -> Cause:
+    return _either(
+        [replace(c.model.cause, group=c.model.key.split("@")[0]) for c in alternatives]
+        + list(slips)
+    )
+
+
+# slips of a single reading that are a model's mistake seen in one value
+_SAME_AS_A_MODEL = {"cause_other_position", "cause_other_point", "cause_other_segment"}
+
+
+def _same_slips(slips: Any, k: int, value: float | None) -> tuple[Cause, ...]:
+    """The slips of a single reading (`slips(k)`: their candidates) that give
+    the model's number for the value: named with it ("either … or …")."""
+    if slips is None or value is None:
+        return ()
+    return tuple(
+        c.cause
+        for c in slips(k)
+        if c.cause.group is None and c.cause.key not in _SAME_AS_A_MODEL and _equal(c.value, value)
+    )
 
 
 def _either(causes: list[Cause]) -> Cause:
