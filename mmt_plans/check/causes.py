@@ -574,6 +574,9 @@ MANY = {
     "cause_other_reaction",
     "cause_other_arm",
     "cause_arm_from",
+    # the neighbours of a μ in the standard series: fixed ratios 0.8, 1.25 …
+    "cause_series_multiplied",
+    "cause_series_drawn",
 }
 
 

@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any, Literal
 import numpy as np
 
 from ..errors import MmtError
-from .causes import Cause, Scenario, scenarios
+from .causes import READING, Cause, Scenario, scenarios
 from .quantities import Exact, Where
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -47,7 +47,9 @@ class Construction:
     normal_left_out: tuple[str, ...] = ()  # groups whose a^n are left out ("*": every group)
     eps_reversed: tuple[int, ...] = ()  # links whose a^τ is turned the wrong way
     omega_factor: float = 1.0  # ω1 used / ω1: 30/π for rpm taken as rad/s
-    angle: Literal["", "rad_as_deg", "deg_as_rad"] = ""
+    # the crank angle in degrees taken as radians; counted from the x axis, not
+    # from position 0 (position i at i·360°/n in the drive's sense)
+    angle: Literal["", "rad_as_deg", "deg_as_rad", "from_axis"] = ""
 
 
 @dataclass(frozen=True)
@@ -142,6 +144,10 @@ class Mistaken(Exact):
             return math.degrees(w.phi1_deg) % 360.0, None
         if c is not None and c.angle == "rad_as_deg":
             return math.radians(w.phi1_deg) % 360.0, None
+        if c is not None and c.angle == "from_axis" and w.index is not None:
+            sol = self.solution
+            step = 360.0 / sol.mechanism.study.positions
+            return (sol.sense_sign * step * w.index) % 360.0, None
         return w.phi1_deg, w.index
 
 
@@ -265,11 +271,12 @@ def models(exact: Exact, kin_at: list[Where], force_at: list[Where]) -> list[Mod
         ("rpm_as_rad", Cause("cause_rpm_as_rad"), Construction(omega_factor=rpm)),
         ("rad_as_rpm", Cause("cause_rad_as_rpm"), Construction(omega_factor=1.0 / rpm)),
         ("deg_as_rad", Cause("cause_deg_as_rad"), Construction(angle="deg_as_rad")),
+        ("angle_from_axis", Cause("cause_angle_from_axis"), Construction(angle="from_axis")),
     ]
     places = list({w.key: w for w in [*kin_at, *force_at]}.values())
     for key, cause, c in constructions:
         out.append(Model(key, cause, "kinematics", c))
-        if len(places) > 1 and not key.startswith(("rpm", "rad_as")):
+        if len(places) > 1:
             for w in places:
                 out.append(Model(f"{key}@{w.key}", _at(cause, w), "kinematics", c, at=w.key))
     # two images swapped on a plan (the labels b and d written the other way round)
@@ -515,12 +522,22 @@ def diagnose(
             and all(_equal(c.predicted[k], first.predicted[k]) for k in covered)
         ]
         if gain == 1:
+            # one value near one of many models' numbers may be chance: the
+            # nearest must match to a reading's precision (a force left out:
+            # its 0 exactly) and the next other number be farther by more
             (k,) = covered
-            others = [c for c in candidates if k in c.values]
-            if any(not _equal(c.predicted[k], first.predicted[k]) for c in others):
-                left -= covered  # two mistakes fit it with other numbers: not named here
+            given = answers[k].value
+            others = sorted(
+                (c for c in candidates if k in c.values),
+                key=lambda c: miss(given, c.predicted[k]),
+            )
+            first = others[0]
+            best = miss(given, first.predicted[k])
+            same = [c for c in others if _equal(c.predicted[k], first.predicted[k])]
+            rest = [miss(given, c.predicted[k]) for c in others if c not in same]
+            if best > READING or (rest and rest[0] - best <= READING):
+                left -= covered
                 continue
-            same = [c for c in others]
         # of one kind of mistake (one link's, links 2–n, every link) giving the
         # same numbers for every value, the most specific one
         one: dict[tuple, Explained] = {}
@@ -631,7 +648,9 @@ def _family(key: str) -> str:
 
     base = re.sub(r"_(both|velocity|acceleration)$", "", key.split("@")[0])
     base = re.sub(r"_[\d\-]+$", "", base)
-    return "inertia" if base in ("inertia_others", "inertia_all") else base
+    return {"inertia_others": "inertia", "inertia_all": "inertia", "moments_all": "at_s"}.get(
+        base, base
+    )
 
 
 def _specific(key: str) -> int:

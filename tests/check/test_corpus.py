@@ -50,6 +50,7 @@ class Sheet:
     forces_from: int | None = None  # the force analysis made at this position
     method_at: int | None = None  # the construction's mistake made at this position only
     degrees_as_radians: bool = False  # the crank angle in degrees taken as radians
+    from_axis: bool = False  # position i at i·360°/n from the x axis, not from position 0
     swapped: tuple[str, str] | None = None  # two images swapped on both plans
     slips: bool = False  # a sign swapped, a segment read at the other plan's μ
     unlisted: bool = False  # a third of the values wrong by no listed mistake
@@ -130,6 +131,7 @@ def sheets(kind: str, mech: Mechanism) -> list[Sheet]:
     out += [
         Sheet("angle in degrees as radians", ("deg_as_rad",), (2,), 2, degrees_as_radians=True),
         Sheet("rad/s as rpm", ("rad_as_rpm",), (4,), 4, Method(omega_factor=1 / RPM)),
+        Sheet("angles from the x axis", ("angle_from_axis",), (2, 7), 7, from_axis=True),
         Sheet(
             "M_in left out (F_in at S)",
             ("moments_all", "at_s"),
@@ -224,6 +226,8 @@ def student(mech: Mechanism, kind: str, sheet: Sheet, angles: list[float], rng) 
         angle = angles[drawn_at]
         if sheet.degrees_as_radians:
             angle = math.degrees(angle) % 360.0
+        if sheet.from_axis:
+            angle = _from_axis(mech, len(angles), drawn_at)
         k = mech.kin(angle, method)
         if sheet.swapped is not None:
             b, d = sheet.swapped
@@ -247,6 +251,8 @@ def student(mech: Mechanism, kind: str, sheet: Sheet, angles: list[float], rng) 
     angle = angles[at]
     if sheet.degrees_as_radians:
         angle = math.degrees(angle) % 360.0
+    if sheet.from_axis:
+        angle = _from_axis(mech, len(angles), at)
     k = mech.kin(angle, method)
     wrong = values_of(mech, kind, k, forces(mech, k, sheet.force_method))
     # a force left out of the force plans is a 0 there (the loads table, computed
@@ -261,6 +267,12 @@ def student(mech: Mechanism, kind: str, sheet: Sheet, angles: list[float], rng) 
     given.update({(f, *key): v for key, v in rows.items()})
     text.append(_section("[forces]", f, rows, {"mu_F": MU_F}))
     return "\n".join(text), given
+
+
+def _from_axis(mech: Mechanism, n: int, i: int) -> float:
+    """Position i counted from the x axis in the crank's sense of rotation."""
+    sense = -1.0 if "sense = \"cw\"" in mech.toml else 1.0
+    return (sense * 360.0 * i / n) % 360.0
 
 
 def _spoil(right: dict, wrong: dict, rng, unlisted: bool = False) -> dict:
