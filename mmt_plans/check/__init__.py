@@ -137,17 +137,16 @@ def check(
     )
     # the values left: slips of a single reading (the mistake models had their say)
     ranked = {
-        k: [
-            x
-            for x in (
-                rank(
-                    a.value,
-                    rows[k][1],
-                    [c for c in _slips(a, exact, rows[k][1], drawn) if c.cause.group is None],
-                )
-            )
-        ]
-        for k, a in ((k, answers.values[k]) for k in ranked)
+        k: rank(
+            answers.values[k].value,
+            rows[k][1],
+            [
+                c
+                for c in _slips(answers.values[k], exact, rows[k][1], drawn)
+                if c.cause.group is None
+            ],
+        )
+        for k in ranked
         if k not in named
     }
     # The rest, value by value: clear matches; a force mistake two of them show is confirmed.

@@ -532,10 +532,10 @@ def diagnose(
                 key=lambda c: miss(given, c.predicted[k]),
             )
             first = others[0]
-            best = miss(given, first.predicted[k])
+            nearest = miss(given, first.predicted[k])
             same = [c for c in others if _equal(c.predicted[k], first.predicted[k])]
             rest = [miss(given, c.predicted[k]) for c in others if c not in same]
-            if best > READING or (rest and rest[0] - best <= READING):
+            if nearest > READING or (rest and rest[0] - nearest <= READING):
                 left -= covered
                 continue
         # of one kind of mistake (one link's, links 2–n, every link) giving the
