@@ -32,9 +32,7 @@ from .causes import (
     Cause,
     clear,
     force_candidates,
-    joins,
     kinematic_candidates,
-    pick,
     rank,
 )
 from .mistakes import diagnose
@@ -91,8 +89,7 @@ def check(
     exact = Exact(analysis, answers.grid)
     drawn = _drawn(analysis, answers, exact)
     rows: list[tuple[Answer, float, float | None, bool]] = []
-    ranked: dict[int, list] = {}
-    for k, a in enumerate(answers.values):
+    for a in answers.values:
         x = _exact(exact, a)
         if a.kind == "check_verdict":  # true or false: no deviation
             rows.append((a, x, None, a.value == x))
@@ -103,8 +100,6 @@ def check(
             # on the student's grid: the points its diagram value's band gives δ
             limit = tol if band is None else tol * band
             rows.append((a, x, deviation, abs(deviation) <= limit))
-            if abs(deviation) > limit:
-                ranked[k] = rank(a.value, x, list(kinematic_candidates(a, exact, x, drawn)))
             continue
         largest = _largest(exact, a)
         if abs(x) <= _ZERO * largest:  # an exact zero: within tol of the largest value
@@ -115,13 +110,6 @@ def check(
         if band is not None:  # a hand-drawn curve: good to a share of its height
             passed = abs(a.value - x) <= frac * band
         rows.append((a, x, deviation, passed))
-        if not passed:
-            cands: list[Candidate] = list(
-                kinematic_candidates(a, exact, x, drawn)
-                if a.kind in KINEMATIC
-                else force_candidates(a, exact, x)
-            )
-            ranked[k] = rank(a.value, x, cands)
     # The joint diagnosis: the mistakes recomputed through the construction
     # that explain the failing values together (mistakes.py).
     failing = {k for k, (a, _, _, passed) in enumerate(rows) if not passed}
@@ -135,43 +123,14 @@ def check(
         _exact,
         lambda k: _slips(answers.values[k], exact, rows[k][1], drawn),
     )
-    # the values left: slips of a single reading (the mistake models had their say)
-    ranked = {
-        k: rank(
-            answers.values[k].value,
-            rows[k][1],
-            [
-                c
-                for c in _slips(answers.values[k], exact, rows[k][1], drawn)
-                if c.cause.group is None
-            ],
-        )
-        for k in ranked
-        if k not in named
-    }
-    # The rest, value by value: clear matches; a force mistake two of them show is confirmed.
-    votes: dict[tuple, int] = {}
-    for k, r in ranked.items():
-        best = clear(r, frac)
-        if best is not None:
-            cause = pick(best, set())
-            named[k] = cause
-            if cause.group is not None:
-                for c in best.causes:
-                    if c.group is not None:
-                        key = (answers.values[k].where.key, c.group)
-                        votes[key] = votes.get(key, 0) + 1
-    # Pass 2: the force values of the same analysis that a confirmed mistake
-    # reproduces (causes.joins) join its group.
-    for k, r in ranked.items():
-        w = answers.values[k].where.key
-        confirmed = {g for (where, g), n in votes.items() if where == w and n >= 2}
-        if k in named:
-            named[k] = pick(r[0], confirmed)
+    # The values left, one by one: a slip of a single reading that matches clearly.
+    for k in sorted(failing - set(named)):
+        a, x = answers.values[k], rows[k][1]
+        if a.kind == "check_verdict" or (x == 0.0 and rows[k][2] is None):
             continue
-        joined = joins(r, frac, confirmed)
-        if joined is not None:
-            named[k] = joined
+        best = clear(rank(a.value, x, _slips(a, exact, x, drawn)), frac)
+        if best is not None:
+            named[k] = best.causes[0]
     out = tuple(
         CheckedValue(a, float(x), None if dev is None else float(dev), bool(passed), named.get(k))
         for k, (a, x, dev, passed) in enumerate(rows)
@@ -202,12 +161,13 @@ def check_file(
 
 
 def _slips(a: Answer, exact: Exact, x: float, drawn: list[Where]) -> list[Candidate]:
-    """The candidates of a value's single-reading slips."""
+    """The candidates of a value's single-reading slips (the mistake models'
+    own recomputations are diagnose's)."""
     if a.kind == "check_verdict":
         return []
     if a.kind in KINEMATIC:
         return list(kinematic_candidates(a, exact, x, drawn))
-    return list(force_candidates(a, exact, x))
+    return list(force_candidates(a, exact, x, slips_only=True))
 
 
 def _band(exact: Exact, a: Answer) -> float | None:

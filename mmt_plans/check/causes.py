@@ -1,17 +1,16 @@
-"""Why a value is wrong: only a mistake the tool recomputes.
+"""Why a value is wrong: the slips of a single reading, and the force
+analysis' mistakes as scenarios for the mistake models (mistakes.py).
 
-Each candidate is the student's value after one specific mistake, recomputed
-(the force analysis with the inertia of some links, the inertia moments or
-gravity left out, R0d without F_bal, the lever not turned; a plan's component
-drawn reversed; the other plan's μ or a neighbouring μ of the standard series;
-the image of another point, plan or position; a sign swapped; another pair's
-reaction). A cause is named when the student's value matches its candidate
-within a quarter of the tolerance and better than every other candidate
-(README, "Checking a student's work"). Values of one force analysis that two
-or more such clear matches show to share a mistake join it when they lie
-within the tolerance of its recomputation and nearest to it: the cause is
-said once for the group. Nothing else is guessed: a wrong value with no such
-match is "wrong, cause unknown".
+A slip is one specific mistake in reading one value, recomputed: a sign
+swapped; the other plan's μ or a neighbouring μ of the standard series; the
+image of another point, plan or position; another pair's reaction, another
+link's value, another force's arm or an arm from another point; a plan's
+known component drawn reversed. It is named when the student's value matches
+it within a quarter of the tolerance and clearly better than every other
+candidate (`clear`), a slip among many like it only to a reading's precision
+(README, "Checking a student's work"). Nothing else is guessed: a wrong value
+with no such match and no mistake model explaining it is "wrong, cause
+unknown".
 """
 
 from __future__ import annotations
@@ -221,15 +220,23 @@ def _links(links: list[int]) -> str:
     return ", ".join(str(x) for x in links)
 
 
-def force_candidates(a: Answer, exact: Exact, x: float) -> Iterator[Candidate]:
+def force_candidates(
+    a: Answer, exact: Exact, x: float, *, slips_only: bool = False
+) -> Iterator[Candidate]:
+    """The value with each force mistake made; `slips_only`: only the slips of
+    a single reading (a sign, another pair's reaction, link's value or arm)."""
     sol = exact.solution
     w = a.where
     mu_l = sol.mu_l
     d = sol.mechanism.drive.link
-    is_r0d = a.kind in ("reaction", "reaction_component", "force_plan_mm") and _is_r0d(a, d)
+    is_r0d = (
+        a.kind in ("reaction", "reaction_component", "force_plan_mm")
+        and _is_r0d(a, d)
+        and not slips_only
+    )
     if a.signed:
         yield Candidate(-x, Cause("cause_sign", (("exact", x),)))
-    for sc in scenarios(exact):
+    for sc in [] if slips_only else scenarios(exact):
         if sc.group.startswith("lever") and a.kind not in ("balancing_force_lever", "lever_mm"):
             continue
         fa = exact.forces(w, **dict(sc.options))
@@ -578,22 +585,3 @@ MANY = {
     "cause_series_multiplied",
     "cause_series_drawn",
 }
-
-
-def joins(ranked: list[Ranked], tol: float, confirmed: set[str]) -> Cause | None:
-    """A confirmed mistake of the value's force analysis that reproduces it
-    within the tolerance, and is the nearest candidate or within a quarter of
-    the tolerance (where two mistakes both fit, the confirmed one is taken)."""
-    for k, r in enumerate(ranked):
-        groups = [c for c in r.causes if c.group in confirmed]
-        if groups and r.miss <= tol and (k == 0 or r.miss <= tol / 4):
-            return groups[0]
-    return None
-
-
-def pick(r: Ranked, confirmed: set[str]) -> Cause:
-    """Of the mistakes that give the same value, one the group confirms, else the first."""
-    for c in r.causes:
-        if c.group in confirmed:
-            return c
-    return r.causes[0]
