@@ -5,9 +5,12 @@ file (README.md, "Checking a student's work"), at a position `index` or at
 any crank angle `phi1_deg`: speeds and accelerations, ω and ε, plan segments
 and components with the plans' μ, the output's diagram ordinates, the force
 analysis (reactions and their components, G, F_in, M_in, arms, force-plan
-and lever segments, F_bal, M_bal). Each value is compared with the exact one
-from the Solution; a value outside the tolerance gets a cause only when the
-tool recomputes that mistake and the student's value matches it (causes.py).
+and lever segments, F_bal, M_bal), and the grid of their own differentiation
+of the diagrams. Each value is compared with the exact one from the
+Solution. The failing values get causes by a joint diagnosis: the smallest
+set of mistake models, each a change to the method recomputed through the
+Solution's own machinery, that explains them together (mistakes.py); the
+values left, by the slips of a single reading (causes.py).
 """
 
 from __future__ import annotations

@@ -292,24 +292,23 @@ def _value(fa: ForceAnalysis, a: Answer, mu_l: float) -> float | None:
 
 
 def _arm_candidates(a: Answer, fa: ForceAnalysis, mu_l: float) -> Iterator[Candidate]:
-    """A group's arm h' measured from another point of the link than the inner
-    pin, or another force's arm of the same equation."""
+    """A group's arm h' measured from another point than the inner pin, of
+    the link or of the group's other link, or another force's arm of the
+    group's equations."""
     forces = arm_forces(fa)
     F, P, B, link = forces[a.name]
     scale = 1.0 if a.kind == "group_arm_m" else (a.mu or mu_l)
     state = fa.loads.state
-    pivot = next(
-        (n for n in state.mech.links[link].points if size(_xy(state.point(link, n)) - B) < 1e-9),
-        "B",
-    )
-    for n in state.mech.links[link].points:
-        Q = _xy(state.point(link, n))
+    group = next((g.links for g in fa.groups if link in g.links), (link,))
+    points = {n: _xy(state.point(lid, n)) for lid in group for n in state.mech.links[lid].points}
+    pivot = next((n for n, Q in points.items() if size(Q - B) < 1e-9), "B")
+    for n, Q in points.items():
         if size(Q - B) <= 1e-9 * max(size(P - B), 1e-300):
             continue
         v = arm_about(F, P, Q) / scale
         yield Candidate(v, Cause("cause_arm_from", (("point", n), ("pivot", pivot), ("value", v))))
     for other, (F2, P2, B2, link2) in forces.items():
-        if other != a.name and link2 == link:
+        if other != a.name and link2 in group:
             v = arm_about(F2, P2, B2) / scale
             yield Candidate(v, Cause("cause_other_arm", (("force", other), ("value", v))))
 
@@ -579,8 +578,6 @@ MANY = {
     "cause_other_segment",
     "cause_other_link",
     "cause_other_reaction",
-    "cause_other_arm",
-    "cause_arm_from",
     # the neighbours of a μ in the standard series: fixed ratios 0.8, 1.25 …
     "cause_series_multiplied",
     "cause_series_drawn",

@@ -54,6 +54,7 @@ class Sheet:
     swapped: tuple[str, str] | None = None  # two images swapped on both plans
     slips: bool = False  # a sign swapped, a segment read at the other plan's μ
     unlisted: bool = False  # a third of the values wrong by no listed mistake
+    arm_from: tuple[str, str] | None = None  # (force, point): its arm h' taken about that point
 
 
 POINTS = {
@@ -161,6 +162,17 @@ def sheets(kind: str, mech: Mechanism) -> list[Sheet]:
             slips=True,
         ),
     ]
+    if kind != "shaper":
+        other = {"crosshead": "F", "press": "C"}[kind]
+        out.append(
+            Sheet(
+                f"G2's arm measured from {other} (the group's other link)",
+                ("cause_arm_from",),
+                (1,),
+                2,
+                arm_from=("G2", other),
+            )
+        )
     out += [
         Sheet("wrong by no listed mistake", (), (1, 3), 3, unlisted=True),
         Sheet("wrong by no listed mistake (2)", (), (5,), 4, unlisted=True),
@@ -182,7 +194,9 @@ def sheets(kind: str, mech: Mechanism) -> list[Sheet]:
     return out
 
 
-def values_of(mech: Mechanism, kind: str, k: Kin, fo: Forces | None) -> dict:
+def values_of(
+    mech: Mechanism, kind: str, k: Kin, fo: Forces | None, fm: ForceMethod = ForceMethod()
+) -> dict:
     """Every value a sheet gives from one construction, keyed (section, key, name)."""
     out: dict[tuple[str, str, str], float] = {}
     if fo is None:
@@ -208,11 +222,40 @@ def values_of(mech: Mechanism, kind: str, k: Kin, fo: Forces | None) -> dict:
         out["inertia_forces", str(lk.id)] = fo.F_in[lk.id]
         if lk.J:
             out["inertia_moments", str(lk.id)] = fo.M_in[lk.id]
+    for label, (link, pin) in ARMS[kind].items():
+        out["group_arms_m", label] = _arm(mech, k, label, link, pin, fm)
     out["weights", "5"] = fo.G[5]
     out["force_plan_mm", "R12"] = fo.reactions["R12"] / MU_F
     out["force_plan_mm", "G5"] = fo.G[5] / MU_F
     out["force_plan_mm", "F_in5"] = fo.F_in[5] / MU_F
     return out
+
+
+# the arms h' of the groups' moment equations about their inner pins (README):
+# force label -> (its link, the inner pin)
+ARMS = {
+    "shaper": {"G4": (4, "D"), "F_in4": (4, "D")},
+    "crosshead": {"G2": (2, "B"), "F_in2": (2, "B"), "G4": (4, "D"), "F_in4": (4, "D")},
+    "press": {"G2": (2, "B"), "F_in2": (2, "B"), "G4": (4, "E"), "F_in4": (4, "E")},
+}
+
+
+def _arm(
+    mech: Mechanism, k: Kin, label: str, link: int, about: str, fm: ForceMethod = ForceMethod()
+) -> float:
+    """|(P − B) × F| / |F| of G at S or of F_in at K (shifted by h = M_in / F_in),
+    where the student's method applies them."""
+    lk = next(x for x in mech.links if x.id == link)
+    S = k.P[lk.cm]
+    if label.startswith("G"):
+        at = dict(fm.weight_at).get(link)
+        F, P = -1j * lk.mass * 9.81, S if at is None else k.P[at]
+    else:
+        F = -lk.mass * k.A[lk.cm]
+        M = -lk.J * k.e[link] if fm.moments else 0.0
+        P = S - M * 1j * F / abs(F) ** 2
+    r = P - k.P[about]
+    return abs((r.conjugate() * F).imag) / abs(F)
 
 
 def student(mech: Mechanism, kind: str, sheet: Sheet, angles: list[float], rng) -> tuple[str, dict]:
@@ -254,7 +297,11 @@ def student(mech: Mechanism, kind: str, sheet: Sheet, angles: list[float], rng) 
     if sheet.from_axis:
         angle = _from_axis(mech, len(angles), at)
     k = mech.kin(angle, method)
-    wrong = values_of(mech, kind, k, forces(mech, k, sheet.force_method))
+    wrong = values_of(mech, kind, k, forces(mech, k, sheet.force_method), sheet.force_method)
+    if sheet.arm_from is not None:
+        label, point = sheet.arm_from
+        link = ARMS[kind][label][0]
+        wrong["group_arms_m", label] = _arm(mech, k, label, link, point, sheet.force_method)
     # a force left out of the force plans is a 0 there (the loads table, computed
     # before the plans, still has it: forces() gives G, F_in, M_in regardless)
     kept = sheet.force_method.inertia
@@ -396,6 +443,7 @@ def _key(a) -> tuple:
         "inertia_force": "inertia_forces",
         "inertia_moment": "inertia_moments",
         "force_plan_mm": "force_plan_mm",
+        "group_arm_m": "group_arms_m",
     }.get(a.kind, a.kind)
     return (a.where.index, section, a.name)
 
