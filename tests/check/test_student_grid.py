@@ -128,3 +128,23 @@ def test_pole_distances_give_the_scales(tmp_path):
     (v,) = answers.values
     assert v.mu == np.float64(mu_V) or math.isclose(v.mu, mu_V, rel_tol=1e-12)
     assert check(solution, answers).passed
+
+
+def test_bad_grids_are_refused_with_the_entry_and_a_fix(tmp_path):
+    path = tmp_path / "shaper.toml"
+    path.write_text(MECHANISMS["shaper"].toml, encoding="utf-8")
+    cases = {
+        "divisions = 3\n": ("diagrams.divisions", "4 to 720"),
+        "divisions = 12.5\n": ("diagrams.divisions", "whole number"),
+        "divisions = true\n": ("diagrams.divisions", "whole number"),
+        "H_V_mm = 40\n": ("diagrams.H_V_mm", "add divisions"),
+        "divisions = 12\nH_a_mm = -3\n": ("diagrams.H_a_mm", "positive"),
+        "divisions = 12\nL_mm = \"long\"\n": ("diagrams.L_mm", "number"),
+    }
+    for head, (entry, words) in cases.items():
+        answers = tmp_path / "a.toml"
+        answers.write_text(f'[diagrams]\n{head}mu_S = 0.002\nS_mm = {{ "3" = 10 }}\n', encoding="utf-8")
+        res = CliRunner().invoke(main, ["check", str(path), str(answers)])
+        assert res.exit_code == 2, (head, res.output)
+        assert entry in res.output and words in res.output, (head, res.output)
+        assert "Traceback" not in res.output
