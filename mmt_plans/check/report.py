@@ -98,7 +98,9 @@ class CheckResult:
         rows = []
         for v, t in zip(self.values, texts):
             a = v.answer
-            dev = "-" if v.deviation_percent is None else _signed(cat, v.deviation_percent)
+            # the deviation and the student's value would give the exact one away
+            hidden = hide_exact or v.deviation_percent is None
+            dev = "-" if hidden else _signed(cat, v.deviation_percent)  # type: ignore[arg-type]
             cause = "" if v.passed else marks.get(t, t) if t else w["cause_unknown"]
             if hide_exact and t and not v.passed and t not in marks:
                 cause = v.named.text(cat, hide_values=True) if v.named is not None else cause
@@ -174,7 +176,7 @@ class CheckResult:
                     "exact": None if hide_exact else _finite(v.exact),
                     "given": _finite(a.value),
                     "error_percent": None
-                    if v.deviation_percent is None
+                    if v.deviation_percent is None or hide_exact
                     else _finite(v.deviation_percent),
                     "passed": bool(v.passed),
                     "cause": None

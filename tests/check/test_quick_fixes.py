@@ -42,7 +42,7 @@ def test_json_report_of_every_quantity_kind(tmp_path):
     res = invoke(tmp_path, PRESS, text, "--json", str(report), "--hide-exact", "--lang", "uk")
     assert res.exit_code in (0, 1), res.output
     data = json.loads(report.read_text(encoding="utf-8"))
-    assert all(v["exact"] is None for v in data["values"])
+    assert all(v["exact"] is None and v["error_percent"] is None for v in data["values"])
 
 
 def renamed(tmp_path, old: str, new: str) -> Path:
@@ -123,6 +123,9 @@ def test_hide_exact_shows_verdicts_and_causes_without_values(tmp_path):
     assert hidden.exit_code == 1
     assert "drawn at position 8" in hidden.output
     assert f"{exact:.6g}" in shown and f"{exact:.6g}" not in hidden.output
+    # nor the deviation, which with the student's value gives the exact one
+    deviation = f"{(there - exact) / exact * 100:+.2f}"
+    assert deviation in shown and deviation not in hidden.output
 
 
 def test_hide_exact_hides_the_values_a_cause_quotes(tmp_path):
