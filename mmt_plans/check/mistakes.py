@@ -157,13 +157,39 @@ def _xy(z: complex) -> np.ndarray:
     return arr
 
 
+# a Motion's fields in LinkState's order (e, o, ω, v, ε, a)
+_MOTION = (
+    ("e", complex),
+    ("o", complex),
+    ("w", float),
+    ("v", complex),
+    ("eps", float),
+    ("a", complex),
+)
+
+
+def _one(x: Any, dtype: type) -> np.ndarray:
+    """A Motion's field at the one angle as a read-only array of one entry."""
+    arr: np.ndarray = np.array(np.broadcast_to(np.asarray(x, dtype=dtype), (1,)))
+    arr.setflags(write=False)
+    return arr
+
+
+def _cramer(det: Any, d1: Any, d2: Any, rhs: Any) -> tuple[Any, Any]:
+    """x1, x2 of d1·x1 − d2·x2 = rhs with det = d2 × d1 (the plans' 2×2 system)."""
+    from ..kinematics.geometry import cross
+
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return cross(d2, rhs) / det, cross(d1, rhs) / det
+
+
 def construct(solution: Solution, phi1_deg: float, c: Construction) -> Sweep:
     """The plans at one crank angle, built group by group as the textbook
     draws them (the dyad solvers' own legs, Cramer's rule and `place`), with
     the construction's changes made; a position that does not assemble raises
     its AssemblyError."""
-    from ..kinematics.chain import Chain, Sweep, _state
-    from ..kinematics.dyads.base import GroupPlan, _cramer
+    from ..kinematics.chain import Chain, LinkState, Sweep
+    from ..kinematics.dyads.base import GroupPlan
     from ..kinematics.geometry import cross
 
     chain = solution.chain
@@ -207,7 +233,19 @@ def construct(solution: Solution, phi1_deg: float, c: Construction) -> Sweep:
             failed[name] = bad.copy()
             singular[name] = ~bad & ~np.broadcast_to(sin_angle > 1e-12, phi.shape)
             plans.append(plan)
-    states = {lid: _state(mo, 1) for lid, mo in m.items()}
+    states = {
+        lid: LinkState(
+            e=_one(mo.e, complex),
+            o=_one(mo.o, complex),
+            omega=_one(mo.w, float),
+            v=_one(mo.v, complex),
+            eps=_one(mo.eps, float),
+            a=_one(mo.a, complex),
+            spin=_one(mo.spin, complex),
+            spin_acc=_one(mo.spin_acc, complex),
+        )
+        for lid, mo in m.items()
+    }
     sweep = Sweep(chain, phi, states, failed, singular, solved_plans=tuple(plans))
     problem = sweep.problem(0)
     if problem is not None:
