@@ -296,6 +296,15 @@ def models(exact: Exact, kin_at: list[Where], force_at: list[Where]) -> list[Mod
                 Construction(normal_left_out=("*",)),
             )
         )
+    if len(rotating) > 1:
+        for g in rotating:
+            constructions.append(
+                (
+                    f"normal_left_out_{g}",
+                    Cause("cause_normal_left_out_group", (("group", g),)),
+                    Construction(normal_left_out=(g,)),
+                )
+            )
     for lid in _turning_links(exact):
         constructions.append(
             (

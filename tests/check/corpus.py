@@ -56,8 +56,13 @@ class Method:
 
     coriolis: float = 1.0  # -1: reversed, 0: left out
     normal: float = 1.0  # 0: a^n left out of the groups' equations
+    normal_groups: tuple[str, ...] = ()  # a^n left out of these groups' equations only
     eps_reversed: tuple[int, ...] = ()  # links whose a^τ is turned the wrong way
     omega_factor: float = 1.0  # 30/π: the rpm taken as rad/s
+
+    def n(self, group: str) -> float:
+        """The factor of a^n in a group's equation."""
+        return 0.0 if group in self.normal_groups else self.normal
 
 
 @dataclass
@@ -229,7 +234,7 @@ acts = "always"
         w3, x = solve2(1j * (A - C), -u, k.V["A"])
         # a_A3 = a_A2 + a^k + a^r = a^n + a^τ about C
         cor = method.coriolis * 2j * w3 * x * u
-        e3, _ = solve2(1j * (A - C), -u, k.A["A"] + cor + method.normal * w3 * w3 * (A - C))
+        e3, _ = solve2(1j * (A - C), -u, k.A["A"] + cor + method.n("2-3") * w3 * w3 * (A - C))
         k.w[3], k.e[3] = w3, e3
         k.w[2], k.e[2] = w3, e3  # the block turns with the slotted link
         B = C + self.l3 * u
@@ -241,7 +246,7 @@ acts = "always"
         D = on_line(B, self.l4, 1j * self.yD, 1 + 0j, 1)
         k.P["D"] = D
         w4, v5 = solve2(1j * (D - B), -1 + 0j, -k.V["B"])
-        e4, a5 = solve2(1j * (D - B), -1 + 0j, -k.A["B"] + method.normal * w4 * w4 * (D - B))
+        e4, a5 = solve2(1j * (D - B), -1 + 0j, -k.A["B"] + method.n("4-5") * w4 * w4 * (D - B))
         k.w[4], k.e[4], k.w[5], k.e[5] = w4, e4, 0.0, 0.0
         k.P["S4"] = (B + D) / 2
         k.rotate(4, "B", ["D", "S4"], method)
@@ -354,7 +359,7 @@ acts = "always"
         k.P["B"] = B
         # group 2–3: V_B = V_A + iω2·AB, along the guide
         w2, vB = solve2(1j * (B - A), -1 + 0j, -k.V["A"])
-        e2, aB = solve2(1j * (B - A), -1 + 0j, -k.A["A"] + method.normal * w2 * w2 * (B - A))
+        e2, aB = solve2(1j * (B - A), -1 + 0j, -k.A["A"] + method.n("2-3") * w2 * w2 * (B - A))
         k.w[2], k.e[2], k.w[3], k.e[3] = w2, e2, 0.0, 0.0
         k.P["S2"] = (A + B) / 2
         k.rotate(2, "A", ["B", "S2"], method)
@@ -367,14 +372,14 @@ acts = "always"
         D = circles(F, self.l4, self.C, self.l5, 1)
         k.P["D"] = D
         w4, w5 = solve2(1j * (D - F), -1j * (D - self.C), -k.V["F"])
-        rhs = -k.A["F"] + method.normal * (w4 * w4 * (D - F) - w5 * w5 * (D - self.C))
+        rhs = -k.A["F"] + method.n("4-5") * (w4 * w4 * (D - F) - w5 * w5 * (D - self.C))
         e4, e5 = solve2(1j * (D - F), -1j * (D - self.C), rhs)
         k.w[4], k.e[4], k.w[5], k.e[5] = w4, e4, w5, e5
         k.P["S4"] = (F + D) / 2
         k.P["S5"] = (self.C + D) / 2
         k.rotate(5, "C", ["D", "S5"], method)
         k.rotate(4, "F", ["S4"], method)
-        k.A["D"] = k.A["F"] + (1j * e4 - method.normal * w4 * w4) * (D - F)  # the plan's d
+        k.A["D"] = k.A["F"] + (1j * e4 - method.n("4-5") * w4 * w4) * (D - F)  # the plan's d
         k.P["S1"], k.V["S1"], k.A["S1"] = 0j, 0j, 0j
         k.P["S3"], k.V["S3"], k.A["S3"] = B, k.V["B"], k.A["B"]
         return k
@@ -478,7 +483,7 @@ acts = "always"
         B = circles(A, self.l2, C, self.l3, 1)
         k.P["B"] = B
         w2, w3 = solve2(1j * (B - A), -1j * (B - C), -k.V["A"])
-        rhs = -k.A["A"] + method.normal * (w2 * w2 * (B - A) - w3 * w3 * (B - C))
+        rhs = -k.A["A"] + method.n("2-3") * (w2 * w2 * (B - A) - w3 * w3 * (B - C))
         e2, e3 = solve2(1j * (B - A), -1j * (B - C), rhs)
         k.w[2], k.e[2], k.w[3], k.e[3] = w2, e2, w3, e3
         u3 = (B - C) / abs(B - C)
@@ -487,12 +492,12 @@ acts = "always"
         k.P["S2"] = (A + B) / 2
         k.rotate(3, "C", ["B", "D", "S3"], method)
         k.rotate(2, "A", ["S2"], method)
-        k.A["B"] = k.A["A"] + (1j * e2 - method.normal * w2 * w2) * (B - A)  # the plan's b
+        k.A["B"] = k.A["A"] + (1j * e2 - method.n("2-3") * w2 * w2) * (B - A)  # the plan's b
         D = k.P["D"]
         E = on_line(D, self.l4, self.xE + 0j, 1j, -1)
         k.P["E"] = E
         w4, vE = solve2(1j * (E - D), -1j, -k.V["D"])
-        e4, aE = solve2(1j * (E - D), -1j, -k.A["D"] + method.normal * w4 * w4 * (E - D))
+        e4, aE = solve2(1j * (E - D), -1j, -k.A["D"] + method.n("4-5") * w4 * w4 * (E - D))
         k.w[4], k.e[4], k.w[5], k.e[5] = w4, e4, 0.0, 0.0
         k.P["S4"] = (D + E) / 2
         k.rotate(4, "D", ["S4"], method)

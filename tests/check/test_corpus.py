@@ -134,6 +134,13 @@ def sheets(kind: str, mech: Mechanism) -> list[Sheet]:
         Sheet("rad/s as rpm", ("rad_as_rpm",), (4,), 4, Method(omega_factor=1 / RPM)),
         Sheet("angles from the x axis", ("angle_from_axis",), (2, 7), 7, from_axis=True),
         Sheet(
+            "a^n left out in the last group",
+            ("normal_left_out_4-5",),
+            (3,),
+            3,
+            Method(normal_groups=("4-5",)),
+        ),
+        Sheet(
             "M_in left out (F_in at S)",
             ("moments_all", "at_s"),
             (1,),
