@@ -384,6 +384,33 @@ def models(exact: Exact, kin_at: list[Where], force_at: list[Where]) -> list[Mod
                         instead=other,
                     )
                 )
+    # or at another crank angle: half a turn on, or measured the other way round
+    for w in places:
+        for phi in ((w.phi1_deg + 180.0) % 360.0, (-w.phi1_deg) % 360.0):
+            if any(abs((phi - p.phi1_deg + 180.0) % 360.0 - 180.0) < 1e-6 for p in sol.positions):
+                continue  # a position: modelled above
+            other = exact.where(phi1_deg=phi)
+            fields = (("angle", f"{phi:.6g}"), ("at", _where(w)))
+            if any(w.key == k.key for k in kin_at):
+                out.append(
+                    Model(
+                        f"plans_at_angle_{phi:.6g}@{w.key}",
+                        Cause("cause_plans_at_angle", fields),
+                        "kinematics",
+                        at=w.key,
+                        instead=other,
+                    )
+                )
+            if any(w.key == k.key for k in force_at):
+                out.append(
+                    Model(
+                        f"forces_at_angle_{phi:.6g}@{w.key}",
+                        Cause("cause_forces_at_angle", fields),
+                        "forces",
+                        at=w.key,
+                        instead=other,
+                    )
+                )
     for w in force_at:
         for sc in scenarios(exact):
             # the lever turned the wrong way only swaps F_bal's sign: a sign swapped

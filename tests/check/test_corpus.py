@@ -48,6 +48,8 @@ class Sheet:
     force_method: ForceMethod = ForceMethod()
     plans_from: dict[int, int] = field(default_factory=dict)  # position -> drawn at
     forces_from: int | None = None  # the force analysis made at this position
+    forces_turned: float = 0.0  # … or at its crank angle plus this (degrees)
+    forces_mirrored: bool = False  # … or at minus its crank angle (measured the other way)
     method_at: int | None = None  # the construction's mistake made at this position only
     degrees_as_radians: bool = False  # the crank angle in degrees taken as radians
     from_axis: bool = False  # position i at i·360°/n from the x axis, not from position 0
@@ -87,6 +89,15 @@ def sheets(kind: str, mech: Mechanism) -> list[Sheet]:
         Sheet("rpm as rad/s", ("rpm_as_rad",), (2, 5), 5, Method(omega_factor=RPM)),
         Sheet("plans at another position", ("plans_at_3",), (2,), 5, plans_from={2: 3}),
         Sheet("forces at another position", ("forces_at_6",), (1,), 5, forces_from=6),
+        # half a turn on is another position here (12 and 10 positions)
+        Sheet("forces half a turn on", ("forces_at_",), (1,), 3, forces_turned=180.0),
+        Sheet(
+            "forces at minus the crank angle",
+            ("forces_at_",),
+            (1,),
+            {"shaper": 3, "crosshead": 1, "press": 2}[kind],
+            forces_mirrored=True,
+        ),
         # the cranks carry no inertia (their centres of mass on the pivots, J = 0):
         # "every link" and "links 2–5" are the same mistake
         Sheet(
@@ -298,7 +309,9 @@ def student(mech: Mechanism, kind: str, sheet: Sheet, angles: list[float], rng) 
     right = values_of(mech, kind, mech.kin(angles[f]), forces(mech, mech.kin(angles[f])))
     method = sheet.method if sheet.method_at in (None, f) else Method()
     at = sheet.forces_from if sheet.forces_from is not None else f
-    angle = angles[at]
+    angle = (angles[at] + sheet.forces_turned) % 360.0
+    if sheet.forces_mirrored:
+        angle = -angle % 360.0
     if sheet.degrees_as_radians:
         angle = math.degrees(angle) % 360.0
     if sheet.from_axis:
