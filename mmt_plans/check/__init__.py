@@ -5,9 +5,12 @@ file (README.md, "Checking a student's work"), at a position `index` or at
 any crank angle `phi1_deg`: speeds and accelerations, ω and ε, plan segments
 and components with the plans' μ, the output's diagram ordinates, the force
 analysis (reactions and their components, G, F_in, M_in, arms, force-plan
-and lever segments, F_bal, M_bal). Each value is compared with the exact one
-from the Solution; a value outside the tolerance gets a cause only when the
-tool recomputes that mistake and the student's value matches it (causes.py).
+and lever segments, F_bal, M_bal), and the grid of their own differentiation
+of the diagrams. Each value is compared with the exact one from the
+Solution. The failing values get causes by a joint diagnosis: the smallest
+set of mistake models, each a change to the method recomputed through the
+Solution's own machinery, that explains them together (mistakes.py); the
+values left, by the slips of a single reading (causes.py).
 """
 
 from __future__ import annotations
@@ -32,11 +35,10 @@ from .causes import (
     Cause,
     clear,
     force_candidates,
-    joins,
     kinematic_candidates,
-    pick,
     rank,
 )
+from .mistakes import diagnose
 from .quantities import Answer, Exact, Where, force_value
 from .report import CheckedValue, CheckResult
 
@@ -87,20 +89,20 @@ def check(
         else DEFAULT_TOLERANCE_PERCENT
     )
     frac = tol / 100.0
-    exact = Exact(analysis)
+    exact = Exact(analysis, answers.grid)
     drawn = _drawn(analysis, answers, exact)
     rows: list[tuple[Answer, float, float | None, bool]] = []
-    ranked: dict[int, list] = {}
-    for k, a in enumerate(answers.values):
+    for a in answers.values:
         x = _exact(exact, a)
         if a.kind == "check_verdict":  # true or false: no deviation
             rows.append((a, x, None, a.value == x))
             continue
+        band = _band(exact, a)
         if a.kind == "check_delta":  # a percentage: its deviation in percentage points
             deviation = a.value - x
-            rows.append((a, x, deviation, abs(deviation) <= tol))
-            if abs(deviation) > tol:
-                ranked[k] = rank(a.value, x, list(kinematic_candidates(a, exact, x, drawn)))
+            # on the student's grid: the points its diagram value's band gives δ
+            limit = tol if band is None else tol * band
+            rows.append((a, x, deviation, abs(deviation) <= limit))
             continue
         largest = _largest(exact, a)
         if abs(x) <= _ZERO * largest:  # an exact zero: within tol of the largest value
@@ -108,42 +110,45 @@ def check(
             continue
         deviation = (a.value - x) / abs(x) * 100.0
         passed = abs(deviation) <= tol
+        if band is not None:  # a hand-drawn curve: good to a share of its height
+            passed = abs(a.value - x) <= frac * band
         rows.append((a, x, deviation, passed))
-        if not passed:
-            cands: list[Candidate] = list(
-                kinematic_candidates(a, exact, x, drawn)
-                if a.kind in KINEMATIC
-                else force_candidates(a, exact, x)
-            )
-            ranked[k] = rank(a.value, x, cands)
-    # Pass 1: clear matches; a force mistake two of them show is confirmed.
-    named: dict[int, Cause] = {}
-    votes: dict[tuple, int] = {}
-    for k, r in ranked.items():
-        best = clear(r, frac)
-        if best is not None:
-            cause = pick(best, set())
-            named[k] = cause
-            if cause.group is not None:
-                for c in best.causes:
-                    if c.group is not None:
-                        key = (answers.values[k].where.key, c.group)
-                        votes[key] = votes.get(key, 0) + 1
-    # Pass 2: the force values of the same analysis that a confirmed mistake
-    # reproduces (causes.joins) join its group.
-    for k, r in ranked.items():
-        w = answers.values[k].where.key
-        confirmed = {g for (where, g), n in votes.items() if where == w and n >= 2}
-        if k in named:
-            named[k] = pick(r[0], confirmed)
-            continue
-        joined = joins(r, frac, confirmed)
-        if joined is not None:
-            named[k] = joined
-    out = tuple(
-        CheckedValue(a, x, dev, passed, named.get(k)) for k, (a, x, dev, passed) in enumerate(rows)
+    # The joint diagnosis: the mistakes recomputed through the construction
+    # that explain the failing values together (mistakes.py).
+    failing = {k for k, (a, _, _, passed) in enumerate(rows) if not passed}
+    named: dict[int, Cause] = diagnose(
+        exact,
+        list(answers.values),
+        # the exact values as computed (not the zeros a row shows for them)
+        [x if x or a.kind == "check_verdict" else _exact(exact, a) for a, x, _, _ in rows],
+        {k for k in failing if answers.values[k].kind != "check_verdict"},
+        frac,
+        _exact,
+        lambda k: _slips(answers.values[k], exact, rows[k][1], drawn),
     )
-    return CheckResult(mechanism or str(analysis.mechanism.path), answers.path, tol, out)
+    # The values left, one by one: a slip of a single reading that matches clearly.
+    for k in sorted(failing - set(named)):
+        a, x = answers.values[k], rows[k][1]
+        if a.kind == "check_verdict" or (x == 0.0 and rows[k][2] is None):
+            continue
+        best = clear(rank(a.value, x, _slips(a, exact, x, drawn)), frac)
+        if best is not None:
+            named[k] = best.causes[0]
+    out = tuple(
+        CheckedValue(a, float(x), None if dev is None else float(dev), bool(passed), named.get(k))
+        for k, (a, x, dev, passed) in enumerate(rows)
+    )
+    grid = None
+    if any(
+        a.kind in ("diagram", "check_V", "check_a", "check_delta", "check_verdict")
+        for a in answers.values
+    ):
+        grid = (
+            (answers.grid.divisions, True)
+            if answers.grid is not None
+            else (analysis.require_diagrams().sheet_check.intervals, False)
+        )
+    return CheckResult(mechanism or str(analysis.mechanism.path), answers.path, tol, out, grid)
 
 
 def check_file(
@@ -156,6 +161,46 @@ def check_file(
     analysis = solve(load(mechanism_path))
     answers = load_answers(answers_path, analysis)
     return check(analysis, answers, tolerance_percent, mechanism=str(mechanism_path))
+
+
+def _slips(a: Answer, exact: Exact, x: float, drawn: list[Where]) -> list[Candidate]:
+    """The candidates of a value's single-reading slips (the mistake models'
+    own recomputations are diagnose's)."""
+    if a.kind == "check_verdict":
+        return []
+    if a.kind in KINEMATIC:
+        return list(kinematic_candidates(a, exact, x, drawn))
+    return list(force_candidates(a, exact, x, slips_only=True))
+
+
+def _band(exact: Exact, a: Answer) -> float | None:
+    """On the student's grid (answers' `divisions`), a diagram's value is
+    judged within the tolerance of the diagram's largest ordinate over the
+    turn, not of its own size (a smooth curve drawn by hand through the
+    chords' mid points is good to a share of its height, and a value near
+    the axis has no relative precision): that largest value, in the answer's
+    terms (mm for an ordinate, m/s or m/s² for the check's diagram column;
+    for δ its largest over |plan| · 100 in percentage points / the tolerance
+    in percent, i.e. largest / |plan|). None: judged as any value."""
+    if exact.grid is None:
+        return None
+    sol = exact.solution
+    n = sol.mechanism.study.positions
+    if a.kind == "diagram" and a.extra[0] in ("V", "a"):
+        col = 0 if a.extra[0] == "V" else 1
+        return max(abs(exact.on_grid(i)[col]) for i in range(n)) / (a.mu or 1.0)
+    if a.kind in ("check_V", "check_a") and a.extra[0] == "diagram":
+        col = 0 if a.extra[1] == "v" else 1
+        return max(abs(exact.on_grid(i)[col]) for i in range(n))
+    if a.kind == "check_delta":
+        col = 0 if a.extra[1] == "v" else 1
+        largest = max(abs(exact.on_grid(i)[col]) for i in range(n))
+        sc = sol.require_diagrams().sheet_check
+        plan = next(
+            v.plan for v in sc.values if v.index == a.where.index and v.quantity == a.extra[1]
+        )
+        return largest / abs(plan)
+    return None
 
 
 def _exact(exact: Exact, a: Answer) -> float:

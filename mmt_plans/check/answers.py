@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..errors import MmtError, SpecError, degrees_range, shown
 from ..spec import NAME_MAX, parse_toml, read_text, show_value
-from .quantities import POLE, Answer, Exact, Where, component, reaction_links
+from .quantities import POLE, Answer, Exact, Grid, Where, component, reaction_links
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..forces import ForceAnalysis
@@ -73,6 +73,10 @@ KEYS: dict[str, tuple[str, ...]] = {
         "group_arms_mm",
     ),
     "diagrams": (
+        "divisions",
+        "H_V_mm",
+        "H_a_mm",
+        "L_mm",
         "mu_S",
         "mu_V",
         "mu_a",
@@ -177,6 +181,7 @@ class Answers:
     path: str
     tolerance_percent: float | None  # None: not given in the file
     values: tuple[Answer, ...]
+    grid: Grid | None = None  # the student's own differentiation of the diagrams
 
     @property
     def positions(self) -> tuple[int, ...]:
@@ -338,8 +343,10 @@ class _Reader:
         for k, table in enumerate(_as_list(data.get("forces", [])), start=1):
             entry = "forces" if not isinstance(data["forces"], list) else f"forces[{k}]"
             values += self.forces(table, entry)
+        grid = None
         if "diagrams" in data:
             values += self.diagrams(data["diagrams"], "diagrams")
+            grid = self.grid(data["diagrams"], "diagrams")
         if len(values) > VALUES_MAX:
             raise self.fail(
                 "file",
@@ -353,7 +360,7 @@ class _Reader:
                 "gives no value to check",
                 "add a [[position]] with e.g. velocity = { B = 1.23 }, or [forces]",
             )
-        return Answers(self.path, tolerance, tuple(values))
+        return Answers(self.path, tolerance, tuple(values), grid)
 
     def values_of(self, table: dict, key: str, where: str) -> dict:
         values = table[key]
@@ -492,21 +499,32 @@ class _Reader:
         return None
 
     def segment(self, name: str, kind: str, plan: PlanView, entry: str) -> tuple[str, str]:
-        """The two images a segment like "pb", "ab", "πb", "pis2", "a-s2" joins."""
+        """The two images a segment like "pb", "ab", "πb", "pis2", "a-s2" joins.
+
+        A token written as a pole (p; pi, π or p) is the pole, never an image;
+        a point's image is its name in lower case or as the mechanism writes
+        it, and a point whose lower-case name is a pole's (P, Pi) is written
+        in capitals: "p-P" (or "pP") is the pole to P's image, "P-a" P's
+        image to a's, "p-a" the pole to a's."""
         poles = VELOCITY_POLES if kind == "velocity_plan_mm" else ACCELERATION_POLES
-        images = {p.lower(): p for p in plan.velocity_images}
+        images: dict[str, set[str]] = {}
+        for p in plan.velocity_images:
+            for spelling in {p, p.lower(), p.upper()}:
+                if spelling not in poles:
+                    images.setdefault(spelling, set()).add(p)
 
         def ends(token: str) -> set[str]:
-            return ({POLE} if token in poles else set()) | (
-                {images[token]} if token in images else set()
-            )
+            if token in poles:
+                return {POLE}
+            if token in images:
+                return images[token]
+            return {POLE} if token.lower() in poles else set()
 
-        key = name.lower()
-        if "-" in key:
-            parts = key.split("-")
+        if "-" in name:
+            parts = name.split("-")
             splits = [(parts[0], parts[1])] if len(parts) == 2 else []
         else:
-            splits = [(key[:i], key[i:]) for i in range(1, len(key))]
+            splits = [(name[:i], name[i:]) for i in range(1, len(name))]
         found = {(x, y) for left, right in splits for x in ends(left) for y in ends(right)}
         pole = poles[0] if kind == "velocity_plan_mm" else "pi"
         comps = [
@@ -516,7 +534,9 @@ class _Reader:
         ]
         fix = (
             f"name the two ends by their images: the pole {pole} and lower-case point "
-            f"names ({', '.join(images)}), e.g. {pole}b or ab; a dash may separate them: a-s2; "
+            f"names ({', '.join(sorted({p.lower() for p in plan.velocity_images}))}), e.g. "
+            f"{pole}b or ab (a point named like a pole in capitals: {pole}-P); "
+            "a dash may separate them: a-s2; "
             f"or a component: {', '.join(comps)}"
         )
         plan_name = "velocity plan" if kind == "velocity_plan_mm" else "acceleration plan"
@@ -680,6 +700,40 @@ class _Reader:
         )
 
     # --- [diagrams] -----------------------------------------------------------------
+    def grid(self, table: dict, entry: str) -> Grid | None:
+        """The student's grid: `divisions` of the turn, with the pole distances
+        and the time axis when given (README, "The student's own method")."""
+        if "divisions" not in table:
+            for key in ("H_V_mm", "H_a_mm", "L_mm"):
+                if key in table:
+                    raise self.fail(
+                        f"{entry}.{key}",
+                        "a pole distance or time axis needs the grid it was drawn on",
+                        f"add divisions = <the number of equal parts of the turn> to [{entry}]",
+                    )
+            return None
+        value = table["divisions"]
+        n = self.analysis.mechanism.study.positions
+        if isinstance(value, bool) or not isinstance(value, int) or not 4 <= value <= 720:
+            raise self.fail(
+                f"{entry}.divisions",
+                f"must be a whole number of divisions of the turn, 4 to 720, not {show_value(value)}",
+                f"write divisions = {n} (one per position) or a multiple of it",
+            )
+        if self.analysis.diagrams is None:
+            raise self.fail(
+                f"{entry}.divisions",
+                f"this mechanism has no kinematic diagrams: {self.analysis.diagrams_problem}",
+                "leave out [diagrams]",
+            )
+        sizes = {}
+        for key in ("H_V_mm", "H_a_mm", "L_mm"):
+            if key in table:
+                sizes[key] = self.number(
+                    table[key], f"{entry}.{key}", positive=True, minimum=MU_MIN, maximum=1e6
+                )
+        return Grid(value, sizes.get("H_V_mm"), sizes.get("H_a_mm"), sizes.get("L_mm"))
+
     def diagrams(self, table: Any, entry: str) -> list[Answer]:
         """The output's diagrams: ordinates in mm and the 5 % check against the plans."""
         self.check_keys(table, "diagrams", entry)
@@ -689,7 +743,7 @@ class _Reader:
             if key not in table:
                 continue
             where = f"{entry}.{key}"
-            mu = self.scale(table, scale, entry)
+            mu = self.scale(table, scale, entry) or self.derived(table, scale, entry)
             if mu is None:
                 raise self.fail(
                     where,
@@ -714,6 +768,24 @@ class _Reader:
         if any(k in table for k in ("check_passed", *_CHECK_TABLES)):
             out += self.sheet_check(table, entry)
         return out
+
+    def derived(self, table: dict, scale: str, entry: str) -> float | None:
+        """μV = μS/(μt·H_V), μa = μV/(μt·H_a) (seed 003 §1.7) from the student's
+        pole distances, μt = 60/(n1·L), when the scale itself is not given."""
+        from ..diagrams import DEFAULT_TIME_AXIS_MM, derived_scale, time_scale
+
+        pole = {"mu_V": "H_V_mm", "mu_a": "H_a_mm"}.get(scale)
+        source = {"mu_V": "mu_S", "mu_a": "mu_V"}.get(scale)
+        if pole is None or source is None or pole not in table:
+            return None
+        mu_source = self.scale(table, source, entry) or self.derived(table, source, entry)
+        if mu_source is None:
+            return None
+        L = table.get("L_mm", DEFAULT_TIME_AXIS_MM)
+        H = self.number(table[pole], f"{entry}.{pole}", positive=True, minimum=MU_MIN, maximum=1e6)
+        L = self.number(L, f"{entry}.L_mm", positive=True, minimum=MU_MIN, maximum=1e6)
+        mu_t = time_scale(self.analysis.mechanism.drive.n1_rpm, L)
+        return derived_scale(mu_source, mu_t, H)
 
     def sheet_check(self, table: dict, entry: str) -> list[Answer]:
         """The 5 % check's verdict and its values at the investigated positions."""
@@ -785,8 +857,12 @@ class _Reader:
 
 
 def segment_name(kind: str, segment: tuple[str, str], *, dash: bool = False) -> str:
+    """The segment as an answers file writes it (a point named like a pole in capitals)."""
     pole = "p" if kind == "velocity_plan_mm" else "pi"
-    return ("-" if dash else "").join(pole if e == POLE else e.lower() for e in segment)
+    poles = VELOCITY_POLES if kind == "velocity_plan_mm" else ACCELERATION_POLES
+    return ("-" if dash else "").join(
+        pole if e == POLE else e.lower() if e.lower() not in poles else e.upper() for e in segment
+    )
 
 
 def _inside(phi: float, ranges: tuple[tuple[float, float], ...]) -> bool:

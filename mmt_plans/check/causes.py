@@ -1,21 +1,21 @@
-"""Why a value is wrong: only a mistake the tool recomputes.
+"""Why a value is wrong: the slips of a single reading, and the force
+analysis' mistakes as scenarios for the mistake models (mistakes.py).
 
-Each candidate is the student's value after one specific mistake, recomputed
-(the force analysis with the inertia of some links, the inertia moments or
-gravity left out, R0d without F_bal, the lever not turned; a plan's component
-drawn reversed; the other plan's μ or a neighbouring μ of the standard series;
-the image of another point, plan or position; a sign swapped; another pair's
-reaction). A cause is named when the student's value matches its candidate
-within a quarter of the tolerance and better than every other candidate
-(README, "Checking a student's work"). Values of one force analysis that two
-or more such clear matches show to share a mistake join it when they lie
-within the tolerance of its recomputation and nearest to it: the cause is
-said once for the group. Nothing else is guessed: a wrong value with no such
-match is "wrong, cause unknown".
+A slip is one specific mistake in reading one value, recomputed: a sign
+swapped; the other plan's μ or a neighbouring μ of the standard series; the
+image of another point, plan or position; another pair's reaction, another
+link's value, another force's arm or an arm from another point; a plan's
+known component drawn reversed. It is named when the student's value matches
+it within a quarter of the tolerance and clearly better than every other
+candidate (`clear`), a slip among many like it only to a reading's precision
+(README, "Checking a student's work"). Nothing else is guessed: a wrong value
+with no such match and no mistake model explaining it is "wrong, cause
+unknown".
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -63,6 +63,10 @@ KINEMATIC = {
 }
 
 
+# the fields of a cause that are values of the exact solution (`--hide-exact` hides them)
+REVEALING = ("value", "exact", "mm")
+
+
 @dataclass(frozen=True)
 class Cause:
     """A named mistake: a catalogue key of [check] and its fields (numbers are
@@ -73,12 +77,17 @@ class Cause:
     fields: tuple[tuple[str, Any], ...] = ()
     group: str | None = None
 
-    def text(self, cat: Any) -> str:
+    def text(self, cat: Any, *, hide_values: bool = False) -> str:
+        """In the catalogue's language; `hide_values` leaves out the numbers
+        that would give an exact value away (`--hide-exact`)."""
+        hidden = cat.word("check", "hidden_value")
         fields = {
             k: (
-                cat.number(v, 4)
+                hidden
+                if hide_values and k in REVEALING
+                else cat.number(v, 4)
                 if isinstance(v, float)
-                else v.text(cat)
+                else v.text(cat, hide_values=hide_values)
                 if isinstance(v, Cause)
                 else str(v)
             )
@@ -211,15 +220,23 @@ def _links(links: list[int]) -> str:
     return ", ".join(str(x) for x in links)
 
 
-def force_candidates(a: Answer, exact: Exact, x: float) -> Iterator[Candidate]:
+def force_candidates(
+    a: Answer, exact: Exact, x: float, *, slips_only: bool = False
+) -> Iterator[Candidate]:
+    """The value with each force mistake made; `slips_only`: only the slips of
+    a single reading (a sign, another pair's reaction, link's value or arm)."""
     sol = exact.solution
     w = a.where
     mu_l = sol.mu_l
     d = sol.mechanism.drive.link
-    is_r0d = a.kind in ("reaction", "reaction_component", "force_plan_mm") and _is_r0d(a, d)
+    is_r0d = (
+        a.kind in ("reaction", "reaction_component", "force_plan_mm")
+        and _is_r0d(a, d)
+        and not slips_only
+    )
     if a.signed:
         yield Candidate(-x, Cause("cause_sign", (("exact", x),)))
-    for sc in scenarios(exact):
+    for sc in [] if slips_only else scenarios(exact):
         if sc.group.startswith("lever") and a.kind not in ("balancing_force_lever", "lever_mm"):
             continue
         fa = exact.forces(w, **dict(sc.options))
@@ -275,24 +292,23 @@ def _value(fa: ForceAnalysis, a: Answer, mu_l: float) -> float | None:
 
 
 def _arm_candidates(a: Answer, fa: ForceAnalysis, mu_l: float) -> Iterator[Candidate]:
-    """A group's arm h' measured from another point of the link than the inner
-    pin, or another force's arm of the same equation."""
+    """A group's arm h' measured from another point than the inner pin, of
+    the link or of the group's other link, or another force's arm of the
+    group's equations."""
     forces = arm_forces(fa)
     F, P, B, link = forces[a.name]
     scale = 1.0 if a.kind == "group_arm_m" else (a.mu or mu_l)
     state = fa.loads.state
-    pivot = next(
-        (n for n in state.mech.links[link].points if size(_xy(state.point(link, n)) - B) < 1e-9),
-        "B",
-    )
-    for n in state.mech.links[link].points:
-        Q = _xy(state.point(link, n))
+    group = next((g.links for g in fa.groups if link in g.links), (link,))
+    points = {n: _xy(state.point(lid, n)) for lid in group for n in state.mech.links[lid].points}
+    pivot = next((n for n, Q in points.items() if size(Q - B) < 1e-9), "B")
+    for n, Q in points.items():
         if size(Q - B) <= 1e-9 * max(size(P - B), 1e-300):
             continue
         v = arm_about(F, P, Q) / scale
         yield Candidate(v, Cause("cause_arm_from", (("point", n), ("pivot", pivot), ("value", v))))
     for other, (F2, P2, B2, link2) in forces.items():
-        if other != a.name and link2 == link:
+        if other != a.name and link2 in group:
             v = arm_about(F2, P2, B2) / scale
             yield Candidate(v, Cause("cause_other_arm", (("force", other), ("value", v))))
 
@@ -514,7 +530,8 @@ def rank(value: float, exact_value: float, candidates: list[Candidate]) -> list[
     to the exact value explains nothing."""
     merged: list[tuple[float, list[Cause]]] = []
     for c in candidates:
-        if not np.isfinite(c.value) or c.value == 0:
+        # a zero candidate stays: a force left out is a 0 in the student's plan
+        if not np.isfinite(c.value):
             continue
         if abs(c.value - exact_value) <= SAME * max(abs(exact_value), abs(c.value)):
             continue
@@ -524,9 +541,17 @@ def rank(value: float, exact_value: float, candidates: list[Candidate]) -> list[
                 break
         else:
             merged.append((c.value, [c.cause]))
-    out = [Ranked(abs(value - v) / abs(v), tuple(causes)) for v, causes in merged]
+    out = [Ranked(miss(value, v), tuple(causes)) for v, causes in merged]
     out.sort(key=lambda r: r.miss)
     return out
+
+
+def miss(value: float, candidate: float) -> float:
+    """|value − candidate| / |candidate|; against a zero candidate, 0 for a
+    zero (the force left out) and infinitely far for anything else."""
+    if candidate == 0.0:
+        return 0.0 if value == 0.0 else math.inf
+    return abs(value - candidate) / abs(candidate)
 
 
 def clear(ranked: list[Ranked], tol: float) -> Ranked | None:
@@ -539,23 +564,21 @@ def clear(ranked: list[Ranked], tol: float) -> Ranked | None:
         second = ranked[1].miss
         if second <= tol / 4 and second - ranked[0].miss <= READING:
             return None
+    # a slip among many like it (another position's, point's, segment's,
+    # link's value): a random error lands near one of them by chance, so it
+    # must match to a reading's precision
+    if ranked[0].miss > READING and all(c.key in MANY for c in ranked[0].causes):
+        return None
     return ranked[0]
 
 
-def joins(ranked: list[Ranked], tol: float, confirmed: set[str]) -> Cause | None:
-    """A confirmed mistake of the value's force analysis that reproduces it
-    within the tolerance, and is the nearest candidate or within a quarter of
-    the tolerance (where two mistakes both fit, the confirmed one is taken)."""
-    for k, r in enumerate(ranked):
-        groups = [c for c in r.causes if c.group in confirmed]
-        if groups and r.miss <= tol and (k == 0 or r.miss <= tol / 4):
-            return groups[0]
-    return None
-
-
-def pick(r: Ranked, confirmed: set[str]) -> Cause:
-    """Of the mistakes that give the same value, one the group confirms, else the first."""
-    for c in r.causes:
-        if c.group in confirmed:
-            return c
-    return r.causes[0]
+MANY = {
+    "cause_other_position",
+    "cause_other_point",
+    "cause_other_segment",
+    "cause_other_link",
+    "cause_other_reaction",
+    # the neighbours of a μ in the standard series: fixed ratios 0.8, 1.25 …
+    "cause_series_multiplied",
+    "cause_series_drawn",
+}

@@ -74,6 +74,8 @@ class CheckResult:
     answers: str  # the answers file
     tolerance_percent: float
     values: tuple[CheckedValue, ...]
+    # the grid the diagrams' values were judged on: (divisions, given by the answers)
+    grid: tuple[int, bool] | None = None
 
     @property
     def passed(self) -> bool:
@@ -83,7 +85,9 @@ class CheckResult:
     def failures(self) -> tuple[CheckedValue, ...]:
         return tuple(v for v in self.values if not v.passed)
 
-    def text(self, lang: Language = "en") -> str:
+    def text(self, lang: Language = "en", *, hide_exact: bool = False) -> str:
+        """The table; `hide_exact` leaves out the exact values (a student
+        checking their work before the key is out)."""
         from ..report import table
 
         cat = catalogue(lang)
@@ -94,14 +98,22 @@ class CheckResult:
         rows = []
         for v, t in zip(self.values, texts):
             a = v.answer
-            dev = "-" if v.deviation_percent is None else _signed(cat, v.deviation_percent)
+            # the deviation and the student's value would give the exact one away
+            hidden = hide_exact or v.deviation_percent is None
+            dev = "-" if hidden else _signed(cat, v.deviation_percent)  # type: ignore[arg-type]
             cause = "" if v.passed else marks.get(t, t) if t else w["cause_unknown"]
+            if hide_exact and t and not v.passed and t not in marks:
+                cause = v.named.text(cat, hide_values=True) if v.named is not None else cause
             rows.append(
                 [
                     _where(cat, a),
                     label(cat, a),
                     cat.unit(UNITS[a.kind][0]) if UNITS[a.kind][0] else "",
-                    _yes_no(cat, v.exact) if a.kind == "check_verdict" else _num(cat, v.exact),
+                    "-"
+                    if hide_exact
+                    else _yes_no(cat, v.exact)
+                    if a.kind == "check_verdict"
+                    else _num(cat, v.exact),
                     _yes_no(cat, a.value) if a.kind == "check_verdict" else _num(cat, a.value),
                     dev,
                     w["pass"] if v.passed else w["fail"],
@@ -131,7 +143,15 @@ class CheckResult:
                 labels = ", ".join(
                     label(cat, v.answer) for v, tt in zip(self.values, texts) if tt == t
                 )
-                out.append(f"  {marks[t]} {t}: {labels}")
+                said = t
+                if hide_exact:
+                    first = next(v for v, tt in zip(self.values, texts) if tt == t)
+                    assert first.named is not None
+                    said = first.named.text(cat, hide_values=True)
+                out.append(f"  {marks[t]} {said}: {labels}")
+        if self.grid is not None:
+            key = "grid_given" if self.grid[1] else "grid_tool"
+            out += ["", cat.word("check", key, divisions=self.grid[0])]
         n, bad = len(self.values), len(self.failures)
         out += [
             "",
@@ -140,7 +160,9 @@ class CheckResult:
         ]
         return "\n".join(out)
 
-    def json_data(self, lang: Language = "en") -> dict[str, Any]:
+    def json_data(self, lang: Language = "en", *, hide_exact: bool = False) -> dict[str, Any]:
+        """The report as JSON data; `hide_exact`: `exact` null and the causes
+        without the values they would reveal."""
         cat = catalogue(lang)
         values = []
         for v in self.values:
@@ -151,19 +173,25 @@ class CheckResult:
                     "position": None if a.kind == "check_verdict" else a.where.index,
                     "phi1_deg": None if a.kind == "check_verdict" else _finite(a.where.phi1_deg),
                     "unit": UNITS[a.kind][1],
-                    "exact": _finite(v.exact),
+                    "exact": None if hide_exact else _finite(v.exact),
                     "given": _finite(a.value),
                     "error_percent": None
-                    if v.deviation_percent is None
+                    if v.deviation_percent is None or hide_exact
                     else _finite(v.deviation_percent),
-                    "passed": v.passed,
-                    "cause": None if v.named is None or v.passed else v.named.text(cat),
+                    "passed": bool(v.passed),
+                    "cause": None
+                    if v.named is None or v.passed
+                    else v.named.text(cat, hide_values=hide_exact),
                 }
             )
-        return {"passed": self.passed, "values": values}
+        data: dict[str, Any] = {"passed": bool(self.passed), "values": values}
+        if self.grid is not None:
+            data["diagrams_grid"] = {"divisions": self.grid[0], "from_answers": self.grid[1]}
+        return data
 
-    def json(self, lang: Language = "en") -> str:
-        return json.dumps(self.json_data(lang), ensure_ascii=False, indent=2) + "\n"
+    def json(self, lang: Language = "en", *, hide_exact: bool = False) -> str:
+        data = self.json_data(lang, hide_exact=hide_exact)
+        return json.dumps(data, ensure_ascii=False, indent=2) + "\n"
 
 
 # The words in a label (answers.py writes them in English for the JSON's
@@ -183,8 +211,13 @@ _LABEL_WORDS = {
 
 
 def label(cat: Any, a: Answer) -> str:
-    """The answer's label in the catalogue's language."""
+    """The answer's label in the catalogue's language, its symbols as the
+    sheets write them (ω2, ε2, F_зр)."""
     text = a.label
+    if a.kind in ("omega", "eps"):
+        text = text.replace(a.kind, cat.word("check", "l_" + a.kind), 1)
+    bal = cat.words("symbol_indices")["bal"]
+    text = text.replace("F_bal", f"F_{bal}").replace("M_bal", f"M_{bal}")
     for word, key in _LABEL_WORDS.items():
         if word in text:
             text = text.replace(word, cat.word("check", key))

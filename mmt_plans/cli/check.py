@@ -2,7 +2,8 @@
 
 Exit code 0 when every value is within the tolerance, 1 when some is not, 2
 for a bad mechanism or answers file (reports_errors). `--json REPORT` writes
-the verdict as JSON too; `--lang uk` prints the table in Ukrainian."""
+the verdict as JSON too; `--lang uk` prints the table in Ukrainian; `--hide-exact` leaves the exact
+values out of both."""
 
 from __future__ import annotations
 
@@ -37,9 +38,21 @@ from .options import tolerance_percent
     "(- for standard output, without the table).",
 )
 @click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
+@click.option(
+    "--hide-exact",
+    is_flag=True,
+    default=False,
+    help="Verdicts and causes without the exact values (JSON exact: null), "
+    "for students checking their own work.",
+)
 @reports_errors
 def check(
-    file: Path, answers: Path, tolerance: float | None, json_path: Path | None, lang: str
+    file: Path,
+    answers: Path,
+    tolerance: float | None,
+    json_path: Path | None,
+    lang: str,
+    hide_exact: bool,
 ) -> None:
     """Check the values of ANSWERS (a student's hand drawing) against FILE's exact ones."""
     from ..check import check_file
@@ -49,8 +62,8 @@ def check(
         check_output(json_path, stdout=True)
     result = check_file(file, answers, tolerance)
     if json_path is not None:
-        write_output(json_path, result.json(lang))  # type: ignore[arg-type]
+        write_output(json_path, result.json(lang, hide_exact=hide_exact))  # type: ignore[arg-type]
     if json_path is None or str(json_path) != STDOUT:  # standard output carries the JSON alone
-        click.echo(result.text(lang))  # type: ignore[arg-type]
+        click.echo(result.text(lang, hide_exact=hide_exact))  # type: ignore[arg-type]
     if not result.passed:
         sys.exit(1)

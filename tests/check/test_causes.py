@@ -100,13 +100,15 @@ def test_inertia_left_out_by_a_crank_turning_slowly(tmp_path, example):
             assert math.isclose(v.exact, v.answer.value, rel_tol=0.05)
             continue
         assert v.group in ("inertia_others", "inertia_all"), (v.answer.label, v.cause)
-    assert by_label(res)["F_bal (plans)"].cause_key == "cause_inertia_links"
-    # The crank's own inertia force is radial: only R01 tells the two apart.
+    # The crank's own inertia force is radial: only R01 tells "links 2–5" from
+    # "every link"; the joint diagnosis names the one mistake that explains
+    # every failing value, R01 too (issue 23; it named links 2–5 for F_bal).
+    assert by_label(res)["F_bal (plans)"].cause_key == "cause_inertia_all"
     assert by_label(res)["R01"].group == "inertia_all"
     assert sum(not v.passed for v in res.values) >= 5
     # the cause is said once for the group in the text
     text = res.text()
-    assert text.count("inertia forces and moments of links 2–5 left out") == 1
+    assert text.count("inertia forces and moments of every link left out") == 1
     assert fa.balancing_force_plans != pytest.approx(wrong["balancing_force_plans"], rel=0.05)
 
 
@@ -349,10 +351,15 @@ def test_seed002_printed_values(example, tmp_path):
     ]
     assert all(v.passed for v in res.values if v.answer.kind in mmt_plans.check.causes.KINEMATIC)
     assert kinematic
+    # the crank's inertia force is radial: "links 2–5" and "every link" give the
+    # same numbers for these values, and both are named (issue 23's rule)
     for label in ("F_bal (plans)", "F_bal (lever)", "R24", "R05", "R12", "R03"):
         v = values[label]
-        assert not v.passed and v.group == "inertia_others", (label, v.cause)
-        assert v.cause == "inertia forces and moments of links 2–5 left out"
+        assert not v.passed and v.group == "either", (label, v.cause)
+        assert v.cause == (
+            "either inertia forces and moments of links 2–5 left out"
+            " or inertia forces and moments of every link left out"
+        )
     r01 = values["R01"]
     assert not r01.passed and r01.cause_key == "cause_r0d_without_fbal_and"
     assert r01.cause.startswith("R01 from the polygon of link 1 without F_bal")
