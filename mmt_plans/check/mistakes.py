@@ -390,12 +390,12 @@ def models(exact: Exact, kin_at: list[Where], force_at: list[Where]) -> list[Mod
             if any(abs((phi - p.phi1_deg + 180.0) % 360.0 - 180.0) < 1e-6 for p in sol.positions):
                 continue  # a position: modelled above
             other = exact.where(phi1_deg=phi)
-            fields = (("angle", f"{phi:.6g}"), ("at", _where(w)))
+            at_angle: tuple[tuple[str, Any], ...] = (("angle", f"{phi:.6g}"), ("at", _where(w)))
             if any(w.key == k.key for k in kin_at):
                 out.append(
                     Model(
                         f"plans_at_angle_{phi:.6g}@{w.key}",
-                        Cause("cause_plans_at_angle", fields),
+                        Cause("cause_plans_at_angle", at_angle),
                         "kinematics",
                         at=w.key,
                         instead=other,
@@ -405,7 +405,7 @@ def models(exact: Exact, kin_at: list[Where], force_at: list[Where]) -> list[Mod
                 out.append(
                     Model(
                         f"forces_at_angle_{phi:.6g}@{w.key}",
-                        Cause("cause_forces_at_angle", fields),
+                        Cause("cause_forces_at_angle", at_angle),
                         "forces",
                         at=w.key,
                         instead=other,
@@ -449,8 +449,11 @@ def _at(cause: Cause, w: Where) -> Cause:
     return Cause("cause_at_position", (("what", cause), ("position", _where(w))))
 
 
-def _where(w: Where) -> str:
-    return str(w.index) if w.index is not None else f"φ1 = {w.phi1_deg:g}°"
+def _where(w: Where) -> Cause:
+    """ "position 2" or "φ1 = 210.862°", in the report's language."""
+    if w.index is not None:
+        return Cause("at_index", (("index", str(w.index)),))
+    return Cause("at_phi", (("phi", f"{w.phi1_deg:g}"),))
 
 
 def _groups(exact: Exact) -> tuple[list[str], list[str]]:
@@ -606,6 +609,10 @@ def diagnose(
                 key=lambda c: miss(given, c.predicted[k]),
             )
             first = others[0]
+            if first.model.instead is not None:
+                # another position's or angle's value is one of many: a slip (causes.py)
+                left -= covered
+                continue
             nearest = miss(given, first.predicted[k])
             same = [c for c in others if _equal(c.predicted[k], first.predicted[k])]
             rest = [miss(given, c.predicted[k]) for c in others if c not in same]
