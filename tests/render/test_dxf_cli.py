@@ -30,7 +30,7 @@ def test_draw_writes_both_sheets_as_dxf(tmp_path):
         lo, hi = doc.header["$LIMMIN"], doc.header["$LIMMAX"]
         assert (tuple(lo)[:2], tuple(hi)[:2]) == ((0.0, 0.0), (841.0, 594.0))
         msp = doc.modelspace()
-        texts = [e.dxf.text for e in msp.query("TEXT")]
+        texts = [e.dxf.text for e in msp.query("TEXT")] + [e.text for e in msp.query("MTEXT")]
         assert len(texts) > 50 and any("μ" in t for t in texts)
         layers = {e.dxf.layer for e in msp}
         assert {"MAIN", "THIN", "TEXT"} <= layers
