@@ -10,7 +10,8 @@ question per quantity. Every answer is rounded to its `significant` figures
 tolerances are given in percent and written as Moodle's absolute tolerances,
 |rounded value|·percent/100 (to 6 significant figures); an answer of zero gets
 percent/100 of its quantity's `scale` (Moodle cannot take a relative tolerance
-of zero), or `zero_tolerance` where no scale is given.
+of zero), or `zero_tolerance` where no scale is given; a value under
+ZERO_OF_SCALE of its scale is such a zero (an exact zero's rounding error).
 
 Category paths are $course$/top/<quiz>/<category>: names without control or
 format characters (a CR, a bidirectional override), a "/" inside a name
@@ -33,6 +34,11 @@ __all__ = ["NumericalAnswer", "QuizQuestion", "QuizCategory", "Quiz", "moodle_xm
 
 # characters XML 1.0 does not allow (C0 controls but tab, newline, return; U+FFFE, U+FFFF)
 _NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")
+
+
+# a value under this fraction of its quantity's scale is an exact zero computed
+# with rounding errors
+ZERO_OF_SCALE = 1e-9
 
 
 def clean(text: str) -> str:
@@ -74,6 +80,8 @@ class NumericalAnswer:
         """The answer Moodle gets: the value to `figures` significant figures."""
         if not math.isfinite(self.value):
             raise ValueError(f"{self.label}: the value must be finite")
+        if self.scale is not None and abs(self.value) < abs(self.scale) * ZERO_OF_SCALE:
+            return 0.0  # a rounding error of an exact zero (ε of a link at rest...)
         return significant(self.value, self.figures)
 
     def tolerance(self) -> float:
