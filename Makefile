@@ -7,7 +7,7 @@ STAMP   := $(VENV)/.installed
 SAMPLE  ?= samples/six_link_press.toml
 OUT     ?= out
 
-.PHONY: run test bench lint fonts browser clean fuzz
+.PHONY: run test bench lint fonts browser clean fuzz cad-check
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -37,6 +37,18 @@ browser:
 	    (apt-get install -y -q $(BROWSER_PACKAGES) >/dev/null 2>&1 || \
 	     (apt-get update -q >/dev/null 2>&1 && apt-get install -y -q $(BROWSER_PACKAGES) >/dev/null 2>&1)) ; } || \
 	  echo "browser not installed ($(BROWSER_PACKAGES)): the browser test skips"
+
+# The DXF through a real CAD program: LibreCAD (Debian's package) prints both
+# sheets and test drawings to PDF, read back as pixels (tests/render/
+# test_dxf_librecad.py); its prints of both sheets go to docs/librecad/.
+CAD_PACKAGES := librecad poppler-utils
+cad-check: $(STAMP)
+	@{ command -v librecad >/dev/null && command -v pdftoppm >/dev/null; } || \
+	  { command -v apt-get >/dev/null && [ "$$(id -u)" = 0 ] && \
+	    (apt-get install -y -q $(CAD_PACKAGES) >/dev/null 2>&1 || \
+	     (apt-get update -q >/dev/null 2>&1 && apt-get install -y -q $(CAD_PACKAGES) >/dev/null 2>&1)) ; } || \
+	  echo "$(CAD_PACKAGES) not installed: the LibreCAD tests will be skipped"
+	MMT_CAD_DOCS=docs/librecad $(BIN)/python -m pytest tests/render/test_dxf_librecad.py -v -rs
 
 run: $(STAMP) fonts
 	$(BIN)/mmt-plans analyze $(SAMPLE) --json $(OUT)/results.json

@@ -58,6 +58,9 @@ __all__ = [
 MANIFEST_NAME = ".mmt-batch.json"
 MANIFEST_SCHEMA = "mmt_plans/batch-item@1"
 SUMMARY_NAME = "summary.csv"
+QUIZ_XML, QUIZ_GIFT = "quiz.xml", "quiz.gift"  # batch --moodle
+# names in OUT that no item's folder takes (an input quiz.xml.toml goes to OUT/quiz.xml-2)
+RESERVED_NAMES = frozenset({SUMMARY_NAME, QUIZ_XML, QUIZ_GIFT})
 SHEET_FORMATS = ("svg", "pdf")  # the sheets a batch writes unless --format says otherwise
 
 SUMMARY_HEADERS = [
@@ -173,7 +176,7 @@ def plan_outputs(files: Sequence[Path], out: Path) -> list[Path]:
     final: list[Path] = []
     for rel in rels:
         key, k = str(rel).lower(), 1
-        while key in taken or key == SUMMARY_NAME:
+        while key in taken or key in RESERVED_NAMES:
             k += 1
             key = f"{str(rel).lower()}-{k}"
         taken.add(key)
@@ -392,9 +395,15 @@ def _process_file(
         from .render.recording import RecordingBackend
         from .sheets.schematic import sketch_schematic
 
-        recording = RecordingBackend(110.0, 80.0)
+        # with its names and the frame's dimensions: the quiz gives the rest
+        recording = RecordingBackend(140.0, 100.0)
         sketch_schematic(
-            solution, recording.look, cast("Language", lang), width_mm=110.0, height_mm=80.0
+            solution,
+            recording.look,
+            cast("Language", lang),
+            width_mm=140.0,
+            height_mm=100.0,
+            dimensions=True,
         ).replay(recording)
         written.append(str(write_drawing(recording, out / SCHEME_NAME, "png")))
 

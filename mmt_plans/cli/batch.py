@@ -106,13 +106,14 @@ def batch(
         f"{len(results) - failed} done{kept_note}, {failed} failed; summary written to {csv_path}"
     )
     if moodle:
-        from ..files import write_bytes_atomic, write_text_atomic
+        from ..batch import QUIZ_GIFT, QUIZ_XML
+        from ..files import write_bytes_atomic
         from ..lms import gift, moodle_xml
         from ..lms.keys import quiz_from_keys
 
         done = [(Path(r.path), Path(r.out_dir)) for r in results if r.ok]
-        quiz = quiz_from_keys(done, lang, tolerance, out_dir.name or "mmt_plans")  # type: ignore[arg-type]
-        click.echo(f"quiz written to {write_bytes_atomic(out_dir / 'quiz.xml', moodle_xml(quiz))}")
-        click.echo(f"quiz written to {write_text_atomic(out_dir / 'quiz.gift', gift(quiz))}")
+        quiz = quiz_from_keys(done, lang, tolerance)  # type: ignore[arg-type]
+        for name, body in ((QUIZ_XML, moodle_xml(quiz)), (QUIZ_GIFT, gift(quiz).encode())):
+            click.echo(f"quiz written to {write_bytes_atomic(out_dir / name, body)}")
     if failed:
         sys.exit(1)

@@ -53,8 +53,10 @@ def hatched_base(sk: Sketch, p: np.ndarray, width: float = 8.0, down: float = 4.
 
 
 def hatched_guide(sk: Sketch, a: np.ndarray, b: np.ndarray, u: np.ndarray, offset: float) -> None:
-    """A slider's guide: a main line `offset` mm under the slider's path, hatched below."""
+    """A slider's guide: a main line `offset` mm under the slider's path, hatched
+    below, and the path itself as the guide's centre line (dash-dot, GOST 2.303)."""
     n = np.array([-u[1], u[0]])
+    sk.line(a - 2.0 * u, b + 2.0 * u, "dashdot")
     a, b = a - offset * n, b - offset * n
     sk.line(a, b, "main")
     length = float(np.hypot(*(b - a)))

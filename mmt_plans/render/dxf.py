@@ -13,15 +13,27 @@ Layers (GOST 2.303 line types), every entity BYLAYER:
     DASHDOT  linetype GOST_DASHDOT (dash 15, gap, dot, gap: a DXF dot is a
              0-length element; the look's dot length goes to the gaps beside
              it, so the period stays the look's)
-    TEXT     lettering: TEXT entities in the text style GOST
-    FILL     solid HATCHes: fill "black" BYLAYER (colour 7), fill "white" in
-             true-colour white, drawn after what lies under it and before its
-             own outline, so that it hides what is under it (a pin over links)
+    TEXT     lettering: a TEXT per plain text, an MTEXT per label with
+             indices (`rich_text`: "V_{BA}" is one MTEXT whose index is a
+             stack, \\S^BA;, so the index follows its letter in any font)
+    FILL     fill "black": solid HATCHes BYLAYER (colour 7, arrowheads);
+             fill "white": a WIPEOUT (a circle as a 64-gon), DXF's own mask,
+             drawn after what lies under it and before its own outline, so
+             that it hides what is under it (a pin over links). A wipeout is
+             the background colour in every output, monochrome too (a white
+             HATCH prints black there); a program that does not draw
+             wipeouts (LibreCAD 2.2) shows the lines under the pin instead.
+             The wipeouts' frames are off ($WIPEOUTFRAME 0).
 
 Lineweights are the nearest valid DXF lineweights to the look's widths.
 
-Text style GOST: font file osifont.ttf (the look's first family), oblique =
-the look's slant. A text's height is the lettering size (capital height, mm),
+Text style TEXT_STYLE, "OpenGostTypeA-Regular": LibreCAD and QCAD pick a
+text's font by its style's name, and ship OpenGost Type A (GOST 2.304 type
+A, with Cyrillic and Greek) under this name; the style's font file is
+DejaVuSans.ttf, with Cyrillic and Greek and present on nearly every system,
+for the programs that read TrueType files (the look's osifont is in no CAD
+program's fonts: LibreCAD showed every Cyrillic and Greek letter as a
+diamond). Oblique = the look's slant. A text's height is the lettering size (capital height, mm),
 its width factor the look's squeeze for max_width, its alignment point `pos`
 (DXF places oblique text by its baseline; the SVG renderer's shift that keeps
 slanted capitals inside a cell is not applied). Content is written safely:
@@ -64,27 +76,46 @@ from pathlib import Path
 from typing import Any
 
 import ezdxf
-from ezdxf.colors import RGB
 from ezdxf.document import CREATED_BY_EZDXF, WRITTEN_BY_EZDXF, Drawing
 from ezdxf.enums import TextEntityAlignment
 from ezdxf.lldxf.const import VALID_DXF_LINEWEIGHTS
 from ezdxf.tools.juliandate import juliandate
 
-from .backend import LINE_TYPES, Backend, Fill, HAlign, LineType, PointLike, VAlign, as_point
+from .backend import (
+    LINE_TYPES,
+    Backend,
+    Fill,
+    HAlign,
+    LineType,
+    PointLike,
+    TextRun,
+    VAlign,
+    as_point,
+    parse_markup,
+)
 from .look import Look
 
-__all__ = ["DxfBackend", "LAYERS", "TEXT_LAYER", "FILL_LAYER", "TEXT_STYLE", "linetype_name"]
+__all__ = [
+    "DxfBackend",
+    "LAYERS",
+    "TEXT_LAYER",
+    "FILL_LAYER",
+    "TEXT_STYLE",
+    "TEXT_FONT",
+    "linetype_name",
+    "mtext_content",
+]
 
 #: Layer of each line type.
 LAYERS: dict[str, str] = {kind: kind.upper() for kind in LINE_TYPES}
 TEXT_LAYER = "TEXT"
 FILL_LAYER = "FILL"
-TEXT_STYLE = "GOST"
+TEXT_STYLE = "OpenGostTypeA-Regular"  # the name LibreCAD and QCAD resolve to their GOST font
+TEXT_FONT = "DejaVuSans.ttf"  # for programs that read the style's TrueType file
 
 # A dash of the look this short or shorter (other than the first) is a dot.
 _DOT_MAX = 1.0
 _INK_ACI = 7  # black on paper, white on a dark CAD screen
-_WHITE = 0xFFFFFF
 _DEFAULT_DATE = datetime(2000, 1, 1, tzinfo=UTC)
 _GUID_NAMESPACE = uuid.uuid5(uuid.NAMESPACE_URL, "mmt_plans/render/dxf")
 
@@ -161,6 +192,34 @@ def encode_text(text: str) -> str:
     return text
 
 
+# MTEXT attachment points: top 1-3, middle 4-6, bottom 7-9; left, centre, right.
+_ATTACH_ROW = {"top": 0, "middle": 3, "baseline": 3}
+_ATTACH_COL = {"left": 1, "center": 2, "right": 3}
+_STACK_BAD = frozenset("^/#;\\{}")
+_WIPEOUT_SIDES = 64
+
+
+def _mtext_escaped(text: str) -> str:
+    """Plain MTEXT content: backslash and braces escaped, caret and %% as in TEXT."""
+    return encode_text(text).replace("\\", "\\\\").replace("{", "\\{").replace("}", "\\}")
+
+
+def mtext_content(runs: Sequence[TextRun]) -> str:
+    """One MTEXT's content for a label's runs: an index as a stack with one
+    line empty (\\S^BA; a subscript, \\S2^; a superscript), which AutoCAD,
+    LibreCAD and ezdxf draw small beside the letter before it."""
+    out = []
+    for text, kind in runs:
+        body = clean_text(text)
+        if kind == "normal" or not body.strip() or _STACK_BAD & set(body):
+            out.append(_mtext_escaped(body))
+        elif kind == "sub":
+            out.append(f"\\S^{encode_text(body)};")
+        else:
+            out.append(f"\\S{encode_text(body)}^;")
+    return "".join(out)
+
+
 def source_date() -> datetime:
     """$SOURCE_DATE_EPOCH as a UTC date, else 2000-01-01; a SettingError for a
     value that is not whole seconds (files.source_date_epoch, as the PDF)."""
@@ -187,6 +246,8 @@ class _Bounds:
 
 class DxfBackend(Backend):
     """Draws into an ezdxf document; `to_bytes()` / `save()` give the DXF."""
+
+    sets_labels_whole = True  # a recorded label is replayed as one rich_text (MTEXT)
 
     def __init__(
         self,
@@ -236,12 +297,12 @@ class DxfBackend(Backend):
         thin = nearest_lineweight(self.look.line("thin").width)
         doc.layers.add(TEXT_LAYER, color=_INK_ACI, lineweight=thin)
         doc.layers.add(FILL_LAYER, color=_INK_ACI, lineweight=0)
+        doc.set_wipeout_variables(frame=0)
         lettering = self.look.lettering
-        family = lettering.families[0]
-        text_style: Any = doc.styles.add(TEXT_STYLE, font=family.replace(" ", "") + ".ttf")
+        text_style: Any = doc.styles.add(TEXT_STYLE, font=TEXT_FONT)
         text_style.dxf.oblique = lettering.slant_deg
         text_style.dxf.height = 0.0  # the height is given by each text
-        text_style.set_extended_font_data(family)
+        text_style.set_extended_font_data("DejaVu Sans")
 
     # --- output --------------------------------------------------------------
 
@@ -307,13 +368,17 @@ class DxfBackend(Backend):
             self._bounds.add(x, y)
         return pts
 
-    def _hatch(self, fill: Fill) -> Any:
+    def _black(self) -> Any:
         hatch = self._msp.add_hatch(dxfattribs={"layer": FILL_LAYER})
-        if fill == "white":
-            hatch.set_solid_fill(color=_INK_ACI, rgb=RGB(255, 255, 255))
-        else:
-            hatch.set_solid_fill(color=256)  # BYLAYER
+        hatch.set_solid_fill(color=256)  # BYLAYER
         return hatch
+
+    def _mask(self, points: Sequence[tuple[float, float]]) -> None:
+        """A white fill: a WIPEOUT over `points` (never a white HATCH, which
+        monochrome output prints black)."""
+        wipeout = self._msp.add_wipeout(points)
+        wipeout.dxf.layer = FILL_LAYER  # add_wipeout does not take its dxfattribs (ezdxf 1.4)
+        self._add(wipeout)
 
     # --- the interface -------------------------------------------------------
 
@@ -335,8 +400,10 @@ class DxfBackend(Backend):
         self._check_line(line, allow_none=True)
         self._check_fill(fill)
         pts = self._points(points)
-        if fill != "none" and _area(pts) != 0.0:
-            hatch = self._hatch(fill)
+        if fill == "white" and _area(pts) != 0.0:
+            self._mask(pts)
+        elif fill == "black" and _area(pts) != 0.0:
+            hatch = self._black()
             hatch.paths.add_polyline_path(pts, is_closed=True)
             self._add(hatch)
         if line is not None and len(pts) >= 2:
@@ -357,8 +424,18 @@ class DxfBackend(Backend):
         r = float(radius)
         self._bounds.add(cx - r, cy - r)
         self._bounds.add(cx + r, cy + r)
-        if fill != "none":
-            hatch = self._hatch(fill)
+        if fill == "white":
+            self._mask(
+                [
+                    (
+                        cx + r * math.cos(2.0 * math.pi * i / _WIPEOUT_SIDES),
+                        cy + r * math.sin(2.0 * math.pi * i / _WIPEOUT_SIDES),
+                    )
+                    for i in range(_WIPEOUT_SIDES)
+                ]
+            )
+        elif fill == "black":
+            hatch = self._black()
             hatch.paths.add_edge_path().add_arc((cx, cy), r, 0.0, 360.0)
             self._add(hatch)
         if line is not None:
@@ -434,6 +511,50 @@ class DxfBackend(Backend):
         ca, sa = math.cos(a), math.sin(a)
         for u, v in ((x0, y0), (x0 + w, y0), (x0, y0 + size), (x0 + w, y0 + size)):
             self._bounds.add(x + u * ca - v * sa, y + u * sa + v * ca)
+
+    def rich_text(
+        self,
+        pos: PointLike,
+        content: str | Sequence[TextRun],
+        size: float = 3.5,
+        *,
+        anchor: HAlign = "left",
+        valign: VAlign = "baseline",
+        rotation: float = 0.0,
+    ) -> float:
+        """A label with indices as ONE MTEXT (`mtext_content`): separate
+        texts placed by osifont's widths collide under any other font."""
+        runs = parse_markup(content) if isinstance(content, str) else list(content)
+        self._check_text(size, anchor, valign)
+        let = self.look.lettering
+        small = let.index_size(size)
+        widths = [let.advance_width(t, size if k == "normal" else small) for t, k in runs]
+        total = sum(widths) + (math.tan(math.radians(let.slant_deg)) * size if runs else 0.0)
+        body = mtext_content(runs)
+        if not body.strip():
+            return total
+        x, y = as_point(pos)
+        rotation = float(rotation) % 360.0
+        a = math.radians(rotation)
+        ca, sa = math.cos(a), math.sin(a)
+        # MTEXT has no baseline attachment: a baseline text hangs by the
+        # middle of its capitals, half a height above the baseline.
+        lift = size / 2.0 if valign == "baseline" else 0.0
+        at = (x - lift * sa, y + lift * ca)
+        mtext = self._msp.add_mtext(
+            body,
+            dxfattribs={"layer": TEXT_LAYER, "style": TEXT_STYLE, "char_height": float(size)},
+        )
+        mtext.set_location(
+            at, rotation=rotation, attachment_point=_ATTACH_ROW[valign] + _ATTACH_COL[anchor]
+        )
+        self._add(mtext)
+        x0 = {"left": 0.0, "center": -total / 2.0, "right": -total}[anchor]
+        top = {"baseline": size, "middle": size / 2.0, "top": 0.0}[valign]
+        bottom = top - 1.3 * size  # a subscript drops 0.3 h below the baseline
+        for u, v in ((x0, bottom), (x0 + total, bottom), (x0, top), (x0 + total, top)):
+            self._bounds.add(x + u * ca - v * sa, y + u * sa + v * ca)
+        return total
 
     def _begin_group(self, id: str, cls: str | None) -> None:
         self._stack.append((self._unique_name(id), cls or "", []))

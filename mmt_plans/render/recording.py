@@ -2,14 +2,45 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from .backend import Backend, Fill, HAlign, LineType, Point, PointLike, VAlign, as_point
+from .backend import (
+    Backend,
+    Fill,
+    HAlign,
+    LineType,
+    Point,
+    PointLike,
+    TextRun,
+    VAlign,
+    as_point,
+    parse_markup,
+)
 
-__all__ = ["Call", "RecordingBackend"]
+__all__ = ["Call", "LabelRun", "RecordingBackend"]
+
+_LABELS = itertools.count(1)  # label serials, unique across spliced sketches
+
+
+@dataclass(frozen=True)
+class LabelRun:
+    """Marks a text call as one run of a label set by `rich_text`: the label's
+    runs and the label's position relative to this run's, so that a backend
+    that sets a label whole (`sets_labels_whole`, DXF: one MTEXT) gets the
+    label back on replay. Every other reader sees the runs as texts."""
+
+    serial: int
+    index: int  # of this run in `runs`
+    runs: tuple[TextRun, ...]
+    offset: Point  # the label's pos less this run's pos
+    size: float
+    anchor: HAlign
+    valign: VAlign
+    rotation: float
 
 
 @dataclass(frozen=True)
@@ -45,6 +76,29 @@ class RecordingBackend(Backend):
     def __init__(self, width: float = 841.0, height: float = 594.0, look=None) -> None:
         super().__init__(width, height, look)
         self.calls: list[Call] = []
+        self._label: tuple[int, tuple[TextRun, ...], Point, list[int], dict[str, Any]] | None = None
+
+    def rich_text(
+        self,
+        pos: PointLike,
+        content: str | Sequence[TextRun],
+        size: float = 3.5,
+        *,
+        anchor: HAlign = "left",
+        valign: VAlign = "baseline",
+        rotation: float = 0.0,
+    ) -> float:
+        runs = tuple(parse_markup(content) if isinstance(content, str) else content)
+        # the runs base rich_text draws, in order: those with a non-blank body
+        drawn = [i for i, (t, _) in enumerate(runs) if t.strip(" ")]
+        style = {"size": float(size), "anchor": anchor, "valign": valign, "rotation": rotation}
+        self._label = (next(_LABELS), runs, as_point(pos), drawn, style)
+        try:
+            return super().rich_text(
+                pos, list(runs), size, anchor=anchor, valign=valign, rotation=rotation
+            )
+        finally:
+            self._label = None
 
     def _record(self, name: str, **args: Any) -> None:
         self.calls.append(Call(name, args, tuple(self._open_groups)))
@@ -151,15 +205,23 @@ class RecordingBackend(Backend):
         max_width: float | None = None,
     ) -> None:
         self._check_text(size, anchor, valign, max_width)
+        extra: dict[str, Any] = {}
+        p = as_point(pos)
+        if self._label is not None and self._label[3]:
+            serial, runs, at, drawn, style = self._label
+            extra["label"] = LabelRun(
+                serial, drawn.pop(0), runs, (at[0] - p[0], at[1] - p[1]), **style
+            )
         self._record(
             "text",
-            pos=as_point(pos),
+            pos=p,
             content=str(content),
             size=float(size),
             anchor=anchor,
             valign=valign,
             rotation=float(rotation),
             max_width=None if max_width is None else float(max_width),
+            **extra,
         )
 
     def _begin_group(self, id: str, cls: str | None) -> None:
@@ -177,8 +239,33 @@ class RecordingBackend(Backend):
         def t(p: Sequence[float]) -> tuple[float, float]:
             return (p[0] + dx, p[1] + dy)
 
+        whole = bool(getattr(backend, "sets_labels_whole", False))
+        # each label's runs as recorded now (a sheet may have translated a run's text)
+        labels: dict[int, list[TextRun]] = {}
+        for c in self.calls:
+            mark = c.args.get("label") if c.name == "text" else None
+            if whole and mark is not None:
+                runs = labels.setdefault(mark.serial, list(mark.runs))
+                old, kind = runs[mark.index]
+                lead = old[: len(old) - len(old.lstrip(" "))]
+                trail = old[len(old.rstrip(" ")) :]
+                runs[mark.index] = (lead + c.args["content"] + trail, kind)
         for c in self.calls:
             a = c.args
+            mark = a.get("label") if c.name == "text" else None
+            if whole and mark is not None:
+                whole_runs = labels.pop(mark.serial, None)
+                if whole_runs is not None:  # the label's first run: the whole label
+                    x, y = t(a["pos"])
+                    backend.rich_text(
+                        (x + mark.offset[0], y + mark.offset[1]),
+                        whole_runs,
+                        mark.size,
+                        anchor=mark.anchor,
+                        valign=mark.valign,
+                        rotation=mark.rotation,
+                    )
+                continue
             if c.name == "begin_group":
                 backend.begin_group(a["id"], a["cls"])
             elif c.name == "end_group":
@@ -201,6 +288,9 @@ class RecordingBackend(Backend):
                     head_length=a["head_length"],
                     head_width=a["head_width"],
                 )
+            elif c.name == "text" and mark is not None and isinstance(backend, RecordingBackend):
+                # into another recording: the run keeps its label's mark
+                backend._record("text", **{**a, "pos": t(a["pos"])})
             elif c.name == "text":
                 backend.text(
                     t(a["pos"]),

@@ -37,6 +37,8 @@ from ..render.recording import RecordingBackend
 from ..solution import Solution
 
 __all__ = [
+    "FrameDimension",
+    "frame_dimensions",
     "LABEL_GROUP",
     "NUMBER_GROUP",
     "sketch_schematic",
@@ -348,6 +350,95 @@ def _draw(
     return sk
 
 
+_DIM_STEP = 5.0  # mm between stacked dimension lines
+_DIM_TEXT = 2.2  # mm
+
+
+@dataclass(frozen=True)
+class FrameDimension:
+    """A distance of the frame's geometry from the crank's pivot, in m."""
+
+    horizontal: bool  # measured along x (drawn below), else along y (drawn left)
+    start: str  # the crank's pivot
+    end: str  # a frame point, or "guide <slider point>"
+    value: float  # signed, m (end less start)
+
+
+def frame_dimensions(mech: Any) -> list[FrameDimension]:
+    """The frame's dimensions of a task's scheme: each frame point's dx and dy
+    from the crank's pivot, and each frame guide's offset from it."""
+    pivot = mech.crank_pivot
+    o = np.asarray(mech.frame[pivot], dtype=float)
+    out = []
+    for name, p in mech.frame.items():
+        d = np.asarray(p, dtype=float) - o
+        if name == pivot:
+            continue
+        if abs(d[0]) > 1e-9:
+            out.append(FrameDimension(True, pivot, name, float(d[0])))
+        if abs(d[1]) > 1e-9:
+            out.append(FrameDimension(False, pivot, name, float(d[1])))
+    for pair in mech.sliders:
+        if pair.guide != FRAME:
+            continue
+        u = np.asarray(pair.direction, dtype=float)
+        t = np.asarray(pair.through, dtype=float) - o
+        if abs(u[1]) < 1e-9 and abs(t[1]) > 1e-9:  # a horizontal guide: its height
+            out.append(FrameDimension(False, pivot, f"guide {pair.slider_point}", float(t[1])))
+        elif abs(u[0]) < 1e-9 and abs(t[0]) > 1e-9:  # a vertical guide: its x
+            out.append(FrameDimension(True, pivot, f"guide {pair.slider_point}", float(t[0])))
+    return out
+
+
+def _draw_dimensions(
+    sk: Sketch,
+    solution: Solution,
+    scale: float,
+    shift: np.ndarray,
+    dims: list[FrameDimension],
+    lang: Language,
+) -> None:
+    """Dimension lines for `dims` below and left of what `sk` holds; a point p
+    (m) of the scheme is at p·scale + shift (mm)."""
+    mech = solution.mechanism
+    pivot = mech.crank_pivot
+
+    def at(p: np.ndarray) -> np.ndarray:
+        return np.asarray(p, dtype=float) * scale + shift
+
+    pts = {pivot: np.asarray(mech.frame[pivot], dtype=float)}
+    cat = catalogue(lang)
+    ext = sk.extent()
+    o = at(pts[pivot])
+    n_h = n_v = 0
+    with sk.group("dimensions", "dimensions"):
+        for d in dims:
+            if d.end.startswith("guide "):
+                end_m = pts[pivot] + ([d.value, 0.0] if d.horizontal else [0.0, d.value])
+            else:
+                end_m = np.asarray(mech.frame[d.end], dtype=float)
+            e = at(end_m)
+            text = cat.plain_number(round(abs(d.value) * 1e3, 6) + 0.0)
+            if d.horizontal:
+                y = ext.y + _PAD - _DIM_STEP * (n_h + 0.6)
+                n_h += 1
+                for p in (o, e):
+                    sk.line((p[0], p[1]), (p[0], y - 1.0), "thin")
+                mid = ((o[0] + e[0]) / 2.0, y)
+                for end in (o[0], e[0]):
+                    sk.arrow(mid, (end, y), "thin", head_length=1.8, head_width=0.7)
+                sk.text((mid[0], y + 0.6), text, _DIM_TEXT, anchor="center")
+            else:
+                x = ext.x + _PAD - _DIM_STEP * (n_v + 0.6)
+                n_v += 1
+                for p in (o, e):
+                    sk.line((p[0], p[1]), (x - 1.0, p[1]), "thin")
+                mid = (x, (o[1] + e[1]) / 2.0)
+                for end in (o[1], e[1]):
+                    sk.arrow(mid, (x, end), "thin", head_length=1.8, head_width=0.7)
+                sk.text((x - 0.6, mid[1]), text, _DIM_TEXT, anchor="center", rotation=90.0)
+
+
 def _geometry_bounds(
     pose: tuple[dict[str, np.ndarray], list[_Guide]],
 ) -> tuple[float, float, float, float]:
@@ -376,13 +467,34 @@ def sketch_schematic(
     width_mm: float = 100.0,
     height_mm: float = 70.0,
     position: int = 0,
+    dimensions: bool = False,
 ) -> Sketch:
     """The kinematic scheme at `position`, fitted into the box (0, 0)–(width_mm, height_mm).
 
     Every point letter is drawn in a group "point-<name>", every link number
     in a group "link-<id>" (class "label"), so that they can be found again.
+    With `dimensions`, the frame's geometry is dimensioned below and left of
+    the scheme in mm (group "dimensions"): each frame point's horizontal and
+    vertical distance from the crank's pivot, and each frame guide's distance
+    from it across the guide (`frame_dimensions`).
     """
     check_language(lang)
+    if dimensions:
+        dims = frame_dimensions(solution.mechanism)
+        left = _DIM_STEP * (sum(not d.horizontal for d in dims) + 0.5)
+        below = _DIM_STEP * (sum(d.horizontal for d in dims) + 0.5)
+        inner, scale, shift = _fitted(solution, look, width_mm - left, height_mm - below, position)
+        out = _shifted(inner, left, below)
+        _draw_dimensions(out, solution, scale, shift + np.array([left, below]), dims, lang)
+        return out
+    return _fitted(solution, look, width_mm, height_mm, position)[0]
+
+
+def _fitted(
+    solution: Solution, look: Any, width_mm: float, height_mm: float, position: int
+) -> tuple[Sketch, float, np.ndarray]:
+    """The scheme fitted into the box, its scale (mm per m) and its shift (mm):
+    a point p (m) is drawn at p·scale + shift."""
     k = solution.entry(position)
     pose = _pose(solution, k)
     x0, y0, x1, y1 = _geometry_bounds(pose)
@@ -406,7 +518,7 @@ def sketch_schematic(
         )
     dx = (width_mm - ext.width) / 2.0 - ext.x
     dy = (height_mm - ext.height) / 2.0 - ext.y
-    return _shifted(sk, dx, dy)
+    return _shifted(sk, dx, dy), scale, np.array([dx, dy])
 
 
 # --- captions, contact sheets, files of one task -------------------------------------

@@ -1,6 +1,7 @@
 """DxfBackend: every check reads the written bytes back with ezdxf."""
 
 import io
+import math
 import os
 import subprocess
 import sys
@@ -81,7 +82,9 @@ def test_arc_special_spans():
     assert (msp[1].dxf.start_angle, msp[1].dxf.end_angle) == (270, 90)
 
 
-def test_fills_are_solid_hatches_under_their_outlines():
+def test_black_fills_are_hatches_white_fills_are_wipeouts_under_their_outlines():
+    # issue 24: a white mask is a WIPEOUT (DXF's mask, the background colour in
+    # monochrome output too), not a true-colour white HATCH that LibreCAD prints black
     b = DxfBackend()
     b.line((0, 50), (100, 50), "main")  # a link ...
     b.circle((50, 50), 2.0, "main", fill="white")  # ... and a pin over it
@@ -91,18 +94,20 @@ def test_fills_are_solid_hatches_under_their_outlines():
     clean_audit(doc)
     msp = doc.modelspace()
     assert [e.dxftype() for e in msp] == [
-        "LINE", "HATCH", "CIRCLE", "HATCH", "LINE", "HATCH", "LWPOLYLINE"
+        "LINE", "WIPEOUT", "CIRCLE", "HATCH", "LINE", "HATCH", "LWPOLYLINE"
     ]
     link, white, pin, black, shaft, head, head_outline = msp
-    for hatch in (white, black, head):
+    for hatch in (black, head):
         assert hatch.dxf.layer == "FILL"
         assert hatch.dxf.solid_fill == 1 and hatch.dxf.pattern_name == "SOLID"
         assert len(hatch.paths) == 1
-    # White hides what is under it: true-colour white, after the link, before its rim.
-    assert white.rgb == (255, 255, 255)
-    edge = white.paths[0].edges[0]
-    assert edge.type.name == "ARC" and tuple(edge.center)[:2] == (50, 50) and edge.radius == 2.0
-    assert abs(edge.end_angle - edge.start_angle) == pytest.approx(360)
+    assert not any(h.rgb == (255, 255, 255) for h in msp.query("HATCH"))
+    # The mask: after the link, before its rim; a 64-gon inscribed in the pin's circle.
+    assert white.dxf.layer == "FILL"
+    corners = white.boundary_path_wcs()
+    assert len(corners) >= 64
+    assert all(math.hypot(v.x - 50, v.y - 50) == pytest.approx(2.0) for v in corners)
+    assert doc.objects.query("WIPEOUTVARIABLES")[0].dxf.frame == 0  # no frame drawn
     # Black is the layer's ink.
     assert black.dxf.color == BYLAYER_COLOUR and black.rgb is None
     assert [tuple(v)[:2] for v in black.paths[0].vertices] == [(10, 10), (20, 10), (15, 18)]
@@ -155,12 +160,15 @@ def test_text_height_style_alignment_rotation():
     long = "Кінематичний аналіз шестиланкового механізму"
     b.text((400, 20), long, 7.0, anchor="right", valign="top", max_width=100, rotation=-90)
     doc = readback(b)
-    style = doc.styles.get("GOST")
-    assert style.dxf.font == "osifont.ttf" and style.dxf.oblique == 15
+    # issue 24: a style LibreCAD resolves by name to its GOST font with
+    # Cyrillic and Greek; a TrueType file with both for the other programs
+    style = doc.styles.get("OpenGostTypeA-Regular")
+    assert style.dxf.font == "DejaVuSans.ttf" and style.dxf.oblique == 15
     texts = doc.modelspace().query("TEXT")
     assert [t.dxf.text for t in texts] == ["pa = 120 mm", "μ_V", long]
     for t in texts:
-        assert t.dxf.layer == "TEXT" and t.dxf.style == "GOST" and t.dxf.oblique == 15
+        assert t.dxf.layer == "TEXT" and t.dxf.style == "OpenGostTypeA-Regular"
+        assert t.dxf.oblique == 15
     assert [t.dxf.height for t in texts] == [5.0, 3.5, 7.0]
     assert [t.dxf.rotation for t in texts] == [0, 30, 270]
     placements = [t.get_placement() for t in texts]
@@ -171,6 +179,29 @@ def test_text_height_style_alignment_rotation():
     squeeze = look.lettering.squeeze(long, 7.0, 100)
     assert squeeze < 1.0
     assert [t.dxf.width for t in texts] == [1.0, 1.0, pytest.approx(squeeze)]
+
+
+def test_a_label_with_indices_is_one_mtext_with_stacked_indices():
+    # issue 24: separate TEXTs for "p", "5" placed by osifont's widths collide
+    # in a program without osifont ("2p₅ – p₄"); one MTEXT keeps them together
+    b = DxfBackend()
+    width = b.rich_text((100, 50), "ω_2 = 1,5 с^{-1}", 5.0, anchor="center", valign="middle")
+    b.rich_text((10, 10), "a^τ_{ED} {x}\\", 3.5, rotation=90)
+    b.rich_text((10, 20), "V_{a;b}", 3.5)  # an index with a stack's separator stays inline
+    doc = readback(b)
+    clean_audit(doc)
+    texts = doc.modelspace().query("MTEXT")
+    assert len(texts) == 3 and not doc.modelspace().query("TEXT")
+    first, second, third = texts
+    assert first.text == "ω\\S^2; = 1,5 с\\S-1^;"
+    assert first.dxf.attachment_point == 5 and first.dxf.char_height == 5.0
+    assert tuple(first.dxf.insert)[:2] == (100, 50)
+    assert width == pytest.approx(DxfBackend().rich_text((0, 0), "ω_2 = 1,5 с^{-1}", 5.0))
+    # a baseline label hangs by its capitals' middle, half a height up the rotated text
+    assert second.dxf.attachment_point == 4 and second.dxf.rotation == 90
+    assert tuple(second.dxf.insert)[:2] == pytest.approx((10 - 1.75, 10))
+    assert second.text == "a\\Sτ^;\\S^ED; \\{x\\}\\\\"
+    assert third.text == "Va;b"
 
 
 def test_hostile_text_and_title_round_trip_without_breaking_the_file(tmp_path):
@@ -310,8 +341,22 @@ def test_sheet1_entities_match_the_recorded_calls():
     import mmt_plans
     from mmt_plans.sheets.sheet1 import compose_sheet1
 
+    class Recorder(RecordingBackend):
+        """Counts the labels with indices and the texts they are made of."""
+
+        sets_labels_whole = True  # the sketches' labels come back as rich_text, as to DXF
+        labels = inside = 0
+
+        def rich_text(self, pos, content, size=3.5, **kw):
+            before = len(self.named("text"))
+            width = super().rich_text(pos, content, size, **kw)
+            made = len(self.named("text")) - before
+            type(self).labels += made > 0
+            type(self).inside += made
+            return width
+
     analysis = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "six_link_press.toml"))
-    rec, dxf = RecordingBackend(), DxfBackend()
+    rec, dxf = Recorder(), DxfBackend()
     compose_sheet1(analysis, rec)
     compose_sheet1(analysis, dxf)
     doc = readback(dxf)
@@ -323,12 +368,16 @@ def test_sheet1_entities_match_the_recorded_calls():
     shafts = sum(arrow_geometry(a["start"], a["end"], a["head_length"], a["head_width"])[0]
                  != a["start"] for a in arrows)
     filled = [c for c in rec.named("polygon", "circle") if c["fill"] != "none"]
-    assert got["TEXT"] == calls["text"] > 0
+    # a label with indices is one MTEXT, its runs are not separate TEXTs (issue 24)
+    assert got["MTEXT"] == Recorder.labels > 0
+    assert got["TEXT"] == calls["text"] - Recorder.inside > 0
     assert got["LINE"] == calls["line"] + shafts
     assert got["ARC"] == calls["arc"]
     assert got["CIRCLE"] == sum(c["line"] is not None for c in rec.named("circle"))
     assert got["LWPOLYLINE"] == calls["polyline"] + calls["polygon"] + len(arrows)
-    assert got["HATCH"] == len(filled) + len(arrows)
+    white = [c for c in filled if c["fill"] == "white"]
+    assert got["WIPEOUT"] == len(white) > 0
+    assert got["HATCH"] == len(filled) - len(white) + len(arrows)
     assert len(doc.groups) == groups_with_drawing(rec) > 0
 
     h = doc.header

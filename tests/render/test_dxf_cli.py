@@ -30,10 +30,16 @@ def test_draw_writes_both_sheets_as_dxf(tmp_path):
         lo, hi = doc.header["$LIMMIN"], doc.header["$LIMMAX"]
         assert (tuple(lo)[:2], tuple(hi)[:2]) == ((0.0, 0.0), (841.0, 594.0))
         msp = doc.modelspace()
-        texts = [e.dxf.text for e in msp.query("TEXT")]
+        texts = [e.dxf.text for e in msp.query("TEXT")] + [e.text for e in msp.query("MTEXT")]
         assert len(texts) > 50 and any("μ" in t for t in texts)
         layers = {e.dxf.layer for e in msp}
         assert {"MAIN", "THIN", "TEXT"} <= layers
+        # issue 24: the guides' centre lines are on DASHDOT, whose linetype has
+        # a real dash-dot pattern (dash, gap, dot, gap)
+        assert msp.query('LINE[layer=="DASHDOT"]')
+        pattern = doc.linetypes.get(doc.layers.get("DASHDOT").dxf.linetype).pattern_tags.tags
+        elements = [t.value for t in pattern if t.code == 49]
+        assert len(elements) == 4 and elements[0] > 0 and elements[2] == 0
         for e in msp.query("LINE"):
             for p in (e.dxf.start, e.dxf.end):
                 assert 0.0 <= p.x <= 841.0 and 0.0 <= p.y <= 594.0
