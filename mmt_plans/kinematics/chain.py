@@ -110,7 +110,17 @@ _KEPT = _STATE[:6]
 
 
 def _state(mo: Motion, n: int) -> LinkState:
-    return LinkState(**{name: _full(getattr(mo, attr), n, dtype) for name, attr, dtype in _STATE})
+    # _STATE's fields in order, written out: a sweep makes one per link
+    return LinkState(
+        _full(mo.e, n, complex),
+        _full(mo.o, n, complex),
+        _full(mo.w, n, float),
+        _full(mo.v, n, complex),
+        _full(mo.eps, n, float),
+        _full(mo.a, n, complex),
+        _full(mo.spin, n, complex),
+        _full(mo.spin_acc, n, complex),
+    )
 
 
 class _Arena:

@@ -178,7 +178,7 @@ def _cramer(det, d1, d2, rhs):
         x1 = cross(d2, rhs) / det
         x2 = cross(d1, rhs) / det
     singular = det == 0
-    if np.any(singular):
+    if singular.any() if isinstance(singular, np.ndarray) else singular:
         x1 = np.where(singular, np.nan, x1)
         x2 = np.where(singular, np.nan, x2)
     return x1, x2
