@@ -110,7 +110,17 @@ _KEPT = _STATE[:6]
 
 
 def _state(mo: Motion, n: int) -> LinkState:
-    return LinkState(**{name: _full(getattr(mo, attr), n, dtype) for name, attr, dtype in _STATE})
+    # _STATE's fields in order, written out: a sweep makes one per link
+    return LinkState(
+        _full(mo.e, n, complex),
+        _full(mo.o, n, complex),
+        _full(mo.w, n, float),
+        _full(mo.v, n, complex),
+        _full(mo.eps, n, float),
+        _full(mo.a, n, complex),
+        _full(mo.spin, n, complex),
+        _full(mo.spin_acc, n, complex),
+    )
 
 
 class _Arena:
@@ -465,7 +475,7 @@ class Chain:
             for solver in self.solvers[:upto]:
                 if margins is not None:
                     margins.append(solver.margin(m))
-                solver.positions(m, branches.get(solver.group.name, 1))
+                solver.positions(m, branches.get(solver.name, 1))
         return m
 
     def sweep(self, phi1_deg: np.ndarray) -> Sweep:
@@ -522,7 +532,7 @@ class Chain:
         m = self.place_all(phi_rad, self.branches)
         failed, singular, plans = {}, {}, []
         for solver in self.solvers:
-            name = solver.group.name
+            name = solver.name
             L1, L2 = m[solver.L1], m[solver.L2]
             # one sum is finite exactly where all four are (NaN and ±inf carry)
             # broadcast: a group fixed to the frame only has plain numbers

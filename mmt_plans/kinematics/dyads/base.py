@@ -110,7 +110,11 @@ def _complex(re, im):
     """re + i·im without complex arithmetic (arrays or numbers)."""
     if not (isinstance(re, np.ndarray) or isinstance(im, np.ndarray)):
         return complex(re, im)
-    z = np.empty(np.broadcast_shapes(np.shape(re), np.shape(im)), dtype=complex)
+    shape_re, shape_im = np.shape(re), np.shape(im)
+    z = np.empty(
+        shape_re if shape_re == shape_im else np.broadcast_shapes(shape_re, shape_im),
+        dtype=complex,
+    )
     z.real, z.imag = re, im
     return z
 
@@ -178,7 +182,7 @@ def _cramer(det, d1, d2, rhs):
         x1 = cross(d2, rhs) / det
         x2 = cross(d1, rhs) / det
     singular = det == 0
-    if np.any(singular):
+    if singular.any() if isinstance(singular, np.ndarray) else singular:
         x1 = np.where(singular, np.nan, x1)
         x2 = np.where(singular, np.nan, x2)
     return x1, x2
@@ -192,6 +196,7 @@ class DyadSolver:
     def __init__(self, mech: Mechanism, group: AssurGroup) -> None:
         self.mech = mech
         self.group = group
+        self.name = group.name  # the group's name, read at every sweep
         self._locs: dict[tuple[int, str], complex] = {}  # local coordinates, read once
         self.L1, self.L2 = group.links
         # the kind fixes which pairs are revolute and which prismatic
