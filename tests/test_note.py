@@ -57,7 +57,9 @@ def test_steps_in_seed003_order(press):
     # 2.6 ... one item per group (the last attached first), the driving link,
     # the reactions, the lever and the comparison (21)
     tail = [f"2.{6 + j}" for j in range(groups + 4)]
-    assert note.steps == SEED003_ORDER + tail + ["conclusions"]
+    # the reduction to the crank (M_red, J_red) in every note (issue 22), then the conclusions
+    reduction = ["reduction", "reduction.M", "reduction.J"]
+    assert note.steps == SEED003_ORDER + tail + reduction + ["conclusions"]
     text = note.text()
     headings = [text.index(f"\n{s}. ") for s in SEED003_ORDER if s[0].isdigit() and "." in s]
     assert headings == sorted(headings)
