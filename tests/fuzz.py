@@ -973,34 +973,37 @@ def slow_cases(timed: list[tuple[Mutant, Outcome]]) -> list[tuple[Mutant, Outcom
     source), above a
     floor that timer noise does not reach: a case the code handles in a way
     much slower than its kin (a loop without a bound, a quadratic search)."""
+    def outcome(o: Outcome) -> str:
+        return "analysed" if o.kind == "analysed" else "refused"
+
     def medians(key, value) -> tuple[dict[str, float], dict[str, float]]:
         fam: dict[str, list[float]] = {}
-        kind: dict[str, list[float]] = {}
+        kind: dict[str, list[float]] = {}  # the fallback of a small family
         for m, o in timed:
             v = value(o)
             if v is None:
                 continue
             fam.setdefault(key(m, o), []).append(v)
-            kind.setdefault(m.kind, []).append(v)
+            kind.setdefault(f"{m.kind}:{outcome(o)}", []).append(v)
         return ({k: _median(v) for k, v in fam.items() if len(v) >= FAMILY_MIN},
                 {k: _median(v) for k, v in kind.items()})
 
     def family(m: Mutant, o: Outcome) -> str:
         # like with like: a mutant refused while reading is not compared with
         # one analysed (its family's median would be the parser's milliseconds)
-        return f"{m.family}:{'analysed' if o.kind == 'analysed' else 'refused'}"
+        return f"{m.family}:{outcome(o)}"
 
     out = []
     fam, kind = medians(family, lambda o: o.seconds)
     dfam, dkind = medians(lambda m, o: m.source.stem,
                           lambda o: o.draw_seconds if o.drawn else None)
     for m, o in timed:
-        median = fam.get(family(m, o), kind.get(m.kind, 0.0))
+        median = fam.get(family(m, o), kind.get(f"{m.kind}:{outcome(o)}", 0.0))
         if o.seconds > SLOW_FLOOR_S and o.seconds > SLOW_FACTOR * median:
             out.append((m, o, f"{o.seconds:.2f} s, {o.seconds / max(median, 1e-9):.0f}x the "
                               f"median {median:.3f} s of {family(m, o)}"))
         elif o.drawn:
-            median = dfam.get(m.source.stem, dkind.get(m.kind, 0.0))
+            median = dfam.get(m.source.stem, dkind.get(f"{m.kind}:{outcome(o)}", 0.0))
             if o.draw_seconds > DRAW_SLOW_FLOOR_S and o.draw_seconds > SLOW_FACTOR * median:
                 out.append((m, o, f"sheets {o.draw_seconds:.1f} s, "
                                   f"{o.draw_seconds / max(median, 1e-9):.0f}x the median "
