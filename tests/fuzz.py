@@ -744,8 +744,11 @@ class Mutant:
     def family(self) -> str:
         """Mutants whose times compare: one source, one kind of mutation, the
         same order of size (a file made 100 times longer takes longer to read)."""
-        size = "" if len(self.data) < 50_000 else ":large"
-        return f"{self.source.stem}:{self.kind}{size}"
+        return f"{self.source.stem}:{self.kind}{self.size}"
+
+    @property
+    def size(self) -> str:
+        return "" if len(self.data) < 50_000 else ":large"
 
     def describe(self) -> str:
         where = f" as {self.name!r}" if self.name != "mutant.toml" else ""
@@ -984,7 +987,7 @@ def slow_cases(timed: list[tuple[Mutant, Outcome]]) -> list[tuple[Mutant, Outcom
             if v is None:
                 continue
             fam.setdefault(key(m, o), []).append(v)
-            kind.setdefault(f"{m.kind}:{outcome(o)}", []).append(v)
+            kind.setdefault(f"{m.kind}{m.size}:{outcome(o)}", []).append(v)
         return ({k: _median(v) for k, v in fam.items() if len(v) >= FAMILY_MIN},
                 {k: _median(v) for k, v in kind.items()})
 
@@ -998,12 +1001,12 @@ def slow_cases(timed: list[tuple[Mutant, Outcome]]) -> list[tuple[Mutant, Outcom
     dfam, dkind = medians(lambda m, o: m.source.stem,
                           lambda o: o.draw_seconds if o.drawn else None)
     for m, o in timed:
-        median = fam.get(family(m, o), kind.get(f"{m.kind}:{outcome(o)}", 0.0))
+        median = fam.get(family(m, o), kind.get(f"{m.kind}{m.size}:{outcome(o)}", 0.0))
         if o.seconds > SLOW_FLOOR_S and o.seconds > SLOW_FACTOR * median:
             out.append((m, o, f"{o.seconds:.2f} s, {o.seconds / max(median, 1e-9):.0f}x the "
                               f"median {median:.3f} s of {family(m, o)}"))
         elif o.drawn:
-            median = dfam.get(m.source.stem, dkind.get(f"{m.kind}:{outcome(o)}", 0.0))
+            median = dfam.get(m.source.stem, dkind.get(f"{m.kind}{m.size}:{outcome(o)}", 0.0))
             if o.draw_seconds > DRAW_SLOW_FLOOR_S and o.draw_seconds > SLOW_FACTOR * median:
                 out.append((m, o, f"sheets {o.draw_seconds:.1f} s, "
                                   f"{o.draw_seconds / max(median, 1e-9):.0f}x the median "
