@@ -744,8 +744,13 @@ class Mutant:
     def family(self) -> str:
         """Mutants whose times compare: one source, one kind of mutation, the
         same order of size (a file made 100 times longer takes longer to read)."""
-        size = "" if len(self.data) < 50_000 else ":large"
-        return f"{self.source.stem}:{self.kind}{size}"
+        return f"{self.source.stem}:{self.kind}{self.size}"
+
+    @property
+    def size(self) -> str:
+        # over MAX_INPUT_BYTES a file is refused unread: a class of its own
+        n = len(self.data)
+        return "" if n < 50_000 else ":large" if n <= 1_000_000 else ":over-limit"
 
     def describe(self) -> str:
         where = f" as {self.name!r}" if self.name != "mutant.toml" else ""
@@ -814,6 +819,18 @@ class Outcome:
     detail: str = ""
     drawn: str = ""  # with draw=True: "drawn", "clean error" (a sheet that cannot be laid out)
     draw_seconds: float = 0.0
+    cpu: float | None = None  # processor seconds of the analysis (None: as `seconds`)
+    draw_cpu: float | None = None
+
+    @property
+    def work(self) -> float:
+        """The processor time of the analysis: what the slow-case counter
+        compares (the wall clock also counts waiting for a shared processor)."""
+        return self.seconds if self.cpu is None else self.cpu
+
+    @property
+    def draw_work(self) -> float:
+        return self.draw_seconds if self.draw_cpu is None else self.draw_cpu
 
     @property
     def slow(self) -> bool:
@@ -886,7 +903,7 @@ def check(data: bytes, path: str | None = None, timeout: float = HANG_S,
     if use_alarm:
         old = signal.signal(signal.SIGALRM, _alarm)
         signal.setitimer(signal.ITIMER_REAL, timeout)
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     try:
         with np.errstate(all="ignore"), warnings.catch_warnings():
             warnings.simplefilter("ignore", RuntimeWarning)
@@ -894,12 +911,12 @@ def check(data: bytes, path: str | None = None, timeout: float = HANG_S,
             results = results_json(analysis)
             json.dumps(results, allow_nan=False)
             bad = first_non_finite(results)
-            dt = time.perf_counter() - t0
+            dt, cdt = time.perf_counter() - t0, time.process_time() - c0
             if bad is not None:
-                return Outcome("non-finite", dt, f"{bad[0]} = {bad[1]}")
+                return Outcome("non-finite", dt, f"{bad[0]} = {bad[1]}", cpu=cdt)
             if not draw:
-                return Outcome("analysed", dt)
-            t1 = time.perf_counter()
+                return Outcome("analysed", dt, cpu=cdt)
+            t1, c1 = time.perf_counter(), time.process_time()
             try:
                 draw_sheets(analysis)
                 drawn = "drawn"
@@ -908,16 +925,17 @@ def check(data: bytes, path: str | None = None, timeout: float = HANG_S,
             except Exception as err:
                 return Outcome("unexpected", dt, f"draw: {type(err).__name__} at {_where(err)}: "
                                f"{str(err)[:200]}", "failed", time.perf_counter() - t1)
-            return Outcome("analysed", dt, "", drawn, time.perf_counter() - t1)
+            return Outcome("analysed", dt, "", drawn, time.perf_counter() - t1, cpu=cdt,
+                           draw_cpu=time.process_time() - c1)
     except _Hung as err:
         return Outcome("hung", time.perf_counter() - t0,
                        f"stopped after {timeout:g} s at {_where(err)}")
     except mmt_plans.MmtError as err:
-        dt = time.perf_counter() - t0
+        dt, cdt = time.perf_counter() - t0, time.process_time() - c0
         problem = _message_ok(err, path)
         if problem:
-            return Outcome("bad message", dt, f"{problem}: {str(err)[:300]!r}")
-        return Outcome("clean error", dt, f"{type(err).__name__}: {str(err)[:200]}")
+            return Outcome("bad message", dt, f"{problem}: {str(err)[:300]!r}", cpu=cdt)
+        return Outcome("clean error", dt, f"{type(err).__name__}: {str(err)[:200]}", cpu=cdt)
     except Exception as err:  # the finding the fuzzer is for
         dt = time.perf_counter() - t0
         return Outcome("unexpected", dt, f"{type(err).__name__} at {_where(err)}: "
@@ -968,42 +986,46 @@ def _median(xs: list[float]) -> float:
 
 
 def slow_cases(timed: list[tuple[Mutant, Outcome]]) -> list[tuple[Mutant, Outcome, str]]:
-    """The mutants slower than SLOW_FACTOR times the median of their family
+    """The mutants slower (in processor time) than SLOW_FACTOR times the
+    median of their family
     (one source, one kind of mutation, analysed or refused; for drawings, one
     source), above a
     floor that timer noise does not reach: a case the code handles in a way
     much slower than its kin (a loop without a bound, a quadratic search)."""
+    def outcome(o: Outcome) -> str:
+        return "analysed" if o.kind == "analysed" else "refused"
+
     def medians(key, value) -> tuple[dict[str, float], dict[str, float]]:
         fam: dict[str, list[float]] = {}
-        kind: dict[str, list[float]] = {}
+        kind: dict[str, list[float]] = {}  # the fallback of a small family
         for m, o in timed:
             v = value(o)
             if v is None:
                 continue
             fam.setdefault(key(m, o), []).append(v)
-            kind.setdefault(m.kind, []).append(v)
+            kind.setdefault(f"{m.kind}{m.size}:{outcome(o)}", []).append(v)
         return ({k: _median(v) for k, v in fam.items() if len(v) >= FAMILY_MIN},
                 {k: _median(v) for k, v in kind.items()})
 
     def family(m: Mutant, o: Outcome) -> str:
         # like with like: a mutant refused while reading is not compared with
         # one analysed (its family's median would be the parser's milliseconds)
-        return f"{m.family}:{'analysed' if o.kind == 'analysed' else 'refused'}"
+        return f"{m.family}:{outcome(o)}"
 
     out = []
-    fam, kind = medians(family, lambda o: o.seconds)
+    fam, kind = medians(family, lambda o: o.work)
     dfam, dkind = medians(lambda m, o: m.source.stem,
-                          lambda o: o.draw_seconds if o.drawn else None)
+                          lambda o: o.draw_work if o.drawn else None)
     for m, o in timed:
-        median = fam.get(family(m, o), kind.get(m.kind, 0.0))
-        if o.seconds > SLOW_FLOOR_S and o.seconds > SLOW_FACTOR * median:
-            out.append((m, o, f"{o.seconds:.2f} s, {o.seconds / max(median, 1e-9):.0f}x the "
-                              f"median {median:.3f} s of {family(m, o)}"))
+        median = fam.get(family(m, o), kind.get(f"{m.kind}{m.size}:{outcome(o)}", 0.0))
+        if o.work > SLOW_FLOOR_S and o.work > SLOW_FACTOR * median:
+            out.append((m, o, f"{o.work:.2f} s of processor, {o.work / max(median, 1e-9):.0f}x "
+                              f"the median {median:.3f} s of {family(m, o)}"))
         elif o.drawn:
-            median = dfam.get(m.source.stem, dkind.get(m.kind, 0.0))
-            if o.draw_seconds > DRAW_SLOW_FLOOR_S and o.draw_seconds > SLOW_FACTOR * median:
-                out.append((m, o, f"sheets {o.draw_seconds:.1f} s, "
-                                  f"{o.draw_seconds / max(median, 1e-9):.0f}x the median "
+            median = dfam.get(m.source.stem, dkind.get(f"{m.kind}{m.size}:{outcome(o)}", 0.0))
+            if o.draw_work > DRAW_SLOW_FLOOR_S and o.draw_work > SLOW_FACTOR * median:
+                out.append((m, o, f"sheets {o.draw_work:.1f} s of processor, "
+                                  f"{o.draw_work / max(median, 1e-9):.0f}x the median "
                                   f"{median:.2f} s of {m.source.stem}'s drawings"))
     return out
 

@@ -109,3 +109,13 @@ def test_a_slow_case_fails_make_fuzz(monkeypatch, capsys):
         Counter({"analysed": 10, "slow": 1}), [(m, fuzz.Outcome("slow", 3.0, "30x"))]))
     assert fuzz.main(["--cases", "10"]) == 1
     assert "slow              1" in capsys.readouterr().out
+
+
+def test_a_small_family_is_compared_with_its_kind_among_the_same_outcome():
+    # two analysed mutants of one source (too few for a family) among many
+    # quick refusals: compared with the analysed of their kind, not the refused
+    timed = [(fuzz.Mutant(i, PRESS, b"", kind="structural"), fuzz.Outcome("clean error", 0.001))
+             for i in range(50)]
+    timed += [(fuzz.Mutant(100 + i, SMALL, b"", kind="structural"), fuzz.Outcome("analysed", s))
+              for i, s in enumerate([1.2, 1.1, 0.9])]
+    assert fuzz.slow_cases(timed) == []
