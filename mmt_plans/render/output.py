@@ -1,8 +1,8 @@
 """One factory by format: a drawing recorded once (`RecordingBackend`) is
 written as SVG, PDF, PNG or DXF. The only place that chooses a renderer.
 
-SVG through svgwrite (render/svg.py), PDF and PNG from that SVG through
-cairosvg (render/export.py), DXF through ezdxf (render/dxf.py); each renderer
+SVG through svgwrite (render/svg.py), PDF replayed onto a Cairo surface
+(render/cairo_pdf.py), PNG from the SVG through cairosvg (render/export.py), DXF through ezdxf (render/dxf.py); each renderer
 is imported when its format is asked for, so that a command that draws no
 sheet loads none of them.
 """
@@ -41,10 +41,13 @@ def render(recording: RecordingBackend, fmt: str, title: str | None = None) -> b
         backend = DxfBackend(recording.width, recording.height, recording.look, title=title)
         recording.replay(backend)
         return backend.to_bytes()
-    from .export import svg_to_pdf_bytes, svg_to_png_bytes
+    if fmt == "pdf":
+        from .cairo_pdf import pages_to_pdf_bytes
 
-    svg = _svg(recording, title)
-    return svg_to_pdf_bytes(svg) if fmt == "pdf" else svg_to_png_bytes(svg)
+        return pages_to_pdf_bytes([recording], title)
+    from .export import svg_to_png_bytes
+
+    return svg_to_png_bytes(_svg(recording, title))
 
 
 def write_drawing(
