@@ -67,10 +67,15 @@ def write_sheets(
     written: list[Path] = []
     page = Page.of("A1")
     records: dict[int, Any] = {}
+    recordings: dict[int, RecordingBackend] = {}
+    # every sheet composed before any is written: a sheet that cannot be laid
+    # out leaves no file of the others behind
     for n in wanted:
         recording = RecordingBackend(page.width, page.height)
         records[n] = composers[n](solution, recording, lang).record
         recording.close()
+        recordings[n] = recording
+    for n, recording in recordings.items():
         title = f"{solution.mechanism.title_in(lang)}, sheet {n}"
         for fmt in formats:
             written.append(write_drawing(recording, out / f"sheet{n}.{fmt}", fmt, title))
