@@ -30,6 +30,7 @@ from ..drawing.sketch import PAD as _PAD
 from ..drawing.sketch import Sketch
 from ..drawing.symbols import hatched_base, hatched_guide, sense_arc, unit_vector
 from ..drawing.table import table_sketch
+from ..errors import shown
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend
 from ..render.look import LineType
@@ -386,7 +387,8 @@ class _ArcPlacer:
         covered[:, :, :near] = count(boxes_xy[:, :, :near])
         # the candidates with a label that has no free inner box: their outer
         # rings in one query too
-        lacking = np.flatnonzero((covered[:, :, :near] > 0).all(axis=2).any(axis=1))
+        full = np.all(covered[:, :, :near] > 0, axis=2)
+        lacking = np.flatnonzero(np.any(full, axis=1))
         if lacking.size:
             covered[lacking, :, near:] = count(boxes_xy[lacking, :, near:])
         ring_of = 0.5 * np.repeat(np.asarray(_MECHANISM_RINGS), 8)
@@ -535,7 +537,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         # the joints' names first (the arcs are then drawn clear of them), then
         # ω and ε once every arc is drawn, then the positions' numbers.
         pivot = at(mech.crank_pivot, 0)
-        labels = Labels(sk, _TEXT, rings=_MECHANISM_RINGS)
+        labels = Labels(sk, _TEXT, rings=_MECHANISM_RINGS, leaders=True)
         labels.avoid_drawn(sk.calls)
         for name in owners:
             if name in pts:
@@ -1370,18 +1372,20 @@ def _may_fit(
     sketches: Mapping[str, Sketch],
     order: Sequence[str],
     arrangements: Sequence[float | None],
-) -> bool:
-    """False when even the stand-in mechanism overflows its field in every
-    arrangement _try_layout would try (the real drawing is at least as large)."""
+) -> tuple[bool, bool]:
+    """Whether the sheet may fit with the stand-in mechanism in some
+    arrangement _try_layout would try (the real drawing is at least as large,
+    so where the stand-in fails the real one fails too), and whether the
+    stand-in found its field in one that failed."""
+    in_field = False
     for gap, tables_width in itertools.product((8.0, 5.0), arrangements):
         try:
             _try_layout(page, sketches, order, gap, True, tables_width)
         except LayoutError as err:
-            if not str(err).startswith("mechanism"):
-                return True
+            in_field = in_field or not str(err).startswith("mechanism")
             continue
-        return True
-    return False
+        return True, in_field
+    return False, in_field
 
 
 def compose_sheet1(
@@ -1427,8 +1431,10 @@ def compose_sheet1(
             tables = [sketches[n].extent().width for n in order if n.startswith("table")]
             # the tables in a row across the top right, or in a block two rows high
             arrangements = (None, max(max(tables), sum(tables) / 2.0 + 8.0))
-            if not _may_fit(page, sketches, order, arrangements):
-                continue  # the links alone overflow their field: no need to letter them
+            may, in_field = _may_fit(page, sketches, order, arrangements)
+            if not may:  # not even the links alone fit: no need to letter them
+                placed_field = placed_field or in_field
+                continue
             sketches["mechanism"] = mechanism(mu_l)
             for gap, tables_width in itertools.product((8.0, 5.0), arrangements):
                 try:
@@ -1492,10 +1498,16 @@ def _fallback(
         sketches, scales, drawn = _sketch_all(
             solution, look, lang, _next_scale(base_a, shrink), mu_l, stacked, cache
         )
+        sketches["mechanism"] = _bare_mechanism(solution, mu_l, look)
+        order = _order(sketches, stacked)
+        try:  # the links alone first: no need to letter a drawing that cannot fit
+            _try_layout(page, sketches, order, gap, False)
+        except LayoutError as err:
+            last = err
+            continue
         if ("mechanism", mu_l) not in cache:
             cache[("mechanism", mu_l)] = sketch_mechanism(solution, mu_l, look, lang)
         sketches["mechanism"] = cache[("mechanism", mu_l)]
-        order = _order(sketches, stacked)
         try:
             layout, placed, _ = _try_layout(page, sketches, order, gap, False)
         except LayoutError as err:
@@ -1512,4 +1524,9 @@ def _fallback(
             placed,
             Sheet1(layout, scales, shrink=shrink, diagrams=drawn),
         )
-    raise LayoutError(f"sheet 1 does not fit on {page.name or 'the page'}: {last}")
+    raise LayoutError(
+        f"{shown(solution.mechanism.path)}: sheet 1 does not fit on {page.name or 'the page'} "
+        f"even with the mechanism and the acceleration plans 4 scale steps smaller and the "
+        f"diagrams apart: {last}\n"
+        "  fix: study fewer plan positions (study.plans) or a mechanism of fewer groups"
+    )

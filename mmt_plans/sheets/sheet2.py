@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 
 from ..drawing.labels import Labels
-from ..drawing.layout import LayoutError, SheetLayout
+from ..drawing.layout import LayoutError, SheetLayout, first_free
 from ..drawing.markup import equation_markup as _equation_markup
 from ..drawing.markup import force_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
@@ -882,34 +882,12 @@ def _pack(
     boxes = [(tb.left, tb.bottom, tb.right, tb.top)]
     boxes += [(r.left, r.bottom, r.right, r.top) for r in (placed or {}).values()]
     out: dict[str, Rect] = dict(placed or {})
-    eps = 1e-9
     for name, w, h, corner in items:
-        b = np.array(boxes)
-        xs = np.concatenate([[region.left, region.right - w], b[:, 2] + gap, b[:, 0] - gap - w])
-        ys = np.concatenate([[region.bottom, region.top - h], b[:, 3] + gap, b[:, 1] - gap - h])
-        xs = np.unique(xs[(xs >= region.left - eps) & (xs <= region.right - w + eps)])
-        ys = np.unique(ys[(ys >= region.bottom - eps) & (ys <= region.top - h + eps)])
-        if not xs.size or not ys.size:
+        at = first_free(region, np.array(boxes), w, h, gap, corner)
+        if at is None:
             return None
-        X, Y = (a.ravel() for a in np.meshgrid(xs, ys))
-        # the gap between each candidate and each box (0 where they overlap)
-        dx = np.maximum(b[None, :, 0] - (X[:, None] + w), X[:, None] - b[None, :, 2])
-        dy = np.maximum(b[None, :, 1] - (Y[:, None] + h), Y[:, None] - b[None, :, 3])
-        if gap > 0:
-            # within `gap` of a box: the squared distance, no square roots
-            g = gap - 1e-9
-            ex, ey = np.maximum(dx, 0.0), np.maximum(dy, 0.0)
-            clash = ((dx < g) & (dy < g) & (ex * ex + ey * ey < g * g)).any(axis=1)
-        else:
-            clash = ((dx < 0) & (dy < 0)).any(axis=1)
-        ok = np.flatnonzero(~clash)
-        if not ok.size:
-            return None
-        sy = -Y[ok] if corner.startswith("top") else Y[ok]
-        sx = X[ok] if corner.endswith("left") else -X[ok]
-        k = ok[np.lexsort((sx, sy))[0]]
-        out[name] = Rect(float(X[k]), float(Y[k]), w, h)
-        boxes.append((float(X[k]), float(Y[k]), float(X[k]) + w, float(Y[k]) + h))
+        out[name] = Rect(at[0], at[1], w, h)
+        boxes.append((at[0], at[1], at[0] + w, at[1] + h))
     return out
 
 
