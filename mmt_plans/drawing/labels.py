@@ -673,7 +673,7 @@ class _ObstacleIndex:
         near = self.tree.query(shapely.box(x0 - g, y0 - g, x1 + g, y1 + g))
         if not near.shape[1]:
             return near[0], near[1]
-        b = np.c_[x0, y0, x1, y1][near[0]]
+        b = np.stack([x0, y0, x1, y1], axis=1)[near[0]]
         gap = np.empty(near.shape[1])
         seg = near[1] < self.n_segs
         gap[seg] = _segment_box(self.segs[near[1][seg]], b[seg])

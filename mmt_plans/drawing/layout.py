@@ -123,7 +123,7 @@ def _candidates(
     sy = -Y if corner.startswith("top") else Y
     sx = X if corner.endswith("left") else -X
     order = np.lexsort((sx, sy))
-    return np.c_[X[order], Y[order]]
+    return np.stack([X[order], Y[order]], axis=1)
 
 
 def first_free(

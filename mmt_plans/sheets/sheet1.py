@@ -568,11 +568,17 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             for lid, link in mech.links.items():
                 w, e = float(sw.omega[lid][k]), float(sw.eps[lid][k])
                 names = [p for p in link.points if p in pts]
-                if lid == mech.drive.link or len(names) < 2 or abs(w) < 1e-9 * w1:
+                if lid == mech.drive.link or len(names) < 2:
                     continue
-                spins: list[tuple[float, float, str, LineType]] = [(w, _OMEGA_R, "ω", "main")]
+                # a link at rest for an instant (ω = 0 at an extreme position)
+                # still has its ε: the arc of each that is not zero
+                spins: list[tuple[float, float, str, LineType]] = []
+                if abs(w) >= 1e-9 * w1:
+                    spins.append((w, _OMEGA_R, "ω", "main"))
                 if abs(e) >= 1e-9 * w1 * w1:
                     spins.append((e, _EPS_R, "ε", "thin"))
+                if not spins:
+                    continue
                 segments = [(at(a, k), at(b, k)) for a, b in itertools.combinations(names, 2)]
                 centre, start_deg, rooms = arcs.beside(segments, [(r, v) for v, r, _, _ in spins])
                 for (value, radius, sym, line), room in zip(spins, rooms):

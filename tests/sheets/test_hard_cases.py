@@ -183,3 +183,22 @@ def test_point_named_p_image_is_not_the_pole():
     lever = [c["content"] for c in backend2.in_group("zhukovsky-lever") if c.name == "text"]
     assert lever.count("p") == 1
     assert any("p'" in t for t in lever)
+
+
+def test_seed003_task3_rods_at_rest_get_their_eps_arcs():
+    # Seed 003, task 3: at the planned positions the rods 2 and 4 are at rest
+    # for an instant (ω = 0) while ε = ±68.9 1/s²; sheet 1 drew no arc for
+    # them (a link with ω = 0 was skipped whole). Now each gets its ε arc.
+    root = Path(__file__).resolve().parents[2]
+    solution = mmt_plans.solve(mmt_plans.load(root / "samples/tasks/seed003/task03_v1.toml"))
+    expected = 0
+    for i in solution.plan_positions:
+        k = solution.entry(i)
+        for lid in (2, 4):
+            assert abs(float(solution.sweep.omega[lid][k])) < 1e-9
+            assert abs(float(solution.sweep.eps[lid][k])) > 1.0
+            expected += 1
+    backend = RecordingBackend()
+    compose_sheet1(solution, backend, "en")
+    texts = [c["content"] for c in backend.in_group("mechanism") if c.name == "text"]
+    assert texts.count("ε") == expected
