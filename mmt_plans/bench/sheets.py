@@ -1,5 +1,7 @@
 """Sheet writing times for `make bench` (targets: both sheets as SVG under
-0.5 s, as PDF under 3 s, for the default sample).
+0.5 s, as PDF under 1 s, for the default sample; both sheets of the eleven-link
+hard case under 2 s; six named points 10 mm apart on one link no slower than
+the default sample by more than its extra drawing).
 
 Each figure starts from a loaded mechanism: it solves it (everything the
 sheets draw), composes, writes SVG, and for PDF converts through Cairo.
@@ -18,6 +20,9 @@ from ..spec import load
 from .timing import best_time
 
 DEFAULT = "six_link_press"
+# mechanisms nobody tuned the layout for (issue 21), in a source checkout
+HARD = Path(__file__).resolve().parents[2] / "tests" / "data" / "hard"
+HARD_CASES = ("eleven_links_compound_hinge", "six_points_10mm_apart")
 
 
 def bench_sheets(files: Sequence[Path], repeat: int, echo: Callable[[str], None]) -> None:
@@ -36,7 +41,21 @@ def bench_sheets(files: Sequence[Path], repeat: int, echo: Callable[[str], None]
                     t = best_time(write, max(1, repeat // 2))
                     what = f"sheet {numbers[0]}" if len(numbers) == 1 else "both"
                     rows.append([path.stem, what, fmt, f"{t:.3f}"])
+            for name in HARD_CASES:
+                hard = HARD / f"{name}.toml"
+                if not hard.is_file():
+                    continue
+                hard_mech = load(hard)
+
+                def write_hard() -> None:
+                    write_sheets(solve(hard_mech), out, ("svg",), "en", tuple(sheets))
+
+                t = best_time(write_hard, max(1, repeat // 4))
+                rows.append([name, "both", "svg", f"{t:.3f}"])
     echo("Writing the A1 sheets (analysis on demand + compose + write; PDF through Cairo):")
     echo(table(["sample", "sheets", "format", "seconds"], rows))
-    echo("targets: both sheets as SVG < 0.5 s, as PDF < 3 s")
+    echo(
+        "targets: both sheets as SVG < 0.5 s, as PDF < 1 s; "
+        "the eleven-link hard case (tests/data/hard) < 2 s"
+    )
     echo("")

@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Sequence
 from contextlib import nullcontext
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 import shapely
@@ -106,7 +106,7 @@ class Labels:
         self._obstacles: list[BaseGeometry] = []  # shapes, each kept its `_clearance` mm off
         self._clearance: list[float] = []
         self._leaders: set[int] = set()  # which obstacles are leaders (never crossed)
-        self._tree: STRtree | None = None
+        self._tree: _ObstacleIndex | None = None
         self._grown: BaseGeometry | None = None
         self.unsettled = 0  # labels written where they cover something: no place was free
         self._later: list[tuple[str, Sequence[float], str, PointLike | None]] = []
@@ -340,20 +340,19 @@ class Labels:
     ) -> np.ndarray:
         """0.25 for each avoided thing a candidate box comes within its clearance of."""
         cost = np.zeros(x0.size)
-        if not self._obstacles:
+        if not self._obstacles or not x0.size:
             return cost
-        if self._tree is None:
-            self._tree = STRtree(self._obstacles)
-            self._reach = np.array(self._clearance)
-        boxes = shapely.box(x0, y0, x1, y1)
-        near = self._tree.query(boxes, predicate="dwithin", distance=float(self._reach.max()))
-        if near.shape[1]:
-            gap = shapely.distance(
-                boxes[near[0]], np.asarray(self._obstacles, dtype=object)[near[1]]
-            )
-            hit = near[0][gap < self._reach[near[1]]]
-            cost += 0.25 * np.bincount(hit, minlength=x0.size)
+        box_, _ = self._index().boxes_near(x0, y0, x1, y1)
+        if box_.size:
+            cost += 0.25 * np.bincount(box_, minlength=x0.size)
         return cost
+
+    def _index(self) -> _ObstacleIndex:
+        """The obstacles as segments and solids in a tree (built again after a change)."""
+        if self._tree is None:
+            self._tree = _ObstacleIndex(self._obstacles, self._clearance)
+            self._reach = np.array(self._clearance)
+        return cast(_ObstacleIndex, self._tree)
 
     def _label_cost(
         self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
@@ -514,18 +513,14 @@ class Labels:
         out = np.zeros(len(lines), dtype=np.int64)
         if not self._obstacles or not len(lines):
             return out
-        if self._tree is None:
-            self._tree = STRtree(self._obstacles)
-            self._reach = np.array(self._clearance)
-        near = self._tree.query(lines, predicate="dwithin", distance=float(self._reach.max()))
-        if not near.shape[1]:
+        index = self._index()
+        line, owner = index.lines_near(lines)
+        if not line.size:
             return out
-        obstacles = np.asarray(self._obstacles, dtype=object)[near[1]]
-        hit = shapely.distance(lines[near[0]], obstacles) < self._reach[near[1]]
         # a polygon (arrowhead, dot) or another leader: never
-        weight = np.where(shapely.get_type_id(obstacles) == 3, 10**6, 1)
-        weight[np.isin(near[1], list(self._leaders))] = 10**6
-        np.add.at(out, near[0][hit], weight[hit])
+        weight = np.where(index.solid[owner], 10**6, 1)
+        weight[np.isin(owner, list(self._leaders))] = 10**6
+        np.add.at(out, line, weight)
         return out
 
     def _runs_along(self, line: BaseGeometry) -> bool:
@@ -533,10 +528,7 @@ class Labels:
         it: it meets it at under 30°): it would read as part of it."""
         if not self._obstacles:
             return False
-        if self._tree is None:
-            self._tree = STRtree(self._obstacles)
-            self._reach = np.array(self._clearance)
-        near = self._tree.query(line, predicate="dwithin", distance=_LEADER_ALONG[0])
+        near = STRtree(self._obstacles).query(line, predicate="dwithin", distance=_LEADER_ALONG[0])
         if not near.size:
             return False
         obstacles = np.asarray(self._obstacles, dtype=object)[near]
@@ -563,6 +555,152 @@ class Labels:
         if self._crossings(np.array([clear]))[0] or self._runs_along(clear):
             return None
         return (ax, ay), end
+
+
+def _point_box(px: np.ndarray, py: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Distance from points to boxes (x0, y0, x1, y1 columns of `b`), 0 inside."""
+    dx = np.maximum(np.maximum(b[:, 0] - px, px - b[:, 2]), 0.0)
+    dy = np.maximum(np.maximum(b[:, 1] - py, py - b[:, 3]), 0.0)
+    return np.hypot(dx, dy)
+
+
+def _point_segment(px: np.ndarray, py: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """Distance from points to segments (x0, y0, x1, y1 columns of `s`)."""
+    vx, vy = s[:, 2] - s[:, 0], s[:, 3] - s[:, 1]
+    n2 = vx * vx + vy * vy
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.where(n2 > 0.0, ((px - s[:, 0]) * vx + (py - s[:, 1]) * vy) / n2, 0.0)
+    t = np.clip(t, 0.0, 1.0)
+    return np.hypot(px - (s[:, 0] + t * vx), py - (s[:, 1] + t * vy))
+
+
+def _segment_box(s: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Distance from segments to boxes, row by row: 0 where the segment
+    meets the box (Liang-Barsky clipping), else the least of its ends' to the
+    box and the box's corners' to it."""
+    x0, y0 = s[:, 0], s[:, 1]
+    dx, dy = s[:, 2] - x0, s[:, 3] - y0
+    t0, t1 = np.zeros(len(s)), np.ones(len(s))
+    ok = np.ones(len(s), dtype=bool)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for p, q in (
+            (-dx, x0 - b[:, 0]),
+            (dx, b[:, 2] - x0),
+            (-dy, y0 - b[:, 1]),
+            (dy, b[:, 3] - y0),
+        ):
+            flat = p == 0.0
+            ok &= ~(flat & (q < 0.0))
+            r = q / np.where(flat, 1.0, p)
+            t0 = np.where(~flat & (p < 0.0), np.maximum(t0, r), t0)
+            t1 = np.where(~flat & (p > 0.0), np.minimum(t1, r), t1)
+    meets = ok & (t0 <= t1)
+    d = np.minimum(_point_box(s[:, 0], s[:, 1], b), _point_box(s[:, 2], s[:, 3], b))
+    for cx, cy in ((b[:, 0], b[:, 1]), (b[:, 2], b[:, 1]), (b[:, 2], b[:, 3]), (b[:, 0], b[:, 3])):
+        d = np.minimum(d, _point_segment(cx, cy, s))
+    return np.where(meets, 0.0, d)
+
+
+def _segment_segment(s: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Distance between segments, row by row: 0 where they cross, else the
+    least of each one's ends' to the other."""
+
+    def cross(ax, ay, bx, by, cx, cy):  # noqa: ANN001, ANN202
+        return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+
+    o1 = cross(s[:, 0], s[:, 1], s[:, 2], s[:, 3], t[:, 0], t[:, 1])
+    o2 = cross(s[:, 0], s[:, 1], s[:, 2], s[:, 3], t[:, 2], t[:, 3])
+    o3 = cross(t[:, 0], t[:, 1], t[:, 2], t[:, 3], s[:, 0], s[:, 1])
+    o4 = cross(t[:, 0], t[:, 1], t[:, 2], t[:, 3], s[:, 2], s[:, 3])
+    crossing = (o1 * o2 < 0.0) & (o3 * o4 < 0.0)
+    d = np.minimum(
+        np.minimum(_point_segment(t[:, 0], t[:, 1], s), _point_segment(t[:, 2], t[:, 3], s)),
+        np.minimum(_point_segment(s[:, 0], s[:, 1], t), _point_segment(s[:, 2], s[:, 3], t)),
+    )
+    return np.where(crossing, 0.0, d)
+
+
+class _ObstacleIndex:
+    """What labels avoid, cut into pieces a query measures cheaply: every line,
+    polyline and ring as its segments, a point as a segment of no length,
+    solids (filled polygons, text boxes, arrowheads) whole; a tree of the
+    pieces' boxes. A query asks the tree for the pieces whose boxes come within
+    the largest clearance, measures exactly (numpy for segments, shapely for
+    solids) and returns each (query, obstacle) pair once."""
+
+    def __init__(self, obstacles: Sequence[BaseGeometry], clearance: Sequence[float]) -> None:
+        shapes = np.asarray(obstacles, dtype=object)
+        kind = shapely.get_type_id(shapes)
+        self.reach = np.asarray(clearance, dtype=float)
+        self.solid = kind == 3  # a polygon: measured whole, never crossed by a leader
+        lines = np.flatnonzero((kind == 1) | (kind == 2))
+        points = np.flatnonzero(kind == 0)
+        xy, of = shapely.get_coordinates(shapes[lines], return_index=True)
+        same = of[:-1] == of[1:]
+        segs = np.c_[xy[:-1][same], xy[1:][same]]
+        pxy = shapely.get_coordinates(shapes[points])
+        self.segs = np.concatenate([segs, np.c_[pxy, pxy]]).reshape(-1, 4)
+        whole = np.flatnonzero(~np.isin(kind, (0, 1, 2)))  # solids and anything else
+        self.whole = shapes[whole]
+        self.owner = np.concatenate([lines[of[:-1][same]], points, whole]).astype(int)
+        self.n_segs = len(self.segs)
+        bounds = np.concatenate(
+            [
+                np.c_[
+                    np.minimum(self.segs[:, 0], self.segs[:, 2]),
+                    np.minimum(self.segs[:, 1], self.segs[:, 3]),
+                    np.maximum(self.segs[:, 0], self.segs[:, 2]),
+                    np.maximum(self.segs[:, 1], self.segs[:, 3]),
+                ],
+                shapely.bounds(self.whole).reshape(-1, 4),
+            ]
+        )
+        self.tree = STRtree(shapely.box(bounds[:, 0], bounds[:, 1], bounds[:, 2], bounds[:, 3]))
+        self.grow = float(self.reach.max()) if len(self.reach) else 0.0
+        self.n = len(shapes)
+
+    def _pairs(self, near: np.ndarray, gap: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        owner = self.owner[near[1]]
+        hit = gap < self.reach[owner]
+        keyed = np.unique(near[0][hit] * self.n + owner[hit])
+        return keyed // self.n, keyed % self.n
+
+    def boxes_near(
+        self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """(box, obstacle) pairs: the boxes within each obstacle's clearance."""
+        g = self.grow
+        near = self.tree.query(shapely.box(x0 - g, y0 - g, x1 + g, y1 + g))
+        if not near.shape[1]:
+            return near[0], near[1]
+        b = np.stack([x0, y0, x1, y1], axis=1)[near[0]]
+        gap = np.empty(near.shape[1])
+        seg = near[1] < self.n_segs
+        gap[seg] = _segment_box(self.segs[near[1][seg]], b[seg])
+        if (~seg).any():
+            rest = near[:, ~seg]
+            gap[~seg] = shapely.distance(
+                shapely.box(x0[rest[0]], y0[rest[0]], x1[rest[0]], y1[rest[0]]),
+                self.whole[rest[1] - self.n_segs],
+            )
+        return self._pairs(near, gap)
+
+    def lines_near(self, lines: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(line, obstacle) pairs for two-point `lines`: those within each
+        obstacle's clearance."""
+        xy = shapely.get_coordinates(lines).reshape(-1, 4)
+        lo = np.minimum(xy[:, :2], xy[:, 2:]) - self.grow
+        hi = np.maximum(xy[:, :2], xy[:, 2:]) + self.grow
+        near = self.tree.query(shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1]))
+        if not near.shape[1]:
+            return near[0], near[1]
+        gap = np.empty(near.shape[1])
+        seg = near[1] < self.n_segs
+        gap[seg] = _segment_segment(self.segs[near[1][seg]], xy[near[0][seg]])
+        if (~seg).any():
+            rest = near[:, ~seg]
+            gap[~seg] = shapely.distance(lines[rest[0]], self.whole[rest[1] - self.n_segs])
+        return self._pairs(near, gap)
 
 
 def drawn_shapes(call: Call, backend: RecordingBackend) -> list[BaseGeometry]:

@@ -9,11 +9,11 @@ pair of footprints that share area (or come closer than a clearance).
 
 from __future__ import annotations
 
-import itertools
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Literal, Union
 
+import numpy as np
 import shapely
 from shapely.geometry import Polygon, box
 from shapely.geometry.base import BaseGeometry
@@ -23,6 +23,7 @@ from ..render.backend import PointLike, as_point
 from .page import Page, Rect
 
 __all__ = [
+    "first_free",
     "ElementKind",
     "Corner",
     "Element",
@@ -98,6 +99,61 @@ def find_overlaps(
     return [(items[i][0], items[j][0]) for i, j in sorted(pairs)]
 
 
+def _is_box(shape: BaseGeometry) -> bool:
+    """True for an axis-parallel rectangle (the footprint of a placed Rect)."""
+    x0, y0, x1, y1 = shape.bounds
+    return shape.geom_type == "Polygon" and abs(shape.area - (x1 - x0) * (y1 - y0)) <= _EPS
+
+
+def _candidates(
+    region: Rect, boxes: np.ndarray, width: float, height: float, gap: float, corner: str
+) -> np.ndarray:
+    """Corners (x, y) a width × height rectangle may take: in line with the
+    region's edges and, `gap` away, with the boxes' edges; nearest `corner`
+    first, rows first."""
+    xs = np.concatenate(
+        [[region.left, region.right - width], boxes[:, 2] + gap, boxes[:, 0] - gap - width]
+    )
+    ys = np.concatenate(
+        [[region.bottom, region.top - height], boxes[:, 3] + gap, boxes[:, 1] - gap - height]
+    )
+    xs = np.unique(xs[(xs >= region.left - _EPS) & (xs <= region.right - width + _EPS)])
+    ys = np.unique(ys[(ys >= region.bottom - _EPS) & (ys <= region.top - height + _EPS)])
+    X, Y = (a.ravel() for a in np.meshgrid(xs, ys))
+    sy = -Y if corner.startswith("top") else Y
+    sx = X if corner.endswith("left") else -X
+    order = np.lexsort((sx, sy))
+    return np.stack([X[order], Y[order]], axis=1)
+
+
+def first_free(
+    region: Rect, boxes: np.ndarray, width: float, height: float, gap: float, corner: str
+) -> tuple[float, float] | None:
+    """The packer of both sheets: the lower-left corner of the first candidate
+    (_candidates) for a width × height rectangle in `region` that keeps `gap`
+    mm from every box (x0, y0, x1, y1 rows; with gap 0, interiors do not
+    meet), on arrays; None when there is no room."""
+    xy = _candidates(region, boxes, width, height, gap, corner)
+    if not len(xy):
+        return None
+    if not len(boxes):
+        return float(xy[0, 0]), float(xy[0, 1])
+    X, Y = xy[:, :1], xy[:, 1:]
+    # the gap between each candidate and each box (negative where they overlap)
+    dx = np.maximum(boxes[None, :, 0] - (X + width), X - boxes[None, :, 2])
+    dy = np.maximum(boxes[None, :, 1] - (Y + height), Y - boxes[None, :, 3])
+    if gap > 0:
+        g = gap - _EPS  # within `gap` of a box: the squared distance, no square roots
+        ex, ey = np.maximum(dx, 0.0), np.maximum(dy, 0.0)
+        clash = ((dx < g) & (dy < g) & (ex * ex + ey * ey < g * g)).any(axis=1)
+    else:
+        clash = ((dx < 0) & (dy < 0)).any(axis=1)
+    ok = np.flatnonzero(~clash)
+    if not ok.size:
+        return None
+    return float(X[ok[0], 0]), float(Y[ok[0], 0])
+
+
 class SheetLayout:
     """The elements of one sheet and the free space left for more.
 
@@ -166,27 +222,19 @@ class SheetLayout:
             raise ValueError(f"{name}: a drawing needs a positive size, got {width} x {height}")
         gap = self.gap if gap is None else float(gap)
         region = within if within is not None else self.region
-        xs = {region.left, region.right - width}
-        ys = {region.bottom, region.top - height}
-        for e in self._elements.values():
-            b = e.bounds
-            xs.update((b.right + gap, b.left - gap - width))
-            ys.update((b.top + gap, b.bottom - gap - height))
-        xs = {x for x in xs if region.left - _EPS <= x <= region.right - width + _EPS}
-        ys = {y for y in ys if region.bottom - _EPS <= y <= region.top - height + _EPS}
-
-        top_first = corner.startswith("top")
-        left_first = corner.endswith("left")
-
-        def preference(xy: tuple[float, float]) -> tuple[float, float]:
-            x, y = xy
-            return (-y if top_first else y, x if left_first else -x)
-
-        for x, y in sorted(itertools.product(xs, ys), key=preference):
-            rect = Rect(x, y, width, height)
-            if self.fits(rect, gap, region):
+        boxes = np.array([e.footprint.bounds for e in self._elements.values()]).reshape(-1, 4)
+        if all(_is_box(e.footprint) for e in self._elements.values()):
+            at = first_free(region, boxes, width, height, gap, corner)
+            if at is not None:
+                rect = Rect(at[0], at[1], width, height)
                 self.register(name, rect, kind)
                 return rect
+        else:  # a footprint of another shape: each candidate tried against it exactly
+            for x, y in _candidates(region, boxes, width, height, gap, corner):
+                rect = Rect(float(x), float(y), width, height)
+                if self.fits(rect, gap, region):
+                    self.register(name, rect, kind)
+                    return rect
         raise LayoutError(
             f"{name}: no room for {width:.0f} x {height:.0f} mm on the sheet "
             f"(free region {region.width:.0f} x {region.height:.0f} mm, "

@@ -21,12 +21,20 @@ def _sup(tag: str) -> str:
     return "τ" if tag == "t" else tag
 
 
+# the poles of the plans and of the lever: no image may be written as one
+POLE_LETTERS = frozenset({"p", "π"})
+
+
 def image_markup(name: str) -> str:
-    """ "S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters."""
+    """ "S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters.
+
+    A point whose letter would be a pole's (a point named P or π) gets a
+    prime: its image is p' on every plan and on the lever, never the pole p."""
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
     if m:
         return f"{m.group(1).lower()}_{{{m.group(2)}}}"
-    return name.lower()
+    image = name.lower()
+    return f"{image}'" if image in POLE_LETTERS else image
 
 
 def point_markup(name: str) -> str:

@@ -18,22 +18,33 @@ class Sketch(RecordingBackend):
 
     def __init__(self, look: Any) -> None:
         super().__init__(841.0, 594.0, look)
+        # each call's bounds, measured once: the layout asks for extents often
+        self._bounds: dict[int, tuple[Any, tuple[float, float, float, float] | None]] = {}
+
+    def _call_bounds(self, c: Any) -> tuple[float, float, float, float] | None:
+        hit = self._bounds.get(id(c))
+        if hit is not None and hit[0] is c:
+            return hit[1]
+        if c.name == "text":
+            pts = list(zip(*[iter(self.text_box(c))] * 2))
+        else:
+            pts = c.points()
+        bounds = None
+        if pts:
+            xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+            bounds = (min(xs), min(ys), max(xs), max(ys))
+        self._bounds[id(c)] = (c, bounds)  # the call is kept, so its id stays its own
+        return bounds
 
     def extent(self) -> Rect:
-        xs: list[float] = []
-        ys: list[float] = []
-        for c in self.calls:
-            if c.name == "text":
-                x0, y0, x1, y1 = self.text_box(c)
-                pts = [(x0, y0), (x1, y1)]
-            else:
-                pts = c.points()
-            for x, y in pts:
-                xs.append(x)
-                ys.append(y)
-        if not xs:
+        found = [b for b in map(self._call_bounds, self.calls) if b is not None]
+        if not found:
             return Rect(0.0, 0.0, 1.0, 1.0)
-        return Rect.from_bounds(min(xs) - PAD, min(ys) - PAD, max(xs) + PAD, max(ys) + PAD)
+        x0 = min(b[0] for b in found)
+        y0 = min(b[1] for b in found)
+        x1 = max(b[2] for b in found)
+        y1 = max(b[3] for b in found)
+        return Rect.from_bounds(x0 - PAD, y0 - PAD, x1 + PAD, y1 + PAD)
 
     def add_to_last_group(self, other: Sketch, group_id: str) -> None:
         """Splice `other`'s calls into this sketch's last group `group_id`, before its end."""

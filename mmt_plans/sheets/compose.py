@@ -157,18 +157,19 @@ def write_composed(
 ) -> list[Path]:
     """Write sheet<N>.<format> of the composed sheets `sheets` into out_dir
     (render's factory by format: svg, pdf, png, dxf); returns the paths. A
-    sheet that could not be composed raises its error after the sheets
-    before it are written."""
+    sheet that could not be composed raises its error before any sheet is
+    written, so a failed run leaves no sheet of it behind."""
     formats = tuple(formats)
     unknown = [f for f in formats if f not in FORMATS]
     if unknown:
         raise ValueError(
             f"unknown format {', '.join(unknown)}; expected some of {', '.join(FORMATS)}"
         )
+    wanted = list(sheets)
+    recordings = {n: composed.sheet(n).recording() for n in wanted}  # raises a sheet's error
     out = ensure_dir(out_dir)
     written: list[Path] = []
-    for n in sheets:
-        recording = composed.sheet(n).recording()
+    for n, recording in recordings.items():
         title = f"{solution.mechanism.title_in(composed.lang)}, sheet {n}"
         for fmt in formats:
             written.append(write_drawing(recording, out / f"sheet{n}.{fmt}", fmt, title))

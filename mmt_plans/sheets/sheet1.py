@@ -30,6 +30,7 @@ from ..drawing.sketch import PAD as _PAD
 from ..drawing.sketch import Sketch
 from ..drawing.symbols import hatched_base, hatched_guide, sense_arc, unit_vector
 from ..drawing.table import table_sketch
+from ..errors import shown
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend
 from ..render.look import LineType
@@ -124,6 +125,8 @@ _OMEGA_R, _EPS_R, _CRANK_R = 5.0, 8.0, 8.0  # radii of the ω, ε arcs and of ω
 # a label among many lines may go this much further out, mm, tried in turn
 _MECHANISM_RINGS = (0.0, 2.5, 5.0, 9.0, 14.0, 20.0)
 _SPAN = 150.0
+_NEAR_RINGS = 2  # the rings of a label's boxes tried first, for all candidates at once
+_MAX_SEGMENTS = 6  # a link of many points: its arcs are tried beside its longest segments
 # a diagram's number or pole letter goes no further than this from its point, mm
 _TICK_RINGS = (
     0.0,
@@ -143,28 +146,6 @@ def _inset(radius: float) -> float:
     return 0.0 if radius <= _OMEGA_R else 25.0
 
 
-def _label_room(
-    centre: np.ndarray, start: float, spins: Sequence[tuple[float, float]]
-) -> list[list[Any]]:
-    """For each arc (radius, sense) from `start`, the boxes its label may take
-    beside its arrowhead: round it in eight directions, as far off as the
-    label placer's rings), nearest first."""
-    out = []
-    for radius, sense in spins:
-        inset = _inset(radius)
-        t = math.radians(start + _SPAN - inset if sense > 0 else start + inset)
-        u = np.array([math.cos(t), math.sin(t)])
-        tip = centre + radius * u
-        boxes = []
-        for ring in 1.5 + np.asarray(_MECHANISM_RINGS):
-            for k in range(8):
-                d = math.radians(math.degrees(t) + 45.0 * k)
-                x, y = tip + np.array([math.cos(d), math.sin(d)]) * (ring + 3.0)
-                boxes.append(shapely.box(x - 3.2, y - 2.6, x + 3.2, y + 2.6))
-        out.append(boxes)
-    return out
-
-
 def _between_spokes(
     centre: np.ndarray, tip: np.ndarray, spokes: Sequence[np.ndarray], width: float
 ) -> np.ndarray:
@@ -173,7 +154,8 @@ def _between_spokes(
     far out as the gap is wide enough; `tip` itself when no gap will do."""
     angles = sorted(
         {
-            round(math.degrees(math.atan2(v[1], v[0])) % 360.0, 6)
+            # rounded before the wrap, so that 359.9999999 and 0 are one spoke
+            round(math.degrees(math.atan2(v[1], v[0])), 6) % 360.0
             for v in spokes
             if np.hypot(*v) > 1e-9
         }
@@ -185,6 +167,8 @@ def _between_spokes(
     best: tuple[float, np.ndarray] | None = None
     for a, b in zip(angles, angles[1:] + [angles[0] + 360.0]):
         half = math.radians(b - a) / 2
+        if half < 1e-6:
+            continue  # spokes that coincide leave no gap
         if half >= math.pi / 2:
             r = float(np.hypot(*(tip - centre)))
         else:
@@ -224,7 +208,8 @@ class _ArcPlacer:
         """Keep later arcs and labels' boxes off these (the room of labels to come)."""
         self._add(shapes, "arc")
 
-    def _near(self, geom: Any, distance: float) -> np.ndarray:
+    def _sync(self) -> bool:
+        """Take in what was drawn since the last query; False: nothing is drawn."""
         calls = self.sk.calls
         for c in calls[self._seen :]:
             arc = c.name == "arc" or (c.name == "arrow" and c.args.get("head_length") == 2.5)
@@ -233,11 +218,89 @@ class _ArcPlacer:
             self._add(drawn_shapes(c, self.sk), kind)
         self._seen = len(calls)
         if not self._shapes:
-            return np.zeros(0, dtype=int)
+            return False
         if self._tree is None:
-            self._tree = shapely.STRtree(self._shapes)
+            # long polylines (trajectories, arcs) go in as their segments, so
+            # that a query measures distances to a few short pieces, not to
+            # whole curves whose boxes cover half the drawing
+            shapes = np.asarray(self._shapes, dtype=object)
+            n = shapely.get_num_coordinates(shapes)
+            long = (shapely.get_type_id(shapes) == 1) & (n >= 2)
+            whole = np.flatnonzero(~long)
+            xy, of = shapely.get_coordinates(shapes[long], return_index=True)
+            same = of[:-1] == of[1:]  # consecutive points of one polyline
+            ends = np.stack([xy[:-1][same], xy[1:][same]], axis=1)
+            parts = np.concatenate([shapes[whole], shapely.linestrings(ends)])
+            owner = np.concatenate([whole, np.flatnonzero(long)[of[:-1][same]]])
+            segs = [np.full((len(whole), 4), np.nan), ends.reshape(-1, 4)]
+            self._tree = shapely.STRtree(parts)
+            self._parts = parts
+            self._segs = np.concatenate(segs)  # x0 y0 x1 y1 of a segment part, else NaN
+            self._owner = np.asarray(owner, dtype=int)
             self._w = np.asarray(self._weights)
-        return np.asarray(self._tree.query(geom, predicate="dwithin", distance=distance))
+        return True
+
+    def _query(self, geoms: Any, distance: float) -> np.ndarray:
+        """(index of the query shape, index of the drawn shape) pairs, each once;
+        distance 0: the shapes that touch (a cheaper, prepared test)."""
+        if distance > 0.0:
+            pairs = np.asarray(self._tree.query(geoms, predicate="dwithin", distance=distance))
+        else:
+            pairs = self._touching(geoms)
+        if pairs.ndim == 1:
+            return np.unique(self._owner[pairs])
+        if pairs.shape[1] == 0:
+            return pairs
+        keyed = np.unique(pairs[0] * len(self._shapes) + self._owner[pairs[1]])
+        return np.stack([keyed // len(self._shapes), keyed % len(self._shapes)])
+
+    def _touching(self, boxes: np.ndarray) -> np.ndarray:
+        """(box, part) pairs of axis-parallel `boxes` and the drawn parts they
+        touch: the tree's bounding boxes, then the exact test in numpy for a
+        segment (Liang-Barsky clipping), shapely's for anything else."""
+        pairs = np.asarray(self._tree.query(boxes))
+        if pairs.shape[-1] == 0:
+            return pairs.reshape(2, 0)
+        bx = shapely.bounds(np.asarray(boxes, dtype=object)[pairs[0]])
+        sg = self._segs[pairs[1]]
+        seg = ~np.isnan(sg[:, 0])
+        keep = np.zeros(len(sg), dtype=bool)
+        x0, y0, dx, dy = sg[seg, 0], sg[seg, 1], sg[seg, 2] - sg[seg, 0], sg[seg, 3] - sg[seg, 1]
+        b = bx[seg]
+        t0, t1 = np.zeros(len(x0)), np.ones(len(x0))
+        ok = np.ones(len(x0), dtype=bool)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for p, q in (
+                (-dx, x0 - b[:, 0]),
+                (dx, b[:, 2] - x0),
+                (-dy, y0 - b[:, 1]),
+                (dy, b[:, 3] - y0),
+            ):
+                flat = p == 0.0
+                ok &= ~(flat & (q < 0.0))
+                r = q / np.where(flat, 1.0, p)
+                t0 = np.where(~flat & (p < 0.0), np.maximum(t0, r), t0)
+                t1 = np.where(~flat & (p > 0.0), np.minimum(t1, r), t1)
+        keep[seg] = ok & (t0 <= t1)
+        other = ~seg
+        if other.any():
+            keep[other] = shapely.intersects(
+                np.asarray(boxes, dtype=object)[pairs[0][other]], self._parts[pairs[1][other]]
+            )
+        return pairs[:, keep]
+
+    def _near(self, geom: Any, distance: float) -> np.ndarray:
+        if not self._sync():
+            return np.zeros(0, dtype=int)
+        return self._query(geom, distance)
+
+    def _near_all(self, geoms: np.ndarray, distance: float) -> tuple[np.ndarray, np.ndarray]:
+        """One vectorised query for many shapes: (index of the shape, index of
+        what it comes within `distance` of) pairs."""
+        if not self._sync() or len(geoms) == 0:
+            return np.zeros(0, dtype=int), np.zeros(0, dtype=int)
+        pairs = self._query(geoms, distance)
+        return pairs[0], pairs[1]
 
     def cost(self, arc: Any) -> float:
         """What `arc` crosses, weighted."""
@@ -247,28 +310,6 @@ class _ArcPlacer:
     def _covered(self, box: Any) -> int:
         return int(self._near(box, 0.3).size)
 
-    def rooms(self, candidates: Sequence[Sequence[Any]]) -> tuple[float, list[Any]]:
-        """For each label the nearest free box of its candidates (not on another
-        label's of the same link), else the least covered; the score: 10 for
-        each drawn thing a box touches, and how far out it is, mm."""
-        total, chosen = 0.0, cast(list[Any], [])
-        for boxes in candidates:
-            best: tuple[float, Any] | None = None
-            for k, b in enumerate(boxes):
-                if any(b.intersects(c) for c in chosen):
-                    continue
-                covered = self._covered(b)
-                score = 10.0 * covered + 0.5 * _MECHANISM_RINGS[k // 8]
-                if best is None or score < best[0]:
-                    best = (score, b)
-                if covered == 0:
-                    break
-            if best is None:
-                best = (0.0, boxes[0])
-            total += best[0]
-            chosen.append(best[1])
-        return total, chosen
-
     def beside(
         self,
         segments: Sequence[tuple[np.ndarray, np.ndarray]],
@@ -276,29 +317,105 @@ class _ArcPlacer:
     ) -> tuple[np.ndarray, float, list[np.ndarray]]:
         """Centre and start angle (deg) of the arcs (radius, sense) of a link
         beside one of its segments, spanning _SPAN degrees on one side of it,
-        and the free place of each one's label (its box's centre)."""
-        best: tuple[float, np.ndarray, float, list[Any]] | None = None
-        order = 0
+        and the free place of each one's label (its box's centre).
+
+        Every candidate (a point along a segment, a side) is scored at once:
+        the arcs' crossings in one vectorised query, the label boxes' cover in
+        another; for each label the nearest box clear of the drawing and of the
+        link's other label, else the least covered (10 for each thing a box
+        touches, and how far out it is, mm)."""
+        centres: list[np.ndarray] = []
+        starts: list[float] = []
+        # the cost bounded for a link of many points: its longest segments only
+        lengths = [float(np.hypot(*(b - a))) for a, b in segments]
+        if len(segments) > _MAX_SEGMENTS:
+            cut = sorted(lengths, reverse=True)[_MAX_SEGMENTS - 1]
+            segments = [sg for sg, ln in zip(segments, lengths) if ln >= cut][:_MAX_SEGMENTS]
         for a, b in segments:
             if float(np.hypot(*(b - a))) < 1e-9:
                 continue
             theta = math.degrees(math.atan2(*(b - a)[::-1]))
             for t in _ALONG_LINK:
-                c = a + t * (b - a)
                 for side in (0.0, 180.0):
-                    start = theta + side + (180.0 - _SPAN) / 2
-                    score = sum(
-                        self.cost(arc_line(c, r, start + _inset(r), start + _SPAN - _inset(r)))
-                        for r, _ in spins
-                    )
-                    room, boxes = self.rooms(_label_room(c, start, spins))
-                    score += room + 0.01 * order
-                    order += 1
-                    if best is None or score < best[0]:
-                        best = (score, c, start, boxes)
-        assert best is not None
-        self.reserve(best[3])
-        return best[1], best[2], [np.asarray(b.centroid.coords[0]) for b in best[3]]
+                    centres.append(a + t * (b - a))
+                    starts.append(theta + side + (180.0 - _SPAN) / 2)
+        assert centres, "a link with no segment of length"
+        cs = np.asarray(centres, dtype=float)
+        st = np.asarray(starts, dtype=float)
+        m, n_spins = len(cs), len(spins)
+        score = 0.01 * np.arange(m, dtype=float)
+        # the arcs: the same polylines as arc_line draws
+        for radius, _ in spins:
+            inset = _inset(radius)
+            span = (_SPAN - 2.0 * inset) % 360.0 or 360.0
+            t = np.radians((st + inset)[:, None] + np.linspace(0.0, span, 24)[None, :])
+            xy = np.stack([cs[:, :1] + radius * np.cos(t), cs[:, 1:] + radius * np.sin(t)], -1)
+            i, j = self._near_all(shapely.linestrings(xy), 0.6)
+            if i.size:
+                score += np.bincount(i, weights=self._w[j], minlength=m)
+        # the label boxes: 8 directions × the rings round each arrowhead
+        rings = 1.5 + np.asarray(_MECHANISM_RINGS)
+        dirs = 45.0 * np.arange(8)
+        boxes_xy = np.empty((m, n_spins, len(rings) * 8, 2))
+        for s, (radius, sense) in enumerate(spins):
+            inset = _inset(radius)
+            tip_deg = st + _SPAN - inset if sense > 0 else st + inset
+            tr = np.radians(tip_deg)
+            tip = cs + radius * np.stack([np.cos(tr), np.sin(tr)], -1)
+            d = np.radians(tip_deg[:, None] + dirs[None, :])  # (m, 8)
+            reach = (rings + 3.0)[None, :, None]  # (1, rings, 1)
+            boxes_xy[:, s, :, 0] = (tip[:, 0, None, None] + np.cos(d)[:, None, :] * reach).reshape(
+                m, -1
+            )
+            boxes_xy[:, s, :, 1] = (tip[:, 1, None, None] + np.sin(d)[:, None, :] * reach).reshape(
+                m, -1
+            )
+        # How many drawn things each box touches (a box 0.3 mm larger each way
+        # stands for "within 0.3 mm"): the two inner rings of every candidate
+        # at once; the outer rings only of a candidate whose label found no
+        # free box there (a free inner box beats any outer one).
+        near = 8 * _NEAR_RINGS
+        covered = np.full(boxes_xy.shape[:3], -1, dtype=int)
+
+        def count(xy: np.ndarray) -> np.ndarray:
+            flat = xy.reshape(-1, 2)
+            w, h = 3.2 + 0.3, 2.6 + 0.3
+            geoms = shapely.box(flat[:, 0] - w, flat[:, 1] - h, flat[:, 0] + w, flat[:, 1] + h)
+            i, _ = self._near_all(geoms, 0.0)
+            return np.bincount(i, minlength=len(flat)).reshape(xy.shape[:-1])
+
+        covered[:, :, :near] = count(boxes_xy[:, :, :near])
+        # the candidates with a label that has no free inner box: their outer
+        # rings in one query too
+        full = np.all(covered[:, :, :near] > 0, axis=2)
+        lacking = np.flatnonzero(np.any(full, axis=1))
+        if lacking.size:
+            covered[lacking, :, near:] = count(boxes_xy[lacking, :, near:])
+        ring_of = 0.5 * np.repeat(np.asarray(_MECHANISM_RINGS), 8)
+        chosen_all: list[list[int]] = []
+        for c in range(m):
+            chosen: list[int] = []
+            for s in range(n_spins):
+                ok = np.ones(covered.shape[2], dtype=bool)
+                for k in chosen:  # not on the link's other label (boxes that touch)
+                    dx = np.abs(boxes_xy[c, s, :, 0] - boxes_xy[c, k // 10_000, k % 10_000, 0])
+                    dy = np.abs(boxes_xy[c, s, :, 1] - boxes_xy[c, k // 10_000, k % 10_000, 1])
+                    ok &= ~((dx <= 6.4) & (dy <= 5.2))
+                if not ok.any():
+                    chosen.append(s * 10_000)
+                    continue
+                if not (ok[:near] & (covered[c, s, :near] == 0)).any() and covered[c, s, near] < 0:
+                    covered[c, :, near:] = count(boxes_xy[c, :, near:])
+                sc = np.where(ok, 10.0 * covered[c, s] + ring_of, np.inf)
+                sc[covered[c, s] < 0] = np.inf
+                k = int(np.argmin(sc))
+                score[c] += sc[k]
+                chosen.append(s * 10_000 + k)
+            chosen_all.append(chosen)
+        best = int(np.argmin(score))
+        picked = [boxes_xy[best, k // 10_000, k % 10_000] for k in chosen_all[best]]
+        self.reserve([shapely.box(x - 3.2, y - 2.6, x + 3.2, y + 2.6) for x, y in picked])
+        return cs[best], float(st[best]), [np.asarray(p, dtype=float) for p in picked]
 
     def round_pivot(self, centre: np.ndarray, radius: float, sense: float) -> float:
         """Start angle (deg) of a 120° arc round a frame pivot crossing least,
@@ -420,7 +537,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         # the joints' names first (the arcs are then drawn clear of them), then
         # ω and ε once every arc is drawn, then the positions' numbers.
         pivot = at(mech.crank_pivot, 0)
-        labels = Labels(sk, _TEXT, rings=_MECHANISM_RINGS)
+        labels = Labels(sk, _TEXT, rings=_MECHANISM_RINGS, leaders=True)
         labels.avoid_drawn(sk.calls)
         for name in owners:
             if name in pts:
@@ -451,11 +568,17 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             for lid, link in mech.links.items():
                 w, e = float(sw.omega[lid][k]), float(sw.eps[lid][k])
                 names = [p for p in link.points if p in pts]
-                if lid == mech.drive.link or len(names) < 2 or abs(w) < 1e-9 * w1:
+                if lid == mech.drive.link or len(names) < 2:
                     continue
-                spins: list[tuple[float, float, str, LineType]] = [(w, _OMEGA_R, "ω", "main")]
+                # a link at rest for an instant (ω = 0 at an extreme position)
+                # still has its ε: the arc of each that is not zero
+                spins: list[tuple[float, float, str, LineType]] = []
+                if abs(w) >= 1e-9 * w1:
+                    spins.append((w, _OMEGA_R, "ω", "main"))
                 if abs(e) >= 1e-9 * w1 * w1:
                     spins.append((e, _EPS_R, "ε", "thin"))
+                if not spins:
+                    continue
                 segments = [(at(a, k), at(b, k)) for a, b in itertools.combinations(names, 2)]
                 centre, start_deg, rooms = arcs.beside(segments, [(r, v) for v, r, _, _ in spins])
                 for (value, radius, sym, line), room in zip(spins, rooms):
@@ -1229,6 +1352,48 @@ def _try_layout(
     return layout, placed, field
 
 
+def _bare_mechanism(solution: Solution, mu_l: float, look: Any) -> Sketch:
+    """A stand-in for the mechanism's drawing that is no larger than it: the
+    box of the links' lines in every position (the drawing adds lettering,
+    blocks, arcs round them)."""
+    pts = solution.sweep.points
+    names = {
+        p
+        for link in solution.mechanism.links.values()
+        if len([q for q in link.points if q in pts]) > 1
+        for p in link.points
+        if p in pts
+    }
+    xy = np.concatenate([np.asarray(pts[p], dtype=float).reshape(-1, 2) for p in names or pts])
+    xy = xy[np.all(np.isfinite(xy), axis=1)] / mu_l
+    sk = Sketch(look)
+    if len(xy):
+        (x0, y0), (x1, y1) = xy.min(axis=0), xy.max(axis=0)
+        sk.polygon([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], "thin")
+    return sk
+
+
+def _may_fit(
+    page: Page,
+    sketches: Mapping[str, Sketch],
+    order: Sequence[str],
+    arrangements: Sequence[float | None],
+) -> tuple[bool, bool]:
+    """Whether the sheet may fit with the stand-in mechanism in some
+    arrangement _try_layout would try (the real drawing is at least as large,
+    so where the stand-in fails the real one fails too), and whether the
+    stand-in found its field in one that failed."""
+    in_field = False
+    for gap, tables_width in itertools.product((8.0, 5.0), arrangements):
+        try:
+            _try_layout(page, sketches, order, gap, True, tables_width)
+        except LayoutError as err:
+            in_field = in_field or not str(err).startswith("mechanism")
+            continue
+        return True, in_field
+    return False, in_field
+
+
 def compose_sheet1(
     solution: Solution, backend: Backend, lang: Language = "en", *, page: Page | None = None
 ) -> Sheet1:
@@ -1267,11 +1432,16 @@ def compose_sheet1(
             if mu_a is None:
                 continue
             sketches, scales, drawn = _sketch_all(solution, look, lang, mu_a, mu_l, True, cache)
-            sketches["mechanism"] = mechanism(mu_l)
+            sketches["mechanism"] = _bare_mechanism(solution, mu_l, look)
             order = _order(sketches, True)
             tables = [sketches[n].extent().width for n in order if n.startswith("table")]
             # the tables in a row across the top right, or in a block two rows high
             arrangements = (None, max(max(tables), sum(tables) / 2.0 + 8.0))
+            may, in_field = _may_fit(page, sketches, order, arrangements)
+            if not may:  # not even the links alone fit: no need to letter them
+                placed_field = placed_field or in_field
+                continue
+            sketches["mechanism"] = mechanism(mu_l)
             for gap, tables_width in itertools.product((8.0, 5.0), arrangements):
                 try:
                     layout, placed, field = _try_layout(
@@ -1334,10 +1504,16 @@ def _fallback(
         sketches, scales, drawn = _sketch_all(
             solution, look, lang, _next_scale(base_a, shrink), mu_l, stacked, cache
         )
+        sketches["mechanism"] = _bare_mechanism(solution, mu_l, look)
+        order = _order(sketches, stacked)
+        try:  # the links alone first: no need to letter a drawing that cannot fit
+            _try_layout(page, sketches, order, gap, False)
+        except LayoutError as err:
+            last = err
+            continue
         if ("mechanism", mu_l) not in cache:
             cache[("mechanism", mu_l)] = sketch_mechanism(solution, mu_l, look, lang)
         sketches["mechanism"] = cache[("mechanism", mu_l)]
-        order = _order(sketches, stacked)
         try:
             layout, placed, _ = _try_layout(page, sketches, order, gap, False)
         except LayoutError as err:
@@ -1354,4 +1530,9 @@ def _fallback(
             placed,
             Sheet1(layout, scales, shrink=shrink, diagrams=drawn),
         )
-    raise LayoutError(f"sheet 1 does not fit on {page.name or 'the page'}: {last}")
+    raise LayoutError(
+        f"{shown(solution.mechanism.path)}: sheet 1 does not fit on {page.name or 'the page'} "
+        f"even with the mechanism and the acceleration plans 4 scale steps smaller and the "
+        f"diagrams apart: {last}\n"
+        "  fix: study fewer plan positions (study.plans) or a mechanism of fewer groups"
+    )

@@ -32,13 +32,14 @@ from typing import Any
 import numpy as np
 
 from ..drawing.labels import Labels
-from ..drawing.layout import LayoutError, SheetLayout
+from ..drawing.layout import LayoutError, SheetLayout, first_free
 from ..drawing.markup import equation_markup as _equation_markup
 from ..drawing.markup import force_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
 from ..drawing.sketch import Sketch
 from ..drawing.symbols import hatched_base, hatched_guide, sense_arc, unit_vector
 from ..drawing.table import table_sketch
+from ..errors import shown
 from ..forces import ForceAnalysis, ForcePolygon
 from ..forces.state import PositionState
 from ..i18n import Language, catalogue, check_language
@@ -534,6 +535,12 @@ def sketch_force_polygons(
                     labels.avoid_line(s, e)
                     u = unit_vector(e - s)
                     labels.later((s + e) / 2, force_markup(a.label[:-2]), np.array([u[1], -u[0]]))
+        zero = not sides and guide_side(polygons) <= 0.0
+        if zero:
+            # an unloaded group (massless links, no force): every side is
+            # zero, the polygon a single point, drawn as one
+            sk.circle(offset, 0.8, "main", "black")
+            labels.avoid_line(offset - 1.0, offset + 1.0)
         for anchor, markup, towards in names.values():
             labels.later(anchor, markup, towards)
         for centre, caption in captions:
@@ -546,9 +553,8 @@ def sketch_force_polygons(
             sk.rich_text((ext.left + _PAD, y), _equation_markup(poly.equation), _TEXT)
             y -= 6.0
         if short:
-            sk.rich_text(
-                (ext.left + _PAD, y), _words(lang)["short"].format(names=", ".join(short)), _TEXT
-            )
+            note = _words(lang)["zero_polygon" if zero else "short"]
+            sk.rich_text((ext.left + _PAD, y), note.format(names=", ".join(short)), _TEXT)
             y -= 6.0
         sk.rich_text((ext.left + _PAD, y), scale_label(mu_F, "force", lang).markup(), _TEXT)
         sk.text(
@@ -585,14 +591,14 @@ def sketch_lever(
         # the images named, those at one point in one label: "d, s_{5}, k_{5}"
         marks: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
 
-        def mark(name: str, at: np.ndarray) -> None:
+        def mark(markup: str, at: np.ndarray) -> None:
             key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
-            marks.setdefault(key, (at, []))[1].append(image_markup(name))
+            marks.setdefault(key, (at, []))[1].append(markup)
 
-        mark("p", np.zeros(2))
+        mark("p", np.zeros(2))  # the pole: no image is written p (image_markup)
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
-                mark(n, img[n])
+                mark(image_markup(n), img[n])
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         labels.avoid_circle((0.0, 0.0), 1.2)
         forces = [*lever.forces, lever.balancing]
@@ -619,7 +625,7 @@ def sketch_lever(
             if re.fullmatch(r"[SK]\d+", f.point) and f.point not in dotted:
                 dotted.add(f.point)
                 sk.circle(at, 0.6, "thin", "black")
-                mark(f.point, at)
+                mark(image_markup(f.point), at)
             h = abs(f.arm) / mu_V
             arms.append((f.label, h))
             if h >= 1.0:
@@ -876,36 +882,21 @@ def _pack(
     boxes = [(tb.left, tb.bottom, tb.right, tb.top)]
     boxes += [(r.left, r.bottom, r.right, r.top) for r in (placed or {}).values()]
     out: dict[str, Rect] = dict(placed or {})
-    eps = 1e-9
     for name, w, h, corner in items:
-        b = np.array(boxes)
-        xs = np.concatenate([[region.left, region.right - w], b[:, 2] + gap, b[:, 0] - gap - w])
-        ys = np.concatenate([[region.bottom, region.top - h], b[:, 3] + gap, b[:, 1] - gap - h])
-        xs = np.unique(xs[(xs >= region.left - eps) & (xs <= region.right - w + eps)])
-        ys = np.unique(ys[(ys >= region.bottom - eps) & (ys <= region.top - h + eps)])
-        if not xs.size or not ys.size:
+        at = first_free(region, np.array(boxes), w, h, gap, corner)
+        if at is None:
             return None
-        X, Y = (a.ravel() for a in np.meshgrid(xs, ys))
-        # the gap between each candidate and each box (0 where they overlap)
-        dx = np.maximum(b[None, :, 0] - (X[:, None] + w), X[:, None] - b[None, :, 2])
-        dy = np.maximum(b[None, :, 1] - (Y[:, None] + h), Y[:, None] - b[None, :, 3])
-        dist = np.hypot(np.clip(dx, 0, None), np.clip(dy, 0, None))
-        clash = (dist < gap - 1e-9).any(axis=1) if gap > 0 else ((dx < 0) & (dy < 0)).any(axis=1)
-        ok = np.flatnonzero(~clash)
-        if not ok.size:
-            return None
-        sy = -Y[ok] if corner.startswith("top") else Y[ok]
-        sx = X[ok] if corner.endswith("left") else -X[ok]
-        k = ok[np.lexsort((sx, sy))[0]]
-        out[name] = Rect(float(X[k]), float(Y[k]), w, h)
-        boxes.append((float(X[k]), float(Y[k]), float(X[k]) + w, float(Y[k]) + h))
+        out[name] = Rect(at[0], at[1], w, h)
+        boxes.append((at[0], at[1], at[0] + w, at[1] + h))
     return out
 
 
 _LEVER_MAX = 250.0  # mm: the longest pa the lever is enlarged to
 _ORDERS = 16  # orders of the drawings tried beyond the textbook's and by size
 _PARTS_FINER = 1  # series steps a group may be drawn larger or smaller than the loaded mechanism
+_COARSEST = 5  # series steps coarser than its textbook scale a drawing may go
 _FINEST = -6  # series steps finer than its textbook scale a drawing may go
+_FILL_PASSES = 2 * (12 - _FINEST)  # a bound on fill's passes (each a step of some kind)
 
 
 class _Composer:
@@ -1031,7 +1022,12 @@ class _Composer:
         for _ in range(_ORDERS):
             orders.append((5.0, [drawings[0], *shuffle.sample(drawings[1:], len(drawings) - 1)]))
         field = self.page.frame.inset(5.0)
-        if sum(r.width * r.height for r in size.values()) > field.width * field.height:
+        area = sum(r.width * r.height for r in size.values())
+        if area > field.width * field.height:
+            self.last = LayoutError(
+                f"the drawings and tables take {area / 1e4:.0f} dm², more than the "
+                f"{field.width * field.height / 1e4:.0f} dm² of the sheet's field"
+            )
             return None
         tables = [(n, size[n].width, size[n].height, "top-right") for n in self.tables]
         first = (drawings[0], size[drawings[0]].width, size[drawings[0]].height, "top-left")
@@ -1076,22 +1072,34 @@ class _Composer:
         textbook's. Where some lettering then finds no free place, the next
         two coarser steps are tried as well for a sheet where more of it does."""
         found: list[dict[str, int]] = []
-        for shrink in range(-2, 6):
+        coarsest_tried = False
+        for shrink in range(-2, _COARSEST + 1):
             if found and shrink > max(v for k, v in found[0].items() if k != "mech") + 2:
                 break
             for bigger in range(max(2, shrink + 2), -1, -1):
-                mech = shrink - bigger
-                parts = min(shrink, mech + _PARTS_FINER)  # the groups near the mechanism's scale
-                steps = {"mech": mech, "lever": max(0, shrink)}
-                steps.update({f"group {g.name}": parts for g in self.fa.groups})
-                steps["driving"] = parts
-                steps.update({f"poly {name}": max(0, shrink) for name, _, _ in self.polygon_sets})
+                steps = self._steps(shrink, shrink - bigger)
                 if self.fits(steps):
                     found.append(steps)
                     break
+            if not found and not coarsest_tried:
+                # after the first scale that fits nowhere, the coarsest scales:
+                # if the sheet cannot hold even those, no other will: stop now
+                coarsest_tried = True
+                if not self.fits(self._steps(_COARSEST, _COARSEST)):
+                    return None
             if found and self.unsettled(found[0]) == 0:
                 break
         return min(found, key=self.unsettled) if found else None
+
+    def _steps(self, shrink: int, mech: int) -> dict[str, int]:
+        """Every drawing `shrink` steps from its textbook scale, the loaded
+        mechanism `mech`, the groups within _PARTS_FINER of it."""
+        parts = min(shrink, mech + _PARTS_FINER)  # the groups near the mechanism's scale
+        steps = {"mech": mech, "lever": max(0, shrink)}
+        steps.update({f"group {g.name}": parts for g in self.fa.groups})
+        steps["driving"] = parts
+        steps.update({f"poly {name}": max(0, shrink) for name, _, _ in self.polygon_sets})
+        return steps
 
     def fill(self, steps: dict[str, int]) -> dict[str, int]:
         """Enlarge the drawings a series step at a time while the sheet has
@@ -1110,7 +1118,11 @@ class _Composer:
             polys,
             *([k] for k in polys),
         ]
-        while kinds:
+        # every pass enlarges each kind left by a step or drops it, and no
+        # scale goes past _FINEST: the passes are bounded
+        for _ in range(_FILL_PASSES):
+            if not kinds:
+                break
             for kind in list(kinds):
                 # larger only where it fits and its lettering finds room as well
                 # as before (one step further where it does not, the next does)
@@ -1131,6 +1143,8 @@ class _Composer:
     def _allowed(self, steps: dict[str, int]) -> bool:
         if min(v for k, v in steps.items() if not k.startswith(("poly", "lever"))) < _FINEST:
             return False
+        if min(steps.values()) < 2 * _FINEST:
+            return False  # no drawing, the polygons and the lever too, enlarged without end
         parts = [v for k, v in steps.items() if k.startswith(("group", "driving"))]
         if (
             not steps["mech"] - _PARTS_FINER
@@ -1141,6 +1155,8 @@ class _Composer:
             return False
         for name, polygons, _ in self.polygon_sets:
             # a polygon enlarged no further than the guide's 300 mm
+            if steps[f"poly {name}"] != 0 and guide_side(polygons) <= 0.0:
+                return False  # an all-zero polygon is a point at any scale: never enlarged
             mu_F = _force_scale(polygons, steps[f"poly {name}"])
             if steps[f"poly {name}"] < 0 and guide_side(polygons) / mu_F > FORCE_PLAN.high:
                 return False
@@ -1170,9 +1186,11 @@ def compose_sheet2(
             "tables find no arrangement at any scale tried"
         )
         raise LayoutError(
-            f"sheet 2 does not fit on {page.name or 'the page'}: {what}\n  fix: a mechanism "
-            "of this many groups needs more than one sheet 2; draw sheet 1 alone (--sheet 1) "
-            "and the force analysis in parts"
+            f"{shown(solution.mechanism.path)}: sheet 2 does not fit on "
+            f"{page.name or 'the page'} even with every drawing {_COARSEST} scale steps "
+            f"smaller than the textbook's: {what}\n"
+            "  fix: draw sheet 1 alone (--sheet 1), or study a mechanism of fewer "
+            "groups (the force analysis of every group goes on one sheet)"
         )
     steps = composer.fill(steps)
     scales = composer.scales(steps)
