@@ -842,9 +842,7 @@ def _translated(sketch: Sketch, lang: Language) -> Sketch:
         return sketch
     for i, c in enumerate(sketch.calls):
         if c.name == "text" and c.args["content"] in runs:
-            sketch.calls[i] = type(c)(
-                c.name, {**c.args, "content": runs[c.args["content"]]}, c.groups
-            )
+            sketch.calls[i] = c.with_changes(content=runs[c["content"]])
     return sketch
 
 
