@@ -40,7 +40,16 @@ def component_markup(label: str) -> str:
     if not m:
         return label
     sup = f"^{{{_sup(m.group(2))}}}" if m.group(2) else ""
-    return f"{m.group(1)}{sup}_{{{m.group(3)}}}"
+    return f"{m.group(1)}{sup}_{{{_pair_index(m.group(3))}}}"
+
+
+def _pair_index(index: str) -> str:
+    """Two point names with numbers kept apart: "A3O2" → "A3,O2" (never read
+    as "A302"); "BA" and "E/0" as they are."""
+    names = re.findall(r"[A-Za-z]\d*", index)
+    if "/" in index or "".join(names) != index or len(names) != 2:
+        return index
+    return ",".join(names) if any(ch.isdigit() for ch in index) else index
 
 
 def plain_label(label: str) -> str:

@@ -503,6 +503,16 @@ def title_block_texts(
         x = {"left": r.left + pad, "center": r.center[0], "right": r.right - pad}[anchor]
         out.append(PlacedText(cell, text, (x, r.center[1]), size, anchor, r.width - 2 * pad))
 
+    def _name_size(name: str, rect: Rect) -> float:
+        """The document's name in one size on every sheet: the size at which the
+        longest of the catalogue's sheet names fits (a name of the file's own
+        that needs less room is not set larger than they are)."""
+        fitting = tuple(s for s in let.sizes if s <= tb.title) or (tb.title,)
+        words = catalogue(lang).words("title_block")
+        names = [str(v) for k, v in words.items() if k.startswith("sheet_name_")] + [name]
+        room, height = rect.width - 2 * tb.block_padding, rect.height - 2 * pad
+        return min(let.fit(n, room, height, fitting)[0] for n in names)
+
     def block_text(cell: str, text: str, size: float, rect: Rect | None = None) -> None:
         """Centred, wrapped, shrunk from `size` down until it fits the cell
         (or `rect`, a part of it)."""
@@ -543,7 +553,7 @@ def title_block_texts(
         upper = Rect.from_bounds(title_cell.left, split, title_cell.right, title_cell.top)
         lower = Rect.from_bounds(title_cell.left, title_cell.bottom, title_cell.right, split)
         block_text("title", values["title"], tb.title, upper)
-        block_text("title", sheet_name, tb.title, lower)
+        block_text("title", sheet_name, _name_size(sheet_name, lower), lower)
     elif "title" in values or sheet_name:
         block_text("title", values.get("title") or sheet_name, tb.title)
     designation = values.get("drawing_number") or _designation(values)
