@@ -236,7 +236,7 @@ def label_near(v: SheetView) -> Iterator[Finding]:
             continue
         if lab.leader is not None:
             ld = LineString([lab.leader.start, lab.leader.end])
-            joined = ld.distance(target) < 1.0 and ld.distance(lab.box) < 1.0
+            joined = ld.distance(target) < 1.0 and ld.distance(lab.box) < 2.0
             # past the pin and the lines that meet at the anchor
             far = ld.difference(Point(lab.naming.anchor).buffer(1.8))
             crossed = (
