@@ -196,22 +196,23 @@ _TEXT = 3.5
 DECIMALS_MAX = 4  # decimals a column is padded to at most
 
 
-def _decimals(values: Sequence[float], present: int) -> int:
-    """One number of decimals for a column: enough for four significant
-    figures of its largest value and two of its smallest non-zero one, but no
-    more than the values were given with (nor DECIMALS_MAX)."""
+def _decimals(values: Sequence[float], given: Sequence[int]) -> int:
+    """One number of decimals for a column: as many as its largest value was
+    given with, or more where its smallest non-zero one needs them for two
+    significant figures (never more than any was given with, nor DECIMALS_MAX)."""
     nonzero = [abs(v) for v in values if v != 0.0]
     if not nonzero:
-        return min(present, DECIMALS_MAX)
-    big = max(0, 3 - math.floor(math.log10(max(nonzero))))
+        return min(max(given), DECIMALS_MAX)
+    big = given[max(range(len(values)), key=lambda i: abs(values[i]))]
     small = max(0, 1 - math.floor(math.log10(min(nonzero))))
-    return min(max(big, small), present, DECIMALS_MAX)
+    return min(max(big, small), max(given), DECIMALS_MAX)
 
 
 def _one_format_per_column(rows: Sequence[Sequence[str]]) -> list[list[str]]:
     """The rows with the plain numbers of each column written with one number of
     decimals (`_decimals`): 15140, 11977, 53 — never 15140, 11977, 52.88 in one
-    column. Marked values (±0.049*) and words stay as they are."""
+    column; 12403.1, 0.0, 2480.6 — never 12403.1, 0.00, 2480.62. Marked values
+    (±0.049*) and words stay as they are."""
     out = [list(r) for r in rows]
     width = max((len(r) for r in out), default=0)
     for col in range(width):
@@ -222,8 +223,7 @@ def _one_format_per_column(rows: Sequence[Sequence[str]]) -> list[list[str]]:
             float(f"{m.group(1).replace('−', '-')}{m.group(2)}.{m.group(3) or '0'}")
             for _, m in cells
         ]
-        present = max(len(m.group(3) or "") for _, m in cells)
-        d = _decimals(values, present)
+        d = _decimals(values, [len(m.group(3) or "") for _, m in cells])
         for (r, _), value in zip(cells, values):
             text = f"{value:.{d}f}"
             r[col] = text if float(text) != 0.0 else f"{0.0:.{d}f}"  # never -0.00

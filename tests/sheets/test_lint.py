@@ -133,6 +133,10 @@ def test_a_column_is_written_with_one_number_of_decimals():
     # 0.05 needs three decimals for two figures; 4.267 has four figures at three
     assert [r[1] for r in _one_format_per_column([["1", "0.0500"], ["2", "4.267"], ["3", "2.5"]])] \
         == ["0.050", "4.267", "2.500"]
+    # the balancing force to the tenth of a newton as given, the discrepancy with it
+    assert [r[1] for r in _one_format_per_column(
+        [["F", "12403.1"], ["F", "12403.1"], ["Δ", "0.00"], ["M", "2480.62"]])] == [
+        "12403.1", "12403.1", "0.0", "2480.6"]
     # a marked value stays as it is
     assert _one_format_per_column([["1", "±0.049*"], ["2", "18.8"]])[0][1] == "±0.049*"
 
