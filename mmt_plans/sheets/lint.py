@@ -477,7 +477,8 @@ def language(v: SheetView) -> Iterator[Finding]:
                 yield Finding("language", f"a Latin unit {m.group(0)!r} in {t!r}", c.pos, v.name)
         else:
             # a number of a table or the title block, not an index (R_{0,11}, I(0,1))
-            numbers = bool(v.cls_of(c) & {"table", "title-block"})
+            # (a cell's lettering is set in its middle; an index run on its baseline)
+            numbers = bool(v.cls_of(c) & {"table", "title-block"}) and c.valign == "middle"
             if numbers and _COMMA.fullmatch(t.strip()):
                 yield Finding("language", f"a decimal comma in {t!r}", c.pos, v.name)
             if _CYRILLIC.search(t):
