@@ -21,12 +21,18 @@ def _sup(tag: str) -> str:
     return "τ" if tag == "t" else tag
 
 
+# the poles of the velocity plan (and the lever) and of the acceleration plan
+_POLES = ("p", "π")
+
+
 def image_markup(name: str) -> str:
-    """ "S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters."""
+    """ "S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters; the
+    image of a point named like a pole (P, π) takes a prime, "p'", so that it
+    is never read as the pole."""
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
     if m:
         return f"{m.group(1).lower()}_{{{m.group(2)}}}"
-    return name.lower()
+    return f"{name.lower()}'" if name.lower() in _POLES else name.lower()
 
 
 def point_markup(name: str) -> str:

@@ -337,14 +337,12 @@ def names_unique(v: SheetView) -> Iterator[Finding]:
             assert a.naming is not None and b.naming is not None
             # ω, ε at each drawn position and the positions' numbers repeat by design
             repeats = a.text[:1] in ("ω", "ε") or a.text.isdigit()
-            if (
-                a.text == b.text
-                and not repeats
-                and math.dist(a.naming.anchor, b.naming.anchor) > 1.0
-            ):
+            # a label of coincident images names each of them: "p, s5"
+            shared = set(a.text.split(", ")) & set(b.text.split(", "))
+            if shared and not repeats and math.dist(a.naming.anchor, b.naming.anchor) > 1.0:
                 yield Finding(
                     "names-unique",
-                    f"{a.text!r} names two different things in {group}",
+                    f"{', '.join(sorted(shared))!r} names two different things in {group}",
                     _at(b.box),
                     v.name,
                 )

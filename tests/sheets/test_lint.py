@@ -213,3 +213,10 @@ def test_a_file_without_title_uk_gets_a_ukrainian_title_from_its_structure():
     assert structure_title(mech, "uk") == "Шестиланковий важільний механізм"
     assert sheet_title(mech, "uk") == "Шестиланковий важільний механізм"
     assert sheet_title(mech, "en") == mech.title
+
+
+def test_the_image_of_a_point_named_like_a_pole_is_not_the_pole():
+    from mmt_plans.drawing.markup import image_markup
+
+    assert image_markup("P") == "p'" and image_markup("π") == "π'"
+    assert image_markup("B") == "b" and image_markup("S2") == "s_{2}"
