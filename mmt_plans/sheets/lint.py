@@ -43,6 +43,7 @@ with a place on the sheet (mm from its bottom-left corner). The thresholds:
 
 from __future__ import annotations
 
+import collections
 import itertools
 import math
 import re
@@ -524,7 +525,13 @@ def guide_sizes(v: SheetView) -> Iterator[Finding]:
         if not arrows:
             continue
         if k == "plan":
-            size, (lo, hi) = max(a.length for a in arrows), PLAN_MM
+            # the pole: where most of the plan's vectors start
+            starts = collections.Counter(
+                (round(a.start[0], 2), round(a.start[1], 2)) for a in arrows
+            )
+            pole = starts.most_common(1)[0][0]
+            rays = [a for a in arrows if math.dist(a.start, pole) < 0.02] or arrows
+            size, (lo, hi) = max(a.length for a in rays), PLAN_MM
             what = "longest vector from the pole"
         elif k == "force-polygon":
             size, (lo, hi) = max(a.length for a in arrows), POLYGON_MM

@@ -144,14 +144,15 @@ def test_a_column_is_written_with_one_number_of_decimals():
 def test_the_language_of_the_sheet():
     b = RecordingBackend()
     with b.group("t", "table"):
-        b.text((0, 0), "1.82", 3.5)
-        b.text((0, 10), "ω, 1/s", 3.5)
+        b.text((0, 0), "1.82", 3.5, valign="middle")  # a cell, as a table sets it
+        b.text((0, 10), "ω, 1/s", 3.5, valign="middle")
     found = [f.message for f in rules(b, "language", "uk")]
     assert any("decimal point" in m for m in found) and any("Latin unit" in m for m in found)
     b = RecordingBackend()
     with b.group("t", "table"):
-        b.text((0, 0), "1,82", 3.5)
-        b.text((0, 10), "ω, 1/с", 3.5)
+        b.text((0, 0), "1,82", 3.5, valign="middle")
+        b.text((0, 10), "ω, 1/с", 3.5, valign="middle")
+        b.text((20, 0), "0,11", 2.5)  # an index run (R_{0,11}), not a number
     assert rules(b, "language", "uk") == []
     assert [f.message for f in rules(b, "language", "en")][0].startswith("a decimal comma")
 
