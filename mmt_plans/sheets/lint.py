@@ -456,7 +456,9 @@ def table_format(v: SheetView) -> Iterator[Finding]:
 
 
 # a Latin unit after a number, a comma or a bracket
-_LATIN_UNITS = re.compile(r"(?:\d\s*|,\s*|\()(m/s|1/s|rad/s|mm|kN|N·m|N|rad)(?![A-Za-z])")
+_LATIN_UNITS = re.compile(
+    r"(?:\d\s+|,\s+|\()(m/s²?|m/mm|rad/s|mm|kN|N·m|N|rad|kg|m)(?![A-Za-z])|(?<![\w/])1/s"
+)  # "G, N", "(m/s)", "1/s"; not a point N in R9N
 _POINT = re.compile(r"(?<![\w.])\d+\.\d+(?![\w.])")
 _COMMA = re.compile(r"[-−]?\d+,\d+")
 _CYRILLIC = re.compile(r"[А-Яа-яІіЇїЄєҐґ]")
@@ -471,7 +473,7 @@ def language(v: SheetView) -> Iterator[Finding]:
         if v.lang == "uk":
             if _POINT.search(t):
                 yield Finding("language", f"a decimal point in {t!r}", c.pos, v.name)
-            m = _LATIN_UNITS.search(t)
+            m = _LATIN_UNITS.search(t) if c.naming is None else None  # "b, m" names images
             if m:
                 yield Finding("language", f"a Latin unit {m.group(0)!r} in {t!r}", c.pos, v.name)
         else:
