@@ -39,3 +39,12 @@ def test_every_generated_file_turns_fully_and_has_its_dyads():
         names |= set(data["frame"]) | {n for lk in data["link"] for n in lk["points"]}
     assert set(kinds) == {"RRR", "RRP", "RPR", "PRP", "RPP"}
     assert {"p", "P", "π", "O", "o"} <= names  # the poles' letters and position 0's look-alikes
+
+
+def test_the_tool_solves_every_generated_file_forces_included():
+    from mmt_plans.solution import solve
+
+    for s in range(10):
+        g = generate_one(s)
+        solution = solve(loads(g.toml, g.name))
+        assert solution.forces is not None, (g.name, solution.forces_problem)
