@@ -7,7 +7,7 @@ STAMP   := $(VENV)/.installed
 SAMPLE  ?= samples/six_link_press.toml
 OUT     ?= out
 
-.PHONY: run test bench lint fonts browser clean fuzz cad-check
+.PHONY: run test bench lint fonts browser clean fuzz cad-check sheets-lint
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -69,6 +69,17 @@ FUZZ_CASES ?= 20000
 FUZZ_SEED  ?= 1
 fuzz: $(STAMP)
 	$(BIN)/python tests/fuzz.py --cases $(FUZZ_CASES) --seed $(FUZZ_SEED) --draw-every 20
+
+# The sheet linter (mmt_plans/sheets/lint.py) over every sample and seed task,
+# variants of every sample family and generated mechanisms, both sheets in en
+# and uk: a table of rule x passes / fails; each failing mechanism's file and
+# findings under $(OUT)/sheets-lint/. Exit 1 while a rule fails anywhere.
+LINT_GENERATED ?= 200
+LINT_VARIANTS  ?= 5
+LINT_JOBS      ?= 2
+sheets-lint: $(STAMP) fonts
+	$(BIN)/python -m mmt_plans.sheets.lint --generated $(LINT_GENERATED) \
+	  --variants $(LINT_VARIANTS) --jobs $(LINT_JOBS) --out $(OUT)/sheets-lint
 
 lint: $(STAMP)
 	$(BIN)/ruff check mmt_plans

@@ -1,79 +1,55 @@
-"""A mechanism's title in a language the file gives no title in, built from
-its structure: "Шестиланковий важільний механізм" ("six-link linkage"), as
-seed 002 names its tasks by the number of links and the kind of mechanism.
-
-    >>> import mmt_plans
-    >>> m = mmt_plans.load("samples/six_link_press.toml")
-    >>> structure_title(m, "uk")
-    'Шестиланковий важільний механізм'
-"""
+"""A mechanism's title built from its structure, for a language the file
+gives no title in: "Шестиланковий важільний механізм" (six links, the frame
+counted, as the textbook names them)."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import Any
 
-if TYPE_CHECKING:  # pragma: no cover
-    from .model import Mechanism
+from .i18n import Language, catalogue
 
-__all__ = ["structure_title", "title_in", "title_warning"]
-
-# the number of links, the frame included → the word that counts them
-_UK = {
-    2: "Дволанковий",
-    3: "Триланковий",
-    4: "Чотириланковий",
-    5: "П'ятиланковий",
-    6: "Шестиланковий",
-    7: "Семиланковий",
-    8: "Восьмиланковий",
-    9: "Дев'ятиланковий",
-    10: "Десятиланковий",
-    11: "Одинадцятиланковий",
-    12: "Дванадцятиланковий",
-    13: "Тринадцятиланковий",
-    14: "Чотирнадцятиланковий",
-}
-_EN = {
-    2: "Two",
-    3: "Three",
-    4: "Four",
-    5: "Five",
-    6: "Six",
-    7: "Seven",
-    8: "Eight",
-    9: "Nine",
-    10: "Ten",
-    11: "Eleven",
-    12: "Twelve",
-    13: "Thirteen",
-    14: "Fourteen",
-}
+__all__ = ["has_title", "sheet_title", "structure_title", "title_in", "title_warning"]
 
 
-def structure_title(mechanism: Mechanism, lang: str) -> str:
+def structure_title(mechanism_or_structure: Any, lang: Language) -> str:
     """ "Шестиланковий важільний механізм" / "Six-link linkage": the number of
-    links (the frame counted, as seed 002 counts them) and the kind."""
-    n = len(mechanism.links) + 1
-    if lang == "uk":
-        count = _UK.get(n, f"{n}-ланковий")
-        return f"{count} важільний механізм"
-    count = _EN.get(n, str(n))
-    return f"{count}-link linkage"
+    links (the frame counted) and the kind, from the catalogue's [titles]."""
+    structure = mechanism_or_structure
+    if not hasattr(structure, "n"):
+        from .structure import analyse_structure
+
+        structure = analyse_structure(mechanism_or_structure)
+    links = int(structure.n) + 1  # the moving links and the frame
+    words = catalogue(lang).words("titles")
+    counts = dict(words["links"])
+    count = str(counts.get(str(links), str(words["links_other"]).format(n=links)))
+    return str(words["linkage"]).format(count=count)
 
 
-def title_in(mechanism: Mechanism, lang: str) -> str:
-    """The file's title in `lang` (`title`, `title_uk`), else one built from
-    the structure: an English title is not put on a Ukrainian document."""
-    if lang == "en" or lang in mechanism.titles:
-        return mechanism.title_in(lang)
+def has_title(mechanism: Any, lang: Language) -> bool:
+    """True when the file gives the mechanism a title in `lang` (title, title_uk)."""
+    return lang == "en" or lang in dict(getattr(mechanism, "titles", {}) or {})
+
+
+def sheet_title(mechanism: Any, lang: Language) -> str:
+    """The file's title in `lang`, else one built from the structure."""
+    if has_title(mechanism, lang):
+        return str(mechanism.title_in(lang))
     return structure_title(mechanism, lang)
 
 
-def title_warning(mechanism: Mechanism, lang: str) -> str | None:
+def title_in(mechanism: Any, lang: Language) -> str:
+    """The file's title in `lang` (`title`, `title_uk`), else one built from
+    the structure: an English title is not put on a Ukrainian document (the
+    note's name for sheet_title)."""
+    return sheet_title(mechanism, lang)
+
+
+def title_warning(mechanism: Any, lang: Language) -> str | None:
     """The warning where the title in `lang` is built from the structure."""
-    if lang == "en" or lang in mechanism.titles:
+    if has_title(mechanism, lang):
         return None
-    return (
-        f"{mechanism.path}: no title_{lang}; the title is built from the structure: "
-        f'{structure_title(mechanism, lang)!r} (write title_{lang} = "..." to give one)'
+    words = catalogue(lang).words("titles")
+    return str(words["no_title"]).format(
+        file=mechanism.path, lang=lang, title=structure_title(mechanism, lang)
     )

@@ -71,6 +71,14 @@ def draw(
     solution = solve(
         with_fields(load(file), fields), partial_turn=partial_turn, forces=2 in numbers
     )
+    from ..titles import has_title, sheet_title
+
+    if not has_title(solution.mechanism, lang):  # type: ignore[arg-type]
+        from ..i18n import catalogue
+
+        built = sheet_title(solution.mechanism, lang)  # type: ignore[arg-type]
+        words = catalogue(lang).words("titles")  # type: ignore[arg-type]
+        click.echo(str(words["no_title"]).format(file=file, lang=lang, title=built), err=True)
     composed = compose(solution, lang, numbers)  # type: ignore[arg-type]
     for path in write_composed(composed, solution, out_dir, formats, numbers):
         click.echo(f"written {path}")

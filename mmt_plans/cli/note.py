@@ -61,7 +61,7 @@ def note(
     check_output(target)
     solution = solve(with_fields(load(file), fields), partial_turn=partial_turn)
     path = write_note(solution, target, lang=lang, form=form)  # type: ignore[arg-type]
-    warning = title_warning(solution.mechanism, lang)
+    warning = title_warning(solution.mechanism, lang)  # type: ignore[arg-type]
     if warning:
-        click.echo(f"warning: {warning}", err=True)
+        click.echo(warning, err=True)
     click.echo(f"written {path}")

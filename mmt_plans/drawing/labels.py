@@ -31,7 +31,7 @@ from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
 from ..render.backend import PointLike
-from ..render.recording import Call, RecordingBackend
+from ..render.recording import Call, NamingKind, RecordingBackend
 
 __all__ = ["Labels", "arc_line", "drawn_shapes"]
 
@@ -220,7 +220,17 @@ class Labels:
         inside a group `group` (class "label") if one is named."""
         x, y = float(anchor[0]), float(anchor[1])
         cx, cy, w, h, drop = self._around(np.array([x, y]), markup, towards, distance)
-        return self._write(cx, cy, w, h, drop, markup, group, leader=((x, y), towards, distance))
+        return self._write(
+            cx,
+            cy,
+            w,
+            h,
+            drop,
+            markup,
+            group,
+            leader=((x, y), towards, distance),
+            names=("point", (x, y), None),
+        )
 
     def place_arrow(
         self, start: PointLike, end: PointLike, markup: str, *, group: str | None = None
@@ -246,6 +256,7 @@ class Labels:
                 group,
                 leader=((float(b[0]), float(b[1])), (float(u[0]), float(u[1])), 1.5),
                 settle=k == len(tries) - 1,
+                names=("arrow", a, b),
             )
             if footprint is not None:
                 return footprint
@@ -313,15 +324,16 @@ class Labels:
         cy = (anchors[:, 1][:, None] + sides.imag * (ring + reach)).ravel()
         mx, my = (a + b) / 2
         leader = ((float(mx), float(my)), (float(sides[0].real), float(sides[0].imag)), distance)
+        names = ("segment", a, b)
         if not around:
-            return self._write(cx, cy, w, h, drop, markup, group, leader=leader)
+            return self._write(cx, cy, w, h, drop, markup, group, leader=leader, names=names)
         # where the segment's sides are taken: round its middle, further out
         dirs = np.array(_COMPASS)
         far = distance + np.concatenate([self.rings, self.rings[-1] + np.array([6.0, 12.0])])
         far = far[:, None]
         cx = np.concatenate([cx, (mx + dirs.real * (far + w / 2 * np.abs(dirs.real))).ravel()])
         cy = np.concatenate([cy, (my + dirs.imag * (far + h / 2 * np.abs(dirs.imag))).ravel()])
-        return self._write(cx, cy, w, h, drop, markup, group, leader=leader)
+        return self._write(cx, cy, w, h, drop, markup, group, leader=leader, names=names)
 
     def _extent(self, markup: str) -> tuple[float, float, float]:
         """Width and height of the box a label keeps free, and how far its index drops."""
@@ -385,6 +397,7 @@ class Labels:
         group: str | None,
         leader: tuple[PointLike, PointLike | None, float] | None = None,
         settle: bool = True,
+        names: tuple[NamingKind, PointLike, PointLike | None] | None = None,
     ) -> BaseGeometry | None:
         """Write `markup` centred at the first free candidate; else, with
         `leader` (the anchor, the preferred side, the distance), further out
@@ -430,7 +443,9 @@ class Labels:
             self.unsettled += 1
         footprint = box(x0[k], y0[k], x1[k], y1[k])
         lines = markup.split("\n")
-        with self.sketch.group(group, "label") if group is not None else nullcontext():
+        # the recording keeps what the label names, for the sheet linter
+        naming = self.sketch.naming(markup, *names) if names is not None else nullcontext()
+        with self.sketch.group(group, "label") if group is not None else nullcontext(), naming:
             if line is not None:
                 self.sketch.line(line[0], line[1], "thin")
             for i, text in enumerate(lines):

@@ -21,20 +21,18 @@ def _sup(tag: str) -> str:
     return "τ" if tag == "t" else tag
 
 
-# the poles of the plans and of the lever: no image may be written as one
-POLE_LETTERS = frozenset({"p", "π"})
+# the poles of the velocity plan (and the lever) and of the acceleration plan
+_POLES = ("p", "π")
 
 
 def image_markup(name: str) -> str:
-    """ "S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters.
-
-    A point whose letter would be a pole's (a point named P or π) gets a
-    prime: its image is p' on every plan and on the lever, never the pole p."""
+    """ "S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters; the
+    image of a point named like a pole (P, π) takes a prime, "p'", so that it
+    is never read as the pole."""
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
     if m:
         return f"{m.group(1).lower()}_{{{m.group(2)}}}"
-    image = name.lower()
-    return f"{image}'" if image in POLE_LETTERS else image
+    return f"{name.lower()}'" if name.lower() in _POLES else name.lower()
 
 
 def point_markup(name: str) -> str:
@@ -48,7 +46,16 @@ def component_markup(label: str) -> str:
     if not m:
         return label
     sup = f"^{{{_sup(m.group(2))}}}" if m.group(2) else ""
-    return f"{m.group(1)}{sup}_{{{m.group(3)}}}"
+    return f"{m.group(1)}{sup}_{{{_pair_index(m.group(3))}}}"
+
+
+def _pair_index(index: str) -> str:
+    """Two point names with numbers kept apart: "A3O2" → "A3,O2" (never read
+    as "A302"); "BA" and "E/0" as they are."""
+    names = re.findall(r"[A-Za-z]\d*", index)
+    if "/" in index or "".join(names) != index or len(names) != 2:
+        return index
+    return ",".join(names) if any(ch.isdigit() for ch in index) else index
 
 
 def plain_label(label: str) -> str:

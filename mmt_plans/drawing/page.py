@@ -503,13 +503,35 @@ def title_block_texts(
         x = {"left": r.left + pad, "center": r.center[0], "right": r.right - pad}[anchor]
         out.append(PlacedText(cell, text, (x, r.center[1]), size, anchor, r.width - 2 * pad))
 
+    def _name_size(name: str, rect: Rect) -> float:
+        """The document's name in one size on every sheet: the size at which the
+        longest of the catalogue's sheet names fits (a name of the file's own
+        that needs less room is not set larger than they are)."""
+        fitting = tuple(s for s in let.sizes if s <= tb.title) or (tb.title,)
+        words = catalogue(lang).words("title_block")
+        names = [str(v) for k, v in words.items() if k.startswith("sheet_name_")] + [name]
+        room, height = rect.width - 2 * tb.block_padding, rect.height - 2 * pad
+        return min(let.fit(n, room, height, fitting)[0] for n in names)
+
+    def _fits(text: str, height: float) -> bool:
+        """True when `text` fits the title cell's width and `height` at some size."""
+        r = block.cell("title")
+        room = r.width - 2 * tb.block_padding
+        fitting = tuple(s for s in let.sizes if s <= tb.title) or (tb.title,)
+        s, lines = let.fit(text, room, height - 2 * pad, fitting)
+        return let.block_height(len(lines), s) <= height - 2 * pad
+
     def block_text(cell: str, text: str, size: float, rect: Rect | None = None) -> None:
         """Centred, wrapped, shrunk from `size` down until it fits the cell
-        (or `rect`, a part of it)."""
+        (or `rect`, a part of it); where even the smallest size does not, the
+        lines are narrowed (down to the look's min_squeeze) so that fewer of
+        them fit its height."""
         r = rect if rect is not None else block.cell(cell)
         fitting = tuple(s for s in let.sizes if s <= size) or (size,)
         room = r.width - 2 * tb.block_padding
         s, lines = let.fit(text, room, r.height - 2 * pad, fitting)
+        if let.block_height(len(lines), s) > r.height - 2 * pad:
+            lines = let.wrap(text, s, room / let.min_squeeze)
         pitch = let.line_pitch * s
         cx, cy = r.center
         # Middles of the lines, centred as a group on the cell's middle.
@@ -540,10 +562,17 @@ def title_block_texts(
     title_cell = block.cell("title")
     if "title" in values and sheet_name:
         split = title_cell.top - title_cell.height * 0.62
-        upper = Rect.from_bounds(title_cell.left, split, title_cell.right, title_cell.top)
         lower = Rect.from_bounds(title_cell.left, title_cell.bottom, title_cell.right, split)
+        name_size = _name_size(sheet_name, lower)
+        if not _fits(values["title"], title_cell.top - split):
+            # a long title takes the room the document's name does not need
+            room = lower.width - 2 * tb.block_padding
+            lines = len(let.wrap(sheet_name, name_size, room))
+            split = title_cell.bottom + let.block_height(lines, name_size) + 2 * pad + 1.0
+            lower = Rect.from_bounds(title_cell.left, title_cell.bottom, title_cell.right, split)
+        upper = Rect.from_bounds(title_cell.left, split, title_cell.right, title_cell.top)
         block_text("title", values["title"], tb.title, upper)
-        block_text("title", sheet_name, tb.title, lower)
+        block_text("title", sheet_name, name_size, lower)
     elif "title" in values or sheet_name:
         block_text("title", values.get("title") or sheet_name, tb.title)
     designation = values.get("drawing_number") or _designation(values)

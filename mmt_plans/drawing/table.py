@@ -8,6 +8,7 @@ header main, the lines between rows thin. Rows at least 8 mm (GOST 2.105).
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -190,7 +191,43 @@ class Table:
 
 
 _NUMBER = re.compile(r"[-−]?\d+\.\d+(e[-+]?\d+)?")
+_PLAIN = re.compile(r"^([-−]?)(\d+)(?:\.(\d+))?$")
 _TEXT = 3.5
+DECIMALS_MAX = 4  # decimals a column is padded to at most
+
+
+def _decimals(values: Sequence[float], given: Sequence[int]) -> int:
+    """One number of decimals for a column: as many as its largest value was
+    given with, or more where its smallest non-zero one needs them for two
+    significant figures (never more than any was given with, nor DECIMALS_MAX)."""
+    nonzero = [abs(v) for v in values if v != 0.0]
+    if not nonzero:
+        return min(max(given), DECIMALS_MAX)
+    big = given[max(range(len(values)), key=lambda i: abs(values[i]))]
+    small = max(0, 1 - math.floor(math.log10(min(nonzero))))
+    return min(max(big, small), max(given), DECIMALS_MAX)
+
+
+def _one_format_per_column(rows: Sequence[Sequence[str]]) -> list[list[str]]:
+    """The rows with the plain numbers of each column written with one number of
+    decimals (`_decimals`): 15140, 11977, 53 — never 15140, 11977, 52.88 in one
+    column; 12403.1, 0.0, 2480.6 — never 12403.1, 0.00, 2480.62. Marked values
+    (±0.049*) and words stay as they are."""
+    out = [list(r) for r in rows]
+    width = max((len(r) for r in out), default=0)
+    for col in range(width):
+        cells = [(r, m) for r in out if col < len(r) and (m := _PLAIN.match(r[col])) is not None]
+        if not cells:
+            continue
+        values = [
+            float(f"{m.group(1).replace('−', '-')}{m.group(2)}.{m.group(3) or '0'}")
+            for _, m in cells
+        ]
+        d = _decimals(values, [len(m.group(3) or "") for _, m in cells])
+        for (r, _), value in zip(cells, values):
+            text = f"{value:.{d}f}"
+            r[col] = text if float(text) != 0.0 else f"{0.0:.{d}f}"  # never -0.00
+    return out
 
 
 def table_sketch(
@@ -213,7 +250,7 @@ def table_sketch(
     def cell(text: str) -> str:
         return catalogue(lang).localise(text) if _NUMBER.fullmatch(text) else text
 
-    body = [["", *(cell(t) for t in r[1:])] for r in rows]
+    body = [["", *(cell(t) for t in r[1:])] for r in _one_format_per_column(rows)]
     row_h, head_h = 8.0, 12.0
     marks = list(header_markup or [None] * len(header))
     if len(marks) != len(header):
@@ -237,11 +274,13 @@ def table_sketch(
             (widths[0] / 2, top - (r + 0.5) * row_h), text, _TEXT, anchor="center", valign="middle"
         )
     x = 0.0
+    pitch = 1.3 * _TEXT
     for width, mark in zip(widths, marks):
-        if mark is not None:
-            extra.rich_text(
-                (x + width / 2, top + head_h / 2), mark, _TEXT, anchor="center", valign="middle"
-            )
+        if mark is not None:  # a mark of two lines ("V_{plan}\nm/s"): the unit under it
+            lines = mark.split("\n")
+            for k, line in enumerate(lines):
+                y = top + head_h / 2 + ((len(lines) - 1) / 2 - k) * pitch
+                extra.rich_text((x + width / 2, y), line, _TEXT, anchor="center", valign="middle")
         x += width
     sk.add_to_last_group(extra, gid)
     return sk

@@ -107,9 +107,10 @@ class Lettering:
         return self.advance_width(text, size) + lean
 
     def index_size(self, size: float) -> float:
-        """Lettering size of indices: the next smaller standard size."""
+        """Lettering size of indices: the next smaller standard size; indices of
+        the smallest size keep it (GOST 2.304: no lettering under 2.5 mm)."""
         smaller = [s for s in self.sizes if s < size - 1e-9]
-        return max(smaller) if smaller else 0.7 * size
+        return max(smaller) if smaller else size
 
     def squeeze(self, text: str, size: float, max_width: float | None) -> float:
         """Horizontal scale (<= 1) that narrows `text` into max_width; never below min_squeeze."""

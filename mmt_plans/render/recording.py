@@ -1,12 +1,26 @@
-"""A backend that records every drawing call, for tests (ezdxf `debug_backend.py`)."""
+"""A backend that records every drawing call as a typed record (ezdxf
+`addons/drawing/recorder.py`), for layout, label placement, tests and the
+sheet linter.
+
+One frozen record type per primitive (`Line`, `Polyline`, `Polygon`,
+`Circle`, `Arc`, `Arrow`, `Text`, and `BeginGroup`/`EndGroup`), each with its
+bounding box and the ids of the groups it was drawn in. A label written
+through `naming` carries what it names (`Naming`: the point, the arrow or the
+segment, and the label's markup), so a check can measure a label against its
+anchor. Records also answer the older dict-style reads (`c.name`, `c["key"]`,
+`c.args`, `Call(name, args, groups)`), which code written before the typed
+records still uses.
+"""
 
 from __future__ import annotations
 
+import contextlib
+import dataclasses
 import itertools
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, ClassVar, Literal
 
 from .backend import (
     Backend,
@@ -21,17 +35,52 @@ from .backend import (
     parse_markup,
 )
 
-__all__ = ["Call", "LabelRun", "RecordingBackend"]
+__all__ = [
+    "Arc",
+    "Arrow",
+    "BBox",
+    "BeginGroup",
+    "Call",
+    "Circle",
+    "LabelRun",
+    "EndGroup",
+    "Line",
+    "NamingKind",
+    "Naming",
+    "Polygon",
+    "Polyline",
+    "Record",
+    "RecordingBackend",
+    "Text",
+]
 
-_LABELS = itertools.count(1)  # label serials, unique across spliced sketches
+BBox = tuple[float, float, float, float]  # xmin, ymin, xmax, ymax, mm
+NamingKind = Literal["point", "arrow", "segment"]
+
+
+@dataclass(frozen=True)
+class Naming:
+    """What a label names: a point (`anchor`), an arrow or a segment
+    (`anchor`–`end`). `label` numbers the labels of one recording, so the
+    runs of one label (a letter, then its index) and its leader line share it."""
+
+    label: int
+    markup: str
+    kind: NamingKind
+    anchor: Point
+    end: Point | None = None
+
+    def shifted(self, dx: float, dy: float) -> Naming:
+        end = None if self.end is None else (self.end[0] + dx, self.end[1] + dy)
+        return dataclasses.replace(self, anchor=(self.anchor[0] + dx, self.anchor[1] + dy), end=end)
 
 
 @dataclass(frozen=True)
 class LabelRun:
-    """Marks a text call as one run of a label set by `rich_text`: the label's
-    runs and the label's position relative to this run's, so that a backend
-    that sets a label whole (`sets_labels_whole`, DXF: one MTEXT) gets the
-    label back on replay. Every other reader sees the runs as texts."""
+    """Marks a text record as one run of a label set by `rich_text`: the
+    label's runs and the label's position relative to this run's, so that a
+    backend that sets a label whole (`sets_labels_whole`, DXF: one MTEXT) gets
+    the label back on replay. Every other reader sees the runs as texts."""
 
     serial: int
     index: int  # of this run in `runs`
@@ -43,39 +92,344 @@ class LabelRun:
     rotation: float
 
 
-@dataclass(frozen=True)
-class Call:
-    """One drawing call: its name, its arguments (points as float tuples) and
-    the ids of the groups it was drawn in, outermost first."""
+_LABELS = itertools.count(1)  # label serials, unique across spliced sketches
+_RECORDS: dict[str, type[Call]] = {}
+_LABEL_IDS = itertools.count(1)  # labels are numbered across recordings
 
-    name: str
-    args: dict[str, Any]
-    groups: tuple[str, ...] = ()
+
+class _Args(dict[str, Any]):
+    """A record's arguments as a dict, remembering the record (so that
+    `type(c)(c.name, c.args, groups)` keeps what it names)."""
+
+    record: Call | None = None
+
+
+class Call:
+    """The base of the records: `name` says which primitive; `groups` are the
+    ids of the groups it was drawn in, outermost first.
+
+    `Call(name, args, groups)` (the older form) makes the record of that name
+    from a dict of its arguments; so does `type(record)(name, args, groups)`.
+    """
+
+    name: ClassVar[str] = ""
+    groups: tuple[str, ...]
+    naming: Naming | None
+
+    def __init_subclass__(cls, **kw: Any) -> None:
+        super().__init_subclass__(**kw)
+        if cls.name:
+            _RECORDS[cls.name] = cls
+
+    def __new__(cls, *args: Any, **kwargs: Any) -> Any:
+        if cls is Call and args:
+            try:
+                cls = _RECORDS[args[0]]
+            except KeyError:
+                raise ValueError(f"no drawing record is named {args[0]!r}") from None
+        return object.__new__(cls)
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        fields = [f.name for f in dataclasses.fields(self)]  # type: ignore[arg-type]
+        if len(args) >= 2 and isinstance(args[0], str) and isinstance(args[1], dict):
+            values = dict(args[1])
+            source = getattr(args[1], "record", None)
+            if isinstance(source, type(self)):  # what a label names, a text's width
+                for kept in ("naming", "width", "label"):
+                    if hasattr(source, kept):
+                        values.setdefault(kept, getattr(source, kept))
+            values.pop("length", None)  # an arrow's length is derived
+            if len(args) > 2:
+                values["groups"] = args[2]
+            values.update(kwargs)
+        else:
+            if len(args) > len(fields):
+                raise TypeError(f"{type(self).__name__} takes at most {len(fields)} arguments")
+            values = dict(zip(fields, args))
+            values.update(kwargs)
+        for f in dataclasses.fields(self):  # type: ignore[arg-type]
+            if f.name in values:
+                v = values.pop(f.name)
+            elif f.default is not dataclasses.MISSING:
+                v = f.default
+            elif f.default_factory is not dataclasses.MISSING:
+                v = f.default_factory()
+            else:
+                raise TypeError(f"{type(self).__name__} needs {f.name!r}")
+            object.__setattr__(self, f.name, v)
+        if values:
+            raise TypeError(f"{type(self).__name__} has no {', '.join(values)}")
+        object.__setattr__(self, "groups", tuple(self.groups))
+
+    # --- the older, dict-style reads -------------------------------------------
+
+    @property
+    def args(self) -> dict[str, Any]:
+        """The drawing call's arguments by name (without groups and naming)."""
+        skip = ("groups", "naming", "width", "label")
+        out = _Args(
+            {
+                f.name: getattr(self, f.name)
+                for f in dataclasses.fields(self)  # type: ignore[arg-type]
+                if f.name not in skip
+            }
+        )
+        out.update(self._derived())
+        out.record = self
+        return out
+
+    def _derived(self) -> dict[str, Any]:
+        return {}
 
     def __getitem__(self, key: str) -> Any:
         return self.args[key]
 
+    # --- geometry ---------------------------------------------------------------
+
     def points(self) -> list[Point]:
         """The defining points of the call (for bounds and containment checks)."""
-        a = self.args
-        if self.name == "line" or self.name == "arrow":
-            return [a["start"], a["end"]]
-        if self.name in ("polyline", "polygon"):
-            return list(a["points"])
-        if self.name in ("circle", "arc"):
-            (cx, cy), r = a["center"], a["radius"]
-            return [(cx - r, cy - r), (cx + r, cy + r)]
-        if self.name == "text":
-            return [a["pos"]]
         return []
+
+    def bbox(self) -> BBox | None:
+        """(xmin, ymin, xmax, ymax) of what the record covers; None if nothing."""
+        pts = self.points()
+        if not pts:
+            return None
+        xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+        return (min(xs), min(ys), max(xs), max(ys))
+
+    def shifted(self, dx: float, dy: float) -> Call:
+        """The same record moved by (dx, dy) mm."""
+        return self
+
+    def with_changes(self, **changes: Any) -> Call:
+        """The same record with some fields changed (`content=`, `groups=` …)."""
+        return dataclasses.replace(self, **changes)  # type: ignore[type-var]
+
+
+def _t(p: Point, dx: float, dy: float) -> Point:
+    return (p[0] + dx, p[1] + dy)
+
+
+@dataclass(frozen=True, init=False, eq=True)
+class BeginGroup(Call):
+    name: ClassVar[str] = "begin_group"
+    id: str
+    cls: str | None = None
+    groups: tuple[str, ...] = ()
+    naming: Naming | None = None
+
+
+@dataclass(frozen=True, init=False)
+class EndGroup(Call):
+    name: ClassVar[str] = "end_group"
+    groups: tuple[str, ...] = ()
+    naming: Naming | None = None
+
+
+@dataclass(frozen=True, init=False)
+class Line(Call):
+    name: ClassVar[str] = "line"
+    start: Point
+    end: Point
+    line: LineType = "main"
+    groups: tuple[str, ...] = ()
+    naming: Naming | None = None  # a label's leader line
+
+    def points(self) -> list[Point]:
+        return [self.start, self.end]
+
+    def shifted(self, dx: float, dy: float) -> Line:
+        naming = None if self.naming is None else self.naming.shifted(dx, dy)
+        return dataclasses.replace(
+            self, start=_t(self.start, dx, dy), end=_t(self.end, dx, dy), naming=naming
+        )
+
+
+@dataclass(frozen=True, init=False)
+class Polyline(Call):
+    name: ClassVar[str] = "polyline"
+    vertices: tuple[Point, ...]
+    line: LineType = "main"
+    groups: tuple[str, ...] = ()
+    naming: Naming | None = None
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        if len(args) >= 2 and isinstance(args[1], dict) and "points" in args[1]:
+            a = dict(args[1])
+            a["vertices"] = a.pop("points")
+            args = (args[0], a, *args[2:])
+        if "points" in kwargs:
+            kwargs["vertices"] = kwargs.pop("points")
+        super().__init__(*args, **kwargs)
+
+    @property
+    def args(self) -> dict[str, Any]:
+        out = _Args(points=self.vertices, line=self.line)
+        out.record = self
+        return out
+
+    def points(self) -> list[Point]:
+        return list(self.vertices)
+
+    def shifted(self, dx: float, dy: float) -> Polyline:
+        return dataclasses.replace(self, vertices=tuple(_t(p, dx, dy) for p in self.vertices))
+
+
+@dataclass(frozen=True, init=False)
+class Polygon(Polyline):
+    name: ClassVar[str] = "polygon"
+    vertices: tuple[Point, ...]
+    line: LineType | None = "main"  # type: ignore[assignment]
+    fill: Fill = "none"
+    groups: tuple[str, ...] = ()
+    naming: Naming | None = None
+
+    @property
+    def args(self) -> dict[str, Any]:
+        out = _Args(points=self.vertices, line=self.line, fill=self.fill)
+        out.record = self
+        return out
+
+    def shifted(self, dx: float, dy: float) -> Polygon:
+        return dataclasses.replace(self, vertices=tuple(_t(p, dx, dy) for p in self.vertices))
+
+
+@dataclass(frozen=True, init=False)
+class Circle(Call):
+    name: ClassVar[str] = "circle"
+    center: Point
+    radius: float
+    line: LineType | None = "main"
+    fill: Fill = "none"
+    groups: tuple[str, ...] = ()
+    naming: Naming | None = None
+
+    def points(self) -> list[Point]:
+        (cx, cy), r = self.center, self.radius
+        return [(cx - r, cy - r), (cx + r, cy + r)]
+
+    def shifted(self, dx: float, dy: float) -> Circle:
+        return dataclasses.replace(self, center=_t(self.center, dx, dy))
+
+
+@dataclass(frozen=True, init=False)
+class Arc(Call):
+    name: ClassVar[str] = "arc"
+    center: Point
+    radius: float
+    start_deg: float
+    end_deg: float
+    line: LineType = "main"
+    groups: tuple[str, ...] = ()
+    naming: Naming | None = None
+
+    def points(self) -> list[Point]:
+        (cx, cy), r = self.center, self.radius
+        return [(cx - r, cy - r), (cx + r, cy + r)]
+
+    def bbox(self) -> BBox:
+        (cx, cy), r = self.center, self.radius
+        span = (self.end_deg - self.start_deg) % 360.0 or 360.0
+        angles = [self.start_deg + span * k / 32 for k in range(33)]
+        xs = [cx + r * math.cos(math.radians(a)) for a in angles]
+        ys = [cy + r * math.sin(math.radians(a)) for a in angles]
+        return (min(xs), min(ys), max(xs), max(ys))
+
+    def shifted(self, dx: float, dy: float) -> Arc:
+        return dataclasses.replace(self, center=_t(self.center, dx, dy))
+
+
+@dataclass(frozen=True, init=False)
+class Arrow(Call):
+    name: ClassVar[str] = "arrow"
+    start: Point
+    end: Point
+    line: LineType = "main"
+    head_length: float = 2.5
+    head_width: float = 0.9
+    groups: tuple[str, ...] = ()
+    naming: Naming | None = None
+
+    @property
+    def length(self) -> float:
+        return math.dist(self.start, self.end)
+
+    def _derived(self) -> dict[str, Any]:
+        return {"length": self.length}
+
+    def points(self) -> list[Point]:
+        return [self.start, self.end]
+
+    def shifted(self, dx: float, dy: float) -> Arrow:
+        return dataclasses.replace(self, start=_t(self.start, dx, dy), end=_t(self.end, dx, dy))
+
+
+@dataclass(frozen=True, init=False)
+class Text(Call):
+    """One run of lettering; `size` the capital height (mm), `width` its
+    drawn width by the look's lettering metrics (narrowed to `max_width`)."""
+
+    name: ClassVar[str] = "text"
+    pos: Point
+    content: str
+    size: float = 3.5
+    anchor: HAlign = "left"
+    valign: VAlign = "baseline"
+    rotation: float = 0.0
+    max_width: float | None = None
+    groups: tuple[str, ...] = ()
+    naming: Naming | None = None  # what the label this run belongs to names
+    width: float | None = None  # None: not measured (made without a look)
+    label: LabelRun | None = None  # the rich-text label this run belongs to
+
+    def points(self) -> list[Point]:
+        return [self.pos]
+
+    def box(self, width: float | None = None) -> BBox:
+        """The box of the capitals (rotated text: the box round the turned one)."""
+        w = self.width if width is None else width
+        if w is None:
+            raise ValueError("this text record was not measured; use RecordingBackend.text_box")
+        size = self.size
+        x0 = {"left": 0.0, "center": -w / 2, "right": -w}[self.anchor]
+        y0 = {"baseline": 0.0, "middle": -size / 2, "top": -size}[self.valign]
+        x, y = self.pos
+        if self.rotation % 360.0 == 0.0:
+            return (x + x0, y + y0, x + x0 + w, y + y0 + size)
+        a = math.radians(self.rotation)
+        ca, sa = math.cos(a), math.sin(a)
+        corners = [(x0, y0), (x0 + w, y0), (x0 + w, y0 + size), (x0, y0 + size)]
+        xs = [x + u * ca - v * sa for u, v in corners]
+        ys = [y + u * sa + v * ca for u, v in corners]
+        return (min(xs), min(ys), max(xs), max(ys))
+
+    def bbox(self) -> BBox | None:
+        return None if self.width is None else self.box()
+
+    def with_changes(self, **changes: Any) -> Call:
+        # new lettering is measured again (by whoever has the look)
+        if {"content", "size", "max_width"} & set(changes) and "width" not in changes:
+            changes["width"] = None
+        return super().with_changes(**changes)
+
+    def shifted(self, dx: float, dy: float) -> Text:
+        naming = None if self.naming is None else self.naming.shifted(dx, dy)
+        return dataclasses.replace(self, pos=_t(self.pos, dx, dy), naming=naming)
+
+
+# Every record is a Call; `Record` is the name new code reads.
+Record = Call
 
 
 class RecordingBackend(Backend):
-    """Keeps `calls` in order; `begin_group`/`end_group` are recorded too."""
+    """Keeps `calls` (typed records) in order; `begin_group`/`end_group` are recorded too."""
 
     def __init__(self, width: float = 841.0, height: float = 594.0, look=None) -> None:
         super().__init__(width, height, look)
         self.calls: list[Call] = []
+        self._naming: Naming | None = None
+        self._label_ids: set[int] = set()
         self._label: tuple[int, tuple[TextRun, ...], Point, list[int], dict[str, Any]] | None = None
 
     def rich_text(
@@ -100,8 +454,35 @@ class RecordingBackend(Backend):
         finally:
             self._label = None
 
-    def _record(self, name: str, **args: Any) -> None:
-        self.calls.append(Call(name, args, tuple(self._open_groups)))
+    def _add(self, record: Call) -> None:
+        self.calls.append(record)
+        if record.naming is not None:
+            self._label_ids.add(record.naming.label)
+
+    # --- what a label names ---------------------------------------------------
+
+    @contextlib.contextmanager
+    def naming(
+        self,
+        markup: str,
+        kind: NamingKind,
+        anchor: PointLike,
+        end: PointLike | None = None,
+    ) -> Iterator[Naming]:
+        """Every text (and leader line) drawn inside is one label naming
+        `anchor` (a point) or `anchor`–`end` (an arrow, a segment)."""
+        outer = self._naming
+        self._naming = Naming(
+            next(_LABEL_IDS),
+            markup,
+            kind,
+            as_point(anchor),
+            None if end is None else as_point(end),
+        )
+        try:
+            yield self._naming
+        finally:
+            self._naming = outer
 
     # --- queries -------------------------------------------------------------
 
@@ -117,40 +498,48 @@ class RecordingBackend(Backend):
 
     def text_box(self, call: Call) -> tuple[float, float, float, float]:
         """Estimated (xmin, ymin, xmax, ymax) of an unrotated text call's capitals."""
-        if call.name != "text":
+        if not isinstance(call, Text):
             raise ValueError("text_box needs a text call")
-        if call["rotation"] % 360.0 != 0.0:
+        if call.rotation % 360.0 != 0.0:
             raise ValueError("text_box handles unrotated text only")
-        x, y = call["pos"]
-        size = call["size"]
-        w = self.look.lettering.width(call["content"], size, call["max_width"])
-        x0 = {"left": x, "center": x - w / 2, "right": x - w}[call["anchor"]]
-        y0 = {"baseline": y, "middle": y - size / 2, "top": y - size}[call["valign"]]
-        return (x0, y0, x0 + w, y0 + size)
+        w = self.look.lettering.width(call.content, call.size, call.max_width)
+        return call.box(w)
 
     # --- the interface -------------------------------------------------------
 
     def line(self, start: PointLike, end: PointLike, line: LineType = "main") -> None:
         self._check_line(line)
-        self._record("line", start=as_point(start), end=as_point(end), line=line)
+        self._add(
+            Line(
+                as_point(start),
+                as_point(end),
+                line,
+                groups=tuple(self._open_groups),
+                naming=self._naming,
+            )
+        )
 
     def polyline(self, points: Sequence[PointLike], line: LineType = "main") -> None:
         self._check_line(line)
-        self._record("polyline", points=tuple(as_point(p) for p in points), line=line)
+        pts = tuple(as_point(p) for p in points)
+        self._add(Polyline(vertices=pts, line=line, groups=tuple(self._open_groups)))
 
     def polygon(
         self, points: Sequence[PointLike], line: LineType | None = "main", fill: Fill = "none"
     ) -> None:
         self._check_line(line, allow_none=True)
         self._check_fill(fill)
-        self._record("polygon", points=tuple(as_point(p) for p in points), line=line, fill=fill)
+        pts = tuple(as_point(p) for p in points)
+        self._add(Polygon(vertices=pts, line=line, fill=fill, groups=tuple(self._open_groups)))
 
     def circle(
         self, center: PointLike, radius: float, line: LineType | None = "main", fill: Fill = "none"
     ) -> None:
         self._check_line(line, allow_none=True)
         self._check_fill(fill)
-        self._record("circle", center=as_point(center), radius=float(radius), line=line, fill=fill)
+        self._add(
+            Circle(as_point(center), float(radius), line, fill, groups=tuple(self._open_groups))
+        )
 
     def arc(
         self,
@@ -161,13 +550,15 @@ class RecordingBackend(Backend):
         line: LineType = "main",
     ) -> None:
         self._check_line(line)
-        self._record(
-            "arc",
-            center=as_point(center),
-            radius=float(radius),
-            start_deg=float(start_deg),
-            end_deg=float(end_deg),
-            line=line,
+        self._add(
+            Arc(
+                as_point(center),
+                float(radius),
+                float(start_deg),
+                float(end_deg),
+                line,
+                groups=tuple(self._open_groups),
+            )
         )
 
     def arrow(
@@ -182,15 +573,8 @@ class RecordingBackend(Backend):
         self._check_line(line)
         hl = self.look.arrow_length if head_length is None else float(head_length)
         hw = self.look.arrow_width if head_width is None else float(head_width)
-        s, e = as_point(start), as_point(end)
-        self._record(
-            "arrow",
-            start=s,
-            end=e,
-            line=line,
-            head_length=hl,
-            head_width=hw,
-            length=math.dist(s, e),
+        self._add(
+            Arrow(as_point(start), as_point(end), line, hl, hw, groups=tuple(self._open_groups))
         )
 
     def text(
@@ -205,101 +589,115 @@ class RecordingBackend(Backend):
         max_width: float | None = None,
     ) -> None:
         self._check_text(size, anchor, valign, max_width)
-        extra: dict[str, Any] = {}
+        mw = None if max_width is None else float(max_width)
         p = as_point(pos)
+        mark: LabelRun | None = None
         if self._label is not None and self._label[3]:
             serial, runs, at, drawn, style = self._label
-            extra["label"] = LabelRun(
-                serial, drawn.pop(0), runs, (at[0] - p[0], at[1] - p[1]), **style
+            mark = LabelRun(serial, drawn.pop(0), runs, (at[0] - p[0], at[1] - p[1]), **style)
+        self._add(
+            Text(
+                as_point(pos),
+                str(content),
+                float(size),
+                anchor,
+                valign,
+                float(rotation),
+                mw,
+                groups=tuple(self._open_groups),
+                naming=self._naming,
+                width=self.look.lettering.width(str(content), float(size), mw),
+                label=mark,
             )
-        self._record(
-            "text",
-            pos=p,
-            content=str(content),
-            size=float(size),
-            anchor=anchor,
-            valign=valign,
-            rotation=float(rotation),
-            max_width=None if max_width is None else float(max_width),
-            **extra,
         )
 
     def _begin_group(self, id: str, cls: str | None) -> None:
         # Recorded with the groups as they were before this one opened.
-        self.calls.append(
-            Call("begin_group", {"id": id, "cls": cls}, tuple(self._open_groups[:-1]))
-        )
+        self._add(BeginGroup(id, cls, groups=tuple(self._open_groups[:-1])))
 
     def _end_group(self) -> None:
-        self._record("end_group")
+        self._add(EndGroup(groups=tuple(self._open_groups)))
 
     def replay(self, backend: Backend, dx: float = 0.0, dy: float = 0.0) -> None:
-        """Draw every recorded call again on `backend`, shifted by (dx, dy) mm."""
+        """Draw every recorded call again on `backend`, shifted by (dx, dy) mm;
+        a recording backend keeps what each label names."""
 
         def t(p: Sequence[float]) -> tuple[float, float]:
             return (p[0] + dx, p[1] + dy)
 
+        naming = backend._naming if isinstance(backend, RecordingBackend) else None
         whole = bool(getattr(backend, "sets_labels_whole", False))
         # each label's runs as recorded now (a sheet may have translated a run's text)
         labels: dict[int, list[TextRun]] = {}
         for c in self.calls:
-            mark = c.args.get("label") if c.name == "text" else None
-            if whole and mark is not None:
-                runs = labels.setdefault(mark.serial, list(mark.runs))
-                old, kind = runs[mark.index]
+            if whole and isinstance(c, Text) and c.label is not None:
+                runs = labels.setdefault(c.label.serial, list(c.label.runs))
+                old, kind = runs[c.label.index]
                 lead = old[: len(old) - len(old.lstrip(" "))]
                 trail = old[len(old.rstrip(" ")) :]
-                runs[mark.index] = (lead + c.args["content"] + trail, kind)
+                runs[c.label.index] = (lead + c.content + trail, kind)
+        # a label keeps its number, unless the target has one of that number
+        # already (a sketch replayed twice): then it gets a new one
+        renumbered: dict[int, Naming] = {}
         for c in self.calls:
-            a = c.args
-            mark = a.get("label") if c.name == "text" else None
-            if whole and mark is not None:
-                whole_runs = labels.pop(mark.serial, None)
-                if whole_runs is not None:  # the label's first run: the whole label
-                    x, y = t(a["pos"])
-                    backend.rich_text(
-                        (x + mark.offset[0], y + mark.offset[1]),
-                        whole_runs,
-                        mark.size,
-                        anchor=mark.anchor,
-                        valign=mark.valign,
-                        rotation=mark.rotation,
+            if isinstance(backend, RecordingBackend) and c.naming is not None:
+                if c.naming.label not in renumbered:
+                    label = c.naming.label
+                    if label in backend._label_ids:
+                        label = next(_LABEL_IDS)
+                    renumbered[c.naming.label] = dataclasses.replace(
+                        c.naming.shifted(dx, dy), label=label
                     )
-                continue
-            if c.name == "begin_group":
-                backend.begin_group(a["id"], a["cls"])
-            elif c.name == "end_group":
+                backend._naming = renumbered[c.naming.label]
+            if isinstance(c, BeginGroup):
+                backend.begin_group(c.id, c.cls)
+            elif isinstance(c, EndGroup):
                 backend.end_group()
-            elif c.name == "line":
-                backend.line(t(a["start"]), t(a["end"]), a["line"])
-            elif c.name == "polyline":
-                backend.polyline([t(p) for p in a["points"]], a["line"])
-            elif c.name == "polygon":
-                backend.polygon([t(p) for p in a["points"]], a["line"], a["fill"])
-            elif c.name == "circle":
-                backend.circle(t(a["center"]), a["radius"], a["line"], a["fill"])
-            elif c.name == "arc":
-                backend.arc(t(a["center"]), a["radius"], a["start_deg"], a["end_deg"], a["line"])
-            elif c.name == "arrow":
+            elif isinstance(c, Line):
+                backend.line(t(c.start), t(c.end), c.line)
+            elif isinstance(c, Polygon):
+                backend.polygon([t(p) for p in c.vertices], c.line, c.fill)
+            elif isinstance(c, Polyline):
+                backend.polyline([t(p) for p in c.vertices], c.line)
+            elif isinstance(c, Circle):
+                backend.circle(t(c.center), c.radius, c.line, c.fill)
+            elif isinstance(c, Arc):
+                backend.arc(t(c.center), c.radius, c.start_deg, c.end_deg, c.line)
+            elif isinstance(c, Arrow):
                 backend.arrow(
-                    t(a["start"]),
-                    t(a["end"]),
-                    a["line"],
-                    head_length=a["head_length"],
-                    head_width=a["head_width"],
+                    t(c.start),
+                    t(c.end),
+                    c.line,
+                    head_length=c.head_length,
+                    head_width=c.head_width,
                 )
-            elif c.name == "text" and mark is not None and isinstance(backend, RecordingBackend):
-                # into another recording: the run keeps its label's mark
-                backend._record("text", **{**a, "pos": t(a["pos"])})
-            elif c.name == "text":
+            elif isinstance(c, Text) and whole and c.label is not None:
+                whole_runs = labels.pop(c.label.serial, None)
+                if whole_runs is not None:  # the label's first run: the whole label
+                    x, y = t(c.pos)
+                    backend.rich_text(
+                        (x + c.label.offset[0], y + c.label.offset[1]),
+                        whole_runs,
+                        c.label.size,
+                        anchor=c.label.anchor,
+                        valign=c.label.valign,
+                        rotation=c.label.rotation,
+                    )
+            elif isinstance(c, Text):
                 backend.text(
-                    t(a["pos"]),
-                    a["content"],
-                    a["size"],
-                    anchor=a["anchor"],
-                    valign=a["valign"],
-                    rotation=a["rotation"],
-                    max_width=a["max_width"],
+                    t(c.pos),
+                    c.content,
+                    c.size,
+                    anchor=c.anchor,
+                    valign=c.valign,
+                    rotation=c.rotation,
+                    max_width=c.max_width,
                 )
+                if isinstance(backend, RecordingBackend) and c.label is not None:
+                    # into another recording: the run keeps its label's mark
+                    last = backend.calls[-1]
+                    backend.calls[-1] = dataclasses.replace(last, label=c.label)  # type: ignore[type-var]
             else:  # pragma: no cover - a new primitive must be added here
                 raise ValueError(f"cannot replay {c.name!r}")
+            if isinstance(backend, RecordingBackend):
+                backend._naming = naming

@@ -10,6 +10,7 @@ from ..drawing.page import FIELDS
 from ..i18n import Language, catalogue
 from ..scales import LENGTH_MANTISSA_TEXT, series
 from ..solution import Solution
+from ..titles import sheet_title
 
 __all__ = [
     "designation_base",
@@ -37,20 +38,20 @@ def drawing_scale(mu_l: float) -> str:
 
 
 def designation_base(solution: Solution, lang: Language = "en") -> str:
-    """The designation without the sheet's number, from the file's stem:
-    "TMM.CP.SIX_LINK_PRESS" (en). A Ukrainian sheet holds no English word, so
-    there the stem's numbers stand for it ("task01_v1" → "ТММ.КП.01-1"), or,
-    for a stem without digits, a four-digit number made from it."""
-    prefix = str(catalogue(lang).words("title_block")["designation_prefix"])
+    """The designation without the sheet's number, from the file's stem, the
+    same on the English and the Ukrainian sheet (one document, one
+    designation; GOST 2.201 codes of capitals and digits joined by dots, no
+    underscores): the stem's numbers ("task01_v1" → "ТММ.КП.01.1"), or, for a
+    stem without digits, a four-digit number made from it. `lang` is kept for
+    the callers; the designation does not depend on it."""
+    del lang
+    prefix = str(catalogue("uk").words("title_block")["designation_prefix"])
     stem = Path(solution.mechanism.path or "").stem.strip()
     if not stem:
         return prefix
-    if lang == "en":
-        code = re.sub(r"[^\w-]+", "_", stem.upper()).strip("_")
-    else:
-        digits = re.findall(r"\d+", stem)
-        code = "-".join(digits) if digits else f"{zlib.crc32(stem.encode()) % 10000:04d}"
-    return f"{prefix}.{code}" if code else prefix
+    digits = re.findall(r"\d+", stem)
+    code = ".".join(digits) if digits else f"{zlib.crc32(stem.encode()) % 10000:04d}"
+    return f"{prefix}.{code}"
 
 
 def title_fields(
@@ -76,8 +77,8 @@ def title_fields(
     if "approved" in (mech.sheet or {}) and "approved_by" not in fields:
         fields["approved_by"] = str(mech.sheet["approved"]).strip()
     if mu_l is not None:
-        fields.setdefault("scale", drawing_scale(mu_l))
-    fields.setdefault("title", mech.title_in(lang))
+        fields.setdefault("scale", catalogue(lang).localise(drawing_scale(mu_l)))  # 1:2,5
+    fields.setdefault("title", sheet_title(mech, lang))
     fields["sheet"] = str(sheet) if sheet is not None else fields.get("sheet", "1")
     fields.setdefault("sheets", str(sheets))
     fields.setdefault("designation_base", designation_base(solution, lang))

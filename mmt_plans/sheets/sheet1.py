@@ -999,8 +999,9 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
         rows.append([str(lid), *vals])
         marks.append(str(lid))
     header = [w["link"]]
+    units = catalogue(lang)
     for i in idx:
-        header += [f"ω, 1/s ({i})", f"ε, 1/s² ({i})"]
+        header += [f"ω, {units.unit('1/s')} ({i})", f"ε, {units.unit('1/s2')} ({i})"]
     out["table-omega-eps"] = table_sketch(
         look,
         "table-omega-eps",
@@ -1041,8 +1042,13 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
     ]
     # formulas (12) and (13): Δ_V, Δ_a of V_plan and V_diagram (a likewise)
     header_marks: list[str | None] = [None]
-    for q in ("V", "a"):
-        header_marks += [f"{q}_{{{w['plan']}}}", f"{q}_{{{w['diagram']}}}", f"Δ_{{{q}}}, %"]
+    for q, unit in (("V", "m/s"), ("a", "m/s2")):
+        u = catalogue(lang).unit(unit)
+        header_marks += [
+            f"{q}_{{{w['plan']}}}\n{u}",
+            f"{q}_{{{w['diagram']}}}\n{u}",
+            f"Δ_{{{q}}}, %",
+        ]
     sk = table_sketch(
         look,
         "table-check",

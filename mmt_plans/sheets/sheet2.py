@@ -846,11 +846,11 @@ def _translated(sketch: Sketch, lang: Language) -> Sketch:
     runs = {k: str(v) for k, v in catalogue(lang).words("symbol_indices").items() if k != v}
     if not runs:
         return sketch
+    # an index run: the symbol's index and the link's number ("in4" → "i4")
+    index = re.compile(f"^({'|'.join(map(re.escape, runs))})(\\d*)$")
     for i, c in enumerate(sketch.calls):
-        if c.name == "text" and c.args["content"] in runs:
-            sketch.calls[i] = type(c)(
-                c.name, {**c.args, "content": runs[c.args["content"]]}, c.groups
-            )
+        if c.name == "text" and (m := index.match(c["content"])) is not None:
+            sketch.calls[i] = c.with_changes(content=runs[m.group(1)] + m.group(2))
     return sketch
 
 

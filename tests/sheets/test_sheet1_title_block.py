@@ -52,8 +52,11 @@ def test_defaults_on_both_sheets(solution, lang):
         assert got["organisation"] == [words["organisation_default"]]
         assert str(n) in got["sheet"] and "2" in got["sheets"]
         assert got["scale"] and ":" in got["scale"][0]
-    if lang == "en":
-        assert "OFFSET_SLIDER_CRANK" in cells(solution, compose_sheet1, lang)["designation"][0]
+    # one document, one designation in both languages, no underscores (issue 21)
+    other = "uk" if lang == "en" else "en"
+    assert cells(solution, compose_sheet1, other)["designation"] == cells(
+        solution, compose_sheet1, lang)["designation"]
+    assert "_" not in cells(solution, compose_sheet1, lang)["designation"][0]
 
 
 def test_fields_from_the_file_or_the_command_line(solution):
