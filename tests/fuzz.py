@@ -956,13 +956,9 @@ def check(data: bytes, path: str | None = None, timeout: float = HANG_S,
 # tests/test_fuzz_regressions.py; a new one would be listed here as
 # (pattern of the outcome's detail, name of the bug) until it is fixed.
 KNOWN_BUGS: tuple[tuple[str, str], ...] = (
-    # #26, found by the geometry grammar; owned by the sheets-layout work (remove
-    # each entry when its fix is merged: the fuzzer then holds it)
-    (r"ZeroDivisionError at mmt_plans/sheets/sheet1\.py:\d+ \(_between_spokes\)",
-     "#26: the crank's spokes at extra angles a hair from 0/360 (ZeroDivisionError)"),
-    (r"stopped after .* at mmt_plans/((sheets|drawing)/|scales\.py)",
-     "#26: a sheet layout loop without a bound (a massless or unloaded group's zero "
-     "force polygon; crowded points)"),
+    # (pattern of an outcome's detail, the issue that owns it): none open. The
+    # two #26 entries (the crank's spokes a hair from 0/360; the unbounded
+    # enlarging of a zero force polygon) were removed when their fixes merged.
 )
 
 
