@@ -106,11 +106,16 @@ class Sheet1:
 
 
 def _fmt(x: float, digits: int = 3) -> str:
+    """`digits` significant figures, never in exponent form, whole numbers kept
+    whole: 333, 45.3, 0.0523, 1529 (not "1.53e+03", nor "1529.1885")."""
     if x is None or not math.isfinite(x):
         return "—"
-    text = f"{x:.{digits}g}" if abs(x) >= 1e-12 else "0"
+    if abs(x) < 1e-12:
+        return "0"
+    text = f"{x:.{digits}g}"
     if "e" in text:
-        text = f"{x:.4f}"
+        decimals = max(0, digits - 1 - math.floor(math.log10(abs(x))))
+        text = f"{x:.{decimals}f}"
     return text
 
 

@@ -139,6 +139,57 @@ def _coincident(s1: np.ndarray, e1: np.ndarray, s2: Any, e2: Any, tol: float = 0
     return min(l1, b) - max(0.0, a) > 0.5
 
 
+# a polygon's vector along a line another of its vectors already runs on is
+# drawn this far beside it, as the textbook draws collinear forces side by side
+_SIDE_BY_SIDE = 1.8  # mm
+
+
+def _along(s1: np.ndarray, e1: np.ndarray, s2: np.ndarray, e2: np.ndarray) -> bool:
+    """True when the arrows s1→e1 and s2→e2 run along each other: coincident
+    seen from either (a long arrow a little off parallel), or parallel within
+    3° and within 0.8 mm of each other over more than half a millimetre."""
+    if _coincident(s1, e1, s2, e2) or _coincident(s2, e2, s1, e1):
+        return True
+    d1, d2 = e1 - s1, e2 - s2
+    l1, l2 = float(np.hypot(*d1)), float(np.hypot(*d2))
+    if l1 < 1e-9 or l2 < 1e-9:
+        return False
+    u = d1 / l1
+    if abs(float(u[0] * d2[1] - u[1] * d2[0])) > math.sin(math.radians(3.0)) * l2:
+        return False
+    # b along a's axis from t0 to t1, h0 … h1 to one side of it
+    t0, t1 = float(np.dot(s2 - s1, u)), float(np.dot(e2 - s1, u))
+    h0 = float(u[0] * (s2 - s1)[1] - u[1] * (s2 - s1)[0])
+    h1 = float(u[0] * (e2 - s1)[1] - u[1] * (e2 - s1)[0])
+    if t1 < t0:
+        t0, t1, h0, h1 = t1, t0, h1, h0
+    lo, hi = max(0.0, t0), min(l1, t1)
+    if hi - lo <= 0.5:
+        return False
+    if abs(h1 - h0) < 1e-12:
+        return abs(h0) <= 0.8
+    # where |h| ≤ 0.8 on b, as t: h is linear in t
+    ta = t0 + (-0.8 - h0) * (t1 - t0) / (h1 - h0)
+    tb = t0 + (0.8 - h0) * (t1 - t0) / (h1 - h0)
+    near_lo, near_hi = max(lo, min(ta, tb)), min(hi, max(ta, tb))
+    return near_hi - near_lo > 0.5
+
+
+def _beside(
+    s: np.ndarray, e: np.ndarray, drawn: Sequence[tuple[np.ndarray, np.ndarray]]
+) -> np.ndarray:
+    """The sideways shift (mm) that keeps the arrow s→e off every drawn arrow it
+    would run along: zero when it overlaps none, else the nearest multiple of
+    _SIDE_BY_SIDE perpendicular to it, either side, that overlaps none."""
+    d = e - s
+    n = np.array([-d[1], d[0]]) / float(np.hypot(*d))
+    for k in (0, 1, -1, 2, -2, 3, -3, 4, -4):
+        shift = k * _SIDE_BY_SIDE * n
+        if not any(_along(s + shift, e + shift, a, b) for a, b in drawn):
+            return shift
+    return 5 * _SIDE_BY_SIDE * n
+
+
 def _arrow_length(magnitude: float, largest: float) -> float:
     """Drawn length of a force shown to direction only: 8 … 26 mm by √|F|."""
     if largest <= 0.0:
@@ -456,6 +507,27 @@ def _reversed(label: str) -> str:
     return f"R{m.group(2)}{sep}{m.group(1)}"
 
 
+def _side_by_side(
+    sk: Sketch,
+    labels: Labels,
+    arrows: list[tuple[np.ndarray, np.ndarray]],
+    s: np.ndarray,
+    e: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Where the polygon's arrow s→e is drawn: on its exact place, or shifted
+    beside a drawn arrow it would run along, its length and direction kept,
+    with thin ticks joining its ends to the exact ones so the chain reads
+    closed. The arrow is added to `arrows`."""
+    shift = _beside(s, e, arrows)
+    if float(np.hypot(*shift)) > 0.0:
+        for at in (s, e):
+            sk.line(at, at + shift, "thin")
+            labels.avoid_line(at, at + shift)
+        s, e = s + shift, e + shift
+    arrows.append((s, e))
+    return s, e
+
+
 def sketch_force_polygons(
     polygons: Sequence[ForcePolygon], mu_F: float, look: Any, lang: Language, gid: str, title: str
 ) -> Sketch:
@@ -469,7 +541,8 @@ def sketch_force_polygons(
     drawn: dict[tuple[str, int, int], bool] = {}
     short: list[str] = []
     offset = np.zeros(2)
-    sides: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # label → drawn start, end
+    sides: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # label → exact start, end
+    arrows: list[tuple[np.ndarray, np.ndarray]] = []  # as drawn, some beside their line
     names: dict[str, list[Any]] = {}  # label → [anchor, markup, towards], written last
     captions: list[tuple[np.ndarray, str]] = []
     with sk.group(gid, "force-polygon"):
@@ -512,10 +585,11 @@ def sketch_force_polygons(
                     short.append(force_markup(v.label))
                     continue
                 component = "^" in v.label
+                sides[v.label] = (s, e)
+                s, e = _side_by_side(sk, labels, arrows, s, e)
                 sk.arrow(s, e, "dashed" if component else "main", **_ARROW)  # type: ignore[arg-type]
                 labels.avoid_line(s, e)
                 u = (e - s) / length
-                sides[v.label] = (s, e)
                 names[v.label] = [(s + e) / 2, force_markup(v.label), np.array([-u[1], u[0]])]
             # R = R^n + R^t: the resultant of two consecutive components, main line
             for a, b in zip(poly.vectors, poly.vectors[1:]):
@@ -531,6 +605,7 @@ def sketch_force_polygons(
                     if key in drawn or float(np.hypot(*(e - s))) < 1.0:
                         continue
                     drawn[key] = True
+                    s, e = _side_by_side(sk, labels, arrows, s, e)
                     sk.arrow(s, e, "main", **_ARROW)  # type: ignore[arg-type]
                     labels.avoid_line(s, e)
                     u = unit_vector(e - s)
