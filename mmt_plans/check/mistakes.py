@@ -35,6 +35,9 @@ if TYPE_CHECKING:  # pragma: no cover
 
 # what a model changes: the plans (and the forces built on them), or only the forces
 Reach = Literal["kinematics", "forces", "images"]
+# the force analysis has two routes, the force plans by groups and Zhukovsky's
+# lever: a student may make a mistake in one of them and not in the other
+Route = Literal["", "plans", "lever"]
 
 
 @dataclass(frozen=True)
@@ -66,6 +69,15 @@ class Model:
     at: tuple | None = None
     instead: Where | None = None
     swapped: tuple[str, str, str] = ("", "", "")  # two points' images swapped on a plan
+    route: Route = ""  # a force mistake made in one route only ("": in both)
+
+    def on_route(self, kind: str) -> bool:
+        """Whether a value of `kind` is made on this model's force route."""
+        if not self.route or kind not in _FORCE_KINDS:
+            return True
+        if kind in _LOADS_KINDS:  # the loads are found before either route: unchanged
+            return False
+        return (kind in _LEVER_KINDS) == (self.route == "lever")
 
     def changes(self, where: Where, kind: Reach) -> bool:
         """Whether the model changes the construction `kind` at `where`."""
@@ -415,7 +427,10 @@ def models(exact: Exact, kin_at: list[Where], force_at: list[Where]) -> list[Mod
         for sc in scenarios(exact):
             # the lever turned the wrong way only swaps F_bal's sign: a sign swapped
             if sc.group != "lever_wrong_way":
-                out.append(_force_model(sc, w, len(force_at) > 1))
+                whole = _force_model(sc, w, len(force_at) > 1)
+                out.append(whole)
+                for route in ("plans", "lever"):
+                    out.append(replace(whole, key=f"{whole.key}@{route}", route=route))
         out.append(
             Model(
                 f"r0d@{w.key}",
@@ -532,6 +547,8 @@ def diagnose(
         for k, a in enumerate(answers):
             if model.at is not None and a.where.key != model.at:
                 continue  # made in another construction: the value is unchanged
+            if not model.on_route(a.kind):
+                continue  # made on the other route of the force analysis: unchanged
             if a.kind in _DIAGRAM_KINDS and not _scales_diagrams(model):
                 continue
             try:
@@ -568,6 +585,8 @@ def diagnose(
                 model, key=model.key + "+r0d", options=(*model.options, ("balancing_in_r0d", False))
             )
         if not model.changes(a.where, "forces" if a.kind in _FORCE_KINDS else "kinematics"):
+            return False
+        if not model.on_route(a.kind):
             return False
         x = exact_values[k]
         try:
@@ -700,6 +719,7 @@ _FORCE_KINDS = {
     "group_arm_m",
     "group_arm_mm",
 }
+_LEVER_KINDS = {"balancing_force_lever", "lever_mm"}
 _LOADS_KINDS = {"weight", "inertia_force", "inertia_moment", "inertia_arm_m", "inertia_arm_mm"}
 _DIAGRAM_KINDS = {"diagram", "check_V", "check_a", "check_delta", "check_verdict"}
 

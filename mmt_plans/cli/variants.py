@@ -22,9 +22,7 @@ from .errors import reports_errors
     metavar="PERCENT",
     help="Each length, mass, speed and load varied within ± this.",
 )
-@click.option(
-    "-o", "--out", "out_dir", required=True, type=click.Path(file_okay=False, path_type=Path)
-)
+@click.option("-o", "--out", "out_dir", required=True, type=click.Path(path_type=Path))
 @click.option(
     "--force",
     is_flag=True,

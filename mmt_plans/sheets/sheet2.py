@@ -1262,8 +1262,8 @@ def compose_sheet2(
         )
         raise LayoutError(
             f"{shown(solution.mechanism.path)}: sheet 2 does not fit on "
-            f"{page.name or 'the page'} even with every drawing {_COARSEST} scale steps "
-            f"smaller than the textbook's: {what}\n"
+            f"{page.name or 'the page'}: {what}, even with every drawing {_COARSEST} scale "
+            "steps smaller than the textbook's\n"
             "  fix: draw sheet 1 alone (--sheet 1), or study a mechanism of fewer "
             "groups (the force analysis of every group goes on one sheet)"
         )
