@@ -444,13 +444,20 @@ def temporary_name(target: Path) -> Path:
 
 
 def _pid_alive(pid: int) -> bool:
+    """Whether process `pid` still runs: a zombie (killed, not yet reaped: a
+    killed run's worker whose parent died first) does not."""
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
         return False
     except OSError:
         return True  # alive, another user's
-    return True
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            state = f.read().rsplit(b")", 1)[1].split()[0]
+    except (OSError, IndexError):
+        return True
+    return state not in (b"Z", b"X")
 
 
 def sweep_stale_temporaries(folder: str | os.PathLike[str]) -> list[Path]:

@@ -8,6 +8,7 @@ a construction does not exist; it never leaves the solver (see `chain.Sweep`).
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Callable
 from typing import Any
 
@@ -19,21 +20,23 @@ ROUNDING = 8 * np.finfo(float).eps
 
 class quiet:
     """`np.errstate(all="ignore")` for a whole computation over the angles (NaN
-    and ±inf are its data, checked where it ends): the outermost use sets it,
-    nested uses cost a counter, not numpy's context machinery."""
+    and ±inf are its data, checked where it ends): the outermost use in a
+    thread sets it, nested uses cost a counter, not numpy's context machinery.
+    The counter is per thread (the web page checks in several threads)."""
 
     __slots__ = ("_outer",)
-    _depth = 0
+    _local = threading.local()
 
     def __enter__(self) -> None:
-        if quiet._depth == 0:
+        depth = getattr(quiet._local, "depth", 0)
+        if depth == 0:
             self._outer = np.errstate(all="ignore")
             self._outer.__enter__()
-        quiet._depth += 1
+        quiet._local.depth = depth + 1
 
     def __exit__(self, *exc: Any) -> None:
-        quiet._depth -= 1
-        if quiet._depth == 0:
+        quiet._local.depth -= 1
+        if quiet._local.depth == 0:
             self._outer.__exit__(*exc)
 
 

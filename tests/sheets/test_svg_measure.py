@@ -42,7 +42,10 @@ def _arrows(group):
     items = list(group.iter())
     out = []
     for a, b in zip(items, items[1:]):
-        if a.tag == f"{SVG}line" and b.tag == f"{SVG}path" and b.get("fill") == "black":
+        # a thin line is never an arrow's shaft (the ticks joining a force
+        # polygon's side drawn beside its line to its exact ends are thin)
+        if (a.tag == f"{SVG}line" and a.get("class") != "thin"
+                and b.tag == f"{SVG}path" and b.get("fill") == "black"):
             start = np.array([float(a.get("x1")), float(a.get("y1"))])
             head = np.array([float(v) for v in re.findall(r"-?\d+(?:\.\d+)?", b.get("d"))]).reshape(-1, 2)
             tip = head[np.argmax(np.hypot(*(head - start).T))]
