@@ -37,7 +37,7 @@ from .diagrams import (
     graphical_differentiation,
     judge,
 )
-from .errors import ForceError, MmtError, StructureError, partial_turn_error
+from .errors import ForceError, MmtError, StructureError, partial_turn_error, shown
 from .forces import ForceAnalysis, force_analysis_at
 from .forces.reduction import Reduction, reduce_sweep
 from .forces.state import PositionState, from_sweep
@@ -470,7 +470,7 @@ class _Turn:
         self.largest = (float(np.max(np.abs(v[ok]))), float(np.max(np.abs(a[ok]))))
         if np.ptp(s[ok]) < 1e-12 * max(1.0, float(np.max(np.abs(s[ok])))):
             raise StructureError(
-                f"{self.mech.path}: output {self.mech.study.output} does not move along the "
+                f"{shown(self.mech.path)}: output {self.mech.study.output} does not move along the "
                 "working direction: set study.working_direction or study.zero"
             )
         # brackets [φ_i, φ_i+1] of the grid where ds/dφ changes sign
@@ -548,7 +548,7 @@ class _Turn:
         if zero is None:
             if self.extremes is None:
                 raise StructureError(
-                    f"{self.mech.path}: output {self.mech.study.output} has no extreme position "
+                    f"{shown(self.mech.path)}: output {self.mech.study.output} has no extreme position "
                     "along the working direction: set study.zero or study.working_direction"
                 )
             return self.extremes[0]

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from .errors import shown
 from .i18n import Language, catalogue
 
 __all__ = ["has_title", "sheet_title", "structure_title", "title_in", "title_warning"]
@@ -51,5 +52,5 @@ def title_warning(mechanism: Any, lang: Language) -> str | None:
         return None
     words = catalogue(lang).words("titles")
     return str(words["no_title"]).format(
-        file=mechanism.path, lang=lang, title=structure_title(mechanism, lang)
+        file=shown(mechanism.path), lang=lang, title=structure_title(mechanism, lang)
     )

@@ -69,3 +69,18 @@ def test_partial_turn_opted_in_but_assembling_nowhere_is_refused():
     text = with_points(text, 3, "{ A = [0, 0], B = [550, 0] }")
     message = refused(text, "nowhere.toml")
     assert "assembles at no crank angle" in message
+
+
+def test_a_bidi_override_in_the_file_name_is_escaped_in_the_solvers_messages():
+    # fuzz seed 3 case 1284: seed-002 task 6 v02 saved as 'bidi\u202egpj.toml'
+    # with a working direction its output does not move along; the solver's
+    # message carried the raw U+202E (it reverses the rest of the line)
+    from fuzz import mutant
+
+    m = mutant(3, 1284)
+    name = "bidi\u202egpj.toml"
+    with pytest.raises(MmtError) as err:
+        mmt_plans.solve(mmt_plans.loads(m.data.decode("utf-8"), name))
+    message = str(err.value)
+    assert message.startswith("bidi\\u202egpj.toml: output")
+    assert all(ch.isprintable() or ch == "\n" for ch in message), message

@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import AssemblyError, SingularPlanError, UnsupportedError
+from ..errors import AssemblyError, SingularPlanError, UnsupportedError, shown
 from ..model import FRAME, Mechanism
 from ..structure import Structure, analyse_structure
 from .dyads import DYADS, DyadSolver, GroupPlan, Motion
@@ -428,14 +428,14 @@ class Chain:
         structure = structure if structure is not None else analyse_structure(mech)
         if mech.higher_pairs:
             raise UnsupportedError(
-                f"{mech.path}: the mechanism has higher pairs; their kinematics is not solved: "
+                f"{shown(mech.path)}: the mechanism has higher pairs; their kinematics is not solved: "
                 "replace each higher pair by its lower-pair equivalent in the file"
             )
         solvers = []
         for group in structure.groups:
             if not group.is_dyad:
                 raise UnsupportedError(
-                    f"{mech.path}: group {group.label} of links {group.name} is of class "
+                    f"{shown(mech.path)}: group {group.label} of links {group.name} is of class "
                     f"{group.group_class}; only class II groups (dyads) are solved. "
                     f"Structure: {structure.formula}"
                 )

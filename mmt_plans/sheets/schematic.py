@@ -30,6 +30,7 @@ from ..drawing.markup import point_markup
 from ..drawing.page import Page, Rect, draw_frame
 from ..drawing.sketch import Sketch
 from ..drawing.symbols import hatched_base, hatched_guide, unit_vector
+from ..errors import shown
 from ..i18n import Language, catalogue, check_language
 from ..model import FRAME, Prismatic
 from ..render.output import write_drawing
@@ -514,7 +515,7 @@ def _fitted(
     ext = sk.extent()
     if ext.width > width_mm + 1e-6 or ext.height > height_mm + 1e-6:
         raise ValueError(
-            f"{solution.mechanism.path}: the scheme does not fit {width_mm:g} x {height_mm:g} mm"
+            f"{shown(solution.mechanism.path)}: the scheme does not fit {width_mm:g} x {height_mm:g} mm"
         )
     dx = (width_mm - ext.width) / 2.0 - ext.x
     dy = (height_mm - ext.height) / 2.0 - ext.y
