@@ -589,10 +589,9 @@ def _point_segment(px: np.ndarray, py: np.ndarray, s: np.ndarray) -> np.ndarray:
     return np.hypot(px - (s[:, 0] + t * vx), py - (s[:, 1] + t * vy))
 
 
-def _segment_box(s: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Distance from segments to boxes, row by row: 0 where the segment
-    meets the box (Liang-Barsky clipping), else the least of its ends' to the
-    box and the box's corners' to it."""
+def segments_meet_boxes(s: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row by row, whether the segment (x0, y0, x1, y1) meets the box (xmin,
+    ymin, xmax, ymax): Liang-Barsky clipping of the segment to the box."""
     x0, y0 = s[:, 0], s[:, 1]
     dx, dy = s[:, 2] - x0, s[:, 3] - y0
     t0, t1 = np.zeros(len(s)), np.ones(len(s))
@@ -609,7 +608,14 @@ def _segment_box(s: np.ndarray, b: np.ndarray) -> np.ndarray:
             r = q / np.where(flat, 1.0, p)
             t0 = np.where(~flat & (p < 0.0), np.maximum(t0, r), t0)
             t1 = np.where(~flat & (p > 0.0), np.minimum(t1, r), t1)
-    meets = ok & (t0 <= t1)
+    return ok & (t0 <= t1)
+
+
+def _segment_box(s: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Distance from segments to boxes, row by row: 0 where the segment
+    meets the box (Liang-Barsky clipping), else the least of its ends' to the
+    box and the box's corners' to it."""
+    meets = segments_meet_boxes(s, b)
     d = np.minimum(_point_box(s[:, 0], s[:, 1], b), _point_box(s[:, 2], s[:, 3], b))
     for cx, cy in ((b[:, 0], b[:, 1]), (b[:, 2], b[:, 1]), (b[:, 2], b[:, 3]), (b[:, 0], b[:, 3])):
         d = np.minimum(d, _point_segment(cx, cy, s))

@@ -22,7 +22,7 @@ from ..diagrams import (
     ILL_CONDITIONED,
     KinematicDiagrams,
 )
-from ..drawing.labels import Labels, arc_line, drawn_shapes
+from ..drawing.labels import Labels, arc_line, drawn_shapes, segments_meet_boxes
 from ..drawing.layout import LayoutError, SheetLayout
 from ..drawing.markup import component_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
@@ -270,23 +270,7 @@ class _ArcPlacer:
         sg = self._segs[pairs[1]]
         seg = ~np.isnan(sg[:, 0])
         keep = np.zeros(len(sg), dtype=bool)
-        x0, y0, dx, dy = sg[seg, 0], sg[seg, 1], sg[seg, 2] - sg[seg, 0], sg[seg, 3] - sg[seg, 1]
-        b = bx[seg]
-        t0, t1 = np.zeros(len(x0)), np.ones(len(x0))
-        ok = np.ones(len(x0), dtype=bool)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            for p, q in (
-                (-dx, x0 - b[:, 0]),
-                (dx, b[:, 2] - x0),
-                (-dy, y0 - b[:, 1]),
-                (dy, b[:, 3] - y0),
-            ):
-                flat = p == 0.0
-                ok &= ~(flat & (q < 0.0))
-                r = q / np.where(flat, 1.0, p)
-                t0 = np.where(~flat & (p < 0.0), np.maximum(t0, r), t0)
-                t1 = np.where(~flat & (p > 0.0), np.minimum(t1, r), t1)
-        keep[seg] = ok & (t0 <= t1)
+        keep[seg] = segments_meet_boxes(sg[seg], bx[seg])
         other = ~seg
         if other.any():
             keep[other] = shapely.intersects(
