@@ -695,7 +695,6 @@ def cases(
     from pathlib import Path
 
     from ..errors import MmtError
-    from ..generate import generate_one
     from ..variants import make_variants
 
     base = Path(root)
@@ -715,9 +714,22 @@ def cases(
             Case(f"{p.stem}_v{v.number:02d}", v.text, f"{p.stem}_v{v.number:02d}.toml")
             for v in made
         ]
-    for seed in range(generated):
-        g = generate_one(seed)
-        out.append(Case(g.name, g.toml, f"{g.name}.toml"))
+    return out + [_generated_case(seed) for seed in range(generated)]
+
+
+def _generated_case(seed: int) -> Case:
+    from ..generate import generate_one
+
+    g = generate_one(seed)
+    return Case(g.name, g.toml, f"{g.name}.toml")
+
+
+def _seed_list(text: str) -> list[int]:
+    """ "3,7,10-12" → [3, 7, 10, 11, 12]."""
+    out: list[int] = []
+    for part in filter(None, (p.strip() for p in text.split(","))):
+        lo, _, hi = part.partition("-")
+        out += range(int(lo), int(hi or lo) + 1)
     return out
 
 
@@ -737,8 +749,19 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--every", type=int, default=1, help="lint every k-th seed task only")
     ap.add_argument("--out", default="out/sheets-lint")
+    ap.add_argument(
+        "--only", nargs="+", default=None, metavar="FILE", help="lint these mechanism files only"
+    )
+    ap.add_argument(
+        "--seeds", default=None, help="generated mechanisms of these seeds only: 3,7,10-19"
+    )
     args = ap.parse_args(argv)
-    todo = cases(args.generated, args.variants, args.spread, every=args.every)
+    if args.only or args.seeds:
+        todo = [
+            Case(Path(p).stem, Path(p).read_text(encoding="utf-8"), str(p)) for p in args.only or []
+        ] + [_generated_case(seed) for seed in _seed_list(args.seeds or "")]
+    else:
+        todo = cases(args.generated, args.variants, args.spread, every=args.every)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     failing: dict[str, set[str]] = collections.defaultdict(set)
