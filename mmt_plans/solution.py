@@ -606,7 +606,9 @@ class _Turn:
                 found = self.displacements(fine)[:: fine // n]
             else:
                 phi = self.phi0 + self.sense * 360.0 * np.arange(n) / n
-                _, s, _, _ = self.output(phi)
+                # where the output is (not how it moves): the groups' positions alone
+                P = self.chain.point_position(phi, self.mech.study.output)
+                s = (P * np.conj(complex(*self.mech.study.working_direction))).real
                 found = s - s[0]
             found.setflags(write=False)
             self._displacements[n] = found

@@ -522,6 +522,16 @@ class Chain:
         shape = phi1_deg.shape
         return ~bad, _over(mo.at(p), shape), _over(mo.vel_at(p), shape), _over(mo.acc_at(p), shape)
 
+    def point_position(self, phi1_deg: np.ndarray, name: str) -> np.ndarray:
+        """The position of one point (complex) over the angles, from the
+        groups' positions alone (no plans): the same numbers as
+        `point_motion`'s, for the searches that read where a point is, not how
+        it moves (the displacements). NaN where a group cannot assemble."""
+        phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+        m = self.place_all(np.radians(phi1_deg), self.branches)
+        lid, p = self.locate[name]
+        return _over(m[lid].at(p), phi1_deg.shape)
+
     def _solve(self, phi_rad: np.ndarray):
         """Positions, then the plans group by group: the links' motion, and
         where each group fails to assemble or its plan is singular."""
@@ -539,7 +549,7 @@ class Chain:
             shape = phi_rad.shape
             failed[name] = _ro(_over(~np.isfinite(L1.o + L2.o + L1.e + L2.e), shape))
             plan = solver.plan(m)
-            singular[name] = _ro(~failed[name] & ~_over(plan.sin_angle > SINGULAR_SIN, shape))
+            singular[name] = _ro(~failed[name] & ~_over(plan.regular(SINGULAR_SIN), shape))
             plans.append(plan)
         return m, failed, singular, tuple(plans)
 

@@ -20,7 +20,7 @@ the velocity plan, so one 2×2 determinant serves both.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any, Literal
 
@@ -157,7 +157,28 @@ class GroupPlan:
     X_name: str
     X: np.ndarray  # the point whose two equations are solved
     legs: tuple[Leg, Leg]
-    sin_angle: np.ndarray  # sine of the angle between the two direction lines
+    # the sine of the angle between the two direction lines, if worked out
+    # already (else `sin_angle` works it out when asked for)
+    given_sin: Any = field(default=None, repr=False)
+    det: Any = field(default=None, repr=False)  # cross(d2, d1), the plans' determinant
+
+    @cached_property
+    def sin_angle(self) -> np.ndarray:
+        """Sine of the angle between the two direction lines."""
+        if self.given_sin is not None:
+            return self.given_sin  # type: ignore[no-any-return]
+        leg1, leg2 = self.legs
+        det = cross(leg2.d, leg1.d) if self.det is None else self.det
+        with quiet():
+            return np.abs(det) / (np.abs(leg1.d) * np.abs(leg2.d))  # type: ignore[no-any-return]
+
+    def regular(self, least_sin: float) -> Any:
+        """Where the sine of the angle between the direction lines is above
+        `least_sin` (sin_angle > least_sin, without the division)."""
+        leg1, leg2 = self.legs
+        det = cross(leg2.d, leg1.d) if self.det is None else self.det
+        with quiet():
+            return np.abs(det) > least_sin * np.abs(leg1.d * leg2.d)
 
     @cached_property
     def V_X(self) -> np.ndarray:
@@ -175,17 +196,26 @@ def solve_two_lines(d1, b1, d2, b2):
     return _cramer(cross(d2, d1), d1, d2, b2 - b1)
 
 
-def _cramer(det, d1, d2, rhs):
+def _cramer(det, d1, d2, rhs, singular=None):
     """Cramer's rule with the determinant cross(d2, d1) given (the velocity and
-    the acceleration plan share it); NaN, not ±inf, where the lines are parallel."""
+    the acceleration plan share it); NaN, not ±inf, where the lines are parallel
+    (`singular`: det == 0 anywhere, if the caller knows)."""
     with quiet():
         x1 = cross(d2, rhs) / det
         x2 = cross(d1, rhs) / det
-    singular = det == 0
-    if singular.any() if isinstance(singular, np.ndarray) else singular:
-        x1 = np.where(singular, np.nan, x1)
-        x2 = np.where(singular, np.nan, x2)
+    if singular is None:
+        singular = _parallel(det)
+    if singular:
+        zero = det == 0
+        x1 = np.where(zero, np.nan, x1)
+        x2 = np.where(zero, np.nan, x2)
     return x1, x2
+
+
+def _parallel(det) -> bool:
+    """Whether the determinant is zero at any angle."""
+    # an array's all() is whether every entry is non-zero (NaN counts as non-zero)
+    return not det.all() if isinstance(det, np.ndarray) else det == 0
 
 
 class DyadSolver:
@@ -277,13 +307,14 @@ class DyadSolver:
         its links their ω, ε and the motion of their origins."""
         X_name, X, leg1, leg2 = self.legs(m)
         det = cross(leg2.d, leg1.d)
-        leg1.x, leg2.x = _cramer(det, leg1.d, leg2.d, leg2.V0 - leg1.V0)
+        parallel = _parallel(det)
+        leg1.x, leg2.x = _cramer(det, leg1.d, leg2.d, leg2.V0 - leg1.V0, parallel)
         self.after_velocities(m, leg1, leg2)
         leg1.n, leg2.n = leg1.normal(m), leg2.normal(m)
-        leg1.y, leg2.y = _cramer(det, leg1.d, leg2.d, (leg2.a0 + leg2.n) - (leg1.a0 + leg1.n))
-        with quiet():
-            sin_angle = np.abs(det) / (np.abs(leg1.d) * np.abs(leg2.d))
-        plan = GroupPlan(self.group, X_name, X, (leg1, leg2), sin_angle)
+        leg1.y, leg2.y = _cramer(
+            det, leg1.d, leg2.d, (leg2.a0 + leg2.n) - (leg1.a0 + leg1.n), parallel
+        )
+        plan = GroupPlan(self.group, X_name, X, (leg1, leg2), det=det)
         if place:
             self.place(m, plan)
         return plan
