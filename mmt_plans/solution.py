@@ -242,7 +242,9 @@ def solve(
     if not branches.whole_turn and (not mech.study.partial_turn or not branches.ranges):
         # refused; also when opted in, if it assembles at no crank angle at all
         raise partial_turn_error(mech, branches)
-    turn = _Turn(mech, chain, branches)
+    # the extreme positions and the displacements follow from the kinematics
+    # alone: searched once per handle (a Mechanism solved again reads them)
+    turn = handle.kept("turn", lambda: _Turn(mech, chain, branches))
     positions = turn.positions()
     sw = chain.sweep(np.array([p.phi1_deg for p in positions]))
     plan_positions = turn.plan_positions(positions)

@@ -16,7 +16,8 @@ copy made by `with_changes` builds its own.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
+from typing import Any, TypeVar
 
 import numpy as np
 
@@ -31,6 +32,8 @@ __all__ = ["Kinematics", "kinematics"]
 # keeps the Mechanism's own derived values)
 _SLOT = "_kinematics"
 
+T = TypeVar("T")
+
 
 class Kinematics:
     """The kinematic chain of one Mechanism on its assembly branches."""
@@ -39,6 +42,18 @@ class Kinematics:
         self.mechanism = mechanism
         self.structure = structure if structure is not None else analyse_structure(mechanism)
         self.chain: Chain = build_chain(mechanism, self.structure)
+        # what is worked out from this chain alone, made once (`kept`)
+        self._kept: dict[str, Any] = {}
+
+    def kept(self, name: str, make: Callable[[], T]) -> T:
+        """The value `make()` gives, made on the first call and kept with the
+        handle: for what follows from the mechanism's kinematics alone and is
+        read again at every solve (the output's extreme positions and
+        displacements, `solution._Turn`). A `make()` that raises keeps nothing."""
+        found = self._kept.get(name)
+        if found is None:
+            found = self._kept[name] = make()
+        return found  # type: ignore[no-any-return]
 
     @property
     def branches(self) -> Branches:
