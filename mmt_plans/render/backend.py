@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import abc
 import contextlib
+import functools
 import math
 import re
 from collections.abc import Iterator, Sequence
@@ -66,6 +67,13 @@ _MARKUP = re.compile(r"([_^])(?:\{([^{}]*)\}|(.))", re.DOTALL)
 
 def parse_markup(text: str) -> list[TextRun]:
     """Split "V_{BA} = 1,2 м/с^2" into runs: _x or _{...} a subscript, ^ a superscript."""
+    return list(_runs(text))
+
+
+@functools.lru_cache(maxsize=8192)
+def _runs(text: str) -> tuple[TextRun, ...]:
+    """`parse_markup`, split once per text (a sheet and a note write the same
+    labels and numbers over and over)."""
     runs: list[TextRun] = []
     pos = 0
     for m in _MARKUP.finditer(text):
@@ -76,7 +84,7 @@ def parse_markup(text: str) -> list[TextRun]:
         pos = m.end()
     if pos < len(text):
         runs.append((text[pos:], "normal"))
-    return [r for r in runs if r[0]]
+    return tuple(r for r in runs if r[0])
 
 
 def arrow_geometry(

@@ -74,6 +74,10 @@ class LineStyle:
     dash: tuple[float, ...] = ()
 
 
+# texts whose advances a Lettering keeps (then it starts afresh)
+_EMS_KEPT = 50_000
+
+
 @dataclass(frozen=True)
 class Lettering:
     """ISO 3098 / GOST 2.304 type B lettering. A size is the capital height in mm."""
@@ -97,7 +101,14 @@ class Lettering:
         From the table, not the installed font, so that layouts come out the
         same on every machine.
         """
-        ems = sum(self.advances.get(ch, self.default_advance) for ch in text)
+        # the sum of a text's advances, worked out once per text (kept beside
+        # the fields, out of the frozen dataclass's comparisons)
+        kept = self.__dict__.get("_ems")
+        if kept is None or len(kept) > _EMS_KEPT:
+            kept = self.__dict__["_ems"] = {}
+        ems = kept.get(text)
+        if ems is None:
+            ems = kept[text] = sum(self.advances.get(ch, self.default_advance) for ch in text)
         return ems * self.font_size(size)
 
     def natural_width(self, text: str, size: float) -> float:

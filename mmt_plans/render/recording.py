@@ -104,6 +104,18 @@ class _Args(dict[str, Any]):
     record: Call | None = None
 
 
+_FIELDS: dict[type, tuple[dataclasses.Field, ...]] = {}
+
+
+def _fields_of(cls: type) -> tuple[dataclasses.Field, ...]:
+    """`dataclasses.fields` of a record class, looked up once per class (a
+    sheet makes tens of thousands of records)."""
+    found = _FIELDS.get(cls)
+    if found is None:
+        found = _FIELDS[cls] = dataclasses.fields(cls)  # type: ignore[arg-type]
+    return found
+
+
 class Call:
     """The base of the records: `name` says which primitive; `groups` are the
     ids of the groups it was drawn in, outermost first.
@@ -130,7 +142,8 @@ class Call:
         return object.__new__(cls)
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
-        fields = [f.name for f in dataclasses.fields(self)]  # type: ignore[arg-type]
+        every = _fields_of(type(self))
+        fields = [f.name for f in every]
         if len(args) >= 2 and isinstance(args[0], str) and isinstance(args[1], dict):
             values = dict(args[1])
             source = getattr(args[1], "record", None)
@@ -147,7 +160,7 @@ class Call:
                 raise TypeError(f"{type(self).__name__} takes at most {len(fields)} arguments")
             values = dict(zip(fields, args))
             values.update(kwargs)
-        for f in dataclasses.fields(self):  # type: ignore[arg-type]
+        for f in every:
             if f.name in values:
                 v = values.pop(f.name)
             elif f.default is not dataclasses.MISSING:
