@@ -172,8 +172,7 @@ class _Arena:
             self.failed[g][part] = failed[g]
             self.singular[g][part] = singular[g]
         block = self.fields.reshape(3, -1, self.n)[:, :, part]
-        points = _moving_points(self.chain)
-        _work_out_fields(block, m, points, _all_known(m, self.chain.carried, points, self.chain))
+        _work_out_fields(block, m, self.chain)
 
     def sweep(self, phi1_deg: np.ndarray) -> Sweep:
         states = {}
@@ -199,7 +198,33 @@ _FIELD_PARTS = (("o", "e"), ("v", "spin"), ("a", "spin_acc"))
 
 
 def _moving_points(chain: Chain) -> list[tuple[str, int, complex]]:
-    return [(name, lid, p) for name, (lid, p) in chain.locate.items() if lid != FRAME]
+    """The points on moving links, link by link (each link's points next to
+    each other in the block of fields, so one product and one sum fill them)."""
+    found = chain.__dict__.get("_moving")
+    if found is None:
+        points = [(name, lid, p) for name, (lid, p) in chain.locate.items() if lid != FRAME]
+        found = chain.__dict__["_moving"] = sorted(points, key=lambda point: point[1])
+    return found  # type: ignore[no-any-return]
+
+
+def _link_rows(chain: Chain) -> list[tuple[int, slice, np.ndarray]]:
+    """For each moving link: its rows in the block of fields and its points'
+    local coordinates as a column."""
+    found = chain.__dict__.get("_rows")
+    if found is None:
+        points = _moving_points(chain)
+        found = []
+        start = 0
+        while start < len(points):
+            lid = points[start][1]
+            end = start
+            while end < len(points) and points[end][1] == lid:
+                end += 1
+            column = np.array([p for _, _, p in points[start:end]], dtype=complex)[:, None]
+            found.append((lid, slice(start, end), column))
+            start = end
+        chain.__dict__["_rows"] = found
+    return found  # type: ignore[no-any-return]
 
 
 def _is_origin(p: complex, origin) -> bool:
@@ -237,15 +262,18 @@ def _all_known(links: dict, carried: dict, points: list, chain: Chain | None = N
     ]
 
 
-def _work_out_fields(block: np.ndarray, links: dict, points: list, known: list) -> None:
+def _work_out_fields(block: np.ndarray, links: dict, chain: Chain) -> None:
     """o + e·p, v + iω·e·p and a + (iε - ω²)·e·p of every point into its row
     of block (one row per point and quantity), from the links' motion (`Motion`
-    or `LinkState`); a row some link already holds (`_all_known`) is left alone."""
-    for (base, per_unit), rows, held in zip(_FIELD_PARTS, block, known):
-        for row, (name, lid, p), same in zip(rows, points, held):
-            if same is None:
-                # the product in warm scratch memory, then one pass over the row
-                np.add(getattr(links[lid], base), getattr(links[lid], per_unit) * p, out=row)
+    or `LinkState`): a link's rows at once, the products then the sums. (A
+    row some link already holds, `_all_known`, is filled too, and not read.)"""
+    parts = _link_rows(chain)
+    for (base, per_unit), rows in zip(_FIELD_PARTS, block):
+        for lid, where, column in parts:
+            link = links[lid]
+            out = rows[where]
+            np.multiply(getattr(link, per_unit), column, out=out)
+            np.add(getattr(link, base), out, out=out)
 
 
 def _over(x, shape: tuple[int, ...]) -> np.ndarray:
@@ -310,7 +338,7 @@ class Sweep:
             block = self.worked_out.reshape(shape)
         else:
             block = np.empty(shape, dtype=complex)
-            _work_out_fields(block, self.links, points, known)
+            _work_out_fields(block, self.links, self.chain)
         # the whole block seen as [x, y] pairs once (its rows are then views)
         pairs = block.view(np.float64).reshape(shape + (2,))
         pairs.setflags(write=False)
