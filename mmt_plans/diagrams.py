@@ -178,7 +178,7 @@ def diagram_scales(
     the poles still come from the list (`standard` False)."""
     if not (mu_l > 0 and max_height > 0):
         raise ValueError(f"mu_l and max_height must be positive, got {mu_l!r}, {max_height!r}")
-    ref = graphical_differentiation(s, n1=n1, mu_S=mu_l, L=L, H1=40.0, H2=40.0)
+    ref = _drawn_heights(_check_samples(s), n1=n1, mu_S=mu_l, L=L, H1=40.0, H2=40.0)
     h_s, h_v, h_a = ref.heights_mm
     mu_t = ref.mu_t
     textbook = (POLE_DISTANCE_RANGE_MM[0], POLE_DISTANCE_RANGE_MM[1])
@@ -213,6 +213,46 @@ def diagram_scales(
     if relaxed is not None:
         return relaxed
     raise ValueError("no scales draw the diagrams within the height given")
+
+
+@dataclass(frozen=True)
+class _Heights:
+    """What `diagram_scales` reads of a trial construction: its scales and
+    the drawn heights of its three diagrams (`KinematicDiagrams.heights_mm`)."""
+
+    mu_t: float
+    mu_V: float
+    mu_a: float
+    heights_mm: tuple[float, float, float]
+
+
+def _drawn_heights(
+    s: Array, *, n1: float, mu_S: float, L: float, H1: float, H2: float, samples_per_interval=16
+) -> _Heights:
+    """The heights `graphical_differentiation` would draw, by the same
+    operations on the same numbers, without the construction's records (the
+    chords, the rays, the frozen copies)."""
+    n = s.size
+    mu_t = time_scale(n1, L)
+    mu_V = derived_scale(mu_S, mu_t, H1)
+    mu_a = derived_scale(mu_V, mu_t, H2)
+    x = np.arange(n + 1) * (L / n)
+    h = float(x[1] - x[0])
+    dx = np.diff(x)
+
+    def extent(y: Array) -> float:
+        return float(max(0.0, y.max()) - min(0.0, y.min()))
+
+    def derivative(y: Array, H: float) -> tuple[Array, Array, Array]:
+        mid = H * (np.diff(y) / dx)
+        M = _periodic_spline_moments(mid, h)
+        return _spline_on_grid(mid, M, h, samples_per_interval), mid, M
+
+    y_s = np.append(s, s[0]) / mu_S
+    curve_v, mid_v, M_v = derivative(y_s, H1)
+    ordinates = _spline_at_nodes(mid_v, M_v, h)
+    curve_a, _, _ = derivative(np.append(ordinates, ordinates[0]), H2)
+    return _Heights(mu_t, mu_V, mu_a, (extent(y_s), extent(curve_v), extent(curve_a)))
 
 
 # --------------------------------------------------------------------------- the smooth curve
