@@ -39,6 +39,7 @@ import numpy as np
 from ..model import FRAME, Mechanism
 from ..structure import Structure
 from .chain import Chain
+from .geometry import quiet
 
 GRID = 720
 # a margin this far below zero (relative to the mechanism's size) is rounding
@@ -156,13 +157,41 @@ class _Search:
         sizes = [float(np.hypot(*p)) for link in mech.links.values() for p in link.points.values()]
         sizes += [float(np.hypot(*p)) for p in mech.frame.values()]
         self.tol = TOLERANCE * max(sizes + [1e-3])
+        # the links placed on the grid and the groups' margins there, by the
+        # branches of the first groups: a trial of group k starts from the
+        # placing of the groups before it (the same for both its branches)
+        self._on_grid: dict[Signs, tuple[dict, list]] = {}
+
+    def _grid_placed(self, signs: Signs) -> tuple[dict, list]:
+        """The links' motion after the first len(signs) groups are placed on
+        the grid with `signs`, and each group's margin before it was placed
+        (what `Chain.place` gives, by the same operations)."""
+        found = self._on_grid.get(signs)
+        if found is None:
+            chain = self.chain
+            if not signs:
+                m = {FRAME: chain.frame(), chain.mech.drive.link: chain.crank(self.grid)}
+                found = (m, [])
+            else:
+                before, margins = self._grid_placed(signs[:-1])
+                m = dict(before)  # a group adds its own links, changing none before it
+                solver = self.solvers[len(signs) - 1]
+                with quiet():
+                    margin = solver.margin(m)
+                    solver.positions(m, signs[-1])
+                found = (m, [*margins, margin])
+            self._on_grid[signs] = found
+        return found
 
     # --- margins -------------------------------------------------------------------
     def margins(self, phi: np.ndarray, signs: Signs) -> list[np.ndarray]:
         """Each group's margin at the angles `phi` (rad) with the branches `signs`
         (the first len(signs) groups), NaN where an earlier group failed."""
         margins: list[np.ndarray] = []
-        self.chain.place(phi, dict(zip(self.names, signs)), upto=len(signs), margins=margins)
+        if phi is self.grid:
+            margins = self._grid_placed(tuple(signs))[1]
+        else:
+            self.chain.place(phi, dict(zip(self.names, signs)), upto=len(signs), margins=margins)
         return [np.broadcast_to(np.asarray(g, dtype=float), phi.shape) for g in margins]
 
     def _refined_minima(
