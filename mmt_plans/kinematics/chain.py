@@ -262,13 +262,62 @@ def _all_known(links: dict, carried: dict, points: list, chain: Chain | None = N
     ]
 
 
+def _rows_to_fill(chain: Chain, links: dict) -> list[list[tuple[int, slice, np.ndarray]]]:
+    """`_link_rows` for each quantity, without the links all of whose rows
+    repeat a link's array (`_all_known`): nothing of theirs is read."""
+    found = chain.__dict__.get("_to_fill")
+    if found is None:
+        points = _moving_points(chain)
+        _all_known(links, chain.carried, points, chain)
+        sources = chain._known_sources  # type: ignore[attr-defined]
+        found = [
+            [
+                (lid, where, column)
+                for lid, where, column in _link_rows(chain)
+                if any(src is None for src in held[where])
+            ]
+            for held in sources
+        ]
+        chain.__dict__["_to_fill"] = found
+    return found  # type: ignore[no-any-return]
+
+
+def _recipe(chain: Chain, links: dict) -> list[list[tuple[str, str, Any]]]:
+    """For each quantity, every point of the chain in `locate`'s order with
+    where its [x, y] rows come from: ("row", k) its row of the block, ("link",
+    lid) the array of the link it repeats (`_all_known`), ("frame", z) a
+    frame point's still pair. It follows from the chain's structure alone,
+    so a chain works it out once."""
+    found = chain.__dict__.get("_recipe")
+    if found is None:
+        points = _moving_points(chain)
+        known = _all_known(links, chain.carried, points, chain)
+        sources = chain._known_sources  # type: ignore[attr-defined]
+        row = {name: k for k, (name, _, _) in enumerate(points)}
+        found = []
+        for (base, _), held in zip(_FIELD_PARTS, sources):
+            by_name = {name: src for (name, _, _), src in zip(points, held)}
+            steps: list[tuple[str, str, Any]] = []
+            for name, (lid, p) in chain.locate.items():
+                if lid == FRAME:
+                    steps.append((name, "frame", p if base == "o" else 0j))
+                elif by_name[name] is None:
+                    steps.append((name, "row", row[name]))
+                else:
+                    steps.append((name, "link", by_name[name]))
+            found.append(steps)
+        del known
+        chain.__dict__["_recipe"] = found
+    return found  # type: ignore[no-any-return]
+
+
 def _work_out_fields(block: np.ndarray, links: dict, chain: Chain) -> None:
     """o + e·p, v + iω·e·p and a + (iε - ω²)·e·p of every point into its row
     of block (one row per point and quantity), from the links' motion (`Motion`
     or `LinkState`): a link's rows at once, the products then the sums. (A
-    row some link already holds, `_all_known`, is filled too, and not read.)"""
-    parts = _link_rows(chain)
-    for (base, per_unit), rows in zip(_FIELD_PARTS, block):
+    row some link already holds, `_all_known`, is filled too, and not read,
+    unless every row of its link is such.)"""
+    for (base, per_unit), rows, parts in zip(_FIELD_PARTS, block, _rows_to_fill(chain, links)):
         for lid, where, column in parts:
             link = links[lid]
             out = rows[where]
@@ -331,28 +380,34 @@ class Sweep:
         chunk by chunk); a point at a link's origin is the link's own array, a
         frame point one pair seen at every angle."""
         n = len(self.phi1_deg)
-        points = _moving_points(self.chain)
+        chain = self.chain
+        points = _moving_points(chain)
         shape = (len(_FIELD_PARTS), len(points), n)
-        known = _all_known(self.links, self.chain.carried, points, self.chain)
+        recipe = _recipe(chain, self.links)
         if self.worked_out is not None:
             block = self.worked_out.reshape(shape)
         else:
             block = np.empty(shape, dtype=complex)
-            _work_out_fields(block, self.links, self.chain)
+            _work_out_fields(block, self.links, chain)
         # the whole block seen as [x, y] pairs once (its rows are then views)
         pairs = block.view(np.float64).reshape(shape + (2,))
         pairs.setflags(write=False)
+        links = self.links
         fields = []
-        for (base, _), rows, held in zip(_FIELD_PARTS, pairs, known):
-            field = {}
-            for row, (name, lid, p), same in zip(rows, points, held):
-                field[name] = row if same is None else _xy(same)
+        for (base, _), rows, steps in zip(_FIELD_PARTS, pairs, recipe):
             fields.append(
                 {
-                    name: field[name] if lid != FRAME else _still(p if base == "o" else 0j, n)
-                    for name, (lid, p) in self.chain.locate.items()
+                    name: (
+                        rows[at]
+                        if how == "row"
+                        else _xy(getattr(links[at], base))
+                        if how == "link"
+                        else _still(at, n)
+                    )
+                    for name, how, at in steps
                 }
             )
+        return tuple(fields)
         return tuple(fields)
 
     @property
