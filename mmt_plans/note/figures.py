@@ -8,7 +8,10 @@ cropped to their bounding box, scaled by one factor to the page's text width
 second drawing code: what the note shows is what the sheet draws.
 
 "scheme" is the kinematic scheme of the mechanism at position 0 as
-sheets/schematic.py draws it (the task sheet's figure).
+sheets/schematic.py draws it (the task sheet's figure); "structure" the
+structural scheme (seed 003 Fig. 1b): the driving link and each Assur group
+apart, drawn by sheet 2's own link drawing; "gears" the gear train's scheme
+(drawing/gears_scheme.py).
 """
 
 from __future__ import annotations
@@ -24,6 +27,9 @@ from ..render.backend import Backend
 from ..render.recording import Call
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..drawing.sketch import Sketch
+
+if TYPE_CHECKING:  # pragma: no cover
     from ..sheets.compose import ComposedSheets
     from ..solution import Solution
 
@@ -33,6 +39,9 @@ __all__ = [
     "figure_drawers",
     "figure_height",
     "replay_scaled",
+    "gear_sketch",
+    "structure_sketches",
+    "sketches_height",
 ]
 
 Drawer = Callable[[Backend, Rect, str], None]
@@ -62,6 +71,9 @@ class FigureSpec:
 
     key: str
     parts: tuple[FigurePart, ...]
+    # each part's bounds on its sheet (bounds()), measured once when the figure
+    # is chosen: the layout and the drawing ask again
+    boxes: tuple[tuple[float, float, float, float], ...] = ()
 
 
 def _calls(composed: ComposedSheets, part: FigurePart) -> tuple[Call, ...]:
@@ -116,7 +128,7 @@ def _arrangement(
 ) -> tuple[Arrangement, float, list[tuple[float, float, float, float]]]:
     """How the parts go (a row or a column), the one scale factor that fits
     them into `width` mm and MAX_HEIGHT, and each part's bounds."""
-    boxes = [bounds(composed, p) for p in spec.parts]
+    boxes = list(spec.boxes) or [bounds(composed, p) for p in spec.parts]
     ws = [b[2] - b[0] for b in boxes]
     hs = [b[3] - b[1] for b in boxes]
     n = len(boxes)
@@ -237,6 +249,79 @@ def _scheme(solution: Solution, backend: Backend, rect: Rect, lang: str) -> None
     sketch.replay(backend, rect.x, rect.y)
 
 
+def gear_sketch(solution: Solution) -> Sketch | None:
+    """The gear train's scheme in the note's lettering, None without [gears]."""
+    train = solution.mechanism.drive.gear_train
+    if train is None:
+        return None
+    from ..drawing.gears_scheme import sketch_gear_train
+    from .pages import note_look
+
+    return sketch_gear_train(train, note_look())
+
+
+def structure_sketches(solution: Solution) -> list[tuple[str, Sketch]] | None:
+    """The structural scheme at position 0: the driving link with the frame,
+    then each Assur group in the order attached, as sheet 2 draws links (at
+    the calculation's μ_l); (its structural name "I(0,1)", "II(2,3)", sketch)
+    each; None where position 0 does not assemble."""
+    from ..errors import MmtError
+    from ..sheets.sheet2 import _Drawing
+    from .pages import note_look
+
+    try:
+        state = solution.state(solution.positions[0].index or 0)
+    except MmtError:
+        return None
+    st = solution.structure
+    parts: list[tuple[str, tuple[int, ...]]] = [(f"I(0,{st.driver})", (st.driver,))]
+    parts += [(g.label, tuple(g.links)) for g in st.groups]
+    out: list[tuple[str, Sketch]] = []
+    for name, links in parts:
+        d = _Drawing(note_look(), state, float(solution.mu_l))
+        d.links(links, frame=True)
+        d.labels.write_later()
+        out.append((name, d.sk))
+    return out
+
+
+def _row(sketches: Sequence[Sketch], width: float) -> tuple[float, list[Rect]]:
+    """One factor (never enlarging) setting `sketches` side by side in `width`
+    mm and at most MAX_HEIGHT / 2 tall, and each one's extent."""
+    exts = [sk.extent() for sk in sketches]
+    total = sum(e.width for e in exts) + GAP * (len(exts) - 1)
+    k = min(1.0, (width - GAP * (len(exts) - 1)) / max(total - GAP * (len(exts) - 1), 1e-9))
+    k = min(k, (MAX_HEIGHT / 2) / max(max(e.height for e in exts), 1e-9))
+    return k, exts
+
+
+def sketches_height(sketches: Sequence[Sketch], width: float, labelled: bool) -> float:
+    """The height (mm) of `sketches` set in a row `width` mm wide."""
+    k, exts = _row(sketches, width)
+    return k * max(e.height for e in exts) + (PART_LABEL + 2.0 if labelled else 0.0)
+
+
+def draw_row(
+    sketches: Sequence[Sketch], labels: Sequence[str], backend: Backend, rect: Rect
+) -> None:
+    """`sketches` side by side in `rect`, at one factor, each named under it."""
+    k, exts = _row(sketches, rect.width)
+    label = PART_LABEL + 2.0 if any(labels) else 0.0
+    natural = k * max(e.height for e in exts) + label
+    if natural > rect.height + 1e-6:
+        k *= max((rect.height - label) / max(natural - label, 1e-9), 0.1)
+    ws = [k * e.width for e in exts]
+    hs = [k * e.height for e in exts]
+    x = rect.x + (rect.width - sum(ws) - GAP * (len(ws) - 1)) / 2
+    top = rect.top
+    for sk, e, w, h, name in zip(sketches, exts, ws, hs, labels):
+        y0 = top - max(hs) + (max(hs) - h) / 2
+        replay_scaled(sk.calls, backend, k, x - k * e.x, y0 - k * e.y)
+        if name:
+            backend.text((x + w / 2, top - max(hs) - label + 0.5), name, 2.8, anchor="center")
+        x += w + GAP
+
+
 def figure_drawers(
     solution: Solution,
     composed: ComposedSheets | None = None,
@@ -247,8 +332,18 @@ def figure_drawers(
     out: dict[str, Drawer] = {
         "scheme": lambda backend, rect, lang: _scheme(solution, backend, rect, lang)
     }
+    gears = gear_sketch(solution)
+    if gears is not None:
+        out["gears"] = lambda backend, rect, lang: draw_row([gears], [""], backend, rect)
+    structure = structure_sketches(solution) if "structure" in (specs or {}) else None
+    if structure is not None:
+        names = [name for name, _ in structure]
+        sketches = [sk for _, sk in structure]
+        out["structure"] = lambda backend, rect, lang: draw_row(sketches, names, backend, rect)
     if composed is not None:
         for key, spec in (specs or {}).items():
+            if not spec.parts:  # a figure of the note's own drawing (above)
+                continue
             out[key] = lambda backend, rect, lang, spec=spec: draw_figure(  # type: ignore[misc]
                 composed, spec, backend, rect
             )
