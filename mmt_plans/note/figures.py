@@ -285,41 +285,56 @@ def structure_sketches(solution: Solution) -> list[tuple[str, Sketch]] | None:
     return out
 
 
-def _row(sketches: Sequence[Sketch], width: float) -> tuple[float, list[Rect]]:
-    """One factor (never enlarging) setting `sketches` side by side in `width`
-    mm and at most MAX_HEIGHT / 2 tall, and each one's extent."""
+PER_ROW = 4  # parts of a figure of the note's own drawings side by side, at most
+
+
+def _rows(sketches: Sequence[Sketch], width: float) -> tuple[float, list[list[Rect]]]:
+    """The sketches' extents in rows of at most PER_ROW, and one factor
+    (never enlarging) that fits every row into `width` mm and the figure
+    into MAX_HEIGHT."""
     exts = [sk.extent() for sk in sketches]
-    total = sum(e.width for e in exts) + GAP * (len(exts) - 1)
-    k = min(1.0, (width - GAP * (len(exts) - 1)) / max(total - GAP * (len(exts) - 1), 1e-9))
-    k = min(k, (MAX_HEIGHT / 2) / max(max(e.height for e in exts), 1e-9))
-    return k, exts
+    rows = [exts[i : i + PER_ROW] for i in range(0, len(exts), PER_ROW)]
+    k = 1.0
+    for row in rows:
+        gaps = GAP * (len(row) - 1)
+        k = min(k, (width - gaps) / max(sum(e.width for e in row), 1e-9))
+    tall = sum(max(e.height for e in row) for row in rows)
+    return min(k, (MAX_HEIGHT / 2) / max(tall, 1e-9)), rows
 
 
 def sketches_height(sketches: Sequence[Sketch], width: float, labelled: bool) -> float:
-    """The height (mm) of `sketches` set in a row `width` mm wide."""
-    k, exts = _row(sketches, width)
-    return k * max(e.height for e in exts) + (PART_LABEL + 2.0 if labelled else 0.0)
+    """The height (mm) of `sketches` set in rows `width` mm wide."""
+    k, rows = _rows(sketches, width)
+    label = PART_LABEL + 2.0 if labelled else 0.0
+    return sum(k * max(e.height for e in row) + label for row in rows) + GAP * (len(rows) - 1)
 
 
 def draw_row(
     sketches: Sequence[Sketch], labels: Sequence[str], backend: Backend, rect: Rect
 ) -> None:
-    """`sketches` side by side in `rect`, at one factor, each named under it."""
-    k, exts = _row(sketches, rect.width)
+    """`sketches` side by side in `rect` (in rows of at most PER_ROW), at one
+    factor, each named under it."""
+    k, rows = _rows(sketches, rect.width)
     label = PART_LABEL + 2.0 if any(labels) else 0.0
-    natural = k * max(e.height for e in exts) + label
+    natural = sketches_height(sketches, rect.width, bool(label))
     if natural > rect.height + 1e-6:
-        k *= max((rect.height - label) / max(natural - label, 1e-9), 0.1)
-    ws = [k * e.width for e in exts]
-    hs = [k * e.height for e in exts]
-    x = rect.x + (rect.width - sum(ws) - GAP * (len(ws) - 1)) / 2
+        fixed = len(rows) * label + GAP * (len(rows) - 1)
+        k *= max((rect.height - fixed) / max(natural - fixed, 1e-9), 0.1)
     top = rect.top
-    for sk, e, w, h, name in zip(sketches, exts, ws, hs, labels):
-        y0 = top - max(hs) + (max(hs) - h) / 2
-        replay_scaled(sk.calls, backend, k, x - k * e.x, y0 - k * e.y)
-        if name:
-            backend.text((x + w / 2, top - max(hs) - label + 0.5), name, 2.8, anchor="center")
-        x += w + GAP
+    i = 0
+    for row in rows:
+        ws = [k * e.width for e in row]
+        hs = [k * e.height for e in row]
+        x = rect.x + (rect.width - sum(ws) - GAP * (len(ws) - 1)) / 2
+        for e, w, h in zip(row, ws, hs):
+            y0 = top - max(hs) + (max(hs) - h) / 2
+            replay_scaled(sketches[i].calls, backend, k, x - k * e.x, y0 - k * e.y)
+            if labels[i]:
+                bottom = top - max(hs) - label + 0.5
+                backend.text((x + w / 2, bottom), labels[i], 2.8, anchor="center")
+            x += w + GAP
+            i += 1
+        top -= max(hs) + label + GAP
 
 
 def figure_drawers(

@@ -221,3 +221,25 @@ def test_a_citation_is_never_broken_at_a_line_end(case):
     assert any("[" in t for t in lines)
     for t in lines:
         assert t.count("[") == t.count("]"), t
+
+
+def test_structural_scheme_of_a_long_chain_in_rows_of_four():
+    """tests/data/hard/chain_25_links: the driving link and twelve dyads, four
+    a row, every part named under it, each row below the one before."""
+    from mmt_plans.note.figures import PER_ROW, draw_row, sketches_height, structure_sketches
+
+    solution = solved(ROOT / "tests/data/hard/chain_25_links.toml")
+    parts = structure_sketches(solution)
+    assert parts is not None and len(parts) == 1 + len(solution.structure.groups) == 13
+    names = [n for n, _ in parts]
+    sketches = [sk for _, sk in parts]
+    height = sketches_height(sketches, 170.0, labelled=True)
+    rec = RecordingBackend(210.0, 297.0, note_look())
+    draw_row(sketches, names, rec, Rect(20.0, 280.0 - height, 170.0, height))
+    labels = [c for c in rec.named("text") if c["content"] in names]
+    assert [c["content"] for c in labels] == names
+    rows = sorted({round(c["pos"][1], 3) for c in labels}, reverse=True)
+    assert len(rows) == math.ceil(len(names) / PER_ROW) == 4
+    # everything drawn inside the figure's rectangle
+    ys = [y for c in rec.named("line") for _, y in c.points()]
+    assert min(ys) >= 280.0 - height - 1e-6 and max(ys) <= 280.0 + 1e-6
