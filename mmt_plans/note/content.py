@@ -69,6 +69,7 @@ class Block:
     figure: str = ""
     height: float = 0.0
     indent: float = 0.0
+    number: str = ""  # a displayed formula's number ("1.3"), set at the right margin
 
 
 @dataclass(frozen=True)
@@ -139,7 +140,7 @@ def note_content(
     reduction(wr)
     conclusions(wr)
     blocks = tuple(
-        Block(b.kind, b.text, b.step, b.rows, b.widths, b.figure, b.height)  # type: ignore[arg-type]
+        Block(b.kind, b.text, b.step, b.rows, b.widths, b.figure, b.height, number=b.number)  # type: ignore[arg-type]
         for b in wr.blocks
     )
     return NoteContent(title, wr.lang, blocks, tuple(wr.printed), MappingProxyType(wr.figures))

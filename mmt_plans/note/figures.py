@@ -8,7 +8,10 @@ cropped to their bounding box, scaled by one factor to the page's text width
 second drawing code: what the note shows is what the sheet draws.
 
 "scheme" is the kinematic scheme of the mechanism at position 0 as
-sheets/schematic.py draws it (the task sheet's figure).
+sheets/schematic.py draws it (the task sheet's figure); "structure" the
+structural scheme (seed 003 Fig. 1b): the driving link and each Assur group
+apart, drawn by sheet 2's own link drawing; "gears" the gear train's scheme
+(drawing/gears_scheme.py).
 """
 
 from __future__ import annotations
@@ -24,6 +27,9 @@ from ..render.backend import Backend
 from ..render.recording import Call
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..drawing.sketch import Sketch
+
+if TYPE_CHECKING:  # pragma: no cover
     from ..sheets.compose import ComposedSheets
     from ..solution import Solution
 
@@ -33,6 +39,9 @@ __all__ = [
     "figure_drawers",
     "figure_height",
     "replay_scaled",
+    "gear_sketch",
+    "structure_sketches",
+    "sketches_height",
 ]
 
 Drawer = Callable[[Backend, Rect, str], None]
@@ -62,6 +71,9 @@ class FigureSpec:
 
     key: str
     parts: tuple[FigurePart, ...]
+    # each part's bounds on its sheet (bounds()), measured once when the figure
+    # is chosen: the layout and the drawing ask again
+    boxes: tuple[tuple[float, float, float, float], ...] = ()
 
 
 def _calls(composed: ComposedSheets, part: FigurePart) -> tuple[Call, ...]:
@@ -116,7 +128,7 @@ def _arrangement(
 ) -> tuple[Arrangement, float, list[tuple[float, float, float, float]]]:
     """How the parts go (a row or a column), the one scale factor that fits
     them into `width` mm and MAX_HEIGHT, and each part's bounds."""
-    boxes = [bounds(composed, p) for p in spec.parts]
+    boxes = list(spec.boxes) or [bounds(composed, p) for p in spec.parts]
     ws = [b[2] - b[0] for b in boxes]
     hs = [b[3] - b[1] for b in boxes]
     n = len(boxes)
@@ -237,6 +249,94 @@ def _scheme(solution: Solution, backend: Backend, rect: Rect, lang: str) -> None
     sketch.replay(backend, rect.x, rect.y)
 
 
+def gear_sketch(solution: Solution) -> Sketch | None:
+    """The gear train's scheme in the note's lettering, None without [gears]."""
+    train = solution.mechanism.drive.gear_train
+    if train is None:
+        return None
+    from ..drawing.gears_scheme import sketch_gear_train
+    from .pages import note_look
+
+    return sketch_gear_train(train, note_look())
+
+
+def structure_sketches(solution: Solution) -> list[tuple[str, Sketch]] | None:
+    """The structural scheme at position 0: the driving link with the frame,
+    then each Assur group in the order attached, as sheet 2 draws links (at
+    the calculation's μ_l); (its structural name "I(0,1)", "II(2,3)", sketch)
+    each; None where position 0 does not assemble."""
+    from ..errors import MmtError
+    from ..sheets.sheet2 import _Drawing
+    from .pages import note_look
+
+    try:
+        state = solution.state(solution.positions[0].index or 0)
+    except MmtError:
+        return None
+    st = solution.structure
+    parts: list[tuple[str, tuple[int, ...]]] = [(f"I(0,{st.driver})", (st.driver,))]
+    parts += [(g.label, tuple(g.links)) for g in st.groups]
+    out: list[tuple[str, Sketch]] = []
+    for name, links in parts:
+        d = _Drawing(note_look(), state, float(solution.mu_l))
+        d.links(links, frame=True)
+        d.labels.write_later()
+        out.append((name, d.sk))
+    return out
+
+
+PER_ROW = 4  # parts of a figure of the note's own drawings side by side, at most
+
+
+def _rows(sketches: Sequence[Sketch], width: float) -> tuple[float, list[list[Rect]]]:
+    """The sketches' extents in rows of at most PER_ROW, and one factor
+    (never enlarging) that fits every row into `width` mm and the figure
+    into MAX_HEIGHT."""
+    exts = [sk.extent() for sk in sketches]
+    rows = [exts[i : i + PER_ROW] for i in range(0, len(exts), PER_ROW)]
+    k = 1.0
+    for row in rows:
+        gaps = GAP * (len(row) - 1)
+        k = min(k, (width - gaps) / max(sum(e.width for e in row), 1e-9))
+    tall = sum(max(e.height for e in row) for row in rows)
+    return min(k, (MAX_HEIGHT / 2) / max(tall, 1e-9)), rows
+
+
+def sketches_height(sketches: Sequence[Sketch], width: float, labelled: bool) -> float:
+    """The height (mm) of `sketches` set in rows `width` mm wide."""
+    k, rows = _rows(sketches, width)
+    label = PART_LABEL + 2.0 if labelled else 0.0
+    return sum(k * max(e.height for e in row) + label for row in rows) + GAP * (len(rows) - 1)
+
+
+def draw_row(
+    sketches: Sequence[Sketch], labels: Sequence[str], backend: Backend, rect: Rect
+) -> None:
+    """`sketches` side by side in `rect` (in rows of at most PER_ROW), at one
+    factor, each named under it."""
+    k, rows = _rows(sketches, rect.width)
+    label = PART_LABEL + 2.0 if any(labels) else 0.0
+    natural = sketches_height(sketches, rect.width, bool(label))
+    if natural > rect.height + 1e-6:
+        fixed = len(rows) * label + GAP * (len(rows) - 1)
+        k *= max((rect.height - fixed) / max(natural - fixed, 1e-9), 0.1)
+    top = rect.top
+    i = 0
+    for row in rows:
+        ws = [k * e.width for e in row]
+        hs = [k * e.height for e in row]
+        x = rect.x + (rect.width - sum(ws) - GAP * (len(ws) - 1)) / 2
+        for e, w, h in zip(row, ws, hs):
+            y0 = top - max(hs) + (max(hs) - h) / 2
+            replay_scaled(sketches[i].calls, backend, k, x - k * e.x, y0 - k * e.y)
+            if labels[i]:
+                bottom = top - max(hs) - label + 0.5
+                backend.text((x + w / 2, bottom), labels[i], 2.8, anchor="center")
+            x += w + GAP
+            i += 1
+        top -= max(hs) + label + GAP
+
+
 def figure_drawers(
     solution: Solution,
     composed: ComposedSheets | None = None,
@@ -247,8 +347,18 @@ def figure_drawers(
     out: dict[str, Drawer] = {
         "scheme": lambda backend, rect, lang: _scheme(solution, backend, rect, lang)
     }
+    gears = gear_sketch(solution)
+    if gears is not None:
+        out["gears"] = lambda backend, rect, lang: draw_row([gears], [""], backend, rect)
+    structure = structure_sketches(solution) if "structure" in (specs or {}) else None
+    if structure is not None:
+        names = [name for name, _ in structure]
+        sketches = [sk for _, sk in structure]
+        out["structure"] = lambda backend, rect, lang: draw_row(sketches, names, backend, rect)
     if composed is not None:
         for key, spec in (specs or {}).items():
+            if not spec.parts:  # a figure of the note's own drawing (above)
+                continue
             out[key] = lambda backend, rect, lang, spec=spec: draw_figure(  # type: ignore[misc]
                 composed, spec, backend, rect
             )

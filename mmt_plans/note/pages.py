@@ -59,6 +59,7 @@ PARAGRAPH = 12.5  # paragraph indent, mm (five characters)
 INDENT = PARAGRAPH  # of equations
 CONTINUATION = 2 * PARAGRAPH  # of an equation's continuation lines
 CELL_PAD = 1.0  # text to the lines of a table cell, mm
+NUMBER_ROOM = 20.0  # kept free right of a formula for its number "(2.147)", mm
 WORDY = 60.0  # a table column this wide (mm) holds words: set from the left
 FORM2_HEIGHT = 40.0
 FORM2A_HEIGHT = 15.0
@@ -69,6 +70,8 @@ STAMP_GAP = 10.0  # text to the top of form 2 or 2a
 
 # Glyphs that Liberation Serif lacks: drawn as lines (_draw_symbol).
 SYMBOLS = frozenset("⊥∥⇒")
+# a vector's mark after its letter (writer.vec): an arrow drawn over the letter
+VECTOR = "\u20d7"
 
 
 def note_page() -> Page:
@@ -120,12 +123,30 @@ class NotePage:
     form: Form = "2a"
 
 
+# measured widths by (lettering, markup, size): a note measures the same words
+# again and again (each layout pass, each justified line); the letterings are
+# kept so that their ids stay theirs
+_WIDTHS: dict[tuple[int, str, float], float] = {}
+_LETTERINGS: dict[int, Lettering] = {}
+
+
 def markup_width(let: Lettering, text: str, size: float) -> float:
     """Width of a markup line as `_draw_markup` sets it."""
+    key = (id(let), text, size)
+    hit = _WIDTHS.get(key)
+    if hit is not None and _LETTERINGS.get(id(let)) is let:
+        return hit
     small = let.index_size(size)
-    return sum(
-        let.advance_width(t, size if kind == "normal" else small) for t, kind in parse_markup(text)
+    width = sum(
+        let.advance_width(t, size if kind == "normal" else small)
+        for t, kind in parse_markup(text.replace(VECTOR, ""))
     )
+    if len(_WIDTHS) > 200_000:
+        _WIDTHS.clear()
+    _LETTERINGS.setdefault(id(let), let)
+    if _LETTERINGS[id(let)] is let:
+        _WIDTHS[key] = width
+    return width
 
 
 def words(text: str) -> list[str]:
@@ -217,6 +238,9 @@ _NUMBERED = re.compile(
 )
 
 
+_CITATION = re.compile(r"\[\d+, [^\]]*\]")
+
+
 def _inside_braces(text: str) -> str:
     """Spaces inside index braces become non-breaking: a subscript stays whole."""
     out, depth = [], 0
@@ -226,17 +250,20 @@ def _inside_braces(text: str) -> str:
     return "".join(out)
 
 
+@functools.lru_cache(maxsize=8192)
 def typeset(text: str, formula_runs: bool = True) -> str:
     """The note's typography of a line of markup before it is broken into
     lines: a true minus (U+2212) for a hyphen that is one, a non-breaking
-    space between a number and its unit, in an index, after "figure" and the
-    like, the structural formula's arrows kept with the group they point to,
+    space between a number and its unit, in an index, in a citation, after
+    "figure" and the like, the structural formula's arrows kept with the group they point to,
     and (`formula_runs`) round "=" so that "φ_1 = 58.83°" is never broken."""
     text = _MINUS.sub(MINUS, text)
     text = _inside_braces(text)
     text = _NUMBER_UNIT.sub(NBSP, text)
     text = _NUMBERED.sub(lambda m: m.group(1) + NBSP, text)
     text = text.replace(" <- ", " ←" + NBSP).replace(" <-", " ←")
+    # a citation stays whole: "[2, formula (5)]"
+    text = _CITATION.sub(lambda m: m.group(0).replace(" ", NBSP), text)
     if formula_runs:
         text = re.sub(r" (=|≤|≥|>|<|≈) ", lambda m: NBSP + m.group(1) + NBSP, text)
     return text
@@ -269,6 +296,7 @@ class _Layout:
         self.tables = 0
         self.figures = 0
         self.next: Block | None = None  # the block after the one being set
+        self.after: Block | None = None  # and the one after that
 
     # --- placing --------------------------------------------------------------------
     def new_page(self, form: str = "2a") -> None:
@@ -365,10 +393,12 @@ class _Layout:
             b = n - 2
         return b if b >= 2 else 0
 
-    def lead(self, block: Block | None) -> float:
+    def lead(self, block: Block | None, following: Block | None = None) -> float:
         """The height of what must stay with a heading above `block`: its
         first two lines (three of a three-line paragraph, which does not
-        break), a table's caption, header and first row, a whole figure."""
+        break), a table's caption, header and first row, a whole figure; a
+        lead-in ending in ':' with what it introduces, `following` (three
+        lines when that is not known)."""
         if block is None:
             return 0.0
         width = self.box.width
@@ -376,7 +406,11 @@ class _Layout:
             first = PARAGRAPH if not block.indent else 0.0
             n = len(_text_lines(self.let, block.text, self.body, width - block.indent, first))
         elif block.kind == "equation":
-            n = len(_equation_lines(self.let, typeset(block.text, False), self.body, width))
+            n = len(
+                _equation_lines(
+                    self.let, typeset(block.text, False), self.body, width - NUMBER_ROOM
+                )
+            )
         elif block.kind == "table":
             head = self.caption_lines(block.text, self.body, width)
             return self.pitch + (len(head) - 1) * pitch(BODY_PT) + 2 * (pitch(TABLE_PT) + CELL_PAD)
@@ -389,7 +423,9 @@ class _Layout:
         # a lead-in ending in ':' keeps what it introduces (paragraph(): up to
         # three lines of an equation) and, with it, the heading above it
         if block.kind in ("text", "problem") and block.text.endswith(":"):
-            return (min(n, 3) + 3) * self.pitch
+            if following is None or following.kind in ("text", "problem"):
+                return (min(n, 3) + 3) * self.pitch
+            return min(n, 3) * self.pitch + (self.lead(following) or 3 * self.pitch)
         n = n if n <= 3 else 2
         return (n + (block.text.endswith(":") and n == 1)) * self.pitch
 
@@ -401,7 +437,7 @@ class _Layout:
         lead_in = bool(lines) and nxt is not None
         if lead_in and not lines[-1][0].endswith(":"):
             lead_in = kind != "equation" and len(lines) == 1 and nxt.kind == "equation"  # type: ignore[union-attr]
-        tail = self.lead(self.next) if self.next and lead_in else 0.0
+        tail = self.lead(self.next, self.after) if self.next and lead_in else 0.0
         b = self.break_at(len(lines), tail)
         for j, (t, x) in enumerate(lines):
             if j == b and not self.empty:
@@ -439,7 +475,7 @@ class _Layout:
                     kind,
                     align="center",
                     keep=(len(lines) - 1 - j) * self.pitch
-                    + (self.lead(self.next) if kind != "center" else 0),
+                    + (self.lead(self.next, self.after) if kind != "center" else 0),
                     anchor=block.step if j == 0 else "",
                 )
             if kind != "center":
@@ -455,7 +491,7 @@ class _Layout:
                     PARAGRAPH if j == 0 else 0.0,
                     kind,
                     before=self.pitch / 2 if j == 0 else 0.0,
-                    keep=(len(lines) - 1 - j) * self.pitch + self.lead(self.next),
+                    keep=(len(lines) - 1 - j) * self.pitch + self.lead(self.next, self.after),
                     anchor=block.step if j == 0 else "",
                 )
             self.y -= self.pitch / 4
@@ -466,10 +502,20 @@ class _Layout:
             self.paragraph(placed, kind, justify=True)
         elif kind == "equation":
             self.paragraph(
-                _equation_lines(let, typeset(block.text, False), self.body, width),
+                _equation_lines(let, typeset(block.text, False), self.body, width - NUMBER_ROOM),
                 kind,
                 justify=False,
             )
+            if block.number:
+                # the formula's number at the right margin of its last line
+                last = self.pages[-1].pop()
+                self.put(
+                    replace(
+                        last,
+                        cells=(f"({block.number})",),
+                        widths=(self.box.right - last.x,),
+                    )
+                )
         elif kind == "toc":
             self.toc_line(block, toc.get(block.step))
         elif kind == "table":
@@ -627,6 +673,7 @@ def layout_note(
     lay = _Layout(look, page, content.lang, first_form)
     for k, block in enumerate(content.blocks):
         lay.next = content.blocks[k + 1] if k + 1 < len(content.blocks) else None
+        lay.after = content.blocks[k + 2] if k + 2 < len(content.blocks) else None
         lay.block(block, toc or {})
     pages = [(lines, form) for lines, form in zip(lay.pages, lay.forms)]
     while len(pages) > 1 and not pages[-1][0]:
@@ -677,12 +724,16 @@ def draw_markup(
     start = 0
     parts: list[str] = []
     for i, ch in enumerate(text):
-        if ch in SYMBOLS:
+        if ch in SYMBOLS or ch == VECTOR:
             parts += [text[start:i], ch]
             start = i + 1
     parts.append(text[start:])
+    letter = 0.0  # the width of the last letter drawn, which a vector's arrow spans
     for part in parts:
         if not part:
+            continue
+        if part == VECTOR:
+            _draw_arrow_over(backend, x - letter, x, y + size, size)
             continue
         if part in SYMBOLS:
             w = let.advance_width(part, size)
@@ -694,7 +745,17 @@ def draw_markup(
         if part.strip(" "):
             backend.rich_text((x + let.advance_width(" " * lead, size), y), part.lstrip(" "), size)
         x += markup_width(let, part, size)
+        letter = let.advance_width(part[-1], size)
     return total
+
+
+def _draw_arrow_over(backend: Backend, x0: float, x1: float, top: float, size: float) -> None:
+    """The arrow of a vector over a letter from x0 to x1 whose capitals reach `top`."""
+    y = top + 0.3 * size
+    x0, x1 = x0 + 0.05 * (x1 - x0), x1 + 0.1 * (x1 - x0)
+    head = 0.25 * size
+    backend.line((x0, y), (x1, y), "thin")
+    backend.polyline([(x1 - head, y + head / 2), (x1, y), (x1 - head, y - head / 2)], "thin")
 
 
 def draw_justified(
@@ -962,6 +1023,9 @@ def draw_note_page(
                 draw_justified(backend, (line.x, line.y), line.text, line.size, line.widths[0])
             else:
                 draw_markup(backend, (line.x, line.y), line.text, line.size, line.align)
+                if line.kind == "equation" and line.cells:
+                    end = line.x + line.widths[0]
+                    backend.text((end, line.y), line.cells[0], line.size, anchor="right")
                 if line.kind == "toc":
                     let = backend.look.lettering
                     end = line.x + line.widths[0]

@@ -18,7 +18,7 @@ import numpy as np
 from ..drawing.markup import image_markup
 from . import sources as src
 from .literature import cite
-from .writer import Writer, and_list, sub
+from .writer import Writer, and_list, sub, vec
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..forces import ForceAnalysis, ForcePolygon, GroupForces
@@ -48,7 +48,9 @@ def force_markup(label: str) -> str:
 
 
 def equation_markup(eq: str) -> str:
-    return " + ".join(force_markup(t.strip()) for t in eq.replace("= 0", "").split("+")) + " = 0"
+    """A polygon's vector equation with its vectors marked: "F⃗_{in2} + R⃗_{12} + … = 0"."""
+    terms = eq.replace("= 0", "").split("+")
+    return " + ".join(vec(force_markup(t.strip())) for t in terms) + " = 0"
 
 
 def sheet2(wr: Writer) -> None:
@@ -510,10 +512,10 @@ def _polygon(
     μ_F (`scale`, with its source) the one sheet 2 draws the polygon at."""
     w, u = wr.w, wr.u
     wr.text(head or w["link_eq"].format(title=_title(wr, poly)))
-    wr.eq(equation_markup(poly.equation))
+    number = wr.eq(equation_markup(poly.equation))
     unknown = [force_markup(v.label) for v in poly.vectors if not v.known]
     if unknown:
-        wr.text(w["unknown"].format(names=", ".join(unknown)))
+        wr.text(w["unknown"].format(names=", ".join(unknown), eq=number))
     if not first:
         return
     mu, MU = scale

@@ -28,6 +28,18 @@ def _u(a: str, b: str) -> str:
     return a + b if max(len(a.rstrip("'")), len(b.rstrip("'"))) == 1 else f"{a},{b}"
 
 
+def _scheme(wr: Writer) -> None:
+    """Seed 002 Fig. 1: the train's kinematic scheme, the gears named z_n."""
+    from .figures import gear_sketch, sketches_height
+    from .writer import FIGURE_WIDTH
+
+    sketch = gear_sketch(wr.solution)
+    if sketch is None:
+        return
+    wr.text(wr.w["gears_scheme"] + wr.cite(wr.next_figure) + ".")
+    wr.drawing("gears", sketches_height([sketch], FIGURE_WIDTH, False), wr.w["fig_gears"])
+
+
 def gear_train(wr: Writer) -> None:
     train: GearTrain | None = wr.mech.drive.gear_train
     if train is None:
@@ -48,6 +60,7 @@ def gear_train(wr: Writer) -> None:
                     teeth.append(entry)
     wr.text(w["gears_data"].format(n=wr.v(train.motor_rpm, f"{GT}.motor_rpm")))
     wr.eq("; ".join(teeth))
+    _scheme(wr)
     wr.text(w["gears_split"])
     names: list[str] = []
     values: list[tuple[float, str]] = []

@@ -17,7 +17,7 @@ from ..drawing.markup import image_markup
 from ..errors import MmtError
 from . import sources as src
 from .literature import cite
-from .writer import Writer, sub
+from .writer import Writer, sub, vec
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..kinematics.plans import GroupPlanView, PlanView
@@ -81,6 +81,20 @@ def structure(wr: Writer) -> None:
             cls=wr.i(st.mechanism_class, f"{S}['mechanism_class']"), formula=st.formula
         )
     )
+    structural_scheme(wr)
+
+
+def structural_scheme(wr: Writer) -> None:
+    """Seed 003 Fig. 1b: the driving link and the groups apart, as a figure."""
+    from .figures import sketches_height, structure_sketches
+    from .writer import FIGURE_WIDTH
+
+    parts = structure_sketches(wr.solution)
+    if not parts:
+        return
+    height = sketches_height([sk for _, sk in parts], FIGURE_WIDTH, labelled=True)
+    wr.text(wr.w["structure_scheme"] + wr.cite(wr.next_figure) + ".")
+    wr.drawing("structure", height, wr.w["fig_structure"])
 
 
 # the kinds of the class II groups in the textbook's order: "2-го виду" is RRP
@@ -348,27 +362,39 @@ def _velocity_plan(wr: Writer, i: int, view: PlanView, mu_v: float, mv: str) -> 
         lines, legend = [], []
         for base, rel, guide in legs:
             if guide is None:
-                lines.append(f"V_{sub(X)} = V_{sub(base)} + V_{sub(rel)}")
+                lines.append(
+                    f"{vec('V')}_{sub(X)} = {vec('V')}_{sub(base)} + {vec('V')}_{sub(rel)}"
+                )
                 fixed = 0 in wr.mech.point_owners.get(base, ())
                 known = w["is_zero"] if fixed else w["known"]
                 legend.append(
                     w["leg_rotation"].format(
-                        base=f"V_{sub(base)}", known=known, rel=f"V_{sub(rel)}", line=f"{X}{base}"
+                        base=f"V_{sub(base)}",
+                        known=known,
+                        # in words a vector is named by its segment on the plan: V_BA (ab)
+                        rel=f"V_{sub(rel)} ({_segment(wr, X, base, None)})",
+                        line=f"{X}{base}",
                     )
                 )
             else:
                 coinc = f"{X}({guide})"
-                lines.append(f"V_{sub(X)} = V_{sub(coinc)} + V_{sub(rel)}")
+                lines.append(
+                    f"{vec('V')}_{sub(X)} = {vec('V')}_{sub(coinc)} + {vec('V')}_{sub(rel)}"
+                )
                 known = w["is_zero"] if guide == "0" else w["known"]
                 legend.append(
                     w["leg_slide"].format(
-                        base=f"V_{sub(coinc)}", known=known, rel=f"V_{sub(rel)}", X=X, k=guide
+                        base=f"V_{sub(coinc)}",
+                        known=known,
+                        rel=f"V_{sub(rel)} ({_segment(wr, X, base, guide)})",
+                        X=X,
+                        k=guide,
                     )
                 )
-        wr.eq("; ".join(lines))
+        number = wr.eq("; ".join(lines))
         for line in legend:
             wr.text(line)
-        wr.text(w["intersection_v"].format(x=image_markup(X)))
+        wr.text(w["intersection_v"].format(x=image_markup(X), eq=number))
         for ci, c in enumerate(g.velocity):
             base, rel, guide = legs[ci]
             seg = _segment(wr, X, base, guide)
@@ -518,14 +544,17 @@ def _acceleration_plan(wr: Writer, i: int, view: PlanView, mu_a: float, ma: str)
         wr.text(w["aequations"].format(name=g.group, kind=g.kind, X=X))
         legs = _legs(g, X)
         lines = []
+        A = vec("a")
         for base, rel, guide in legs:
             if guide is None:
-                lines.append(f"a_{sub(X)} = a_{sub(base)} + a^n_{sub(rel)} + a^τ_{sub(rel)}")
+                lines.append(
+                    f"{A}_{sub(X)} = {A}_{sub(base)} + {A}^n_{sub(rel)} + {A}^τ_{sub(rel)}"
+                )
             else:
                 lines.append(
-                    f"a_{sub(X)} = a_{sub(X + '(' + guide + ')')} + a^k_{sub(rel)} + a^r_{sub(rel)}"
+                    f"{A}_{sub(X)} = {A}_{sub(X + '(' + guide + ')')} + {A}^k_{sub(rel)} + {A}^r_{sub(rel)}"
                 )
-        wr.eq("; ".join(lines))
+        number = wr.eq("; ".join(lines))
         for base, rel, guide in legs:
             if guide is None:
                 wr.text(w["leg_rotation_a"].format(rel=rel, X=X, base=base))
@@ -558,7 +587,7 @@ def _acceleration_plan(wr: Writer, i: int, view: PlanView, mu_a: float, ma: str)
                     f"{wr.v(vr, VS)} = {wr.v(val, f'hyp({C})')} {u['m/s2']}; "
                     f"|a^k_{sub(rel)}| = {wr.v(val / mu_a, f'hyp({C})/{ma}')} {u['mm']}"
                 )
-        wr.text(w["intersection_a"].format(x=image_markup(X)))
+        wr.text(w["intersection_a"].format(x=image_markup(X), eq=number))
         for ci, c in enumerate(comps):
             if c.kind not in ("tangential", "slide"):
                 continue

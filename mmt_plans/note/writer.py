@@ -35,7 +35,14 @@ if TYPE_CHECKING:  # pragma: no cover
     from .drawn import Drawn
     from .figures import FigureSpec
 
-__all__ = ["Printed", "Writer", "and_list", "plural", "sub", "paren_markup"]
+__all__ = ["Printed", "Writer", "and_list", "plural", "sub", "paren_markup", "vec", "VECTOR"]
+
+# a vector's mark: the combining arrow over the symbol's letter before it,
+# drawn as a line by the note's pages (pages.draw_markup): V⃗_{B} = V⃗_{A} + V⃗_{BA}
+VECTOR = "\u20d7"
+# the catalogue's citation of the course-project guide (seed 003) by its
+# formulas: "[@guide, formula (7)]" becomes "[2, formula (7)]" (literature.py)
+GUIDE = "@guide"
 
 _OPEN, _CLOSE = "\ue000", "\ue001"
 _MARK = re.compile(_OPEN + r"(\d+)" + _CLOSE)
@@ -67,6 +74,7 @@ class RawBlock:
     widths: tuple[float, ...] = ()
     figure: str = ""
     height: float = 0.0
+    number: str = ""  # a displayed formula's number, "1.3"
 
 
 # figures before the calculation: the task sheet's kinematic scheme (front.py)
@@ -108,6 +116,11 @@ def sub(name: str) -> str:
     return "{" + name + "}"
 
 
+def vec(markup: str) -> str:
+    """A vector's symbol: the arrow over its letter, "V_{BA}" → "V⃗_{BA}"."""
+    return markup[:1] + VECTOR + markup[1:] if markup else markup
+
+
 def paren_markup(text: str) -> str:
     return f"({text})" if text.startswith("-") else text
 
@@ -123,6 +136,11 @@ class Writer:
     printed: list[Printed] = field(default_factory=list)
     figures: dict[str, FigureSpec] = field(default_factory=dict)
     _pending: dict[int, _Pending] = field(default_factory=dict)
+    # displayed formulas are numbered "section.n": the numbered section they
+    # stand in (an unnumbered one continues the section before it; the gear
+    # train, before section 1, opens section 1's numbers)
+    _chapter: str = "1"
+    _formulas: int = 0
 
     def __post_init__(self) -> None:
         check_language(self.lang)
@@ -133,6 +151,9 @@ class Writer:
         # the language's indices of the textbook's symbols: F_{bal.pl} is F_{зр.пл} in Ukrainian
         self.symbols = tuple(dict(self.w["symbols"]).items())
         self.mech = self.solution.mechanism
+        from .literature import cite
+
+        self._guide = cite("dovbush2018")[1:-1]
 
     @cached_property
     def drawn(self) -> Drawn:
@@ -183,6 +204,7 @@ class Writer:
         return "".join(out)
 
     def symbol(self, markup: str) -> str:
+        markup = markup.replace(GUIDE, self._guide)
         for en, local in self.symbols:
             markup = markup.replace(en, local)
         return markup
@@ -202,13 +224,21 @@ class Writer:
             tuple(self._resolve(self.symbol(str(c)), b, r, k) for k, c in enumerate(row))
             for r, row in enumerate(rows)
         )
-        self.blocks.append(RawBlock(kind, text, step, cells, tuple(widths)))
+        number = ""
+        if kind == "section" and step[-1:].isdigit() and step[-1:] != self._chapter:
+            self._chapter, self._formulas = step[-1:], 0
+        elif kind == "equation":
+            self._formulas += 1
+            number = f"{self._chapter}.{self._formulas}"
+        self.blocks.append(RawBlock(kind, text, step, cells, tuple(widths), number=number))
 
     def text(self, t: str) -> None:
         self.add("text", t)
 
-    def eq(self, t: str) -> None:
+    def eq(self, t: str) -> str:
+        """A displayed formula, numbered; returns its number as the text cites it: "(1.3)"."""
         self.add("equation", t)
+        return f"({self.blocks[-1].number})"
 
     def heading(self, step: str) -> None:
         """A seed 003 item's heading: "1.3. Velocity plans"."""
@@ -238,7 +268,7 @@ class Writer:
         a), b) ... when more than one) of the composed sheets, with its
         caption; returns its number in the note (None where a drawing is not
         on the composed sheets: no figure)."""
-        from .figures import FigurePart, FigureSpec, figure_height
+        from .figures import FigurePart, FigureSpec, bounds, figure_height
 
         composed = self.composed
         if not self.has_figure(parts):
@@ -250,9 +280,23 @@ class Writer:
             )
             chosen.append(FigurePart(n, tuple(groups), letter))
         key = "+".join(f"{p.sheet}:{','.join(p.groups)}" for p in chosen)
-        spec = FigureSpec(key, tuple(chosen))
+        spec = FigureSpec(key, tuple(chosen), tuple(bounds(composed, p) for p in chosen))
         self.figures[key] = spec
         height = figure_height(composed, spec, FIGURE_WIDTH)
+        b = len(self.blocks)
+        self.blocks.append(
+            RawBlock(
+                "figure", self._resolve(self.symbol(caption), b, -1, -1), figure=key, height=height
+            )
+        )
+        return FRONT_FIGURES + sum(1 for x in self.blocks if x.kind == "figure")
+
+    def drawing(self, key: str, height: float, caption: str) -> int:
+        """A figure of the note's own drawing `key` (figures.figure_drawers:
+        "structure", "gears") `height` mm tall; returns its number."""
+        from .figures import FigureSpec
+
+        self.figures[key] = FigureSpec(key, ())
         b = len(self.blocks)
         self.blocks.append(
             RawBlock(

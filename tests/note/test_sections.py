@@ -239,6 +239,9 @@ def test_no_number_is_printed_without_a_source(case):
             rest = re.sub(r"^\d+(\.\d+)*\.\s", " ", rest)  # "1.3. "
             rest = re.sub(r"\b[IV]+\(\d+(,\d+)*\)", " ", rest)  # I(0,1), II(2,3)
             rest = re.sub(r"\(\d+\)", " ", rest)  # equation numbers (7)
+            rest = re.sub(r"\(\d+\.\d+\)", " ", rest)  # the note's formula numbers (1.13)
+            # the guide's formulas cited: [2, formula (7)], [2, формули (12)–(13)]
+            rest = re.sub(r"\[\d+, [^\]]*\]", " ", rest)
             rest = re.sub(r"[A-Za-zА-Яа-яЄєІіЇїҐґα-ωΑ-Ω_^{(,'/]\d+", " ", rest)  # S2, R_{34}
             rest = re.sub(r"\d+'?(-\d+'?)+(-H)?", " ", rest)  # groups 2-3, gears 3-4-4'-5-H
             rest = re.sub(r"\[\d+(, \d+)*\]", " ", rest)  # citations [2, 6]
@@ -343,8 +346,9 @@ def test_moment_equations_name_every_arm():
     assert "ΣM_E(4) = G_4·h_1 + F_in4·h_2 - R^τ_34·l_DE = 0;" in text
     # every arm in mm of the drawing and in m
     assert len(re.findall(r"h_\d = -?[\d.]+ mm·μ_l = .* m; M_", text)) >= 7
-    # the driving link's polygon in the textbook's order
-    assert "G_1 + F_in1 + R_21 + F_bal.pl + R_01 = 0" in text
+    # the driving link's polygon in the textbook's order, each force a vector (issue 22)
+    v = "\u20d7"
+    assert f"G{v}_1 + F{v}_in1 + R{v}_21 + F{v}_bal.pl + R{v}_01 = 0" in text
     assert a.forces is not None
 
 
