@@ -86,6 +86,7 @@ class PoseDrawn:
     pivots: tuple[Vec, ...] = ()
     links: dict[tuple[int, int], tuple[tuple[Vec, Vec], ...]] = field(default_factory=dict)
     # (pose, link) → that link's lines, where its ω and ε arcs go
+    extent: tuple[float, float, float, float] | None = None  # xmin, ymin, xmax, ymax, mm
 
 
 def block_corners(block: Block) -> list[Vec]:
@@ -159,8 +160,22 @@ def draw_poses(out: Backend, poses: Sequence[Pose]) -> PoseDrawn:
             out.circle(pose.points[name], r, "main", "black" if dot else "white")
             pins.append((pose.points[name], r))
     pivots: list[Vec] = []
+    reach: list[Vec] = []  # what the drawing covers, for its extent
     for pose in poses:
+        width, down = pose.base
         for name in pose.pivots:
-            hatched_base(out, pose.points[name], *pose.base)
+            hatched_base(out, pose.points[name], width, down)
             pivots.append(pose.points[name])
-    return PoseDrawn(tuple(segments), tuple(corners), thin, tuple(pins), tuple(pivots), links)
+            reach += [pose.points[name] + (sx * width / 2.0, -down - 2.0) for sx in (-1, 1)]
+        for g in pose.guides:
+            n = np.array([-g.u[1], g.u[0]])
+            reach += [q + t * n for q in (g.start, g.end) for t in (2.0, -g.offset - 2.5)]
+    reach += [p for seg in segments for p in seg] + [p for c in corners for p in c]
+    reach += [c + (sx * r, sy * r) for c, r in pins for sx in (-1, 1) for sy in (-1, 1)]
+    extent = None
+    if reach:
+        (x0, y0), (x1, y1) = np.min(reach, axis=0), np.max(reach, axis=0)
+        extent = (float(x0), float(y0), float(x1), float(y1))
+    return PoseDrawn(
+        tuple(segments), tuple(corners), thin, tuple(pins), tuple(pivots), links, extent
+    )
