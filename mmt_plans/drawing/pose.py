@@ -10,9 +10,10 @@ naming what was drawn, for the labels to keep clear of and to name.
 
 Several poses drawn together (sheet 1's positions) are drawn layer by layer,
 as a draughtsman inks them: guides, then the links of every pose, then the
-blocks, the joints, the frame's pivots on top. A slider's block drawn again
-at the same place is drawn once; one that overlaps a block already drawn
-on the same guide (two positions close together) is drawn thin, in outline.
+blocks, the joints, the frame's pivots on top. A block or a joint of another
+position that stands where one is drawn (within `_SAME`) is drawn once; a
+block that overlaps one of its pair already drawn (two positions close
+together) is drawn thin, in outline, as the draughtsman draws the later one.
 """
 
 from __future__ import annotations
@@ -32,7 +33,9 @@ __all__ = ["Block", "Guide", "GuideKind", "Pose", "PoseDrawn", "draw_poses", "bl
 GuideKind = Literal["frame", "slot"]
 Vec = np.ndarray
 
-_SAME = 0.05  # mm: two blocks this close, in place and direction, are one block
+# mm: two blocks (or two pins) this close are one on paper, under half the
+# main line's width (0.7 mm): drawn once
+_SAME = 0.3
 
 
 @dataclass(frozen=True)
@@ -157,8 +160,11 @@ def draw_poses(out: Backend, poses: Sequence[Pose]) -> PoseDrawn:
         for name in pose.pins:
             dot = name in pose.dots
             r = pose.dot_radius if dot else pose.pin_radius
-            out.circle(pose.points[name], r, "main", "black" if dot else "white")
-            pins.append((pose.points[name], r))
+            c = pose.points[name]
+            if any(q == r and float(np.hypot(*(c - p))) < _SAME for p, q in pins):
+                continue  # the same joint of another position, where it stands
+            out.circle(c, r, "main", "black" if dot else "white")
+            pins.append((c, r))
     pivots: list[Vec] = []
     reach: list[Vec] = []  # what the drawing covers, for its extent
     for pose in poses:

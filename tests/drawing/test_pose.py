@@ -85,6 +85,16 @@ def test_near_coincident_blocks_of_two_positions_the_later_thin_in_outline():
     assert drawn.thin_blocks == 1
 
 
+def test_a_joint_of_two_positions_a_tenth_of_a_mm_apart_is_drawn_once():
+    # two mirror positions of a crosshead put a pin 0.12 mm off itself: one
+    # circle on paper (the main line is 0.7 mm wide), not two rings run together
+    a, b = _slider_crank(40.0), _slider_crank(40.1)
+    rec, drawn = _record([a, b])
+    centres = [c.center for c in rec.calls if isinstance(c, Circle)]
+    assert centres.count((40.0, 0.0)) == 1 and (40.1, 0.0) not in centres
+    assert len([c for c in rec.calls if isinstance(c, Polygon)]) == 1
+
+
 def test_blocks_apart_are_both_drawn_whole():
     rec, drawn = _record([_slider_crank(40.0), _slider_crank(53.0)])
     blocks = [c for c in rec.calls if isinstance(c, Polygon)]
