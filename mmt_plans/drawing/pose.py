@@ -160,11 +160,11 @@ def draw_poses(out: Backend, poses: Sequence[Pose]) -> PoseDrawn:
         for name in pose.pins:
             dot = name in pose.dots
             r = pose.dot_radius if dot else pose.pin_radius
-            c = pose.points[name]
-            if any(q == r and float(np.hypot(*(c - p))) < _SAME for p, q in pins):
+            at = pose.points[name]
+            if any(q == r and float(np.hypot(*(at - p))) < _SAME for p, q in pins):
                 continue  # the same joint of another position, where it stands
-            out.circle(c, r, "main", "black" if dot else "white")
-            pins.append((c, r))
+            out.circle(at, r, "main", "black" if dot else "white")
+            pins.append((at, r))
     pivots: list[Vec] = []
     reach: list[Vec] = []  # what the drawing covers, for its extent
     for pose in poses:
