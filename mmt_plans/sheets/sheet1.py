@@ -424,6 +424,33 @@ class _ArcPlacer:
         return best[1]
 
 
+def _trajectories(sk: Sketch, solution: Solution, mu_l: float) -> None:
+    """The paths of the moving points and of the centres of mass of the links off
+    the frame, from a dense sweep: thin polylines."""
+    mech = solution.mechanism
+    pts = solution.sweep.points
+    owners = {p: (0 if 0 in o else o[0], o) for p, o in mech.point_owners.items()}
+    dense = solution.dense
+    ok = np.asarray(dense.ok, dtype=bool)
+    frame_links = {
+        lid
+        for lid, link in mech.links.items()
+        if any(owners.get(p, (None,))[0] == 0 for p in link.points)
+    }
+    traced = [p for p, (l0, _) in owners.items() if l0 != 0]
+    for lid, link in mech.links.items():
+        s = f"S{lid}"
+        if s in pts and lid not in frame_links and len(link.points) > 1:
+            traced.append(s)
+    for name in traced:
+        if name not in dense.points:
+            continue
+        arr = np.asarray(dense.points[name], dtype=float)[ok] / mu_l
+        arr = arr[np.all(np.isfinite(arr), axis=1)]
+        if len(arr) > 1 and float(np.ptp(arr, axis=0).max()) > 0.5:
+            sk.polyline([tuple(p) for p in arr], "thin")
+
+
 def _position(solution: Solution, k: int, mu_l: float, main: set[int]) -> Pose:
     """Entry k of the sweep in mm: its links, and at a planned position its joints
     (and at position 0 the frame's pivots)."""
@@ -497,27 +524,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         return np.asarray(pts[name][k], dtype=float) / mu_l
 
     with sk.group("mechanism", "mechanism"):
-        # Trajectories from a dense sweep: thin polylines.
-        dense = solution.dense
-        ok = np.asarray(dense.ok, dtype=bool)
-        frame_links = {
-            lid
-            for lid, link in mech.links.items()
-            if any(owners.get(p, (None,))[0] == 0 for p in link.points)
-        }
-        traced = [p for p, (l0, _) in owners.items() if l0 != 0]
-        for lid, link in mech.links.items():
-            s = f"S{lid}"
-            if s in pts and lid not in frame_links and len(link.points) > 1:
-                traced.append(s)
-        for name in traced:
-            if name not in dense.points:
-                continue
-            arr = np.asarray(dense.points[name], dtype=float)[ok] / mu_l
-            arr = arr[np.all(np.isfinite(arr), axis=1)]
-            if len(arr) > 1 and float(np.ptp(arr, axis=0).max()) > 0.5:
-                sk.polyline([tuple(p) for p in arr], "thin")
-
+        _trajectories(sk, solution, mu_l)
         # Every position's links, thin but for the planned ones; those drawn
         # whole: sliders on their guides (a frame's guide hatched once under
         # the stroke, a slot drawn from the block along its link), the joints,
