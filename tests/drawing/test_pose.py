@@ -164,3 +164,24 @@ def test_loaded_mechanism_draws_each_joint_once(sample):
     assert len(pins) == len({p.point for p in mech.revolutes})
     blocks = _blocks(sk.calls)
     assert len(blocks) == len({(s.slider, s.guide) for s in mech.sliders})
+
+
+@pytest.mark.parametrize("task", ["task02_v1", "task03_v1", "task07_v1", "task11_v1"])
+def test_a_task_schematic_draws_each_point_once_and_each_block_on_its_guide(task):
+    from mmt_plans.sheets.schematic import sketch_schematic
+
+    sol = _solve(f"samples/tasks/seed003/{task}.toml")
+    sk = sketch_schematic(sol, load_look(), "en")
+    mech = sol.mechanism
+    circles = [c for c in sk.calls if isinstance(c, Circle)]
+    # every point of a moving link once (a pin or a dot), every frame pivot once
+    moving = [p for p, o in mech.point_owners.items() if 0 not in o]
+    pivots = [p for p, o in mech.point_owners.items() if 0 in o and len(o) > 1]
+    assert len(circles) == len(moving) + len(pivots)
+    assert len({c.center for c in circles}) == len(circles)
+    blocks = _blocks(sk.calls)
+    assert len(blocks) == len(mech.sliders)
+    for b in blocks:
+        # a block's centre is a drawn point: its slider's
+        centre = np.mean(b.vertices, axis=0)
+        assert min(math.dist(centre, c.center) for c in circles) < 1e-6
