@@ -7,10 +7,9 @@ import math
 
 import numpy as np
 
-from ..render.backend import LineType, PointLike
-from .sketch import Sketch
+from ..render.backend import Backend, Fill, LineType, PointLike
 
-__all__ = ["unit_vector", "sense_arc", "hatched_base", "hatched_guide"]
+__all__ = ["unit_vector", "sense_arc", "hatched_base", "hatched_guide", "slider_block"]
 
 
 def unit_vector(v: np.ndarray) -> np.ndarray:
@@ -19,7 +18,7 @@ def unit_vector(v: np.ndarray) -> np.ndarray:
 
 
 def sense_arc(
-    sk: Sketch,
+    sk: Backend,
     centre: PointLike,
     radius: float,
     sense: float,
@@ -39,10 +38,9 @@ def sense_arc(
     return tip
 
 
-def hatched_base(sk: Sketch, p: np.ndarray, width: float = 8.0, down: float = 4.0) -> None:
-    """A frame pivot: the pin, two legs and a hatched ground line."""
+def hatched_base(sk: Backend, p: np.ndarray, width: float = 8.0, down: float = 4.0) -> None:
+    """A frame pivot: two legs, a hatched ground line and the pin over the legs."""
     x, y = p
-    sk.circle((x, y), 1.2, "main", "white")
     sk.line((x, y), (x - width / 3, y - down), "main")
     sk.line((x, y), (x + width / 3, y - down), "main")
     gy = y - down
@@ -50,9 +48,10 @@ def hatched_base(sk: Sketch, p: np.ndarray, width: float = 8.0, down: float = 4.
     for k in range(5):
         hx = x - width / 2 + k * width / 4 + 0.5
         sk.line((hx, gy), (hx - 2.0, gy - 2.0), "thin")
+    sk.circle((x, y), 1.2, "main", "white")
 
 
-def hatched_guide(sk: Sketch, a: np.ndarray, b: np.ndarray, u: np.ndarray, offset: float) -> None:
+def hatched_guide(sk: Backend, a: np.ndarray, b: np.ndarray, u: np.ndarray, offset: float) -> None:
     """A slider's guide: a main line `offset` mm under the slider's path, hatched
     below, and the path itself as the guide's centre line (dash-dot, GOST 2.303)."""
     n = np.array([-u[1], u[0]])
@@ -64,3 +63,8 @@ def hatched_guide(sk: Sketch, a: np.ndarray, b: np.ndarray, u: np.ndarray, offse
     for k in range(steps + 1):
         q = a + (b - a) * k / steps
         sk.line(q, q - 2.0 * (u + n), "thin")
+
+
+def slider_block(sk: Backend, corners: list[np.ndarray], line: LineType, fill: Fill) -> None:
+    """A slider's block: the rectangle of its four corners."""
+    sk.polygon([(float(p[0]), float(p[1])) for p in corners], line, fill)

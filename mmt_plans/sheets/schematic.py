@@ -28,11 +28,12 @@ from shapely.geometry import LineString
 from ..drawing.labels import Labels, arc_line
 from ..drawing.markup import point_markup
 from ..drawing.page import Page, Rect, draw_frame
+from ..drawing.pose import Block, Guide, GuideKind, Pose, draw_poses
 from ..drawing.sketch import Sketch
-from ..drawing.symbols import hatched_base, hatched_guide, unit_vector
+from ..drawing.symbols import unit_vector
 from ..errors import shown
 from ..i18n import Language, catalogue, check_language
-from ..model import FRAME, Prismatic
+from ..model import FRAME, Mechanism, Prismatic
 from ..render.output import write_drawing
 from ..render.recording import RecordingBackend
 from ..solution import Solution
@@ -171,12 +172,75 @@ def _clear_of_pivots(
     return lo, hi
 
 
-def _block(sk: Sketch, c: np.ndarray, u: np.ndarray, grow: float = 1.0) -> list[np.ndarray]:
-    n = np.array([-u[1], u[0]])
-    hl, hh = _BLOCK[0] * grow, _BLOCK[1] * grow
-    corners = [c + sx * hl * u + sy * hh * n for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-    sk.polygon([tuple(p) for p in corners], "main", "white")
-    return corners
+def _scheme(
+    mech: Mechanism,
+    P: dict[str, np.ndarray],
+    guides: Sequence[_Guide],
+    scale: float,
+    carried: set[str],
+    lines_at: dict[str, list[np.ndarray]],
+) -> Pose:
+    """The scheme's pose in mm; `lines_at` gets the directions of the lines
+    leaving each point, where its letter must not go."""
+    owners = mech.point_owners
+    # Guides of the frame, hatched on the side away from the crank's pivot;
+    # the slot of a moving link a main line along it over the stroke.
+    centre = P[mech.crank_pivot]
+    pivots = [P[n] for n, o in owners.items() if FRAME in o and len(o) > 1]
+    drawn_guides = []
+    for g in guides:
+        u = g.u.copy()
+        n = np.array([-u[1], u[0]])
+        at = g.at * scale
+        if float(np.dot(centre - at, n)) < -1e-6:
+            u, n = -u, -n
+        a, b = g.ends[0] * scale, g.ends[1] * scale
+        lo, hi = sorted((float(np.dot(a - at, u)), float(np.dot(b - at, u))))
+        grow = _RAM if g.pair.guide == FRAME and g.pair.slider_point in carried else 1.0
+        lo -= _BLOCK[0] * grow + _GUIDE_MARGIN
+        hi += _BLOCK[0] * grow + _GUIDE_MARGIN
+        lo, hi = _clear_of_pivots(lo, hi, at, u, n, grow, pivots, hatched=g.pair.guide == FRAME)
+        lines_at[g.pair.slider_point] += [u, -u]
+        kind: GuideKind = "frame" if g.pair.guide == FRAME else "slot"
+        drawn_guides.append(Guide(at + lo * u, at + hi * u, u, kind, _BLOCK[1] * grow))
+
+    # Links: a main line between every two of their points.
+    for link in mech.links.values():
+        names = [p for p in link.points if p in P]
+        for i in range(len(names)):
+            for j in range(i + 1, len(names)):
+                a, b = P[names[i]], P[names[j]]
+                if float(np.hypot(*(b - a))) > 1e-6:
+                    lines_at[names[i]].append(b - a)
+                    lines_at[names[j]].append(a - b)
+
+    # Sliders: frame-guided ones first, so that a block in a slot lies on top.
+    blocks = []
+    for g in sorted(guides, key=lambda g: g.pair.guide != FRAME):
+        grow = _RAM if g.pair.guide == FRAME and g.pair.slider_point in carried else 1.0
+        size = (_BLOCK[0] * grow, _BLOCK[1] * grow)
+        blocks.append(Block((g.pair.slider, g.pair.guide), g.at * scale, g.u, size))
+
+    # Joints: circles where links meet, a dot at a point of one link only.
+    joints = [name for name, o in owners.items() if FRAME not in o]
+    bases = [name for name, o in owners.items() if FRAME in o and len(o) > 1]
+    for name in bases:
+        lines_at[name] += [
+            np.array([-1.0, -1.5]),
+            np.array([1.0, -1.5]),
+            np.array([0.0, -1.0]),
+        ]
+    return Pose(
+        P,
+        [link.points for link in mech.links.values()],
+        pins=joints,
+        pin_radius=_PIN,
+        dots=frozenset(name for name in joints if len(owners[name]) == 1),
+        pivots=bases,
+        base=_BASE,
+        guides=drawn_guides,
+        blocks=blocks,
+    )
 
 
 def _draw(
@@ -198,60 +262,8 @@ def _draw(
     lines_at: dict[str, list[np.ndarray]] = {n: [] for n in P}
 
     with sk.group("schematic", "schematic"):
-        # Guides of the frame, hatched on the side away from the crank's pivot.
         centre = P[mech.crank_pivot]
-        pivots = [P[n] for n, o in owners.items() if FRAME in o and len(o) > 1]
-        for g in guides:
-            u = g.u.copy()
-            n = np.array([-u[1], u[0]])
-            at = g.at * scale
-            if float(np.dot(centre - at, n)) < -1e-6:
-                u, n = -u, -n
-            a, b = g.ends[0] * scale, g.ends[1] * scale
-            lo, hi = sorted((float(np.dot(a - at, u)), float(np.dot(b - at, u))))
-            grow = _RAM if g.pair.guide == FRAME and g.pair.slider_point in carried else 1.0
-            lo -= _BLOCK[0] * grow + _GUIDE_MARGIN
-            hi += _BLOCK[0] * grow + _GUIDE_MARGIN
-            lo, hi = _clear_of_pivots(lo, hi, at, u, n, grow, pivots, hatched=g.pair.guide == FRAME)
-            lines_at[g.pair.slider_point] += [u, -u]
-            if g.pair.guide == FRAME:
-                hatched_guide(sk, at + lo * u, at + hi * u, u, _BLOCK[1] * grow)
-            else:
-                # The slot of a moving link: a main line along it over the stroke.
-                sk.line(at + lo * u, at + hi * u, "main")
-
-        # Links: a main line between every two of their points.
-        for link in mech.links.values():
-            names = [p for p in link.points if p in P]
-            for i in range(len(names)):
-                for j in range(i + 1, len(names)):
-                    a, b = P[names[i]], P[names[j]]
-                    if float(np.hypot(*(b - a))) > 1e-6:
-                        sk.line(a, b, "main")
-                        lines_at[names[i]].append(b - a)
-                        lines_at[names[j]].append(a - b)
-
-        # Sliders: frame-guided ones first, so that a block in a slot lies on top.
-        for g in sorted(guides, key=lambda g: g.pair.guide != FRAME):
-            grow = _RAM if g.pair.guide == FRAME and g.pair.slider_point in carried else 1.0
-            _block(sk, g.at * scale, g.u, grow)
-
-        # Joints: circles where links meet, a dot at a point of one link only.
-        for name, o in owners.items():
-            if FRAME in o:
-                continue
-            if len(o) > 1:
-                sk.circle(P[name], _PIN, "main", "white")
-            else:
-                sk.circle(P[name], 0.5, "main", "black")
-        for name, o in owners.items():
-            if FRAME in o and len(o) > 1:
-                hatched_base(sk, P[name], *_BASE)
-                lines_at[name] += [
-                    np.array([-1.0, -1.5]),
-                    np.array([1.0, -1.5]),
-                    np.array([0.0, -1.0]),
-                ]
+        draw_poses(sk, [_scheme(mech, P, guides, scale, carried, lines_at)])
 
         # What the ω1 arc, the output's arrow and the lettering keep clear of.
         labels = Labels(sk, _LETTER, rings=_RINGS, follow=False)

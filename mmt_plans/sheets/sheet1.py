@@ -7,6 +7,7 @@ then finds free room on the sheet and the recording is replayed there.
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 import re
@@ -26,9 +27,10 @@ from ..drawing.labels import Labels, arc_line, drawn_shapes, segments_meet_boxes
 from ..drawing.layout import LayoutError, SheetLayout
 from ..drawing.markup import component_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
+from ..drawing.pose import Block, Guide, Pose, draw_poses
 from ..drawing.sketch import PAD as _PAD
 from ..drawing.sketch import Sketch
-from ..drawing.symbols import hatched_base, hatched_guide, sense_arc, unit_vector
+from ..drawing.symbols import sense_arc, unit_vector
 from ..drawing.table import table_sketch
 from ..errors import shown
 from ..i18n import Language, catalogue, check_language
@@ -422,6 +424,94 @@ class _ArcPlacer:
         return best[1]
 
 
+def _trajectories(sk: Sketch, solution: Solution, mu_l: float) -> None:
+    """The paths of the moving points and of the centres of mass of the links off
+    the frame, from a dense sweep: thin polylines."""
+    mech = solution.mechanism
+    pts = solution.sweep.points
+    owners = {p: (0 if 0 in o else o[0], o) for p, o in mech.point_owners.items()}
+    dense = solution.dense
+    ok = np.asarray(dense.ok, dtype=bool)
+    frame_links = {
+        lid
+        for lid, link in mech.links.items()
+        if any(owners.get(p, (None,))[0] == 0 for p in link.points)
+    }
+    traced = [p for p, (l0, _) in owners.items() if l0 != 0]
+    for lid, link in mech.links.items():
+        s = f"S{lid}"
+        if s in pts and lid not in frame_links and len(link.points) > 1:
+            traced.append(s)
+    for name in traced:
+        if name not in dense.points:
+            continue
+        arr = np.asarray(dense.points[name], dtype=float)[ok] / mu_l
+        arr = arr[np.all(np.isfinite(arr), axis=1)]
+        if len(arr) > 1 and float(np.ptp(arr, axis=0).max()) > 0.5:
+            sk.polyline([tuple(p) for p in arr], "thin")
+
+
+def _position(solution: Solution, k: int, mu_l: float, main: set[int]) -> Pose:
+    """Entry k of the sweep in mm: its links, and at a planned position its joints
+    (and at position 0 the frame's pivots)."""
+    mech = solution.mechanism
+    pts = solution.sweep.points
+    points = {name: np.asarray(pts[name][k], dtype=float) / mu_l for name in pts}
+    frame = [p for p, o in mech.point_owners.items() if 0 in o]
+    moving = [p for p, o in mech.point_owners.items() if 0 not in o and p in pts]
+    return Pose(
+        points,
+        [link.points for link in mech.links.values()],
+        "main" if k in main else "thin",
+        pins=moving if k in main else (),
+        pin_radius=1.0,
+        pivots=frame if k == 0 else (),
+    )
+
+
+def _sliders(
+    solution: Solution, mu_l: float, main: set[int], at: Callable[[str, int], np.ndarray]
+) -> tuple[dict[int | None, tuple[Guide, ...]], dict[int, tuple[Block, ...]]]:
+    """The guides (None: the frame's, drawn once) and the blocks of each planned
+    position. The blocks on a frame's guide are shorter where positions crowd."""
+    mech = solution.mechanism
+    pts = solution.sweep.points
+    n = len(solution.positions)
+    guides: dict[int | None, list[Guide]] = {None: [], **{k: [] for k in main}}
+    blocks: dict[int, list[Block]] = {k: [] for k in main}
+    for slider in mech.sliders:
+        name = slider.slider_point
+        if slider.guide != 0:
+            for k in sorted(main):
+                d = complex(solution.sweep.links[slider.guide].e[k]) * complex(*slider.direction)
+                u = unit_vector(np.array([d.real, d.imag]))
+                c = at(name, k)
+                ts = [
+                    float(np.dot(at(p, k) - c, u))
+                    for p in mech.links[slider.guide].points
+                    if p in pts
+                ]
+                guides[k].append(Guide(c + min(-12.0, *ts) * u, c + max(12.0, *ts) * u, u, "slot"))
+                blocks[k].append(Block((slider.slider, slider.guide), c, u, (6.0, 3.5)))
+            continue
+        u = unit_vector(np.asarray(slider.direction, dtype=float))
+        along = [float(np.dot(at(name, k), u)) for k in range(n)]
+        base = np.asarray(slider.through, dtype=float) / mu_l
+        base = base - np.dot(base, u) * u
+        a, b = base + (min(along) - 12.0) * u, base + (max(along) + 12.0) * u
+        guides[None].append(Guide(a, b, u, "frame", 3.5))
+        # blocks of neighbouring positions kept apart: shorter where they crowd
+        ends = sorted(along[k] for k in main)
+        gaps = [b - a for a, b in zip(ends, ends[1:]) if b - a > 1e-6]
+        half = max(3.0, min([6.0, *(g / 2.0 - 0.5 for g in gaps)]))
+        for k in sorted(main):
+            blocks[k].append(Block((slider.slider, 0), at(name, k), u, (half, 3.5)))
+    return (
+        {k: tuple(v) for k, v in guides.items()},
+        {k: tuple(v) for k, v in blocks.items()},
+    )
+
+
 def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language) -> Sketch:
     mech = solution.mechanism
     pts = solution.sweep.points
@@ -434,94 +524,17 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         return np.asarray(pts[name][k], dtype=float) / mu_l
 
     with sk.group("mechanism", "mechanism"):
-        # Trajectories from a dense sweep: thin polylines.
-        dense = solution.dense
-        ok = np.asarray(dense.ok, dtype=bool)
-        frame_links = {
-            lid
-            for lid, link in mech.links.items()
-            if any(owners.get(p, (None,))[0] == 0 for p in link.points)
-        }
-        traced = [p for p, (l0, _) in owners.items() if l0 != 0]
-        for lid, link in mech.links.items():
-            s = f"S{lid}"
-            if s in pts and lid not in frame_links and len(link.points) > 1:
-                traced.append(s)
-        for name in traced:
-            if name not in dense.points:
-                continue
-            arr = np.asarray(dense.points[name], dtype=float)[ok] / mu_l
-            arr = arr[np.all(np.isfinite(arr), axis=1)]
-            if len(arr) > 1 and float(np.ptp(arr, axis=0).max()) > 0.5:
-                sk.polyline([tuple(p) for p in arr], "thin")
-
-        # Links in every position.
-        for k in range(n):
-            kind: LineType = "main" if k in main else "thin"
-            for link in mech.links.values():
-                names = [p for p in link.points if p in pts]
-                for i in range(len(names)):
-                    for j in range(i + 1, len(names)):
-                        a, b = at(names[i], k), at(names[j], k)
-                        if np.all(np.isfinite(a)) and np.all(np.isfinite(b)):
-                            sk.line(a, b, kind)
-
-        # Sliders as rectangles along their guides; a frame's guide hatched, a
-        # moving guide (a slot) drawn from the block along its link.
-        for slider in mech.sliders:
-            name = slider.slider_point
-            if slider.guide != 0:
-                for k in sorted(main):
-                    d = complex(solution.sweep.links[slider.guide].e[k]) * complex(
-                        *slider.direction
-                    )
-                    u = unit_vector(np.array([d.real, d.imag]))
-                    c = at(name, k)
-                    ts = [
-                        float(np.dot(at(p, k) - c, u))
-                        for p in mech.links[slider.guide].points
-                        if p in pts
-                    ]
-                    sk.line(c + min(-12.0, *ts) * u, c + max(12.0, *ts) * u, "main")
-                    nrm = np.array([-u[1], u[0]])
-                    corners = [
-                        c + sx * 6.0 * u + sy * 3.5 * nrm
-                        for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
-                    ]
-                    sk.polygon([tuple(p) for p in corners], "main", "white")
-                continue
-            u = unit_vector(np.asarray(slider.direction, dtype=float))
-            along = [float(np.dot(at(name, k), u)) for k in range(n)]
-            base = np.asarray(slider.through, dtype=float) / mu_l
-            base = base - np.dot(base, u) * u
-            sk_a = base + (min(along) - 12.0) * u
-            sk_b = base + (max(along) + 12.0) * u
-            hatched_guide(sk, sk_a, sk_b, u, 3.5)
-            nrm = np.array([-u[1], u[0]])
-            # blocks of neighbouring positions kept apart: shorter where they crowd
-            ends = sorted(along[k] for k in main)
-            gaps = [b - a for a, b in zip(ends, ends[1:]) if b - a > 1e-6]
-            half = max(3.0, min([6.0, *(g / 2.0 - 0.5 for g in gaps)]))
-            for k in sorted(main):
-                c = at(name, k)
-                corners = [
-                    c + sx * half * u + sy * 3.5 * nrm
-                    for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
-                ]
-                sk.polygon(
-                    [tuple(p) for p in corners],
-                    "main" if k in main else "thin",
-                    "white" if k in main else "none",
-                )
-
-        # Joints of the main positions, the frame pivots.
+        _trajectories(sk, solution, mu_l)
+        # Every position's links, thin but for the planned ones; those drawn
+        # whole: sliders on their guides (a frame's guide hatched once under
+        # the stroke, a slot drawn from the block along its link), the joints,
+        # and at position 0 the frame's pivots.
+        poses = [_position(solution, k, mu_l, main) for k in range(n)]
+        guides, blocks = _sliders(solution, mu_l, main, at)
         for k in sorted(main):
-            for name, (l0, _) in owners.items():
-                if l0 != 0 and name in pts:
-                    sk.circle(at(name, k), 1.0, "main", "white")
-        for name, (l0, _) in owners.items():
-            if l0 == 0:
-                hatched_base(sk, at(name, 0))
+            own = (*(guides[None] if k == 0 else ()), *guides[k])
+            poses[k] = dataclasses.replace(poses[k], guides=own, blocks=blocks[k])
+        draw_poses(sk, poses)
         # Lettering goes where it covers no line, no arc and no other letter:
         # the joints' names first (the arcs are then drawn clear of them), then
         # ω and ε once every arc is drawn, then the positions' numbers.

@@ -36,8 +36,9 @@ from ..drawing.layout import LayoutError, SheetLayout, first_free
 from ..drawing.markup import equation_markup as _equation_markup
 from ..drawing.markup import force_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
+from ..drawing.pose import Block, Guide, Pose, draw_poses
 from ..drawing.sketch import Sketch
-from ..drawing.symbols import hatched_base, hatched_guide, sense_arc, unit_vector
+from ..drawing.symbols import sense_arc, unit_vector
 from ..drawing.table import table_sketch
 from ..errors import shown
 from ..forces import ForceAnalysis, ForcePolygon
@@ -260,18 +261,25 @@ class _Drawing:
 
     # the mechanism's links -----------------------------------------------------------
 
-    def links(self, lids: Iterable[int], *, frame: bool) -> None:
-        """The links `lids` at the state's position; with `frame`, the frame's
-        pivots and guides hatched as on the kinematic diagram."""
-        lids = set(lids)
+    def _pose(self, lids: set[int], frame: bool) -> Pose:
+        """The links `lids` at the state's position in mm: their pins, their
+        sliders' blocks and guides; with `frame`, the frame's pivots and guides."""
         state, mech = self.state, self.state.mech
+        points: dict[str, np.ndarray] = {}
         for lid in sorted(lids):
-            names = list(mech.links[lid].points)
-            for i in range(len(names)):
-                for j in range(i + 1, len(names)):
-                    self.line(
-                        self.mm(state.point(lid, names[i])), self.mm(state.point(lid, names[j]))
-                    )
+            for name in mech.links[lid].points:
+                points.setdefault(name, self.mm(state.point(lid, name)))
+        pins: list[str] = []
+        pivots: list[str] = []
+        for pin in mech.revolutes:
+            moving = [lk for lk in pin.links if lk != FRAME]
+            if any(lk in lids for lk in moving):
+                points[pin.point] = self.mm(state.point(moving[0], pin.point))
+                at_frame = pivots if FRAME in pin.links and frame else pins
+                if pin.point not in pins + pivots:
+                    at_frame.append(pin.point)
+        guides: list[Guide] = []
+        blocks: list[Block] = []
         for pair in mech.sliders:
             if pair.slider not in lids and pair.guide not in lids:
                 continue
@@ -279,34 +287,46 @@ class _Drawing:
             u, Q = _xy(u_c), self.mm(Q_c)
             if pair.guide == FRAME:
                 if frame:
-                    hatched_guide(self.sk, Q - 22.0 * u, Q + 22.0 * u, u, 3.5)
+                    guides.append(Guide(Q - 22.0 * u, Q + 22.0 * u, u, "frame", 3.5))
             elif pair.guide in lids:
                 # the slot runs from the block along the guide link, as far as its points reach
                 ts = [
                     float(np.dot(self.mm(state.point(pair.guide, n)) - Q, u))
                     for n in mech.links[pair.guide].points
                 ]
-                self.line(Q + min(-16.0, *ts) * u, Q + max(16.0, *ts) * u)
+                guides.append(Guide(Q + min(-16.0, *ts) * u, Q + max(16.0, *ts) * u, u, "slot"))
             if pair.slider in lids:
-                n = np.array([-u[1], u[0]])
-                corners = [
-                    Q + sx * 6.0 * u + sy * 3.5 * n
-                    for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
-                ]
-                self.sk.polygon([tuple(p) for p in corners], "main", "white")
-                for a, b in zip(corners, corners[1:] + corners[:1]):
-                    self.labels.avoid_line(a, b)
+                blocks.append(Block((pair.slider, pair.guide), Q, u, (6.0, 3.5)))
+        return Pose(
+            points,
+            [mech.links[lid].points for lid in sorted(lids)],
+            pins=pins,
+            pivots=pivots,
+            guides=guides,
+            blocks=blocks,
+        )
+
+    def links(self, lids: Iterable[int], *, frame: bool) -> None:
+        """The links `lids` at the state's position; with `frame`, the frame's
+        pivots and guides hatched as on the kinematic diagram."""
+        lids = set(lids)
+        state, mech = self.state, self.state.mech
+        drawn = draw_poses(self.sk, [self._pose(lids, frame)])
+        for a, b in drawn.segments:
+            self.labels.avoid_line(a, b)
+        for corners in drawn.blocks:
+            for a, b in zip(corners, corners[1:] + corners[:1]):
+                self.labels.avoid_line(a, b)
+        for P in drawn.pivots:
+            self.labels.avoid_line(P, P - np.array([0.0, 6.0]), 4.5)
+        for P in [*drawn.pivots, *(c for c, _ in drawn.pins)]:
+            self.labels.avoid_circle(P, 1.6)
         written: set[str] = set()
         for pin in mech.revolutes:
             moving = [lk for lk in pin.links if lk != FRAME]
             if not any(lk in lids for lk in moving):
                 continue
             P = self.mm(state.point(moving[0], pin.point))
-            if FRAME in pin.links and frame:
-                hatched_base(self.sk, P)
-                self.labels.avoid_line(P, P - np.array([0.0, 6.0]), 4.5)
-            self.sk.circle(P, 1.2, "main", "white")
-            self.labels.avoid_circle(P, 1.6)
             if pin.point not in written:
                 written.add(pin.point)
                 self.later(P, point_markup(pin.point), np.array([-0.6, 0.8]))
