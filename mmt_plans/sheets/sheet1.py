@@ -592,8 +592,9 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             sk, centre, _CRANK_R, float(mech.drive.signed_omega), start_deg, start_deg + 120.0
         )
         crank = [at(mech.crank_pin, k) - centre for k in range(n)]
+        # ω1 names its arc's arrowhead, written towards the gap between the spokes
         anchor = _between_spokes(centre, tip, crank, 7.0)
-        queued.append((anchor, "ω_{1}", anchor - centre))
+        queued.append((tip, "ω_{1}", anchor - tip))
         for tip, markup, towards in queued:
             labels.later(tip, markup, towards)
         labels.write_later()
