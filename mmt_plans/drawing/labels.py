@@ -72,7 +72,7 @@ _COMPASS = tuple(
 _RINGS = (0.0, 1.2, 2.5, 3.5, 4.2, 5.0, 9.0, 14.0)
 # where no ring near the anchor is free: further out, tied to the anchor by a
 # thin leader line, in 24 directions
-_LEADER_RINGS = (6.0, 10.0, 15.0, 21.0, 28.0, 36.0, 46.0)
+_LEADER_RINGS = (6.0, 10.0, 15.0, 21.0, 28.0, 36.0)
 _LEADER_DIRS = tuple(np.exp(1j * math.radians(15.0 * k)) for k in range(24))
 # the leader is clear of everything from this far (mm) from the anchor on,
 # past the pin and the lines that meet there
