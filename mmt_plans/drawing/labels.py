@@ -4,12 +4,14 @@ A draughtsman writes a label next to what it names, on whichever side is
 free. `Labels` does the same for one drawing: it keeps the boxes of the
 labels already written and everything already drawn (shapely), tries the
 places round the anchor nearest first, and writes the label at the first one
-that touches neither. With `leaders`, where nothing near is free it goes
-further out and draws a thin leader line from the anchor to it (a leader
-that crosses nothing first, else one that crosses fewest thin lines; never
-through lettering, an arrowhead or a dot), and a label that had to go far
-from its anchor is tied to it the same way. When every place is taken it
-takes the one that covers the least, so a label is never dropped.
+that touches neither. One rule holds every label, the sheet linter's
+label-near: its box is within NEAR_MM of what it names (the point, or the
+segment of an arrow or a link), or a thin leader of its own joins the two.
+So where nothing near is free it goes further out and draws a leader from
+the anchor to it (one that crosses nothing first, else a few thin lines;
+never a main line, lettering, an arrowhead or a dot). Where no leader finds
+a place either, it takes the place near the anchor that covers least, so a
+label is never dropped and never far from what it names.
 
 What is drawn is read from the sketch itself (`follow`): before each label
 the placer takes every call recorded since the last one — lines, hatching,
@@ -33,7 +35,14 @@ from shapely.geometry.base import BaseGeometry
 from ..render.backend import PointLike
 from ..render.recording import Call, NamingKind, RecordingBackend
 
-__all__ = ["Labels", "arc_line", "drawn_shapes"]
+__all__ = ["NEAR_MM", "Labels", "arc_line", "drawn_shapes"]
+
+# The rule of every label (and of the sheet linter's label-near): its box
+# within NEAR_MM of what it names, or a thin leader of its own joins the two.
+NEAR_MM = 6.0
+# what a candidate box may be from what it names: the box written is the
+# lettering's, up to 0.2 mm inside the box the placer keeps free
+_NEAR_KEPT = NEAR_MM - 0.5
 
 # the directions tried round an anchor, preferred first: the given side, then
 # round the compass
@@ -58,7 +67,9 @@ _COMPASS = tuple(
         -157.5,
     )
 )
-_RINGS = (0.0, 2.5, 5.0, 9.0, 14.0)  # mm further out, tried in turn
+# mm further out, tried in turn: finely within NEAR_MM, then beyond (a place
+# there is taken only with a leader, or where no leader finds room)
+_RINGS = (0.0, 1.2, 2.5, 3.5, 4.2, 5.0, 9.0, 14.0)
 # where no ring near the anchor is free: further out, tied to the anchor by a
 # thin leader line, in 24 directions
 _LEADER_RINGS = (6.0, 10.0, 15.0, 21.0, 28.0, 36.0)
@@ -66,9 +77,8 @@ _LEADER_DIRS = tuple(np.exp(1j * math.radians(15.0 * k)) for k in range(24))
 # the leader is clear of everything from this far (mm) from the anchor on,
 # past the pin and the lines that meet there
 _LEADER_START = 1.8
-_LEADER_FROM = 6.0  # mm: a label farther than this from its anchor is given a leader
-_LEADER_ALONG = (3.0, 10.0)  # a leader longer (mm) within this of a line runs along it
-_LEADER_CROSSINGS = 2  # thin lines a leader may cross where no leader crosses none
+_LEADER_ALONG = (1.5, 8.0)  # a leader longer (mm) within this of a line runs along it
+_LEADER_CROSSINGS = (2, 6)  # thin lines a leader may cross where none crosses fewer
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
 
@@ -84,7 +94,7 @@ class Labels:
         follow: bool = True,
         clearance: float = 0.4,
         spacing: float | None = 0.0,
-        leaders: bool = False,
+        leaders: bool = True,
     ) -> None:
         self.sketch = sketch
         self.size = size
@@ -92,8 +102,9 @@ class Labels:
         self.spacing = (
             sketch.look.lettering.advance_width(" ", size) + 0.2 if spacing is None else spacing
         )
-        # with `leaders`, a label with no free place near its anchor goes further
-        # out, tied to the anchor by a thin leader line
+        # with `leaders` (without them only where a test wants the near places
+        # alone), a label with no free place near its anchor goes further out,
+        # tied to the anchor by a thin leader line
         self.leaders = leaders
         # with `follow`, every call recorded on `sketch` is avoided, `clearance` mm off
         self.follow = follow
@@ -105,16 +116,20 @@ class Labels:
         self.boxes: list[BaseGeometry] = []
         self._obstacles: list[BaseGeometry] = []  # shapes, each kept its `_clearance` mm off
         self._clearance: list[float] = []
+        self._heavy: list[bool] = []  # which obstacles are main (heavy) lines: never crossed
         self._leaders: set[int] = set()  # which obstacles are leaders (never crossed)
         self._tree: _ObstacleIndex | None = None
         self._grown: BaseGeometry | None = None
         self.unsettled = 0  # labels written where they cover something: no place was free
+        self.far = 0  # labels written far from what they name with no leader: none reached
         self._later: list[tuple[str, Sequence[float], str, PointLike | None]] = []
 
-    def avoid(self, shape: BaseGeometry, clearance: float) -> None:
-        """Keep labels `clearance` mm off any shape (a filled polygon is avoided whole)."""
+    def avoid(self, shape: BaseGeometry, clearance: float, *, heavy: bool = False) -> None:
+        """Keep labels `clearance` mm off any shape (a filled polygon is avoided
+        whole); a `heavy` one (a main line) no leader crosses."""
         self._obstacles.append(shape)
         self._clearance.append(clearance)
+        self._heavy.append(heavy)
         self._tree = None
         self._grown = None
 
@@ -139,15 +154,19 @@ class Labels:
             self._sync()
             return
         for c in calls:
+            heavy = getattr(c, "line", None) == "main"
             if solid and c.name == "polygon":
                 self.avoid(Polygon(c["points"]), clearance)
             elif solid and c.name == "arc":
                 arc = arc_line(c["center"], c["radius"], c["start_deg"], c["end_deg"])
-                self.avoid(arc, clearance)
+                self.avoid(arc, clearance, heavy=heavy)
             elif c.name in ("line", "arrow", "polyline", "polygon"):
                 p = c.points()
                 for a, b in zip(p, p[1:] + (p[:1] if c.name == "polygon" else [])):
-                    self.avoid_line(a, b, clearance)
+                    if math.dist(a, b) > 1e-9:
+                        self.avoid(LineString([tuple(a), tuple(b)]), clearance, heavy=heavy)
+                    else:
+                        self.avoid(Point(tuple(a)), clearance)
             elif c.name == "circle":
                 self.avoid_circle(c["center"], c["radius"] + clearance)
 
@@ -157,8 +176,9 @@ class Labels:
             return
         calls = self.sketch.calls
         for c in calls[self._seen :]:
+            heavy = getattr(c, "line", None) == "main"
             for shape in drawn_shapes(c, self.sketch):
-                self.avoid(shape, self.clearance)
+                self.avoid(shape, self.clearance, heavy=heavy)
         self._seen = len(calls)
 
     def covered(self, shape: BaseGeometry) -> float:
@@ -172,6 +192,13 @@ class Labels:
             self._grown = shapely.unary_union(shapely.buffer(shapes, np.array(self._clearance)))
             shapely.prepare(self._grown)
         return float(shape.intersection(self._grown).area) if self._grown.intersects(shape) else 0.0
+
+    def free(self, bounds: tuple[float, float, float, float]) -> bool:
+        """Whether a box (x0, y0, x1, y1) comes within the clearance of nothing
+        labels avoid (one query of the segment index; `covered` measures how much)."""
+        self._sync()
+        x0, y0, x1, y1 = (np.array([v], dtype=float) for v in bounds)
+        return bool(self._obstacle_cost(x0, y0, x1, y1)[0] <= 1e-9)
 
     def width(self, markup: str) -> float:
         """The width of the lettering, mm (of its longest line)."""
@@ -362,7 +389,7 @@ class Labels:
     def _index(self) -> _ObstacleIndex:
         """The obstacles as segments and solids in a tree (built again after a change)."""
         if self._tree is None:
-            self._tree = _ObstacleIndex(self._obstacles, self._clearance)
+            self._tree = _ObstacleIndex(self._obstacles, self._clearance, self._heavy)
             self._reach = np.array(self._clearance)
         return cast(_ObstacleIndex, self._tree)
 
@@ -408,29 +435,29 @@ class Labels:
         leader = leader if self.leaders else None
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = self._label_cost(x0, y0, x1, y1)
+        # the one rule: written within NEAR_MM of what it names, or led to it
+        near = _gap(names, x0, y0, x1, y1) <= _NEAR_KEPT if names is not None else cost >= 0.0
         # The obstacles are asked about one ring of candidates at a time, nearest
         # first: most labels find room in the first ring (the same pick as asking
         # about all of them, since the candidates are in order of preference).
         per_ring = max(1, cx.size // len(self.rings))
         k = -1
+        asked = np.zeros(cx.size, dtype=bool)
         for r0 in range(0, cx.size, per_ring):
             ring = slice(r0, min(cx.size, r0 + per_ring))
+            if not near[ring].any():
+                continue
             cost[ring] += self._obstacle_cost(x0[ring], y0[ring], x1[ring], y1[ring])
-            free = np.flatnonzero(cost[ring] <= 1e-9)
+            asked[ring] = True
+            free = np.flatnonzero((cost[ring] <= 1e-9) & near[ring])
             if free.size:
                 k = r0 + int(free[0])
                 break
         line: tuple[tuple[float, float], tuple[float, float]] | None = None
-        far = False
-        if k >= 0 and leader is not None:
-            # a label that had to go far from what it names is tied to it by a
-            # leader; where none reaches it, a place a leader reaches is better
-            ax, ay = float(leader[0][0]), float(leader[0][1])
-            gap = math.hypot(ax - min(max(ax, x0[k]), x1[k]), ay - min(max(ay, y0[k]), y1[k]))
-            line = self._leader_to(leader[0], x0[k], y0[k], x1[k], y1[k], _LEADER_FROM)
-            far = line is None and gap > _LEADER_FROM
-        if (k < 0 or far) and leader is not None:
-            found = self._leader_place(leader, w, h, drop, 0 if far else _LEADER_CROSSINGS)
+        if k < 0 and leader is not None:
+            # nothing near is free: further out, tied to it by a leader that
+            # crosses nothing, else only thin lines
+            found = self._leader_place(leader, w, h, drop, names)
             if found is not None:
                 (lx, ly), line = found
                 cx, cy = np.array([lx]), np.array([ly])
@@ -439,8 +466,20 @@ class Labels:
         if k < 0 and not settle:
             return None
         if k < 0:
-            k = int(np.argmin(cost))
-            self.unsettled += 1
+            # No place near it and none a leader reaches: a free place further
+            # out (a label on a line or a label reads as neither), else the
+            # place near it that covers least, lettering first.
+            rest = ~asked
+            if rest.any():
+                cost[rest] += self._obstacle_cost(x0[rest], y0[rest], x1[rest], y1[rest])
+            free = np.flatnonzero(cost <= 1e-9)
+            if free.size:
+                k = int(free[0])
+            else:
+                cost += 100.0 * self._label_cost(x0, y0, x1, y1)
+                k = int(np.argmin(np.where(near, cost, np.inf) if near.any() else cost))
+                self.unsettled += 1
+            self.far += 1
         footprint = box(x0[k], y0[k], x1[k], y1[k])
         lines = markup.split("\n")
         # the recording keeps what the label names, for the sheet linter
@@ -467,12 +506,20 @@ class Labels:
         w: float,
         h: float,
         drop: float,
-        crossings: int = _LEADER_CROSSINGS,
+        names: tuple[NamingKind, PointLike, PointLike | None] | None = None,
     ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
         """The centre of the first free box further out round the anchor that a
         straight leader from the anchor reaches without touching anything but
-        what meets at the anchor; with the leader (anchor, end). None if none."""
-        (ax, ay), towards, distance = (float(leader[0][0]), float(leader[0][1])), *leader[1:]
+        what meets at the anchor (a leader that crosses no line first, else one
+        that crosses a few thin lines); with the leader (its start, its end).
+        A segment's or an arrow's label may be led from along it too. None if
+        no place is free."""
+        (ax0, ay0), towards, distance = (float(leader[0][0]), float(leader[0][1])), *leader[1:]
+        starts = [(ax0, ay0)]
+        if names is not None and names[2] is not None:
+            p, q = np.asarray(names[1], dtype=float), np.asarray(names[2], dtype=float)
+            if float(np.hypot(*(q - p))) > 2.0 * _LEADER_START:
+                starts += [tuple(p + t * (q - p)) for t in _ALONG]
         dirs = np.array(_LEADER_DIRS)
         if towards is not None and math.hypot(*towards) > 1e-12:
             t = complex(towards[0], towards[1]) / math.hypot(*towards)
@@ -483,16 +530,25 @@ class Labels:
             (h / 2 + drop / 2) / np.maximum(np.abs(dirs.imag), 1e-9),
         )
         ring = (distance + np.array(_LEADER_RINGS))[:, None]
-        cx = (ax + dirs.real * (ring + half)).ravel()
-        cy = (ay + dirs.imag * (ring + half) + drop / 2).ravel()
+        st = np.asarray(starts, dtype=float)
+        # nearest ring first, then each start in turn, then the direction
+        ox = (dirs.real * (ring + half)).ravel()
+        oy = (dirs.imag * (ring + half) + drop / 2).ravel()
+        n_rings = len(_LEADER_RINGS)
+        shape = (n_rings, len(st), len(dirs))
+        ax = np.broadcast_to(st[None, :, 0, None], shape).ravel()
+        ay = np.broadcast_to(st[None, :, 1, None], shape).ravel()
+        cx = ax + np.broadcast_to(ox.reshape(n_rings, 1, -1), shape).ravel()
+        cy = ay + np.broadcast_to(oy.reshape(n_rings, 1, -1), shape).ravel()
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = self._label_cost(x0, y0, x1, y1) + self._obstacle_cost(x0, y0, x1, y1)
         free = np.flatnonzero(cost <= 1e-9)
         # each leader ends 0.4 mm short of its box's nearest point
+        ax, ay = ax[free], ay[free]
         px, py = np.clip(ax, x0[free], x1[free]), np.clip(ay, y0[free], y1[free])
         length = np.hypot(px - ax, py - ay)
         keep = length > _LEADER_START + 0.5
-        free, px, py, length = free[keep], px[keep], py[keep], length[keep]
+        free, px, py, length, ax, ay = (v[keep] for v in (free, px, py, length, ax, ay))
         if not free.size:
             return None
         ux, uy = (px - ax) / length, (py - ay) / length
@@ -511,14 +567,14 @@ class Labels:
             written = np.asarray(self.boxes, dtype=object)
             near = STRtree(written).query(clear, predicate="dwithin", distance=self.clearance)
             crossed[np.unique(near[0])] = np.iinfo(np.int64).max
-        # the first that crosses nothing, else the one that crosses fewest thin lines
-        for i in np.lexsort((np.arange(crossed.size), crossed)):
-            if crossed[i] > crossings:
-                break
-            if self._runs_along(clear[i]):
-                continue
-            k = free[i]
-            return (float(cx[k]), float(cy[k])), ((ax, ay), (float(ex[i]), float(ey[i])))
+        # the first that crosses nothing, else the first that crosses a few thin lines
+        for most in (0, *_LEADER_CROSSINGS):
+            for i in np.flatnonzero(crossed <= most):
+                if self._runs_along(clear[i]):
+                    continue
+                k = free[i]
+                start = (float(ax[i]), float(ay[i]))
+                return (float(cx[k]), float(cy[k])), (start, (float(ex[i]), float(ey[i])))
         return None
 
     def _crossings(self, lines: np.ndarray) -> np.ndarray:
@@ -533,43 +589,36 @@ class Labels:
         if not line.size:
             return out
         # a polygon (arrowhead, dot) or another leader: never
-        weight = np.where(index.solid[owner], 10**6, 1)
+        weight = np.where(index.uncrossable[owner], 10**6, 1)
         weight[np.isin(owner, list(self._leaders))] = 10**6
         np.add.at(out, line, weight)
         return out
 
     def _runs_along(self, line: BaseGeometry) -> bool:
-        """True when a leader runs along a line (more than 10 mm within 3 mm of
-        it: it meets it at under 30°): it would read as part of it."""
+        """True when a leader runs along a drawn segment (more than 8 mm of it
+        within 1.5 mm of the segment: they meet at under about 10°): it would
+        read as part of it. Measured at points 0.5 mm apart on the leader."""
         if not self._obstacles:
             return False
-        near = STRtree(self._obstacles).query(line, predicate="dwithin", distance=_LEADER_ALONG[0])
-        if not near.size:
+        index = self._index()
+        reach, most = _LEADER_ALONG
+        (x0, y0), (x1, y1) = shapely.get_coordinates(line)
+        n = max(2, int(math.hypot(x1 - x0, y1 - y0) / 0.5) + 1)
+        if (n - 1) * 0.5 <= most:
             return False
-        obstacles = np.asarray(self._obstacles, dtype=object)[near]
-        along = shapely.length(
-            shapely.intersection(line, shapely.buffer(obstacles, _LEADER_ALONG[0]))
+        lo, hi = (
+            (min(x0, x1) - reach, min(y0, y1) - reach),
+            (max(x0, x1) + reach, max(y0, y1) + reach),
         )
-        return bool((along > _LEADER_ALONG[1]).any())
-
-    def _leader_to(
-        self, anchor: PointLike, x0: float, y0: float, x1: float, y1: float, longer: float
-    ) -> tuple[tuple[float, float], tuple[float, float]] | None:
-        """A leader from `anchor` to 0.4 mm short of the box, if the box is
-        more than `longer` mm away and the leader crosses nothing; else None."""
-        ax, ay = float(anchor[0]), float(anchor[1])
-        px, py = min(max(ax, x0), x1), min(max(ay, y0), y1)
-        length = math.hypot(px - ax, py - ay)
-        if length <= max(longer, _LEADER_START + 0.5):
-            return None
-        ux, uy = (px - ax) / length, (py - ay) / length
-        end = (px - 0.4 * ux, py - 0.4 * uy)
-        clear = LineString([(ax + _LEADER_START * ux, ay + _LEADER_START * uy), end])
-        if any(clear.distance(b) < self.clearance for b in self.boxes):
-            return None
-        if self._crossings(np.array([clear]))[0] or self._runs_along(clear):
-            return None
-        return (ax, ay), end
+        near = index.tree.query(box(*lo, *hi))
+        segs = index.segs[near[near < index.n_segs]]
+        if not len(segs):
+            return False
+        t = np.linspace(0.0, 1.0, n)
+        px, py = np.repeat(x0 + t * (x1 - x0), len(segs)), np.repeat(y0 + t * (y1 - y0), len(segs))
+        d = _point_segment(px, py, np.tile(segs, (n, 1))).reshape(n, len(segs))
+        step = math.hypot(x1 - x0, y1 - y0) / (n - 1)
+        return bool((((d <= reach).sum(axis=0) - 1) * step > most).any())
 
 
 def _point_box(px: np.ndarray, py: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -649,11 +698,17 @@ class _ObstacleIndex:
     the largest clearance, measures exactly (numpy for segments, shapely for
     solids) and returns each (query, obstacle) pair once."""
 
-    def __init__(self, obstacles: Sequence[BaseGeometry], clearance: Sequence[float]) -> None:
+    def __init__(
+        self,
+        obstacles: Sequence[BaseGeometry],
+        clearance: Sequence[float],
+        heavy: Sequence[bool] = (),
+    ) -> None:
         shapes = np.asarray(obstacles, dtype=object)
         kind = shapely.get_type_id(shapes)
         self.reach = np.asarray(clearance, dtype=float)
-        self.solid = kind == 3  # a polygon: measured whole, never crossed by a leader
+        # a polygon (measured whole) or a main line: never crossed by a leader
+        self.uncrossable = (kind == 3) | (np.asarray(heavy, dtype=bool) if len(heavy) else False)
         lines = np.flatnonzero((kind == 1) | (kind == 2))
         points = np.flatnonzero(kind == 0)
         xy, of = shapely.get_coordinates(shapes[lines], return_index=True)
@@ -767,3 +822,20 @@ def arc_line(centre: PointLike, radius: float, start_deg: float, end_deg: float)
     span = (end_deg - start_deg) % 360.0 or 360.0
     t = np.radians(start_deg + np.linspace(0.0, span, 24))
     return LineString(np.c_[centre[0] + radius * np.cos(t), centre[1] + radius * np.sin(t)])
+
+
+def _gap(
+    names: tuple[NamingKind, PointLike, PointLike | None],
+    x0: np.ndarray,
+    y0: np.ndarray,
+    x1: np.ndarray,
+    y1: np.ndarray,
+) -> np.ndarray:
+    """Distance (mm) from each candidate box to what its label names: the
+    point, or the segment of an arrow or a link (as the linter measures it)."""
+    _, a, b = names
+    b_ = np.c_[x0, y0, x1, y1]
+    if b is None or math.dist(a, b) < 1e-9:
+        return _point_box(np.full(len(b_), float(a[0])), np.full(len(b_), float(a[1])), b_)
+    seg = np.tile([float(a[0]), float(a[1]), float(b[0]), float(b[1])], (len(b_), 1))
+    return _segment_box(seg, b_)

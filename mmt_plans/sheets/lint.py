@@ -57,7 +57,7 @@ from shapely import STRtree
 from shapely.geometry import LineString, Point, box
 from shapely.geometry.base import BaseGeometry
 
-from ..drawing.labels import drawn_shapes
+from ..drawing.labels import NEAR_MM, drawn_shapes
 from ..render.look import load_look
 from ..render.recording import Arrow, BeginGroup, Call, Line, Naming, RecordingBackend, Text
 
@@ -73,7 +73,6 @@ __all__ = [
 
 Language = Literal["en", "uk"]
 
-NEAR_MM = 6.0
 CLEAR_SHRINK = 0.25
 LABEL_OVERLAP = 0.5
 COLLINEAR_DEG = 1.0
@@ -238,8 +237,10 @@ def label_near(v: SheetView) -> Iterator[Finding]:
         if lab.leader is not None:
             ld = LineString([lab.leader.start, lab.leader.end])
             joined = ld.distance(target) < 1.0 and ld.distance(lab.box) < 2.0
-            # past the pin and the lines that meet at the anchor
-            far = ld.difference(Point(lab.naming.anchor).buffer(1.8))
+            # past the pin and the lines that meet where the leader leaves what
+            # it names (the anchor, or a point along a named segment)
+            foot = min((lab.leader.start, lab.leader.end), key=lambda p: target.distance(Point(p)))
+            far = ld.difference(Point(foot).buffer(1.8))
             crossed = (
                 tree is not None
                 and far.length > 0

@@ -266,7 +266,7 @@ def _draw(
         draw_poses(sk, [_scheme(mech, P, guides, scale, carried, lines_at)])
 
         # What the ω1 arc, the output's arrow and the lettering keep clear of.
-        labels = Labels(sk, _LETTER, rings=_RINGS, follow=False)
+        labels = Labels(sk, _LETTER, rings=_RINGS, follow=False, leaders=False)
         labels.avoid_drawn(sk.calls, _CLEAR, solid=True)
 
         # ω1: an arc round the crank's pivot, clear of the crank and the base.

@@ -17,7 +17,6 @@ from typing import Any, cast
 
 import numpy as np
 import shapely
-from shapely.geometry import box
 
 from ..diagrams import (
     ILL_CONDITIONED,
@@ -130,8 +129,11 @@ def _tidy(mu: float) -> float:
 
 _OMEGA_R, _EPS_R, _CRANK_R = 5.0, 8.0, 8.0  # radii of the ω, ε arcs and of ω1's, mm
 # a label among many lines may go this much further out, mm, tried in turn
-_MECHANISM_RINGS = (0.0, 2.5, 5.0, 9.0, 14.0, 20.0)
+_MECHANISM_RINGS = (0.0, 1.2, 2.5, 3.5, 4.2, 5.0, 9.0, 14.0, 20.0)
 _SPAN = 150.0
+# the rooms kept for an ω/ε label round its arrowhead: near enough that the
+# label written there is within NEAR_MM of it (its box's edge 1.9–4.9 mm off)
+_ARC_LABEL_RINGS = (0.0, 1.5, 3.0)
 _NEAR_RINGS = 2  # the rings of a label's boxes tried first, for all candidates at once
 _MAX_SEGMENTS = 6  # a link of many points: its arcs are tried beside its longest segments
 # a diagram's number or pole letter goes no further than this from its point, mm
@@ -144,7 +146,7 @@ _TICK_RINGS = (
     7.0,
 )  # an arc beside a link spans this much of the half-plane on its side, deg
 # where along a link its arcs are tried, the middle first
-_ALONG_LINK = tuple(sorted(np.arange(0.15, 0.86, 0.05), key=lambda t: abs(t - 0.5)))
+_ALONG_LINK = tuple(sorted(np.arange(0.2, 0.81, 0.1), key=lambda t: abs(t - 0.5)))
 
 
 def _inset(radius: float) -> float:
@@ -221,7 +223,8 @@ class _ArcPlacer:
         for c in calls[self._seen :]:
             arc = c.name == "arc" or (c.name == "arrow" and c.args.get("head_length") == 2.5)
             kind = "arc" if arc else ("main" if c.args.get("line") == "main" else "thin")
-            kind = "label" if c.name == "text" else kind
+            # lettering, and a label's leader (it names something), are kept clear
+            kind = "label" if c.name == "text" or c.naming is not None else kind
             self._add(drawn_shapes(c, self.sk), kind)
         self._seen = len(calls)
         if not self._shapes:
@@ -345,7 +348,7 @@ class _ArcPlacer:
             if i.size:
                 score += np.bincount(i, weights=self._w[j], minlength=m)
         # the label boxes: 8 directions × the rings round each arrowhead
-        rings = 1.5 + np.asarray(_MECHANISM_RINGS)
+        rings = 1.5 + np.asarray(_ARC_LABEL_RINGS)
         dirs = 45.0 * np.arange(8)
         boxes_xy = np.empty((m, n_spins, len(rings) * 8, 2))
         for s, (radius, sense) in enumerate(spins):
@@ -382,7 +385,7 @@ class _ArcPlacer:
         lacking = np.flatnonzero(np.any(full, axis=1))
         if lacking.size:
             covered[lacking, :, near:] = count(boxes_xy[lacking, :, near:])
-        ring_of = 0.5 * np.repeat(np.asarray(_MECHANISM_RINGS), 8)
+        ring_of = 0.5 * np.repeat(np.asarray(_ARC_LABEL_RINGS), 8)
         chosen_all: list[list[int]] = []
         for c in range(m):
             chosen: list[int] = []
@@ -541,16 +544,17 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         pivot = at(mech.crank_pivot, 0)
         labels = Labels(sk, _TEXT, rings=_MECHANISM_RINGS, leaders=True)
         labels.avoid_drawn(sk.calls)
+        # the crank's pivot named on the side away from the pin at position 0,
+        # so that its "O" stands far from the position number "0"
+        opposite = -unit_vector(at(mech.crank_pin, 0) - pivot)
         for name in owners:
             if name in pts:
                 p = at(name, 0)
-                away = unit_vector(p - pivot) if name != mech.crank_pivot else np.array([-1.0, 0.0])
-                labels.place(
-                    p,
-                    point_markup(name),
-                    towards=unit_vector(away + np.array([0.3, 0.6])),
-                    distance=2.0,
-                )
+                if name == mech.crank_pivot:
+                    towards = opposite
+                else:
+                    towards = unit_vector(unit_vector(p - pivot) + np.array([0.3, 0.6]))
+                labels.place(p, point_markup(name), towards=towards, distance=2.0)
         # ω and ε of every rotating link at the planned positions (seed 003
         # §1.6), each beside its own link on the side freest of the others and
         # of the joints' names; all drawn before their labels are written.
@@ -601,8 +605,9 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             sk, centre, _CRANK_R, float(mech.drive.signed_omega), start_deg, start_deg + 120.0
         )
         crank = [at(mech.crank_pin, k) - centre for k in range(n)]
+        # ω1 names its arc's arrowhead, written towards the gap between the spokes
         anchor = _between_spokes(centre, tip, crank, 7.0)
-        queued.append((anchor, "ω_{1}", anchor - centre))
+        queued.append((tip, "ω_{1}", anchor - tip))
         for tip, markup, towards in queued:
             labels.later(tip, markup, towards)
         labels.write_later()
@@ -696,13 +701,14 @@ def sketch_plan(
                 # every component of the acceleration plan named as the textbook
                 # names it: a^n, a^τ, a^k (Coriolis), a^r (relative)
                 tags = {"normal": "n", "coriolis": "k", "tangential": "τ", "slide": "r"}
+                # (by the head of a normal or Coriolis one, beside a tangential or
+                # relative one), each naming its arrow
                 if kind == "acceleration" and c.kind in tags:
-                    where = e if c.kind in ("normal", "coriolis") else (s + e) / 2
-                    placer.later(
-                        where,
-                        f"a^{{{tags[c.kind]}}}_{{{c.label.split('_', 1)[-1]}}}",
-                        unit_vector(e - s),
-                    )
+                    name = f"a^{{{tags[c.kind]}}}_{{{c.label.split('_', 1)[-1]}}}"
+                    if c.kind in ("normal", "coriolis"):
+                        placer.later_arrow(s, e, name)
+                    else:
+                        placer.later_along(s, e, name)
         # The image of each link: its joints' images joined by thin lines (the
         # relative vectors ab, de, and the similarity triangles of three-point links).
         owners = solution.mechanism.point_owners
@@ -764,7 +770,7 @@ def _free_spot(
     for pos, anchor, valign in spots:
         probe = RecordingBackend(look=sk.look)
         probe.text(pos, text, size, anchor=anchor, valign=valign)  # type: ignore[arg-type]
-        if free.covered(box(*probe.text_box(probe.calls[-1]))) <= 0:
+        if free.free(probe.text_box(probe.calls[-1])):
             return pos, anchor, valign
     return None
 

@@ -628,8 +628,7 @@ def sketch_force_polygons(
                     s, e = _side_by_side(sk, labels, arrows, s, e)
                     sk.arrow(s, e, "main", **_ARROW)  # type: ignore[arg-type]
                     labels.avoid_line(s, e)
-                    u = unit_vector(e - s)
-                    labels.later((s + e) / 2, force_markup(a.label[:-2]), np.array([u[1], -u[0]]))
+                    labels.later_along(s, e, force_markup(a.label[:-2]))
         zero = not sides and guide_side(polygons) <= 0.0
         if zero:
             # an unloaded group (massless links, no force): every side is

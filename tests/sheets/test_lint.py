@@ -62,6 +62,22 @@ def test_label_near_what_it_names_or_tied_by_a_leader():
     assert "crosses" in rules(b, "label-near")[0].message
 
 
+def test_a_leader_may_leave_a_named_segment_anywhere_along_it():
+    # a link's (a main line's) name led from the middle of the link: the leader
+    # leaves the line it names; it crosses no other main line
+    b = RecordingBackend()
+    with b.group("m", "mechanism"):
+        b.line((100, 100), (140, 100), "main")
+        with b.naming("AB", "segment", (100, 100), (140, 100)):
+            b.line((120, 100), (120, 116.5), "thin")
+            b.text((120, 117), "AB", 3.5, anchor="center", valign="baseline")
+    assert rules(b, "label-near") == []
+    # a main line across the leader is still crossed
+    with b.group("m2", "mechanism"):
+        b.line((110, 108), (130, 108), "main")
+    assert "crosses" in rules(b, "label-near")[0].message
+
+
 def test_no_label_on_a_line_or_on_another_label():
     b = RecordingBackend()
     with b.group("p", "plan"):

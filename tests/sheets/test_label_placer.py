@@ -1,0 +1,111 @@
+"""The one rule of the label placer (drawing/labels.py), judged by the sheet
+linter's own measures (sheets/lint.py, shapely on the recording): every label
+within NEAR_MM of what it names, or joined to it by a thin leader of its own
+that crosses no main line and no lettering; and on no line and no label.
+Crowded cases built by hand, each with a free place the rule can reach."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from shapely.geometry import LineString, Point
+
+from mmt_plans.drawing.labels import NEAR_MM, Labels
+from mmt_plans.drawing.sketch import Sketch
+from mmt_plans.render.recording import Line, RecordingBackend, Text
+from mmt_plans.sheets.lint import SheetView, lint
+
+
+def _sketch() -> Sketch:
+    return Sketch(RecordingBackend().look)
+
+
+def _findings(sk: Sketch, rules: list[str]) -> list[str]:
+    with_group = RecordingBackend(sk.width, sk.height)
+    with with_group.group("d", "plan"):
+        for c in sk.calls:
+            with_group.calls.append(c.with_changes(groups=("d", *c.groups)))
+    return [str(f) for f in lint(SheetView.of(with_group, "en", "t"), rules)]
+
+
+def _leaders(sk: Sketch) -> list[Line]:
+    return [c for c in sk.calls if isinstance(c, Line) and c.naming is not None]
+
+
+def test_a_free_place_near_the_point_is_taken_without_a_leader():
+    sk = _sketch()
+    sk.line((-20.0, 0.0), (20.0, 0.0), "main")
+    labels = Labels(sk, 3.5)
+    footprint = labels.place((0.0, 0.0), "B", towards=(1.0, 1.0))
+    assert footprint.distance(Point(0.0, 0.0)) <= NEAR_MM
+    assert _leaders(sk) == []
+    assert _findings(sk, ["label-near", "label-clear"]) == []
+
+
+def test_a_point_in_a_fan_of_thin_lines_is_led_to_a_free_place():
+    """Thin lines 3 mm apart fill the near places: the label goes further out
+    with a leader that may cross the thin lines but no main line; the main
+    lines of the fan (every fourth) are never crossed."""
+    sk = _sketch()
+    for k in range(16):
+        u = np.array([math.cos(k * math.pi / 8 + 0.1), math.sin(k * math.pi / 8 + 0.1)])
+        sk.line(tuple(1.5 * u), tuple(9.0 * u), "main" if k % 4 == 0 else "thin")
+    for r in (3.0, 4.5, 6.0, 7.5):
+        sk.circle((0.0, 0.0), r, "thin")
+    labels = Labels(sk, 3.5)
+    labels.place((0.0, 0.0), "O", towards=(-1.0, 1.0))
+    assert len(_leaders(sk)) == 1
+    assert _findings(sk, ["label-near", "label-clear"]) == []
+
+
+def test_a_leader_never_crosses_a_main_line_or_lettering():
+    """A main square round the point at 8 mm, crowded inside: no leader can
+    leave it. The label is written clear of every line outside the square
+    rather than on the lines near the point (a label on lines reads as
+    neither), and counted as one that could not keep the rule."""
+    sk = _sketch()
+    sq = [(-8.0, -8.0), (8.0, -8.0), (8.0, 8.0), (-8.0, 8.0), (-8.0, -8.0)]
+    for a, b in zip(sq, sq[1:]):
+        sk.line(a, b, "main")
+    for y in np.arange(-7.0, 7.5, 1.5):
+        sk.line((-7.5, float(y)), (7.5, float(y)), "thin")
+    sk.text((0.0, 12.0), "TEXT", 3.5, anchor="center", valign="middle")
+    labels = Labels(sk, 3.5)
+    labels.place((0.0, 0.0), "C", towards=(0.0, 1.0))
+    assert _leaders(sk) == []
+    assert labels.far == 1 and labels.unsettled == 0
+    assert _findings(sk, ["label-clear"]) == []
+
+
+def test_many_names_of_one_crowded_point_each_near_or_led():
+    """Twelve forces from one point, each named by its head: every name near
+    its arrow or led to it, none on a line or on another name."""
+    sk = _sketch()
+    labels = Labels(sk, 3.5, spacing=None)
+    arrows = []
+    for k in range(12):
+        u = np.array([math.cos(k * math.pi / 6), math.sin(k * math.pi / 6)])
+        end = tuple(12.0 * u)
+        sk.arrow((0.0, 0.0), end, "main", head_length=3.0, head_width=1.0)
+        arrows.append(((0.0, 0.0), end))
+    for k, (s, e) in enumerate(arrows):
+        labels.later_arrow(s, e, f"F_{{{k + 1}}}")
+    labels.write_later()
+    assert _findings(sk, ["label-near", "label-clear", "arrows-named"]) == []
+
+
+def test_a_segments_name_may_be_led_from_along_it():
+    """A link's name whose sides are full near the middle: led from a point
+    along the link, the leader leaving it, crossing no main line."""
+    sk = _sketch()
+    sk.line((0.0, 0.0), (40.0, 0.0), "main")
+    for x in np.arange(12.0, 28.5, 1.5):
+        sk.line((float(x), -7.0), (float(x), 7.0), "thin")
+    labels = Labels(sk, 3.5)
+    footprint = labels.place_along((0.0, 0.0), (40.0, 0.0), "AB")
+    seg = LineString([(0.0, 0.0), (40.0, 0.0)])
+    assert footprint.distance(seg) <= NEAR_MM or len(_leaders(sk)) == 1
+    assert _findings(sk, ["label-near", "label-clear"]) == []
+    texts = [c for c in sk.calls if isinstance(c, Text)]
+    assert texts and all(c.naming is not None and c.naming.kind == "segment" for c in texts)
