@@ -1405,12 +1405,15 @@ def compose_sheet1(
 ) -> Sheet1:
     """Draw sheet 1 of `solution` on `backend`; returns the layout and scales used.
 
-    μ_l is the series value (1, 2, 2.5, 4, 5 × 10^k) that draws the mechanism
-    in all its positions largest within its field (top left: left of the
-    tables, above the diagrams); the plans keep the textbook's sizes (pa 100 …
-    150 mm, the acceleration plan's longest vector 100 … 200 mm); the diagrams
-    are drawn at μ_S = μ_l with whole-millimetre poles. Where the rest does
-    not fit, the mechanism goes a step smaller, then the acceleration plans.
+    The layout rule, in order: the mechanism at the series value μ_l (1, 2,
+    2.5, 4, 5 × 10^k) that draws it in all its positions largest within its
+    field (mechanism_field: top left, clear of the diagrams, placed bottom
+    left or bottom right, and of the tables, top right); the plans at the
+    guide's size (_plan_scales: each one's longest vector from the pole 100 …
+    200 mm), up to two series steps coarser where the sheet needs it, a plan
+    then drawn under 100 mm saying so; the diagrams at the Solution's μ_S (the
+    line under S says why where μ_S ≠ μ_l) and the tables. Where nothing
+    fits, _fallback draws the mechanism and the plans smaller still.
     """
     page = page if page is not None else Page.of("A1")
     check_language(lang)
