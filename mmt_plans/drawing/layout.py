@@ -24,6 +24,7 @@ from .page import Page, Rect
 
 __all__ = [
     "first_free",
+    "pack",
     "ElementKind",
     "Corner",
     "Element",
@@ -259,3 +260,30 @@ class SheetLayout:
         out = [f"{a} overlaps {b}" for a, b in self.overlaps(clearance)]
         out += [f"{name} leaves the frame" for name in self.outside()]
         return out
+
+
+def pack(
+    page: Page,
+    items: Sequence[tuple[str, float, float, str]],
+    gap: float,
+    placed: Mapping[str, Rect] | None = None,
+    frame_clearance: float = 5.0,
+) -> dict[str, Rect] | None:
+    """Rectangles for (name, width, height, corner) in turn, as
+    SheetLayout.place finds them (first_free: inside the frame less
+    `frame_clearance`, `gap` mm from the title block, from those `placed`
+    before and from each other, the candidate nearest the corner, rows
+    first), without registering footprints: None when one finds no room. The
+    packer of both sheets' trial layouts."""
+    region = page.frame.inset(frame_clearance)
+    tb = page.title_block.rect
+    boxes = [(tb.left, tb.bottom, tb.right, tb.top)]
+    boxes += [(r.left, r.bottom, r.right, r.top) for r in (placed or {}).values()]
+    out: dict[str, Rect] = dict(placed or {})
+    for name, w, h, corner in items:
+        at = first_free(region, np.array(boxes), w, h, gap, corner)
+        if at is None:
+            return None
+        out[name] = Rect(at[0], at[1], w, h)
+        boxes.append((at[0], at[1], at[0] + w, at[1] + h))
+    return out

@@ -36,12 +36,12 @@ class Sheet1Scales:
 
     @classmethod
     def of(cls, s: Mapping[str, float], positions: Sequence[int]) -> Sheet1Scales:
-        """From sheet 1's scales by name ("mu_l", "mu_V", "mu_a": one μV and
-        one μa serve every plan position)."""
+        """From sheet 1's scales by name ("mu_l"; "mu_V 3", "mu_a 3" of the plans
+        of position 3, or "mu_V", "mu_a" serving every position)."""
         return cls(
             float(s["mu_l"]),
-            MappingProxyType({i: float(s["mu_V"]) for i in positions}),
-            MappingProxyType({i: float(s["mu_a"]) for i in positions}),
+            MappingProxyType({i: float(s.get(f"mu_V {i}", s["mu_V"])) for i in positions}),
+            MappingProxyType({i: float(s.get(f"mu_a {i}", s["mu_a"])) for i in positions}),
         )
 
 

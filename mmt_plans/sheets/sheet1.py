@@ -38,9 +38,7 @@ from ..render.look import LineType
 from ..render.recording import RecordingBackend
 from ..scales import (
     LENGTH_MANTISSA_TEXT,
-    VELOCITY_PLAN,
     Quantity,
-    scale_for,
     scale_label,
     series,
 )
@@ -659,11 +657,18 @@ def _moving_points(solution: Solution) -> list[str]:
 
 
 def sketch_plan(
-    solution: Solution, index: int, mu: float, kind: str, look: Any, lang: Language
+    solution: Solution,
+    index: int,
+    mu: float,
+    kind: str,
+    look: Any,
+    lang: Language,
+    note: str = "",
 ) -> tuple[Sketch, dict[str, np.ndarray]]:
     """A velocity ("velocity") or acceleration ("acceleration") plan at `index`.
 
-    The pole is at the local origin; returns the sketch and the images in mm.
+    The pole is at the local origin; returns the sketch and the images in mm;
+    `note` (a plan drawn below the guide's size: why) goes under its scale.
     """
     view = solution.plan(index)
     images_si = view.velocity_images if kind == "velocity" else view.acceleration_images
@@ -755,6 +760,8 @@ def sketch_plan(
             _TEXT,
             anchor="center",
         )
+        if note:
+            sk.text(((ext.left + ext.right) / 2, ext.bottom - 10.0), note, _SMALL, anchor="center")
         title = _words(lang)[f"{kind}_plan"].format(i=index)
         sk.text(((ext.left + ext.right) / 2, ext.top + 3.0), title, _TEXT, anchor="center")
     return sk, images
@@ -1123,94 +1130,78 @@ _PLACEMENT: Mapping[str, str] = {
     "table-check": "top-right",
 }
 
-# The field of the mechanism's drawing: the left part of the sheet, this share
-# of the free width, from the top down to the column of diagrams (Appendix A).
-MECHANISM_FIELD_SHARE = 0.5
-# The acceleration plan's longest vector (seed 003 §1.5: πa ≈ 100 … 200 mm).
-ACCELERATION_GUIDE_MM = (100.0, 200.0)
-# The longest an acceleration plan's vector may be drawn so that πa reaches 100 mm.
-ACCELERATION_SHEET_MAX_MM = 320.0
+# The plans' size (seed 003 §1.3: pa "not less than 100 … 150 mm"; §1.5: πa ≈
+# 100 … 200 mm), as one rule for both kinds: each plan's longest vector from
+# its pole is drawn 100 … 200 mm long.
+PLAN_GUIDE_MM = (100.0, 200.0)
+# series steps a plan may be drawn coarser than its guide scale to make room
+PLAN_SHRINK = 4
 
 
-def _plan_scales(solution: Solution) -> tuple[float, float]:
-    """μV from V_A (seed 003, eq. 5: pa 100 … 150 mm) and μa such that the
-    longest vector of the acceleration plans is 100 … 200 mm (eq. 9's πa ≈
-    100 … 200 mm, applied to the plan's longest vector so that no plan runs
-    over the sheet)."""
-    pin = solution.mechanism.crank_pin
-    v_a = 0.0
-    for i in solution.plan_positions:
-        view = solution.plan(i)
-        v_a = max(v_a, float(np.hypot(*view.velocity_images[pin])))
-    return scale_for(v_a, VELOCITY_PLAN), _acceleration_scale(solution, 0) or 1.0
-
-
-def _longest_acceleration(solution: Solution) -> float:
-    """The longest vector of the acceleration plans (images and components), m/s²."""
+def _pole_longest(solution: Solution, index: int, kind: str) -> float:
+    """The longest vector drawn from the pole of a plan (an absolute vector, or a
+    component that starts at the pole), m/s or m/s²."""
+    view = solution.plan(index)
+    images = view.velocity_images if kind == "velocity" else view.acceleration_images
     longest = 0.0
-    for i in solution.plan_positions:
-        view = solution.plan(i)
-        for v in view.acceleration_images.values():
-            longest = max(longest, float(np.hypot(*v)))
-        for g in view.groups:
-            for c in g.acceleration:
+    for name in _moving_points(solution):
+        if name in images and not name.startswith("S"):
+            longest = max(longest, float(np.hypot(*images[name])))
+    for g in view.groups:
+        for c in g.velocity if kind == "velocity" else g.acceleration:
+            if float(np.hypot(*c.start)) <= 1e-9 * max(longest, 1.0):
                 longest = max(longest, float(np.hypot(*c.vector)))
-    return longest
+    return longest if math.isfinite(longest) else 0.0
 
 
-def _crank_pin_acceleration(solution: Solution) -> float:
-    """a_A, the crank pin's acceleration on the plans (the largest), m/s²."""
-    pin = solution.mechanism.crank_pin
-    return max(
-        float(np.hypot(*solution.plan(i).acceleration_images[pin])) for i in solution.plan_positions
-    )
+def _guide_scale(longest: float) -> float:
+    """The finest series μ that draws `longest` no longer than 200 mm (the series
+    steps by at most 1.6, so it draws it 125 mm long at least)."""
+    hi = PLAN_GUIDE_MM[1]
+    return next(iter(series(longest / hi * (1 - 1e-9), longest / hi * 100.0)))
 
 
-def _acceleration_scale(solution: Solution, shrink: int) -> float | None:
-    """μa `shrink` series steps above the finest one drawing the longest
-    vector at most 200 mm; None once that vector would be shorter than 100 mm,
-    or πa (seed 003 eq. 9: πa ≈ 100 … 200 mm) shorter than 100 mm where the
-    unshrunk scale met it. `shrink` −1: the coarsest value giving πa >= 100 mm
-    where the 200 mm scale does not (None where it does, or where that draws
-    the longest vector past ACCELERATION_SHEET_MAX_MM).
+def _plan_scales(solution: Solution, shrink: int = 0) -> dict[str, float]:
+    """μ of every plan, "velocity 3" / "acceleration 3": the finest series value
+    drawing the longest vector from the pole of all positions within 200 mm,
+    one μ for all positions of a kind where that draws each plan's own longest
+    vector 100 mm at least, else each plan at its own finest μ; `shrink`
+    series steps coarser where the sheet cannot hold them."""
+    lo = PLAN_GUIDE_MM[0]
+    out: dict[str, float] = {}
+    for kind in ("velocity", "acceleration"):
+        longest = {i: _pole_longest(solution, i, kind) for i in solution.plan_positions}
+        top = max(longest.values(), default=0.0)
+        if not top > 0.0:
+            out.update({f"{kind} {i}": 1.0 for i in longest})
+            continue
+        common = _guide_scale(top)
+        one = all(v == 0.0 or v / common >= lo * (1 - 1e-9) for v in longest.values())
+        for i, v in longest.items():
+            mu = common if one or v == 0.0 else _guide_scale(v)
+            out[f"{kind} {i}"] = _next_scale(mu, shrink)
+    return out
 
-    The finest scale that keeps the longest vector within 200 mm is also the
-    one that draws πa longest, so it meets both rules whenever any series value
-    does. Where none does (the longest vector, a fast-turning link's a^τ or a
-    Coriolis a^k, more than about twice a_A or between two series values; e.g.
-    seed 003 task 1 v1, πa 55 mm) the guide's πa >= 100 mm wins where the sheet
-    holds the larger plan (its longest vector up to ACCELERATION_SHEET_MAX_MM,
-    and the layout still fits around the mechanism at its μ_l): the guide is
-    the textbook's, the 200 mm bound only keeps a plan on the sheet. Where the
-    sheet cannot hold it, the 200 mm rule wins and πa is the longest it can be."""
-    lo, hi = ACCELERATION_GUIDE_MM
-    longest = _longest_acceleration(solution)
-    if not (math.isfinite(longest) and longest > 0):
-        return None
-    first = next(iter(series(longest / hi * (1 - 1e-9), longest / hi * 100.0)))
-    a_pin = _crank_pin_acceleration(solution)
-    if shrink < 0:
-        if a_pin / first >= lo * (1 - 1e-9):
-            return None  # the unshrunk scale meets both rules
-        finer = max(series(a_pin / lo / 100.0, a_pin / lo * (1 + 1e-9)))  # πa >= 100 mm
-        return finer if longest / finer <= ACCELERATION_SHEET_MAX_MM * (1 + 1e-9) else None
-    mu = _next_scale(first, shrink)
-    if shrink == 0:
-        return mu
-    keeps_guide = a_pin / first < lo * (1 - 1e-9) or a_pin / mu >= lo * (1 - 1e-9)
-    return mu if longest / mu >= lo * (1 - 1e-9) and keeps_guide else None
+
+def _reduced_note(solution: Solution, index: int, kind: str, mu: float, lang: Language) -> str:
+    """The note under a plan drawn below the guide's 100 mm (empty when it is not)."""
+    lo, hi = PLAN_GUIDE_MM
+    drawn = _pole_longest(solution, index, kind) / mu
+    if drawn <= 0.0 or drawn >= lo * (1 - 1e-9):
+        return ""
+    return str(_words(lang)["plan_reduced"]).format(mm=f"{drawn:.0f}", lo=f"{lo:g}", hi=f"{hi:g}")
 
 
 def _sketch_all(
     solution: Solution,
     look: Any,
     lang: Language,
-    mu_a: float,
+    plan_mu: Mapping[str, float],
     mu_l: float,
     stacked: bool,
     cache: dict[tuple[str, float], Any],
 ) -> tuple[dict[str, Sketch], dict[str, float], KinematicDiagrams]:
-    """Every drawing but the mechanism: the plans at μV and `mu_a`, the diagrams
+    """Every drawing but the mechanism: the plans at `plan_mu` (_plan_scales), the diagrams
     as the Solution constructed them (its μ_S and poles, the ones the note and
     the results JSON give); `cache` keeps what was drawn at a scale."""
 
@@ -1219,51 +1210,52 @@ def _sketch_all(
             cache[(name, mu)] = make()
         return cache[(name, mu)]
 
-    mu_v, _ = _plan_scales(solution)
     sketches: dict[str, Sketch] = {}
     sketches["structural-formula"] = memo(
         "structural-formula", 0.0, lambda: sketch_formula(solution, look, lang)
     )
     for i in solution.plan_positions:
-        sketches[f"velocity-plan-{i}"] = memo(
-            f"velocity-plan-{i}",
-            mu_v,
-            lambda: sketch_plan(solution, i, mu_v, "velocity", look, lang)[0],
-        )
-        sketches[f"acceleration-plan-{i}"] = memo(
-            f"acceleration-plan-{i}",
-            mu_a,
-            lambda: sketch_plan(solution, i, mu_a, "acceleration", look, lang)[0],
-        )
+        for kind in ("velocity", "acceleration"):
+            mu = plan_mu[f"{kind} {i}"]
+            note = _reduced_note(solution, i, kind, mu, lang)
+            sketches[f"{kind}-plan-{i}"] = memo(
+                f"{kind}-plan-{i}",
+                mu,
+                lambda: sketch_plan(solution, i, mu, kind, look, lang, note)[0],
+            )
 
     dg = solution.require_diagrams()
     drawn = dg.construction
 
-    def diagrams() -> list[Sketch]:
-        return [
-            sketch_diagram(
-                drawn,
-                which,
-                look,
-                lang,
-                solution.s_dense,
-                dg.refinement,
-                mu_l=mu_l if which == "s" else None,
-                mu_l_solution=float(solution.mu_l),
-            )
-            for which in ("s", "v", "a")
-        ]
+    def diagram(which: str) -> Sketch:
+        return sketch_diagram(
+            drawn,
+            which,
+            look,
+            lang,
+            solution.s_dense,
+            dg.refinement,
+            mu_l=mu_l if which == "s" else None,
+            mu_l_solution=float(solution.mu_l),
+        )
 
-    parts = memo("diagrams", mu_l, diagrams)
+    # V and a do not depend on the mechanism's μ_l: drawn once
+    parts = [
+        memo(f"diagram-{which}", mu_l if which == "s" else 0.0, lambda: diagram(which))
+        for which in ("s", "v", "a")
+    ]
     if stacked:
         sketches["diagrams"] = memo("diagrams-stacked", mu_l, lambda: _stack(parts, look))
     else:
         for which, sk in zip("sva", parts):
             sketches[f"diagram-{which}"] = sk
     sketches.update(memo("tables", 0.0, lambda: _sketch_tables(solution, look, lang)))
+    first = solution.plan_positions[0]
     scales = {
-        "mu_V": mu_v,
-        "mu_a": mu_a,
+        "mu_V": plan_mu[f"velocity {first}"],
+        "mu_a": plan_mu[f"acceleration {first}"],
+        **{f"mu_V {i}": plan_mu[f"velocity {i}"] for i in solution.plan_positions},
+        **{f"mu_a {i}": plan_mu[f"acceleration {i}"] for i in solution.plan_positions},
         "mu_S": drawn.mu_S,
         "mu_t": drawn.mu_t,
         "mu_V_diagram": drawn.mu_V,
@@ -1306,22 +1298,37 @@ def _order(sketches: Mapping[str, Sketch], stacked: bool) -> list[str]:
     ] + [n for n in sketches if n.startswith("velocity-plan") or n.startswith("acceleration-plan")]
 
 
-def mechanism_field(layout: SheetLayout, gap: float) -> Rect:
-    """The field of the mechanism's drawing (Appendix A: top left): from the
-    left of the free region to the tables, from its top down to the diagrams."""
+def mechanism_field(
+    layout: SheetLayout, gap: float, size: tuple[float, float] | None = None
+) -> Rect:
+    """The field of the mechanism's drawing (Appendix A: top left): a rectangle
+    from the free region's top-left corner, clear (by `gap`) of what was placed
+    before it (the diagrams, the tables). Of the right edges it may take (the
+    region's, or `gap` left of a placed element) the one in which a `size`
+    (width, height) drawing grows largest; without `size`, the largest field."""
     region = layout.region
-    right = region.left + region.width * MECHANISM_FIELD_SHARE
-    bottom = region.bottom
-    for e in layout.elements:
-        b = e.bounds
-        if e.name.startswith("table"):
-            right = max(right, min(region.right, b.left - gap)) if right < b.left else right
-        elif e.name.startswith("diagram"):
-            bottom = max(bottom, b.top + gap)
-    tables = [e.bounds.left for e in layout.elements if e.name.startswith("table")]
-    if tables:
-        right = max(region.left + region.width * MECHANISM_FIELD_SHARE, min(tables) - gap)
-    return Rect.from_bounds(region.left, min(bottom, region.top - 1.0), right, region.top)
+    boxes = [e.bounds for e in layout.elements]
+    rights = {region.right, *(b.left - gap for b in boxes if b.left - gap > region.left + 1.0)}
+    best: tuple[float, Rect] | None = None
+    for right in sorted(rights):
+        bottom = max(
+            [region.bottom]
+            + [b.top + gap for b in boxes if b.left < right + gap and b.right > region.left]
+        )
+        if bottom > region.top - 1.0:
+            continue
+        rect = Rect.from_bounds(region.left, bottom, right, region.top)
+        w, h = size if size is not None else (1.0, 1.0)
+        score = (
+            min(rect.width / max(w, 1e-9), rect.height / max(h, 1e-9))
+            if size is not None
+            else rect.width * rect.height
+        )
+        if best is None or score > best[0] + 1e-9:
+            best = (score, rect)
+    if best is None:
+        return Rect.from_bounds(region.left, region.top - 1.0, region.left + 1.0, region.top)
+    return best[1]
 
 
 def _try_layout(
@@ -1331,24 +1338,28 @@ def _try_layout(
     gap: float,
     with_field: bool,
     tables_width: float | None = None,
+    diagrams: str = "bottom-left",
 ) -> tuple[SheetLayout, dict[str, Rect], Rect | None]:
     """Place every sketch in `order`; the mechanism inside its field when
     `with_field` (LayoutError if it does not fit there); the tables within
-    `tables_width` mm of the right edge when given (a block, not a row)."""
+    `tables_width` mm of the right edge when given (a block, not a row); the
+    diagrams from the `diagrams` corner (bottom left, under the mechanism, as
+    Appendix A draws them, or bottom right, beside the title block, so that a
+    tall mechanism takes the sheet's height)."""
     layout = SheetLayout(page, gap=gap)
     region = layout.region
     placed: dict[str, Rect] = {}
     field: Rect | None = None
     for name in order:
         ext = sketches[name].extent()
-        corner = _PLACEMENT.get(name, "top-left")
+        corner = diagrams if name.startswith("diagram") else _PLACEMENT.get(name, "top-left")
         kind = "table" if name.startswith("table") else "drawing"
         within = None
         if kind == "table" and tables_width is not None:
             width = min(region.width, max(tables_width, ext.width))
             within = Rect(region.right - width, region.bottom, width, region.height)
         if name == "mechanism" and with_field:
-            field = mechanism_field(layout, gap)
+            field = mechanism_field(layout, gap, (ext.width, ext.height))
             if ext.width > field.width + 1e-6 or ext.height > field.height + 1e-6:
                 raise LayoutError(
                     f"mechanism: {ext.width:.0f} x {ext.height:.0f} mm is larger than "
@@ -1391,16 +1402,16 @@ def _may_fit(
     page: Page,
     sketches: Mapping[str, Sketch],
     order: Sequence[str],
-    arrangements: Sequence[float | None],
+    arrangements: Sequence[tuple[float | None, str]],
 ) -> tuple[bool, bool]:
     """Whether the sheet may fit with the stand-in mechanism in some
     arrangement _try_layout would try (the real drawing is at least as large,
     so where the stand-in fails the real one fails too), and whether the
     stand-in found its field in one that failed."""
     in_field = False
-    for gap, tables_width in itertools.product((8.0, 5.0), arrangements):
+    for gap, (tables_width, corner) in itertools.product((8.0, 5.0), arrangements):
         try:
-            _try_layout(page, sketches, order, gap, True, tables_width)
+            _try_layout(page, sketches, order, gap, True, tables_width, corner)
         except LayoutError as err:
             in_field = in_field or not str(err).startswith("mechanism")
             continue
@@ -1413,12 +1424,15 @@ def compose_sheet1(
 ) -> Sheet1:
     """Draw sheet 1 of `solution` on `backend`; returns the layout and scales used.
 
-    μ_l is the series value (1, 2, 2.5, 4, 5 × 10^k) that draws the mechanism
-    in all its positions largest within its field (top left: left of the
-    tables, above the diagrams); the plans keep the textbook's sizes (pa 100 …
-    150 mm, the acceleration plan's longest vector 100 … 200 mm); the diagrams
-    are drawn at μ_S = μ_l with whole-millimetre poles. Where the rest does
-    not fit, the mechanism goes a step smaller, then the acceleration plans.
+    The layout rule, in order: the mechanism at the series value μ_l (1, 2,
+    2.5, 4, 5 × 10^k) that draws it in all its positions largest within its
+    field (mechanism_field: top left, clear of the diagrams, placed bottom
+    left or bottom right, and of the tables, top right); the plans at the
+    guide's size (_plan_scales: each one's longest vector from the pole 100 …
+    200 mm), up to two series steps coarser where the sheet needs it, a plan
+    then drawn under 100 mm saying so; the diagrams at the Solution's μ_S (the
+    line under S says why where μ_S ≠ μ_l) and the tables. Where nothing
+    fits, _fallback draws the mechanism and the plans smaller still.
     """
     page = page if page is not None else Page.of("A1")
     check_language(lang)
@@ -1441,25 +1455,27 @@ def compose_sheet1(
         if width_m / mu_l > region.width or height_m / mu_l > region.height:
             continue
         placed_field = False
-        for shrink in (-1, 0, 1):
-            mu_a = _acceleration_scale(solution, shrink)
-            if mu_a is None:
-                continue
-            sketches, scales, drawn = _sketch_all(solution, look, lang, mu_a, mu_l, True, cache)
+        for shrink in range(3):
+            plan_mu = _plan_scales(solution, shrink)
+            sketches, scales, drawn = _sketch_all(solution, look, lang, plan_mu, mu_l, True, cache)
             sketches["mechanism"] = _bare_mechanism(solution, mu_l, look)
             order = _order(sketches, True)
             tables = [sketches[n].extent().width for n in order if n.startswith("table")]
             # the tables in a row across the top right, or in a block two rows high
-            arrangements = (None, max(max(tables), sum(tables) / 2.0 + 8.0))
+            arrangements = [
+                (width, corner)
+                for corner in ("bottom-left", "bottom-right")
+                for width in (None, max(max(tables), sum(tables) / 2.0 + 8.0))
+            ]
             may, in_field = _may_fit(page, sketches, order, arrangements)
             if not may:  # not even the links alone fit: no need to letter them
                 placed_field = placed_field or in_field
                 continue
             sketches["mechanism"] = mechanism(mu_l)
-            for gap, tables_width in itertools.product((8.0, 5.0), arrangements):
+            for gap, (tables_width, corner) in itertools.product((8.0, 5.0), arrangements):
                 try:
                     layout, placed, field = _try_layout(
-                        page, sketches, order, gap, True, tables_width
+                        page, sketches, order, gap, True, tables_width, corner
                     )
                 except LayoutError as err:
                     last = err
@@ -1506,7 +1522,6 @@ def _fallback(
     """A crowded sheet: the acceleration plans and the mechanism smaller, step
     by step from the file's μ_l, the diagrams apart if need be."""
     look = backend.look
-    base_a = _acceleration_scale(solution, 0) or _plan_scales(solution)[1]
     attempts = [
         (shrink, stacked, gap)
         for shrink in range(5)
@@ -1516,7 +1531,7 @@ def _fallback(
     for shrink, stacked, gap in attempts:
         mu_l = length_scale_step(float(solution.mu_l), shrink)
         sketches, scales, drawn = _sketch_all(
-            solution, look, lang, _next_scale(base_a, shrink), mu_l, stacked, cache
+            solution, look, lang, _plan_scales(solution, shrink), mu_l, stacked, cache
         )
         sketches["mechanism"] = _bare_mechanism(solution, mu_l, look)
         order = _order(sketches, stacked)

@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 
 from ..drawing.labels import Labels
-from ..drawing.layout import LayoutError, SheetLayout, first_free
+from ..drawing.layout import LayoutError, SheetLayout, pack
 from ..drawing.markup import equation_markup as _equation_markup
 from ..drawing.markup import force_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
@@ -929,7 +929,22 @@ def _force_scale(polygons: Sequence[ForcePolygon], steps: int = 0) -> float:
         return scale_step(mu, steps)
     limit = side / FORCE_PLAN.low
     coarsest = max(series(mu, limit), default=mu) if limit >= mu else mu
-    return min(scale_step(mu, steps), coarsest)
+    # no side past the guide's 300 mm: |F_PR| at its scale may leave the
+    # largest side up to twice as long
+    largest = max((p.largest for p in polygons), default=0.0)
+    finest = next(iter(series(largest / FORCE_PLAN.high * (1 - 1e-9), largest)))
+    return max(min(scale_step(mu, steps), coarsest), finest)
+
+
+def _polygon_note(polygons: Sequence[ForcePolygon], mu_F: float, lang: Language) -> str:
+    """Why a force polygon is drawn with its longest side below the guide's
+    150 mm (empty when it is not)."""
+    drawn = max((p.largest for p in polygons), default=0.0) / mu_F
+    if drawn <= 0.0 or drawn >= FORCE_PLAN.low * (1 - 1e-9):
+        return ""
+    return str(_words(lang)["polygon_reduced"]).format(
+        mm=f"{drawn:.0f}", lo=f"{FORCE_PLAN.low:g}", hi=f"{FORCE_PLAN.high:g}"
+    )
 
 
 # indices of the textbook's symbols that differ by language
@@ -957,31 +972,6 @@ def _with_note(sketch: Sketch, note: str) -> Sketch:
     extra.rich_text((ext.left + _PAD, ext.bottom - 3.0), note, _TEXT)
     gid = next(c["id"] for c in sketch.calls if c.name == "begin_group")
     out.add_to_last_group(extra, gid)
-    return out
-
-
-def _pack(
-    page: Page,
-    items: Sequence[tuple[str, float, float, str]],
-    gap: float,
-    placed: dict[str, Rect] | None = None,
-) -> dict[str, Rect] | None:
-    """Rectangles for (name, width, height, corner) in turn, as SheetLayout.place
-    finds them (inside the frame less 5 mm, `gap` mm from the title block, from
-    those `placed` before and from each other, the candidate nearest the
-    corner, rows first), computed on arrays: None when one finds no room."""
-    layout = SheetLayout(page, gap=gap)
-    region = layout.region
-    tb = layout["title-block"].bounds
-    boxes = [(tb.left, tb.bottom, tb.right, tb.top)]
-    boxes += [(r.left, r.bottom, r.right, r.top) for r in (placed or {}).values()]
-    out: dict[str, Rect] = dict(placed or {})
-    for name, w, h, corner in items:
-        at = first_free(region, np.array(boxes), w, h, gap, corner)
-        if at is None:
-            return None
-        out[name] = Rect(at[0], at[1], w, h)
-        boxes.append((at[0], at[1], at[0] + w, at[1] + h))
     return out
 
 
@@ -1077,10 +1067,15 @@ class _Composer:
         for name, polygons, title in self.polygon_sets:
             mu_F = scales[f"mu_F {name}"]
             gid = f"force-polygon-{name}"
+            note = _polygon_note(polygons, mu_F, lang)
             sketches[gid] = self.memo(
                 (gid, mu_F),
                 lambda: sketch_force_polygons(polygons, mu_F, look, lang, gid, title),
             )
+            if note:
+                sketches[gid] = self.memo(
+                    ("noted", gid, mu_F), lambda: _with_note(sketches[gid], note)
+                )
 
         def lever() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
             arms: list[tuple[str, float]] = []
@@ -1130,9 +1125,9 @@ class _Composer:
             # the loaded mechanism top left, the tables top right beside it; else
             # the tables first (the same in every order) and the mechanism under them
             for head in ([first, *tables], [*tables, first]):
-                placed = self.memo(("head", gap, *head), lambda: _pack(self.page, head, gap))
+                placed = self.memo(("head", gap, *head), lambda: pack(self.page, head, gap))
                 if placed is not None:
-                    placed = _pack(self.page, rest, gap, placed)
+                    placed = pack(self.page, rest, gap, placed)
                 if placed is not None:
                     break
             if placed is None:

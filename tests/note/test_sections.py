@@ -96,8 +96,9 @@ def drawn_scales(path: Path, lang: str) -> tuple[SimpleNamespace, SimpleNamespac
     plans = S.plan_positions
     sheet1 = SimpleNamespace(
         mu_l=s1["mu_l"],
-        mu_V={i: s1["mu_V"] for i in plans},
-        mu_a={i: s1["mu_a"] for i in plans},
+        # each position's plans at their own μ where one cannot hold both (#21)
+        mu_V={i: s1.get(f"mu_V {i}", s1["mu_V"]) for i in plans},
+        mu_a={i: s1.get(f"mu_a {i}", s1["mu_a"]) for i in plans},
     )
     sheet2 = SimpleNamespace()
     if S.forces is not None:

@@ -241,7 +241,9 @@ def test_draw_both_sheets(tmp_path):
 # Before the sheet grew its drawings to fill the field (issue 13): shaper 0.51,
 # six_link_press 0.64, five_dyads 0.53, forces_scotch_yoke 0.31, offset
 # 0.51, four_bar 0.66; after 0.64, 0.71, 0.71, 0.41, 0.62, 0.74.
-FIELD_USED = {"shaper": 0.62, "six_link_press": 0.70, "five_dyads": 0.68}
+# six_link_press reached 0.70 with the polygon of group 4-5 drawn 324 mm long,
+# past the guide's 300 mm (issue 21): within the guide it covers 0.685.
+FIELD_USED = {"shaper": 0.62, "six_link_press": 0.68, "five_dyads": 0.68}
 FIELD_USED_ANY = 0.40
 
 

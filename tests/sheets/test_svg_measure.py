@@ -59,8 +59,9 @@ def test_plan_vectors_measured_in_the_svg(stem):
     sheet, root = _svg(compose_sheet1, analysis)
     for i in analysis.plan_positions:
         view = analysis.plan(i)
-        for kind, images, mu in (("velocity", view.velocity_images, sheet.scales["mu_V"]),
-                                 ("acceleration", view.acceleration_images, sheet.scales["mu_a"])):
+        # each position's plans at their own μ where one μ cannot hold both (issue 21)
+        for kind, images, mu in (("velocity", view.velocity_images, sheet.record.mu_V[i]),
+                                 ("acceleration", view.acceleration_images, sheet.record.mu_a[i])):
             values = [float(np.hypot(*v)) for v in images.values()]
             measured = [c for c in _arrows(_group(root, f"{kind}-plan-{i}")) if c[0] == "main"]
             assert measured
