@@ -360,14 +360,29 @@ def names_unique(v: SheetView) -> Iterator[Finding]:
 def arrows_named(v: SheetView) -> Iterator[Finding]:
     boxes = [lab.box for lab in v.labels]
     tree = STRtree(boxes) if boxes else None
+    led = [lab for lab in v.labels if lab.leader is not None]
     for c in v.calls:
         if not isinstance(c, Arrow) or not (v.cls_of(c) & {"plan", "force-polygon", "lever"}):
             continue
         if c.length < 1.0:
             continue
         shaft = LineString([c.start, c.end])
-        if tree is None or not len(tree.query(shaft, predicate="dwithin", distance=ARROW_NAME_MM)):
-            yield Finding("arrows-named", "a vector with no name near it", _at(shaft), v.name)
+        if tree is not None and len(tree.query(shaft, predicate="dwithin", distance=ARROW_NAME_MM)):
+            continue
+        if any(_led_to(lab, shaft) for lab in led):
+            continue  # its name stands further out, joined to it by its own leader
+        yield Finding("arrows-named", "a vector with no name near it", _at(shaft), v.name)
+
+
+def _led_to(lab: _Label, shaft: LineString) -> bool:
+    """Whether `lab` names the arrow `shaft` and its leader touches it."""
+    n = lab.naming
+    if n is None or n.end is None or lab.leader is None:
+        return False
+    named = LineString([n.anchor, n.end])
+    if named.hausdorff_distance(shaft) > 0.5:
+        return False
+    return LineString([lab.leader.start, lab.leader.end]).distance(shaft) < 1.0
 
 
 def letter_height(v: SheetView) -> Iterator[Finding]:

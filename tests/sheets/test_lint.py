@@ -78,6 +78,23 @@ def test_a_leader_may_leave_a_named_segment_anywhere_along_it():
     assert "crosses" in rules(b, "label-near")[0].message
 
 
+def test_a_vector_named_far_off_through_its_own_leader_is_named():
+    def drawn(leader: bool) -> RecordingBackend:
+        b = RecordingBackend()
+        with b.group("v", "plan"):
+            b.arrow((100, 100), (160, 100))
+            with b.naming("pb", "arrow", (100, 100), (160, 100)):
+                if leader:
+                    b.line((130, 100), (130, 114.5), "thin")
+                b.text((130, 116), "pb", 3.5, anchor="center", valign="baseline")
+        return b
+
+    assert [f.message for f in rules(drawn(False), "arrows-named")] == [
+        "a vector with no name near it"
+    ]
+    assert rules(drawn(True), "arrows-named") == []
+
+
 def test_no_label_on_a_line_or_on_another_label():
     b = RecordingBackend()
     with b.group("p", "plan"):
