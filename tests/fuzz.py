@@ -16,7 +16,7 @@ The property: `mmt_plans.load(file)`, mmt_plans.solve(`).to_json()` and
 `json.dumps(..., allow_nan=False)` either succeed with every number finite,
 or raise an `MmtError`, and a `SpecError` names the file, and a fix (or at
 least the entry), in a message whose every line is printable. Anything else
-(another exception, a non-finite number, more than SLOW_S seconds) is a
+(another exception, a non-finite number, more than SLOW_S seconds of processor time) is a
 finding.
 
     .venv/bin/python tests/fuzz.py --cases 20000          # what `make fuzz` runs
@@ -49,9 +49,14 @@ ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "samples"
 SOURCES = sorted(SAMPLES.glob("*.toml")) + sorted((SAMPLES / "tasks").rglob("*.toml"))
 
+# Every limit is in processor seconds of this process (user + system), not on
+# the wall clock: on a machine shared with other work the wall clock also
+# counts the waiting for a processor (a case of 8 s of processor took 120 s of
+# wall time beside 15 other busy processes, and was called hung).
 SLOW_S = 5.0  # a case slower than this is a finding
 DRAW_SLOW_S = 60.0  # drawing both sheets of a mutant slower than this is a finding
-HANG_S = 120.0  # a case is stopped (SIGALRM) after this
+HANG_S = 120.0  # a case is stopped (SIGPROF) after this much processor time
+HANG_WALL_S = 3600.0  # ... or (SIGALRM) after this much wall time: one that waits
 
 EXTREMES: tuple[Any, ...] = (0, -0.0, 1e308, -1e308, 5e-324, math.nan, math.inf, -math.inf,
                              2**63 - 1, -(2**63), 10**30, 1, -1, 0.5, 1e-300)
@@ -834,7 +839,9 @@ class Outcome:
 
     @property
     def slow(self) -> bool:
-        return self.seconds > SLOW_S or self.draw_seconds > DRAW_SLOW_S
+        """Over an absolute limit, in processor time (the wall clock where
+        the processor time was not taken)."""
+        return self.work > SLOW_S or self.draw_work > DRAW_SLOW_S
 
 
 def draw_sheets(analysis) -> None:
@@ -885,9 +892,11 @@ def _message_ok(err: Exception, path: str) -> str:
 
 
 def check(data: bytes, path: str | None = None, timeout: float = HANG_S,
-          draw: bool = False) -> Outcome:
+          draw: bool = False, wall_timeout: float = HANG_WALL_S) -> Outcome:
     """Run the property on a file holding `data`; with `draw`, an analysed
-    mutant's sheets are drawn too (an MmtError there is clean)."""
+    mutant's sheets are drawn too (an MmtError there is clean). The case is
+    stopped as hung after `timeout` seconds of processor time or
+    `wall_timeout` seconds of wall time (0: no limit)."""
     import numpy as np
 
     import mmt_plans
@@ -899,10 +908,14 @@ def check(data: bytes, path: str | None = None, timeout: float = HANG_S,
         fd, path = tempfile.mkstemp(suffix=".toml", prefix="mutant-")
         os.close(fd)
     Path(path).write_bytes(data)
-    use_alarm = hasattr(signal, "setitimer") and timeout > 0
-    if use_alarm:
-        old = signal.signal(signal.SIGALRM, _alarm)
-        signal.setitimer(signal.ITIMER_REAL, timeout)
+    timers = [(signal.ITIMER_PROF, signal.SIGPROF, timeout),
+              (signal.ITIMER_REAL, signal.SIGALRM, wall_timeout)
+              ] if hasattr(signal, "setitimer") else []
+    timers = [(which, sig, limit) for which, sig, limit in timers if limit > 0]
+    old_handlers = []
+    for which, sig, limit in timers:
+        old_handlers.append(signal.signal(sig, _alarm))
+        signal.setitimer(which, limit)
     t0, c0 = time.perf_counter(), time.process_time()
     try:
         with np.errstate(all="ignore"), warnings.catch_warnings():
@@ -924,12 +937,14 @@ def check(data: bytes, path: str | None = None, timeout: float = HANG_S,
                 drawn = "clean error"
             except Exception as err:
                 return Outcome("unexpected", dt, f"draw: {type(err).__name__} at {_where(err)}: "
-                               f"{str(err)[:200]}", "failed", time.perf_counter() - t1)
+                               f"{str(err)[:200]}", "failed", time.perf_counter() - t1,
+                               cpu=cdt, draw_cpu=time.process_time() - c1)
             return Outcome("analysed", dt, "", drawn, time.perf_counter() - t1, cpu=cdt,
                            draw_cpu=time.process_time() - c1)
     except _Hung as err:
-        return Outcome("hung", time.perf_counter() - t0,
-                       f"stopped after {timeout:g} s at {_where(err)}")
+        dt, cdt = time.perf_counter() - t0, time.process_time() - c0
+        return Outcome("hung", dt, f"stopped after {cdt:.1f} s of processor ({dt:.0f} s of "
+                       f"wall time) at {_where(err)}", cpu=cdt)
     except mmt_plans.MmtError as err:
         dt, cdt = time.perf_counter() - t0, time.process_time() - c0
         problem = _message_ok(err, path)
@@ -937,13 +952,13 @@ def check(data: bytes, path: str | None = None, timeout: float = HANG_S,
             return Outcome("bad message", dt, f"{problem}: {str(err)[:300]!r}", cpu=cdt)
         return Outcome("clean error", dt, f"{type(err).__name__}: {str(err)[:200]}", cpu=cdt)
     except Exception as err:  # the finding the fuzzer is for
-        dt = time.perf_counter() - t0
+        dt, cdt = time.perf_counter() - t0, time.process_time() - c0
         return Outcome("unexpected", dt, f"{type(err).__name__} at {_where(err)}: "
-                       f"{str(err)[:200]}")
+                       f"{str(err)[:200]}", cpu=cdt)
     finally:
-        if use_alarm:
-            signal.setitimer(signal.ITIMER_REAL, 0)
-            signal.signal(signal.SIGALRM, old)
+        for (which, sig, _), old in zip(timers, old_handlers):
+            signal.setitimer(which, 0)
+            signal.signal(sig, old)
         if own:
             os.unlink(path)
 
@@ -1027,15 +1042,17 @@ def slow_cases(timed: list[tuple[Mutant, Outcome]]) -> list[tuple[Mutant, Outcom
 
 
 def run(seed: int, cases: int, start: int = 0, echo=print, save: Path | None = None,
-        every: int = 0, draw_every: int = 0, known: list | None = None
-        ) -> tuple[Counter, list[tuple[Mutant, Outcome]]]:
+        every: int = 0, draw_every: int = 0, known: list | None = None,
+        stop=None) -> tuple[Counter, list[tuple[Mutant, Outcome]]]:
     """Run `cases` mutants; (counts, findings). Counts: clean errors, analysed,
     unexpected, non-finite, bad messages, hung, known bugs, slow (> SLOW_S,
     drawing > DRAW_SLOW_S, or > SLOW_FACTOR times its family's median:
     slow_cases); with `draw_every` k, every k-th analysed mutant's sheets are
     drawn too ("drawn", "draw: clean error"). A mutant may be written under
     a hostile file name (HOSTILE_PATHS). The mutants of known bugs are
-    appended to `known` as (mutant, outcome, bug) when it is given."""
+    appended to `known` as (mutant, outcome, bug) when it is given. With
+    `stop`, a function, the run ends before the next case once it answers
+    true (counts["cases"]: how many were run)."""
     counts: Counter = Counter()
     findings: list[tuple[Mutant, Outcome]] = []
     timed: list[tuple[Mutant, Outcome]] = []
@@ -1043,6 +1060,8 @@ def run(seed: int, cases: int, start: int = 0, echo=print, save: Path | None = N
     t0 = time.perf_counter()
     try:
         for case in range(start, start + cases):
+            if stop is not None and stop():
+                break
             m = mutant(seed, case)
             draw = bool(draw_every) and counts["analysed"] % draw_every == draw_every - 1
             path = folder / m.name
@@ -1056,6 +1075,7 @@ def run(seed: int, cases: int, start: int = 0, echo=print, save: Path | None = N
                 if known is not None:
                     known.append((m, outcome, known_bug(outcome)))
             counts[kind] += 1
+            counts["cases"] += 1
             if kind != "known bug":  # counted once, as the bug it is (a hang is not slow besides)
                 timed.append((m, outcome))
                 if outcome.slow:
@@ -1077,7 +1097,8 @@ def run(seed: int, cases: int, start: int = 0, echo=print, save: Path | None = N
         if o.slow:  # counted already (over the absolute limit)
             continue
         counts["slow"] += 1
-        findings.append((m, Outcome("slow", o.seconds, why, o.drawn, o.draw_seconds)))
+        findings.append((m, Outcome("slow", o.seconds, why, o.drawn, o.draw_seconds, o.cpu,
+                                    o.draw_cpu)))
         if save is not None:
             save.mkdir(parents=True, exist_ok=True)
             (save / f"case{m.case}.toml").write_bytes(m.data)
@@ -1101,16 +1122,31 @@ def main(argv: list[str] | None = None) -> int:
         if args.show:
             sys.stdout.write(m.data.decode("utf-8", errors="backslashreplace") + "\n")
         o = check(m.data, draw=bool(args.draw_every))
-        print(f"{o.kind} in {o.seconds:.2f} s: {o.detail}"
-              + (f"; sheets: {o.drawn} in {o.draw_seconds:.1f} s" if o.drawn else ""))
+        print(f"{o.kind} in {o.seconds:.2f} s ({o.work:.2f} s of processor): {o.detail}"
+              + (f"; sheets: {o.drawn} in {o.draw_seconds:.1f} s ({o.draw_work:.1f} s of "
+                 f"processor)" if o.drawn else ""))
         return 0
     t0 = time.perf_counter()
     print(f"fuzzing {args.cases} mutants of {len(SOURCES)} sample files (seed {args.seed}) ...")
     known: list = []
-    counts, findings = run(args.seed, args.cases, args.start, save=args.save, every=1000,
-                           draw_every=args.draw_every, known=known)
+    stopping: list[int] = []  # SIGTERM or SIGINT: finish the case, report what was run
+
+    def stop_after_this_case(signum, frame):  # noqa: ARG001
+        stopping.append(signum)
+
+    old = {sig: signal.signal(sig, stop_after_this_case) for sig in (signal.SIGTERM, signal.SIGINT)}
+    try:
+        counts, findings = run(args.seed, args.cases, args.start, save=args.save, every=1000,
+                               draw_every=args.draw_every, known=known,
+                               stop=lambda: bool(stopping))
+    finally:
+        for sig, handler in old.items():
+            signal.signal(sig, handler)
     total = time.perf_counter() - t0
-    print(f"\n{args.cases} mutants in {total:.0f} s:")
+    done = counts.get("cases", args.cases)
+    print(f"\n{done} mutants (cases {args.start}..{args.start + done - 1}) in {total:.0f} s"
+          + (f", stopped by signal {stopping[0]} before the {args.cases}" if stopping else "")
+          + ":")
     for kind in ("clean error", "analysed", "unexpected", "non-finite", "bad message", "hung",
                  "known bug", "slow", "drawn", "draw: clean error"):
         print(f"  {kind:17s} {counts.get(kind, 0)}")
@@ -1121,11 +1157,11 @@ def main(argv: list[str] | None = None) -> int:
     if findings:
         print("\nfindings (reproduce with --case N --show):")
         for m, o in findings[:200]:
-            print(f"  {m.describe()}\n      -> {o.kind} ({o.seconds:.1f} s"
-                  + (f", sheets {o.draw_seconds:.1f} s" if o.drawn else "") + f"): {o.detail}")
+            print(f"  {m.describe()}\n      -> {o.kind} ({o.work:.1f} s of processor"
+                  + (f", sheets {o.draw_work:.1f} s" if o.drawn else "") + f"): {o.detail}")
     bad = sum(counts.get(k, 0)
               for k in ("unexpected", "non-finite", "bad message", "hung", "slow"))
-    return 1 if bad else 0
+    return 1 if bad or stopping else 0
 
 
 if __name__ == "__main__":

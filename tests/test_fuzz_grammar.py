@@ -119,3 +119,64 @@ def test_a_small_family_is_compared_with_its_kind_among_the_same_outcome():
     timed += [(fuzz.Mutant(100 + i, SMALL, b"", kind="structural"), fuzz.Outcome("analysed", s))
               for i, s in enumerate([1.2, 1.1, 0.9])]
     assert fuzz.slow_cases(timed) == []
+
+
+def test_slow_and_hung_are_judged_in_processor_time_not_on_the_wall_clock():
+    # fuzz seed 12 case 3888 (five_dyads, link 1 scaled) drew in 56 s of wall
+    # time but 6 s of processor beside 15 busy processes: not slow
+    waited = fuzz.Outcome("analysed", 9.0, "", "drawn", 75.0, cpu=0.2, draw_cpu=6.4)
+    assert not waited.slow
+    assert fuzz.Outcome("analysed", 0.3, "", "drawn", 7.0, cpu=0.2, draw_cpu=61.0).slow
+    assert fuzz.Outcome("analysed", 6.0).slow  # no processor time taken: the wall clock
+
+
+def test_a_busy_loop_is_stopped_by_the_processor_clock(monkeypatch):
+    import mmt_plans
+
+    def spin(path):
+        while True:
+            pass
+
+    monkeypatch.setattr(mmt_plans, "load", spin)
+    outcome = fuzz.check(b"", timeout=0.3)
+    assert outcome.kind == "hung" and "s of processor" in outcome.detail
+    assert outcome.work >= 0.25  # the kernel's accounting is in ticks
+
+
+def test_a_case_waiting_without_working_is_stopped_by_the_wall_clock(monkeypatch):
+    import time
+
+    import mmt_plans
+
+    monkeypatch.setattr(mmt_plans, "load", lambda path: time.sleep(30))
+    outcome = fuzz.check(b"", timeout=60, wall_timeout=0.3)
+    assert outcome.kind == "hung" and outcome.seconds < 10
+
+
+def test_a_stopped_run_reports_the_cases_it_ran():
+    # a long run on a shared machine may be stopped (SIGTERM): what it ran is
+    # still counted and reported, and the run does not pass
+    asked = iter([False, False, True])
+    counts, _ = fuzz.run(1, 10, start=0, stop=lambda: next(asked))
+    assert counts["cases"] == 2
+    assert counts["cases"] == sum(counts[k] for k in (
+        "analysed", "clean error", "unexpected", "non-finite", "bad message", "hung", "known bug"))
+
+
+def test_sigterm_ends_make_fuzz_after_the_case_with_its_counts(capsys, monkeypatch):
+    import os
+    import signal
+
+    real = fuzz.check
+    calls = []
+
+    def check_then_terminate(*a, **k):
+        calls.append(1)
+        if len(calls) == 2:
+            os.kill(os.getpid(), signal.SIGTERM)
+        return real(*a, **k)
+
+    monkeypatch.setattr(fuzz, "check", check_then_terminate)
+    assert fuzz.main(["--cases", "50", "--seed", "1"]) == 1
+    out = capsys.readouterr().out
+    assert "2 mutants (cases 0..1)" in out and "stopped by signal 15 before the 50" in out

@@ -379,8 +379,17 @@ def test_a_dyad_with_both_outer_pairs_on_the_frame_is_a_structural_error(tmp_pat
     assert "(P, Q) on the frame" in message and "no pair to a moving link" in message
     path = tmp_path / "truss.toml"
     path.write_text(TRUSS)
-    for args in (["analyze", path], ["draw", path, "-o", tmp_path / "out", "--format", "svg"]):
+    # the issue: draw failed with a TypeError, variants with a ValueError
+    for args in (["analyze", path], ["draw", path, "-o", tmp_path / "out", "--format", "svg"],
+                 ["note", path, "-o", tmp_path / "note.pdf"],
+                 ["variants", path, "--count", "2", "-o", tmp_path / "variants"]):
         clean_exit_2(invoke(*args), "group II(4,5)")
+    assert not (tmp_path / "variants").exists() and not (tmp_path / "note.pdf").exists()
+    batch = invoke("batch", path, "-o", tmp_path / "batch")
+    assert batch.exit_code == 1 and "Traceback" not in batch.output
+    (line,) = [ln for ln in batch.stderr.splitlines() if ln.startswith("error: ")]
+    assert line.startswith(f"error: {path}: analysis: group II(4,5)")  # the file named once
+    assert line.count(str(path)) == 1
 
 
 def test_a_group_hung_on_a_frame_only_group_is_refused_too():

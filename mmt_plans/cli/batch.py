@@ -96,7 +96,11 @@ def batch(
         )
     for r in results:
         if not r.ok:
-            click.echo(f"error: {shown(r.path)}: {r.message}", err=True)
+            name = shown(r.path)
+            # a stage's message names the file already ("analysis: FILE: ..."):
+            # the line names it once
+            message = (r.message or "").replace(f": {name}: ", ": ", 1)
+            click.echo(f"error: {name}: {message}", err=True)
     click.echo(summary_table(results, out_dir))
     csv_path = write_summary_csv(results, out_dir / "summary.csv")
     failed = sum(not r.ok for r in results)
