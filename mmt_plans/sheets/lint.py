@@ -536,6 +536,27 @@ def designation(v: SheetView) -> Iterator[Finding]:
 _REDUCED = re.compile(r"reduced|зменшено", re.IGNORECASE)
 
 
+_RESISTANCE = re.compile(r"^F_\{?(PR|КО)\}?$")
+
+
+def _resistance_arrows(v: SheetView, arrows: Sequence[Arrow]) -> list[Arrow]:
+    """The arrows of `arrows` named as the production resistance F_PR (F_КО):
+    by the arrow itself, or by the middle of its shaft (a polygon's sides)."""
+    named = [
+        lab.naming
+        for lab in v.labels
+        if lab.naming is not None and _RESISTANCE.match(lab.naming.markup)
+    ]
+
+    def names(n: Naming, a: Arrow) -> bool:
+        if n.end is not None:
+            return math.dist(n.anchor, a.start) < 0.05 and math.dist(n.end, a.end) < 0.05
+        middle = ((a.start[0] + a.end[0]) / 2, (a.start[1] + a.end[1]) / 2)
+        return math.dist(n.anchor, middle) < 0.05
+
+    return [a for a in arrows if any(names(n, a) for n in named)]
+
+
 def guide_sizes(v: SheetView) -> Iterator[Finding]:
     reduced = any(_REDUCED.search(c.content) for c in v.texts)
     for g, k in v.classes.items():
@@ -552,8 +573,12 @@ def guide_sizes(v: SheetView) -> Iterator[Finding]:
             size, (lo, hi) = max(a.length for a in rays), PLAN_MM
             what = "longest vector from the pole"
         elif k == "force-polygon":
-            size, (lo, hi) = max(a.length for a in arrows), POLYGON_MM
-            what = "longest side"
+            # the guide sizes a polygon by its production resistance, |F_PR| =
+            # 150 … 300 mm (seed 003, formula (20)); one without it by its
+            # longest side
+            resistance = _resistance_arrows(v, arrows)
+            size, (lo, hi) = max(a.length for a in resistance or arrows), POLYGON_MM
+            what = "|F_PR|" if resistance else "longest side"
         else:
             continue
         if size < lo - 0.5 and not reduced or size > hi + 0.5:

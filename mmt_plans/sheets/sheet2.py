@@ -929,11 +929,12 @@ def _force_scale(polygons: Sequence[ForcePolygon], steps: int = 0) -> float:
         return scale_step(mu, steps)
     limit = side / FORCE_PLAN.low
     coarsest = max(series(mu, limit), default=mu) if limit >= mu else mu
-    # no side past the guide's 300 mm: |F_PR| at its scale may leave the
-    # largest side up to twice as long
+    # no side past the guide's 300 mm where a series value keeps |F_PR| at
+    # 150 mm or more too; where none does (the series' steps are coarse), the
+    # guide's own rule, |F_PR| = 150 … 300 mm (seed 003, formula (20)), wins
     largest = max((p.largest for p in polygons), default=0.0)
     finest = next(iter(series(largest / FORCE_PLAN.high * (1 - 1e-9), largest)))
-    return max(min(scale_step(mu, steps), coarsest), finest)
+    return max(min(scale_step(mu, steps), coarsest), min(finest, coarsest))
 
 
 def _polygon_note(polygons: Sequence[ForcePolygon], mu_F: float, lang: Language) -> str:

@@ -219,6 +219,29 @@ def test_guide_sizes_prose_and_an_empty_field():
     assert "empty" in lint(v, ["field-filled"])[0].message
 
 
+def test_a_polygon_with_the_production_resistance_is_sized_by_it():
+    # seed 003, formula (20): |F_PR| = 150 ... 300 mm; the polygon's other sides
+    # follow from the forces (here the longest is 320 mm, as the series' step
+    # between 5 and 8 N/mm leaves it)
+    def polygon(f_pr_mm: float, longest_mm: float, named: str = "F_{PR}") -> RecordingBackend:
+        b = RecordingBackend()
+        with b.group("force-polygon-4-5", "force-polygon"):
+            b.arrow((100, 100), (100 + f_pr_mm, 100))
+            label(b, named, "point", (100 + f_pr_mm / 2, 100), at=(100 + f_pr_mm / 2, 104))
+            b.arrow((100 + f_pr_mm, 100), (100 + f_pr_mm, 100 + longest_mm))
+        return b
+
+    assert rules(polygon(184, 320), "guide-sizes") == []
+    assert rules(polygon(184, 320, "F_{КО}"), "guide-sizes", "uk") == []
+    found = rules(polygon(115, 200), "guide-sizes")
+    assert [f.message for f in found] == ["force-polygon-4-5: |F_PR| 115 mm (guide 150–300 mm)"]
+    # without the production resistance the longest side is the measure
+    found = rules(polygon(184, 320, "R_{05}"), "guide-sizes")
+    assert [f.message for f in found] == [
+        "force-polygon-4-5: longest side 320 mm (guide 150–300 mm)"
+    ]
+
+
 # --- real sheets: the text rules hold (a fixed subset) ------------------------------------
 
 TEXT_RULES = {"letter-height", "table-format", "language", "designation", "no-dev-prose",
