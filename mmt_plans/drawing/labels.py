@@ -85,7 +85,9 @@ _LEADER_DIRS = tuple(np.exp(1j * math.radians(15.0 * k)) for k in range(24))
 # past the pin and the lines that meet there
 _LEADER_START = 1.8
 _LEADER_ALONG = (1.5, 8.0)  # a leader longer (mm) within this of a line runs along it
-_LEADER_CROSSINGS = (2, 6)  # thin lines a leader may cross where none crosses fewer
+# thin lines a leader may cross where none crosses fewer: the last (a pole
+# ringed by a lever's arms and lines of action) before a name stands untied
+_LEADER_CROSSINGS = (2, 6, 12)
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
 

@@ -129,3 +129,17 @@ def test_a_point_inside_a_block_is_named_beside_the_block():
     assert footprint.distance(box(-6.0, -3.5, 6.0, 3.5)) <= NEAR_MM
     assert _leaders(sk) == [] and labels.far == 0
     assert _findings(sk, ["label-near", "label-clear"]) == []
+
+
+def test_a_point_ringed_by_many_thin_lines_is_led_across_them():
+    """Eight thin circles 1.5 mm apart round a point (a lever's arms and lines
+    of action round its pole): no place near it is free and every leader
+    crosses eight thin lines. A leader across them still ties the name to the
+    point; a name written beyond them untied would name nothing."""
+    sk = _sketch()
+    for k in range(8):
+        sk.circle((0.0, 0.0), 2.5 + 1.5 * k, "thin")
+    labels = Labels(sk, 3.5)
+    labels.place((0.0, 0.0), "p", towards=(-1.0, 1.0))
+    assert len(_leaders(sk)) == 1 and labels.far == 0
+    assert _findings(sk, ["label-near", "label-clear"]) == []
