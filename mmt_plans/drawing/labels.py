@@ -7,6 +7,9 @@ places round the anchor nearest first, and writes the label at the first one
 that touches neither. One rule holds every label, the sheet linter's
 label-near: its box is within NEAR_MM of what it names (the point, or the
 segment of an arrow or a link), or a thin leader of its own joins the two.
+A point drawn inside a small filled outline (a slider's block: its pin, its
+mass centre) is named beside the outline, as a draughtsman writes it: the
+distance is measured to the outline (`enclosing`), and a leader starts on it.
 So where nothing near is free it goes further out and draws a leader from
 the anchor to it (one that crosses nothing first, else a few thin lines;
 never a main line, lettering, an arrowhead or a dot). Where no leader finds
@@ -35,7 +38,7 @@ from shapely.geometry.base import BaseGeometry
 from ..render.backend import PointLike
 from ..render.recording import Call, NamingKind, RecordingBackend
 
-__all__ = ["NEAR_MM", "Labels", "arc_line", "drawn_shapes"]
+__all__ = ["BLOCK_MM", "NEAR_MM", "Labels", "arc_line", "drawn_shapes", "enclosing"]
 
 # The rule of every label (and of the sheet linter's label-near): its box
 # within NEAR_MM of what it names, or a thin leader of its own joins the two.
@@ -43,6 +46,10 @@ NEAR_MM = 6.0
 # what a candidate box may be from what it names: the box written is the
 # lettering's, up to 0.2 mm inside the box the placer keeps free
 _NEAR_KEPT = NEAR_MM - 0.5
+# a filled outline no wider or taller than this (mm) that holds a named point
+# is a symbol drawn round it (a slider's block, 12 × 7 mm): the point's name
+# is near when it is near the outline
+BLOCK_MM = 15.0
 
 # the directions tried round an anchor, preferred first: the given side, then
 # round the compass
@@ -78,7 +85,9 @@ _LEADER_DIRS = tuple(np.exp(1j * math.radians(15.0 * k)) for k in range(24))
 # past the pin and the lines that meet there
 _LEADER_START = 1.8
 _LEADER_ALONG = (1.5, 8.0)  # a leader longer (mm) within this of a line runs along it
-_LEADER_CROSSINGS = (2, 6)  # thin lines a leader may cross where none crosses fewer
+# thin lines a leader may cross where none crosses fewer: the last (a pole
+# ringed by a lever's arms and lines of action) before a name stands untied
+_LEADER_CROSSINGS = (2, 6, 12)
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
 
@@ -118,6 +127,7 @@ class Labels:
         self._clearance: list[float] = []
         self._heavy: list[bool] = []  # which obstacles are main (heavy) lines: never crossed
         self._leaders: set[int] = set()  # which obstacles are leaders (never crossed)
+        self._outlines: list[BaseGeometry] = []  # filled polygons drawn (blocks): see `enclosing`
         self._tree: _ObstacleIndex | None = None
         self._grown: BaseGeometry | None = None
         self.unsettled = 0  # labels written where they cover something: no place was free
@@ -179,6 +189,8 @@ class Labels:
             heavy = getattr(c, "line", None) == "main"
             for shape in drawn_shapes(c, self.sketch):
                 self.avoid(shape, self.clearance, heavy=heavy)
+                if c.name == "polygon" and shape.geom_type == "Polygon":
+                    self._outlines.append(shape)
         self._seen = len(calls)
 
     def covered(self, shape: BaseGeometry) -> float:
@@ -435,8 +447,12 @@ class Labels:
         leader = leader if self.leaders else None
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = self._label_cost(x0, y0, x1, y1)
+        # a point inside a block is named beside the block
+        outline = enclosing(names[1], self._outlines) if names and names[2] is None else None
         # the one rule: written within NEAR_MM of what it names, or led to it
-        near = _gap(names, x0, y0, x1, y1) <= _NEAR_KEPT if names is not None else cost >= 0.0
+        near = (
+            _gap(names, x0, y0, x1, y1, outline) <= _NEAR_KEPT if names is not None else cost >= 0.0
+        )
         # The obstacles are asked about one ring of candidates at a time, nearest
         # first: most labels find room in the first ring (the same pick as asking
         # about all of them, since the candidates are in order of preference).
@@ -457,7 +473,7 @@ class Labels:
         if k < 0 and leader is not None:
             # nothing near is free: further out, tied to it by a leader that
             # crosses nothing, else only thin lines
-            found = self._leader_place(leader, w, h, drop, names)
+            found = self._leader_place(leader, w, h, drop, names, outline)
             if found is not None:
                 (lx, ly), line = found
                 cx, cy = np.array([lx]), np.array([ly])
@@ -507,15 +523,21 @@ class Labels:
         h: float,
         drop: float,
         names: tuple[NamingKind, PointLike, PointLike | None] | None = None,
+        outline: BaseGeometry | None = None,
     ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
         """The centre of the first free box further out round the anchor that a
         straight leader from the anchor reaches without touching anything but
         what meets at the anchor (a leader that crosses no line first, else one
         that crosses a few thin lines); with the leader (its start, its end).
-        A segment's or an arrow's label may be led from along it too. None if
+        A segment's or an arrow's label may be led from along it too; a point's
+        inside a block (`outline`), from the block's corners and edges. None if
         no place is free."""
         (ax0, ay0), towards, distance = (float(leader[0][0]), float(leader[0][1])), *leader[1:]
         starts = [(ax0, ay0)]
+        if outline is not None:
+            ring = shapely.get_coordinates(outline.exterior)[:-1]
+            mids = (ring + np.roll(ring, -1, axis=0)) / 2
+            starts = [(float(x), float(y)) for x, y in np.concatenate([mids, ring])]
         if names is not None and names[2] is not None:
             p, q = np.asarray(names[1], dtype=float), np.asarray(names[2], dtype=float)
             if float(np.hypot(*(q - p))) > 2.0 * _LEADER_START:
@@ -824,17 +846,36 @@ def arc_line(centre: PointLike, radius: float, start_deg: float, end_deg: float)
     return LineString(np.c_[centre[0] + radius * np.cos(t), centre[1] + radius * np.sin(t)])
 
 
+def enclosing(point: PointLike, outlines: Iterable[BaseGeometry]) -> BaseGeometry | None:
+    """The smallest of the filled `outlines` no wider or taller than BLOCK_MM
+    that holds `point` (a slider's block round its pin or mass centre), or
+    None: a point drawn there is named beside the outline."""
+    p = Point(float(point[0]), float(point[1]))
+    held = [
+        g
+        for g in outlines
+        if g.geom_type == "Polygon"
+        and max(g.bounds[2] - g.bounds[0], g.bounds[3] - g.bounds[1]) <= BLOCK_MM
+        and g.contains(p)
+    ]
+    return min(held, key=lambda g: g.area) if held else None
+
+
 def _gap(
     names: tuple[NamingKind, PointLike, PointLike | None],
     x0: np.ndarray,
     y0: np.ndarray,
     x1: np.ndarray,
     y1: np.ndarray,
+    outline: BaseGeometry | None = None,
 ) -> np.ndarray:
     """Distance (mm) from each candidate box to what its label names: the
-    point, or the segment of an arrow or a link (as the linter measures it)."""
+    point (the block round it, `outline`), or the segment of an arrow or a
+    link (as the linter measures it)."""
     _, a, b = names
     b_ = np.c_[x0, y0, x1, y1]
+    if outline is not None:
+        return np.asarray(shapely.distance(shapely.box(x0, y0, x1, y1), outline), dtype=float)
     if b is None or math.dist(a, b) < 1e-9:
         return _point_box(np.full(len(b_), float(a[0])), np.full(len(b_), float(a[1])), b_)
     seg = np.tile([float(a[0]), float(a[1]), float(b[0]), float(b[1])], (len(b_), 1))

@@ -7,6 +7,9 @@ with a place on the sheet (mm from its bottom-left corner). The thresholds:
 - ``label-near``: a label's box is within NEAR_MM = 6 mm of what it names (a
   point, or the segment of an arrow or a link), or a leader line of its own
   joins the two and crosses no main (heavy) line and no other lettering.
+  A point drawn inside a filled outline at most BLOCK_MM = 15 mm across (a
+  slider's block round its pin or mass centre) is measured from the outline:
+  its name stands beside the block, where a draughtsman writes it.
 - ``label-clear``: a label's box (shrunk by 0.25 mm) touches no drawn line,
   arc, circle or arrowhead of a drawing but its own leader, and overlaps no
   other label by more than 0.5 mm² (tables, the frame and the title block
@@ -57,7 +60,7 @@ from shapely import STRtree
 from shapely.geometry import LineString, Point, box
 from shapely.geometry.base import BaseGeometry
 
-from ..drawing.labels import NEAR_MM, drawn_shapes
+from ..drawing.labels import NEAR_MM, drawn_shapes, enclosing
 from ..render.look import load_look
 from ..render.recording import Arrow, BeginGroup, Call, Line, Naming, RecordingBackend, Text
 
@@ -225,12 +228,16 @@ def _named_shape(n: Naming) -> BaseGeometry:
 
 
 def label_near(v: SheetView) -> Iterator[Finding]:
-    heavy = [s for c, s in v.shapes() if getattr(c, "line", None) == "main" and v.in_drawing(c)]
+    shapes = v.shapes()
+    heavy = [s for c, s in shapes if getattr(c, "line", None) == "main" and v.in_drawing(c)]
     tree = STRtree(heavy) if heavy else None
+    blocks = [s for c, s in shapes if c.name == "polygon" and s.geom_type == "Polygon"]
     for lab in v.labels:
         if lab.naming is None:
             continue
         target = _named_shape(lab.naming)
+        if target.geom_type == "Point":  # a point inside a block: named beside the block
+            target = enclosing(lab.naming.anchor, blocks) or target
         gap = lab.box.distance(target)
         if gap <= NEAR_MM:
             continue

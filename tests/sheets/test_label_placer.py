@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from shapely.geometry import LineString, Point
+from shapely.geometry import LineString, Point, box
 
 from mmt_plans.drawing.labels import NEAR_MM, Labels
 from mmt_plans.drawing.sketch import Sketch
@@ -109,3 +109,37 @@ def test_a_segments_name_may_be_led_from_along_it():
     assert _findings(sk, ["label-near", "label-clear"]) == []
     texts = [c for c in sk.calls if isinstance(c, Text)]
     assert texts and all(c.naming is not None and c.naming.kind == "segment" for c in texts)
+
+
+def test_a_point_inside_a_block_is_named_beside_the_block():
+    """A slider's pin inside its 12 x 7 mm block on a guide crowded above and
+    below by lines 3 mm apart: the only free places are off the block's ends,
+    more than NEAR_MM from the pin and out of a leader's reach (a leader from
+    the pin would cross the block's outline). The name goes beside the block,
+    within NEAR_MM of its outline, as the linter measures it."""
+    sk = _sketch()
+    for y in (4.5, 7.5, 10.5, 13.5):
+        for s in (1.0, -1.0):
+            sk.line((-40.0, s * y), (40.0, s * y), "thin")
+    sk.polygon([(-6.0, -3.5), (6.0, -3.5), (6.0, 3.5), (-6.0, 3.5)], "main", "white")
+    sk.circle((0.0, 0.0), 0.8, "main", "black")
+    labels = Labels(sk, 3.5)
+    footprint = labels.place((0.0, 0.0), "H", towards=(0.0, 1.0))
+    assert footprint.distance(Point(0.0, 0.0)) > NEAR_MM  # beyond the block's end
+    assert footprint.distance(box(-6.0, -3.5, 6.0, 3.5)) <= NEAR_MM
+    assert _leaders(sk) == [] and labels.far == 0
+    assert _findings(sk, ["label-near", "label-clear"]) == []
+
+
+def test_a_point_ringed_by_many_thin_lines_is_led_across_them():
+    """Eight thin circles 1.5 mm apart round a point (a lever's arms and lines
+    of action round its pole): no place near it is free and every leader
+    crosses eight thin lines. A leader across them still ties the name to the
+    point; a name written beyond them untied would name nothing."""
+    sk = _sketch()
+    for k in range(8):
+        sk.circle((0.0, 0.0), 2.5 + 1.5 * k, "thin")
+    labels = Labels(sk, 3.5)
+    labels.place((0.0, 0.0), "p", towards=(-1.0, 1.0))
+    assert len(_leaders(sk)) == 1 and labels.far == 0
+    assert _findings(sk, ["label-near", "label-clear"]) == []

@@ -62,6 +62,33 @@ def test_label_near_what_it_names_or_tied_by_a_leader():
     assert "crosses" in rules(b, "label-near")[0].message
 
 
+def test_a_point_inside_a_slider_block_is_named_beside_the_block():
+    """A slider's pin (or mass centre) drawn inside its 12 x 7 mm block: a
+    draughtsman writes its name beside the block, so the distance is measured
+    to the block's outline; NEAR_MM itself is unchanged."""
+
+    def drawn(at: tuple[float, float], block: float = 6.0) -> RecordingBackend:
+        b = RecordingBackend()
+        with b.group("m", "mechanism"):
+            c = (100.0, 100.0)
+            x0, x1 = c[0] - block, c[0] + block
+            b.polygon([(x0, 97.0), (x1, 97.0), (x1, 103.0), (x0, 103.0)], "main", "white")
+            label(b, "S5", "point", c, at=at)
+        return b
+
+    # "S5" is 7 mm wide: its box 5.5 mm right of the block's edge, 11.5 mm from the point: near
+    assert rules(drawn((115.0, 100.0)), "label-near") == []
+    # 7 mm off the block's edge: far, as from any other point
+    found = rules(drawn((116.5, 100.0)), "label-near")
+    assert len(found) == 1 and "stands 7.0 mm" in found[0].message
+    # 5.5 mm off a filled outline wider than BLOCK_MM (a link, not a block):
+    # measured from the point itself, 31.5 mm
+    found = rules(drawn((135.0, 100.0), block=26.0), "label-near")
+    assert len(found) == 1 and "stands 31.5 mm" in found[0].message
+    # a block 14 mm long still holds its point's name beside it
+    assert rules(drawn((116.0, 100.0), block=7.0), "label-near") == []
+
+
 def test_a_leader_may_leave_a_named_segment_anywhere_along_it():
     # a link's (a main line's) name led from the middle of the link: the leader
     # leaves the line it names; it crosses no other main line
