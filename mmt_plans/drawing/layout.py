@@ -127,6 +127,24 @@ def _candidates(
     return np.stack([X[order], Y[order]], axis=1)
 
 
+def _sorted_unique(
+    edges: tuple[float, float], after: np.ndarray, before: np.ndarray, lo: float, hi: float
+) -> np.ndarray:
+    """np.unique of the values `edges`, `after`, `before` within [lo, hi]."""
+    n = len(after)
+    v = np.empty(2 + 2 * n)
+    v[:2] = edges
+    v[2 : 2 + n] = after
+    v[2 + n :] = before
+    v = np.sort(v[(v >= lo) & (v <= hi)])
+    if v.size < 2:
+        return v
+    keep = np.empty(v.size, dtype=bool)
+    keep[0] = True
+    np.not_equal(v[1:], v[:-1], out=keep[1:])
+    return v[keep]
+
+
 def first_free(
     region: Rect, boxes: np.ndarray, width: float, height: float, gap: float, corner: str
 ) -> tuple[float, float] | None:
@@ -136,14 +154,20 @@ def first_free(
     meet), on arrays; None when there is no room. The candidates are the
     grid of _candidates' xs × ys, tested as one (rows, columns, boxes) array
     in the order _candidates gives them."""
-    xs = np.concatenate(
-        [[region.left, region.right - width], boxes[:, 2] + gap, boxes[:, 0] - gap - width]
+    xs = _sorted_unique(
+        (region.left, region.right - width),
+        boxes[:, 2] + gap,
+        boxes[:, 0] - gap - width,
+        region.left - _EPS,
+        region.right - width + _EPS,
     )
-    ys = np.concatenate(
-        [[region.bottom, region.top - height], boxes[:, 3] + gap, boxes[:, 1] - gap - height]
+    ys = _sorted_unique(
+        (region.bottom, region.top - height),
+        boxes[:, 3] + gap,
+        boxes[:, 1] - gap - height,
+        region.bottom - _EPS,
+        region.top - height + _EPS,
     )
-    xs = np.unique(xs[(xs >= region.left - _EPS) & (xs <= region.right - width + _EPS)])
-    ys = np.unique(ys[(ys >= region.bottom - _EPS) & (ys <= region.top - height + _EPS)])
     if not xs.size or not ys.size:
         return None
     # nearest `corner` first, rows first: the order of _candidates
