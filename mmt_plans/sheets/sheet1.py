@@ -1490,8 +1490,11 @@ def compose_sheet1(
             may, in_field = _may_fit(page, sketches, order, arrangements, extents)
             if not may:  # not even the links alone fit: no need to letter them
                 placed_field = placed_field or in_field
+                if not in_field:
+                    break  # its field is set before the plans are placed: no shrink helps
                 continue
             sketches["mechanism"] = mechanism(mu_l)
+            in_field = False
             for gap, (tables_width, corner) in itertools.product((8.0, 5.0), arrangements):
                 try:
                     layout, placed, field = _try_layout(
@@ -1499,13 +1502,19 @@ def compose_sheet1(
                     )
                 except LayoutError as err:
                     last = err
-                    placed_field = placed_field or not str(err).startswith("mechanism")
+                    in_field = in_field or not str(err).startswith("mechanism")
+                    placed_field = placed_field or in_field
                     continue
                 scales["mu_l"] = mu_l
                 result = Sheet1(layout, scales, shrink=shrink, field=field, diagrams=drawn)
                 return _draw(
                     solution, backend, page, lang, sketches, order, placed, result, extents
                 )
+            if not in_field:
+                # the mechanism larger than its field in every arrangement: the
+                # field is set by the diagrams and the tables, placed before it
+                # (_order), which no shrink of the plans changes
+                break
         fitted += placed_field
         if fitted > 3:
             break
