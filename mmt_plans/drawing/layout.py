@@ -127,32 +127,72 @@ def _candidates(
     return np.stack([X[order], Y[order]], axis=1)
 
 
+def _sorted_unique(
+    edges: tuple[float, float], after: np.ndarray, before: np.ndarray, lo: float, hi: float
+) -> np.ndarray:
+    """np.unique of the values `edges`, `after`, `before` within [lo, hi]."""
+    n = len(after)
+    v = np.empty(2 + 2 * n)
+    v[:2] = edges
+    v[2 : 2 + n] = after
+    v[2 + n :] = before
+    v = np.sort(v[(v >= lo) & (v <= hi)])
+    if v.size < 2:
+        return v
+    keep = np.empty(v.size, dtype=bool)
+    keep[0] = True
+    np.not_equal(v[1:], v[:-1], out=keep[1:])
+    return v[keep]
+
+
 def first_free(
     region: Rect, boxes: np.ndarray, width: float, height: float, gap: float, corner: str
 ) -> tuple[float, float] | None:
     """The packer of both sheets: the lower-left corner of the first candidate
     (_candidates) for a width × height rectangle in `region` that keeps `gap`
     mm from every box (x0, y0, x1, y1 rows; with gap 0, interiors do not
-    meet), on arrays; None when there is no room."""
-    xy = _candidates(region, boxes, width, height, gap, corner)
-    if not len(xy):
+    meet), on arrays; None when there is no room. The candidates are the
+    grid of _candidates' xs × ys, tested as one (rows, columns, boxes) array
+    in the order _candidates gives them."""
+    xs = _sorted_unique(
+        (region.left, region.right - width),
+        boxes[:, 2] + gap,
+        boxes[:, 0] - gap - width,
+        region.left - _EPS,
+        region.right - width + _EPS,
+    )
+    ys = _sorted_unique(
+        (region.bottom, region.top - height),
+        boxes[:, 3] + gap,
+        boxes[:, 1] - gap - height,
+        region.bottom - _EPS,
+        region.top - height + _EPS,
+    )
+    if not xs.size or not ys.size:
         return None
+    # nearest `corner` first, rows first: the order of _candidates
+    if corner.startswith("top"):
+        ys = ys[::-1]
+    if not corner.endswith("left"):
+        xs = xs[::-1]
     if not len(boxes):
-        return float(xy[0, 0]), float(xy[0, 1])
-    X, Y = xy[:, :1], xy[:, 1:]
-    # the gap between each candidate and each box (negative where they overlap)
-    dx = np.maximum(boxes[None, :, 0] - (X + width), X - boxes[None, :, 2])
-    dy = np.maximum(boxes[None, :, 1] - (Y + height), Y - boxes[None, :, 3])
+        return float(xs[0]), float(ys[0])
+    # the gap between each column/row and each box (negative where they overlap)
+    dx = np.maximum(boxes[None, :, 0] - (xs[:, None] + width), xs[:, None] - boxes[None, :, 2])
+    dy = np.maximum(boxes[None, :, 1] - (ys[:, None] + height), ys[:, None] - boxes[None, :, 3])
+    DX, DY = dx[None, :, :], dy[:, None, :]  # (rows, columns, boxes)
     if gap > 0:
         g = gap - _EPS  # within `gap` of a box: the squared distance, no square roots
         ex, ey = np.maximum(dx, 0.0), np.maximum(dy, 0.0)
-        clash = ((dx < g) & (dy < g) & (ex * ex + ey * ey < g * g)).any(axis=1)
+        near = (ex * ex)[None, :, :] + (ey * ey)[:, None, :] < g * g
+        clash = ((DX < g) & (DY < g) & near).any(axis=2)
     else:
-        clash = ((dx < 0) & (dy < 0)).any(axis=1)
-    ok = np.flatnonzero(~clash)
+        clash = ((DX < 0) & (DY < 0)).any(axis=2)
+    ok = np.flatnonzero(~clash)  # row-major: rows first, then columns
     if not ok.size:
         return None
-    return float(X[ok[0], 0]), float(Y[ok[0], 0])
+    row, col = divmod(int(ok[0]), len(xs))
+    return float(xs[col]), float(ys[row])
 
 
 class SheetLayout:

@@ -1331,6 +1331,22 @@ def mechanism_field(
     return best[1]
 
 
+class _Extents:
+    """Each sketch's extent, measured once within one compose_sheet1 call (the
+    layout trials ask for the same drawings' extents again and again); a
+    sketch is kept here with its extent, so its id stays its own."""
+
+    def __init__(self) -> None:
+        self._seen: dict[int, tuple[Sketch, Rect]] = {}
+
+    def __call__(self, sketch: Sketch) -> Rect:
+        hit = self._seen.get(id(sketch))
+        if hit is None or hit[0] is not sketch:
+            hit = (sketch, sketch.extent())
+            self._seen[id(sketch)] = hit
+        return hit[1]
+
+
 def _try_layout(
     page: Page,
     sketches: Mapping[str, Sketch],
@@ -1339,6 +1355,7 @@ def _try_layout(
     with_field: bool,
     tables_width: float | None = None,
     diagrams: str = "bottom-left",
+    extents: _Extents | None = None,
 ) -> tuple[SheetLayout, dict[str, Rect], Rect | None]:
     """Place every sketch in `order`; the mechanism inside its field when
     `with_field` (LayoutError if it does not fit there); the tables within
@@ -1346,12 +1363,13 @@ def _try_layout(
     diagrams from the `diagrams` corner (bottom left, under the mechanism, as
     Appendix A draws them, or bottom right, beside the title block, so that a
     tall mechanism takes the sheet's height)."""
+    extent = extents if extents is not None else _Extents()
     layout = SheetLayout(page, gap=gap)
     region = layout.region
     placed: dict[str, Rect] = {}
     field: Rect | None = None
     for name in order:
-        ext = sketches[name].extent()
+        ext = extent(sketches[name])
         corner = diagrams if name.startswith("diagram") else _PLACEMENT.get(name, "top-left")
         kind = "table" if name.startswith("table") else "drawing"
         within = None
@@ -1403,6 +1421,7 @@ def _may_fit(
     sketches: Mapping[str, Sketch],
     order: Sequence[str],
     arrangements: Sequence[tuple[float | None, str]],
+    extents: _Extents | None = None,
 ) -> tuple[bool, bool]:
     """Whether the sheet may fit with the stand-in mechanism in some
     arrangement _try_layout would try (the real drawing is at least as large,
@@ -1411,7 +1430,7 @@ def _may_fit(
     in_field = False
     for gap, (tables_width, corner) in itertools.product((8.0, 5.0), arrangements):
         try:
-            _try_layout(page, sketches, order, gap, True, tables_width, corner)
+            _try_layout(page, sketches, order, gap, True, tables_width, corner, extents)
         except LayoutError as err:
             in_field = in_field or not str(err).startswith("mechanism")
             continue
@@ -1438,6 +1457,7 @@ def compose_sheet1(
     check_language(lang)
     look = backend.look
     cache: dict[tuple[str, float], Any] = {}
+    extents = _Extents()
     region = SheetLayout(page).region
     width_m, height_m = _geometric_extent(solution)
     # the largest the drawing could be: the region's width or height
@@ -1460,34 +1480,45 @@ def compose_sheet1(
             sketches, scales, drawn = _sketch_all(solution, look, lang, plan_mu, mu_l, True, cache)
             sketches["mechanism"] = _bare_mechanism(solution, mu_l, look)
             order = _order(sketches, True)
-            tables = [sketches[n].extent().width for n in order if n.startswith("table")]
+            tables = [extents(sketches[n]).width for n in order if n.startswith("table")]
             # the tables in a row across the top right, or in a block two rows high
             arrangements = [
                 (width, corner)
                 for corner in ("bottom-left", "bottom-right")
                 for width in (None, max(max(tables), sum(tables) / 2.0 + 8.0))
             ]
-            may, in_field = _may_fit(page, sketches, order, arrangements)
+            may, in_field = _may_fit(page, sketches, order, arrangements, extents)
             if not may:  # not even the links alone fit: no need to letter them
                 placed_field = placed_field or in_field
+                if not in_field:
+                    break  # its field is set before the plans are placed: no shrink helps
                 continue
             sketches["mechanism"] = mechanism(mu_l)
+            in_field = False
             for gap, (tables_width, corner) in itertools.product((8.0, 5.0), arrangements):
                 try:
                     layout, placed, field = _try_layout(
-                        page, sketches, order, gap, True, tables_width, corner
+                        page, sketches, order, gap, True, tables_width, corner, extents
                     )
                 except LayoutError as err:
                     last = err
-                    placed_field = placed_field or not str(err).startswith("mechanism")
+                    in_field = in_field or not str(err).startswith("mechanism")
+                    placed_field = placed_field or in_field
                     continue
                 scales["mu_l"] = mu_l
                 result = Sheet1(layout, scales, shrink=shrink, field=field, diagrams=drawn)
-                return _draw(solution, backend, page, lang, sketches, order, placed, result)
+                return _draw(
+                    solution, backend, page, lang, sketches, order, placed, result, extents
+                )
+            if not in_field:
+                # the mechanism larger than its field in every arrangement: the
+                # field is set by the diagrams and the tables, placed before it
+                # (_order), which no shrink of the plans changes
+                break
         fitted += placed_field
         if fitted > 3:
             break
-    return _fallback(solution, backend, page, lang, cache, last)
+    return _fallback(solution, backend, page, lang, cache, last, extents)
 
 
 def _draw(
@@ -1499,9 +1530,10 @@ def _draw(
     order: Sequence[str],
     placed: Mapping[str, Rect],
     result: Sheet1,
+    extents: _Extents,
 ) -> Sheet1:
     for name in order:
-        ext, rect = sketches[name].extent(), placed[name]
+        ext, rect = extents(sketches[name]), placed[name]
         dx, dy = rect.x - ext.x, rect.y - ext.y
         sketches[name].replay(backend, dx, dy)
         result.origins[name] = (dx, dy)
@@ -1518,6 +1550,7 @@ def _fallback(
     lang: Language,
     cache: dict[tuple[str, float], Any],
     last: Exception | None,
+    extents: _Extents,
 ) -> Sheet1:
     """A crowded sheet: the acceleration plans and the mechanism smaller, step
     by step from the file's μ_l, the diagrams apart if need be."""
@@ -1536,7 +1569,7 @@ def _fallback(
         sketches["mechanism"] = _bare_mechanism(solution, mu_l, look)
         order = _order(sketches, stacked)
         try:  # the links alone first: no need to letter a drawing that cannot fit
-            _try_layout(page, sketches, order, gap, False)
+            _try_layout(page, sketches, order, gap, False, extents=extents)
         except LayoutError as err:
             last = err
             continue
@@ -1544,7 +1577,7 @@ def _fallback(
             cache[("mechanism", mu_l)] = sketch_mechanism(solution, mu_l, look, lang)
         sketches["mechanism"] = cache[("mechanism", mu_l)]
         try:
-            layout, placed, _ = _try_layout(page, sketches, order, gap, False)
+            layout, placed, _ = _try_layout(page, sketches, order, gap, False, extents=extents)
         except LayoutError as err:
             last = err
             continue
@@ -1558,6 +1591,7 @@ def _fallback(
             order,
             placed,
             Sheet1(layout, scales, shrink=shrink, diagrams=drawn),
+            extents,
         )
     raise LayoutError(
         f"{shown(solution.mechanism.path)}: sheet 1 does not fit on {page.name or 'the page'} "

@@ -37,7 +37,7 @@ from ..drawing.markup import equation_markup as _equation_markup
 from ..drawing.markup import force_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
 from ..drawing.pose import Block, Guide, Pose, draw_poses
-from ..drawing.sketch import Sketch
+from ..drawing.sketch import PAD, Sketch
 from ..drawing.symbols import sense_arc, unit_vector
 from ..drawing.table import table_sketch
 from ..errors import shown
@@ -1006,6 +1006,61 @@ class _Composer:
             self.drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
         self.drawings += ["driving-link", f"force-polygon-{dl.link}"]
         self.last: Exception | None = None
+        # the pins each drawing of links draws, in m: its extent at μ_l holds
+        # their box / μ_l (each pin a circle round its point) and PAD round it
+        mech = fa.loads.state.mech
+        self._pins: list[tuple[str, np.ndarray]] = [
+            ("mu_l", self._pin_points(set(mech.links) - {FRAME})),
+            *((f"mu_l {g.name}", self._pin_points(set(g.links))) for g in fa.groups),
+            (f"mu_l {dl.link}", self._pin_points({dl.link})),
+        ]
+
+    def _pin_points(self, lids: set[int]) -> np.ndarray:
+        """The points (m) of the revolute pairs that _Drawing.links draws for `lids`."""
+        state = self.fa.loads.state
+        out = []
+        for pin in state.mech.revolutes:
+            moving = [lk for lk in pin.links if lk != FRAME]
+            if any(lk in lids for lk in moving):
+                out.append(_xy(_c(state.point(moving[0], pin.point))))
+        return np.array(out, dtype=float).reshape(-1, 2)
+
+    def least_area(self, scales: dict[str, float]) -> float:
+        """A lower bound of the area (mm²) the drawings and tables take at
+        `scales`, sketching none of the drawings of links: the loaded
+        mechanism, the groups and the driving link each no smaller than the
+        box of their pins; the lever with its tables and the polygons as
+        sketched (without a polygon's note), the table of loads as nothing."""
+        area = 0.0
+        for key, pts in self._pins:
+            if len(pts):
+                w, h = np.ptp(pts, axis=0) / scales[key] + 2.0 * PAD
+                area += float(w * h)
+        lever, _, tables = self.lever(scales["mu_V"])
+        drawn = [lever, *tables.values()]
+        for name, polygons, title in self.polygon_sets:
+            drawn.append(self.polygons(name, polygons, title, scales[f"mu_F {name}"]))
+        return area + sum(self.extent(sk).width * self.extent(sk).height for sk in drawn)
+
+    def lever(self, mu_V: float) -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
+        """The lever at `mu_V`, its arms and the tables that read them."""
+
+        def make() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
+            arms: list[tuple[str, float]] = []
+            sketch = sketch_lever(self.fa, mu_V, self.look, self.lang, arms)
+            return sketch, arms, _sketch_tables(self.fa, arms, self.look, self.lang)
+
+        return self.memo(("lever", mu_V), make)  # type: ignore[no-any-return]
+
+    def polygons(
+        self, name: str, polygons: Sequence[ForcePolygon], title: str, mu_F: float
+    ) -> Sketch:
+        """The force polygons `polygons` of `name` at `mu_F`, without a note."""
+        gid = f"force-polygon-{name}"
+        return self.memo(  # type: ignore[no-any-return]
+            (gid, mu_F),
+            lambda: sketch_force_polygons(polygons, mu_F, self.look, self.lang, gid, title),
+        )
 
     def extent(self, sketch: Sketch) -> Rect:
         if id(sketch) not in self._extents:
@@ -1069,21 +1124,13 @@ class _Composer:
             mu_F = scales[f"mu_F {name}"]
             gid = f"force-polygon-{name}"
             note = _polygon_note(polygons, mu_F, lang)
-            sketches[gid] = self.memo(
-                (gid, mu_F),
-                lambda: sketch_force_polygons(polygons, mu_F, look, lang, gid, title),
-            )
+            sketches[gid] = self.polygons(name, polygons, title, mu_F)
             if note:
                 sketches[gid] = self.memo(
                     ("noted", gid, mu_F), lambda: _with_note(sketches[gid], note)
                 )
 
-        def lever() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
-            arms: list[tuple[str, float]] = []
-            sketch = sketch_lever(fa, mu_V, look, lang, arms)
-            return sketch, arms, _sketch_tables(fa, arms, look, lang)
-
-        sketches["zhukovsky-lever"], arms, tables = self.memo(("lever", mu_V), lever)
+        sketches["zhukovsky-lever"], arms, tables = self.lever(mu_V)
         sketches.update(tables)
         sketches["force-mechanism"], sketches["table-loads"] = self.memo(
             ("force-mechanism", mu_l),
@@ -1147,6 +1194,16 @@ class _Composer:
         key = ("fits", tuple(sorted(steps.items())))
         if key not in self.cache:
             scales = self.scales(steps)
+            field = self.page.frame.inset(5.0)
+            least = self.least_area(scales)
+            if least > field.width * field.height:
+                # arrange would find the drawings larger still: no need to sketch them
+                self.last = LayoutError(
+                    f"the drawings take at least {least / 1e4:.0f} dm², more than the "
+                    f"{field.width * field.height / 1e4:.0f} dm² of the sheet's field"
+                )
+                self.cache[key] = False
+                return False
             self.cache[key] = self.arrange(self.sketches(scales)[0]) is not None
         return bool(self.cache[key])
 

@@ -1,0 +1,52 @@
+"""The layout trials' short cuts: a trial rejected without sketching must be one
+the sketches would reject as well, and the packer's grid search must pick the
+candidate the first-in-order rule names."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import mmt_plans
+from mmt_plans.drawing.layout import first_free
+from mmt_plans.drawing.page import Page, Rect
+from mmt_plans.render.recording import RecordingBackend
+from mmt_plans.sheets.sheet2 import _Composer
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+@pytest.mark.parametrize("name", ["six_link_press", "shaper", "forces_scotch_yoke"])
+def test_least_area_never_exceeds_the_sketched_area(name: str) -> None:
+    sol = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / f"{name}.toml"))
+    page = Page.of("A1")
+    composer = _Composer(sol.require_forces(), sol, RecordingBackend(1, 1).look, "en", page)
+    for shrink in (-2, -1, 0, 2):
+        steps = composer._steps(shrink, shrink - 1)
+        scales = composer.scales(steps)
+        sketches = composer.sketches(scales)[0]
+        drawn = sum(
+            composer.extent(sketches[n]).width * composer.extent(sketches[n]).height
+            for n in (*composer.tables, *composer.drawings)
+        )
+        least = composer.least_area(scales)
+        assert 0.0 < least <= drawn
+
+
+def test_first_free_is_the_first_free_candidate_in_order() -> None:
+    # region 100 x 50 from (0, 0); one box in the top-left corner
+    region = Rect(0.0, 0.0, 100.0, 50.0)
+    boxes = np.array([[0.0, 30.0, 40.0, 50.0]])
+    # top-left: the top row is taken by the box up to x = 40; with a gap of 5 the
+    # first column clear of it is x = 45, at the top (y = 50 - 10)
+    assert first_free(region, boxes, 20.0, 10.0, 5.0, "top-left") == (45.0, 40.0)
+    # bottom-left: the corner itself is free
+    assert first_free(region, boxes, 20.0, 10.0, 5.0, "bottom-left") == (0.0, 0.0)
+    # top-right: flush with the right edge at the top
+    assert first_free(region, boxes, 20.0, 10.0, 5.0, "top-right") == (80.0, 40.0)
+    # wider than the room beside the box and taller than the room under it
+    assert first_free(region, boxes, 70.0, 30.0, 5.0, "top-left") is None
+    # no box: the corner
+    assert first_free(region, np.zeros((0, 4)), 20.0, 10.0, 0.0, "top-right") == (80.0, 40.0)
