@@ -582,10 +582,15 @@ def guide_sizes(v: SheetView) -> Iterator[Finding]:
         elif k == "force-polygon":
             # the guide sizes a polygon by its production resistance, |F_PR| =
             # 150 … 300 mm (seed 003, formula (20)); one without it by its
-            # longest side
+            # longest side, as one with it
+            # longest side, where |F_PR| at 150 mm would put that side past 300 mm
             resistance = _resistance_arrows(v, arrows)
-            size, (lo, hi) = max(a.length for a in resistance or arrows), POLYGON_MM
-            what = "|F_PR|" if resistance else "longest side"
+            (lo, hi), longest = POLYGON_MM, max(a.length for a in arrows)
+            f_pr = max((a.length for a in resistance), default=0.0)
+            if f_pr > 0 and (f_pr >= lo - 0.5 or longest * lo / f_pr <= hi + 0.5):
+                size, what = f_pr, "|F_PR|"
+            else:
+                size, what = longest, "longest side"
         else:
             continue
         if size < lo - 0.5 and not reduced or size > hi + 0.5:

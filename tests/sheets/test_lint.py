@@ -262,6 +262,16 @@ def test_a_polygon_with_the_production_resistance_is_sized_by_it():
     assert rules(polygon(184, 320, "F_{КО}"), "guide-sizes", "uk") == []
     found = rules(polygon(115, 200), "guide-sizes")
     assert [f.message for f in found] == ["force-polygon-4-5: |F_PR| 115 mm (guide 150–300 mm)"]
+    # |F_PR| small beside the polygon's other forces: at 150 mm it would put the
+    # longest side past 300 mm, so the longest side is the measure (as sheet 2's
+    # guide_side takes it)
+    assert rules(polygon(90, 280), "guide-sizes") == []
+    found = rules(polygon(60, 140), "guide-sizes")  # the whole polygon drawn too small
+    assert [f.message for f in found] == [
+        "force-polygon-4-5: longest side 140 mm (guide 150–300 mm)"
+    ]
+    found = rules(polygon(100, 140), "guide-sizes")  # F_PR at 150 mm would leave 210 mm
+    assert [f.message for f in found] == ["force-polygon-4-5: |F_PR| 100 mm (guide 150–300 mm)"]
     # without the production resistance the longest side is the measure
     found = rules(polygon(184, 320, "R_{05}"), "guide-sizes")
     assert [f.message for f in found] == [
