@@ -109,22 +109,36 @@ def _is_box(shape: BaseGeometry) -> bool:
 def _candidates(
     region: Rect, boxes: np.ndarray, width: float, height: float, gap: float, corner: str
 ) -> np.ndarray:
-    """Corners (x, y) a width × height rectangle may take: in line with the
-    region's edges and, `gap` away, with the boxes' edges; nearest `corner`
-    first, rows first."""
-    xs = np.concatenate(
-        [[region.left, region.right - width], boxes[:, 2] + gap, boxes[:, 0] - gap - width]
-    )
-    ys = np.concatenate(
-        [[region.bottom, region.top - height], boxes[:, 3] + gap, boxes[:, 1] - gap - height]
-    )
-    xs = np.unique(xs[(xs >= region.left - _EPS) & (xs <= region.right - width + _EPS)])
-    ys = np.unique(ys[(ys >= region.bottom - _EPS) & (ys <= region.top - height + _EPS)])
+    """Corners (x, y) a width × height rectangle may take (the grid of
+    _axes' columns × rows); nearest `corner` first, rows first."""
+    xs, ys = _axes(region, boxes, width, height, gap, corner)
     X, Y = (a.ravel() for a in np.meshgrid(xs, ys))
-    sy = -Y if corner.startswith("top") else Y
-    sx = X if corner.endswith("left") else -X
-    order = np.lexsort((sx, sy))
-    return np.stack([X[order], Y[order]], axis=1)
+    return np.stack([X, Y], axis=1)
+
+
+def _axes(
+    region: Rect, boxes: np.ndarray, width: float, height: float, gap: float, corner: str
+) -> tuple[np.ndarray, np.ndarray]:
+    """The columns (x) and rows (y) a width × height rectangle's lower-left
+    corner may take: in line with the region's edges and, `gap` away, with
+    the boxes' edges (x0, y0, x1, y1 rows); each nearest `corner` first."""
+    xs = _places(region.left, region.right, width, boxes[:, 0], boxes[:, 2], gap)
+    ys = _places(region.bottom, region.top, height, boxes[:, 1], boxes[:, 3], gap)
+    if corner.startswith("top"):
+        ys = ys[::-1]
+    if not corner.endswith("left"):
+        xs = xs[::-1]
+    return xs, ys
+
+
+def _places(
+    lo: float, hi: float, size: float, box_lo: np.ndarray, box_hi: np.ndarray, gap: float
+) -> np.ndarray:
+    """Where a side `size` long may start along one axis of [lo, hi]: at
+    either end, or `gap` beyond a box's side; ascending, each once."""
+    return _sorted_unique(
+        (lo, hi - size), box_hi + gap, box_lo - gap - size, lo - _EPS, hi - size + _EPS
+    )
 
 
 def _sorted_unique(
@@ -152,29 +166,11 @@ def first_free(
     (_candidates) for a width × height rectangle in `region` that keeps `gap`
     mm from every box (x0, y0, x1, y1 rows; with gap 0, interiors do not
     meet), on arrays; None when there is no room. The candidates are the
-    grid of _candidates' xs × ys, tested as one (rows, columns, boxes) array
-    in the order _candidates gives them."""
-    xs = _sorted_unique(
-        (region.left, region.right - width),
-        boxes[:, 2] + gap,
-        boxes[:, 0] - gap - width,
-        region.left - _EPS,
-        region.right - width + _EPS,
-    )
-    ys = _sorted_unique(
-        (region.bottom, region.top - height),
-        boxes[:, 3] + gap,
-        boxes[:, 1] - gap - height,
-        region.bottom - _EPS,
-        region.top - height + _EPS,
-    )
+    grid of _axes' columns × rows, tested as one (rows, columns, boxes) array
+    in the order _candidates gives them (nearest `corner` first, rows first)."""
+    xs, ys = _axes(region, boxes, width, height, gap, corner)
     if not xs.size or not ys.size:
         return None
-    # nearest `corner` first, rows first: the order of _candidates
-    if corner.startswith("top"):
-        ys = ys[::-1]
-    if not corner.endswith("left"):
-        xs = xs[::-1]
     if not len(boxes):
         return float(xs[0]), float(ys[0])
     # the gap between each column/row and each box (negative where they overlap)
