@@ -143,10 +143,13 @@ class Labels:
         self._tree = None
         self._grown = None
 
-    def avoid_line(self, start: PointLike, end: PointLike, clearance: float = 0.4) -> None:
-        """Keep labels `clearance` mm off a drawn segment."""
+    def avoid_line(
+        self, start: PointLike, end: PointLike, clearance: float = 0.4, *, heavy: bool = False
+    ) -> None:
+        """Keep labels `clearance` mm off a drawn segment (a `heavy` one, a main
+        line, no leader crosses)."""
         if math.dist(start, end) > 1e-9:
-            self.avoid(LineString([tuple(start), tuple(end)]), clearance)
+            self.avoid(LineString([tuple(start), tuple(end)]), clearance, heavy=heavy)
         else:
             self.avoid(Point(tuple(start)), clearance)
 
@@ -173,10 +176,7 @@ class Labels:
             elif c.name in ("line", "arrow", "polyline", "polygon"):
                 p = c.points()
                 for a, b in zip(p, p[1:] + (p[:1] if c.name == "polygon" else [])):
-                    if math.dist(a, b) > 1e-9:
-                        self.avoid(LineString([tuple(a), tuple(b)]), clearance, heavy=heavy)
-                    else:
-                        self.avoid(Point(tuple(a)), clearance)
+                    self.avoid_line(a, b, clearance, heavy=heavy)
             elif c.name == "circle":
                 self.avoid_circle(c["center"], c["radius"] + clearance)
 
