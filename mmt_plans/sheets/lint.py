@@ -581,9 +581,9 @@ def guide_sizes(v: SheetView) -> Iterator[Finding]:
             what = "longest vector from the pole"
         elif k == "force-polygon":
             # the guide sizes a polygon by its production resistance, |F_PR| =
-            # 150 … 300 mm (seed 003, formula (20)); one without it by its
-            # longest side, as one with it
-            # longest side, where |F_PR| at 150 mm would put that side past 300 mm
+            # 150 … 300 mm (seed 003, formula (20)); one without it, or one
+            # where |F_PR| at 150 mm would put a side past 300 mm, by its
+            # longest side (as sheet 2's guide_side chooses)
             resistance = _resistance_arrows(v, arrows)
             (lo, hi), longest = POLYGON_MM, max(a.length for a in arrows)
             f_pr = max((a.length for a in resistance), default=0.0)
