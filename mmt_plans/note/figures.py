@@ -255,7 +255,7 @@ def gear_sketch(solution: Solution) -> Sketch | None:
     if train is None:
         return None
     from ..drawing.gears_scheme import sketch_gear_train
-    from .pages import note_look
+    from ..render.look import note_look
 
     return sketch_gear_train(train, note_look())
 
@@ -266,8 +266,8 @@ def structure_sketches(solution: Solution) -> list[tuple[str, Sketch]] | None:
     the calculation's μ_l); (its structural name "I(0,1)", "II(2,3)", sketch)
     each; None where position 0 does not assemble."""
     from ..errors import MmtError
+    from ..render.look import note_look
     from ..sheets.sheet2 import _Drawing
-    from .pages import note_look
 
     try:
         state = solution.state(solution.positions[0].index or 0)

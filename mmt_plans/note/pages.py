@@ -24,7 +24,7 @@ from typing import Any, Literal
 from ..drawing.page import Page, Rect, draw_frame
 from ..i18n import Language, catalogue
 from ..render.backend import Backend, parse_markup
-from ..render.look import Lettering, LineType, Look, load_look, templates_dir
+from ..render.look import Lettering, LineType, Look, note_look
 from .content import Block, NoteContent
 
 __all__ = [
@@ -76,12 +76,6 @@ VECTOR = "\u20d7"
 
 def note_page() -> Page:
     return Page.of("A4")
-
-
-@functools.cache
-def note_look() -> Look:
-    """The note's look: templates/note_look.toml (serif lettering)."""
-    return load_look(templates_dir() / "note_look.toml")
 
 
 def cap(pt: float, let: Lettering) -> float:

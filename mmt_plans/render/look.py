@@ -20,6 +20,7 @@ from types import MappingProxyType
 from typing import Any, Literal, get_args
 
 __all__ = [
+    "note_look",
     "LineType",
     "LINE_TYPES",
     "LineStyle",
@@ -267,3 +268,9 @@ def load_look(path: str | os.PathLike[str] | None = None) -> Look:
         return _default_look(templates_dir())
     with Path(path).open("rb") as fh:
         return _look_from_dict(tomllib.load(fh))
+
+
+@functools.cache
+def note_look() -> Look:
+    """The calculation note's look: templates/note_look.toml (serif lettering)."""
+    return load_look(templates_dir() / "note_look.toml")
