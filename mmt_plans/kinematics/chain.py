@@ -432,9 +432,9 @@ class Sweep:
 
     @cached_property
     def plans(self) -> tuple[GroupPlan, ...]:
-        """The velocity and acceleration plan of every group. A long sweep keeps
-        only the links' motion; its plans are solved again from it when asked
-        for (the same equations on the same numbers)."""
+        """The velocity and acceleration plan of every group. A sweep keeps
+        only the links' motion (`DyadSolver.motion`); the plans are solved
+        again from it when asked for (the drawings of the plans), leg by leg."""
         if self.solved_plans is not None:
             return self.solved_plans
         m = {lid: Motion.of(state) for lid, state in self.links.items()}
@@ -565,9 +565,9 @@ class Chain:
         phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
         n = len(phi1_deg)
         if n <= CHUNK:
-            m, failed, singular, plans = self._solve(np.radians(phi1_deg))
+            m, failed, singular = self._solve(np.radians(phi1_deg))
             states = {lid: _state(mo, n) for lid, mo in m.items()}
-            return Sweep(self, _ro(phi1_deg.copy()), states, failed, singular, solved_plans=plans)
+            return Sweep(self, _ro(phi1_deg.copy()), states, failed, singular)
         # Many angles: solve about CHUNK at a time, so the working arrays stay
         # small (in cache, and the same memory again for every chunk), and write
         # the results into one block of memory for the whole sweep. The angles
@@ -577,13 +577,13 @@ class Chain:
         arena = None
         for start in range(0, n, size):
             part = slice(start, min(start + size, n))
-            m, failed, singular, plans = self._solve(np.radians(phi1_deg[part]))
+            m, failed, singular = self._solve(np.radians(phi1_deg[part]))
             if arena is None:
                 arena = _Arena(self, m, failed, n)
             arena.put(part, m, failed, singular)
             # let the chunk go before the next is solved, which then reuses its
             # memory, still in the cache
-            del m, failed, singular, plans
+            del m, failed, singular
         assert arena is not None
         return arena.sweep(phi1_deg)
 
@@ -596,7 +596,7 @@ class Chain:
         searches over many angles that read one point (the extreme positions,
         the diagrams' grids). NaN where `ok` is False."""
         phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
-        m, failed, singular, _ = self._solve(np.radians(phi1_deg))
+        m, failed, singular = self._solve(np.radians(phi1_deg))
         bad = np.zeros(phi1_deg.shape, dtype=bool)
         for mask in (*failed.values(), *singular.values()):
             bad |= mask
@@ -616,25 +616,27 @@ class Chain:
         return _over(m[lid].at(p), phi1_deg.shape)
 
     def _solve(self, phi_rad: np.ndarray):
-        """Positions, then the plans group by group: the links' motion, and
-        where each group fails to assemble or its plan is singular."""
+        """Positions, then the motion group by group (the plans, without their
+        records): the links' motion, and where each group fails to assemble
+        or its plan is singular."""
         with quiet():
             return self._solve_quietly(phi_rad)
 
     def _solve_quietly(self, phi_rad: np.ndarray):
         m = self.place_all(phi_rad, self.branches)
-        failed, singular, plans = {}, {}, []
+        failed, singular = {}, {}
+        shape = phi_rad.shape
         for solver in self.solvers:
             name = solver.name
             L1, L2 = m[solver.L1], m[solver.L2]
             # one sum is finite exactly where all four are (NaN and ±inf carry)
             # broadcast: a group fixed to the frame only has plain numbers
-            shape = phi_rad.shape
             failed[name] = _ro(_over(~np.isfinite(L1.o + L2.o + L1.e + L2.e), shape))
-            plan = solver.plan(m)
-            singular[name] = _ro(~failed[name] & ~_over(plan.regular(SINGULAR_SIN), shape))
-            plans.append(plan)
-        return m, failed, singular, tuple(plans)
+            # the links' motion, not the plan's records (`Sweep.plans` solves
+            # them again when asked for)
+            regular = solver.motion(m, SINGULAR_SIN)
+            singular[name] = _ro(~failed[name] & ~_over(regular, shape))
+        return m, failed, singular
 
     def reason(self, solver: DyadSolver, phi1_deg: float) -> str:
         m = self.place_all(np.radians(np.array([phi1_deg])), self.branches)

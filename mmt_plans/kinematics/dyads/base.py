@@ -319,6 +319,21 @@ class DyadSolver:
             self.place(m, plan)
         return plan
 
+    def motion(self, m: dict, least_sin: float) -> Any:
+        """Give the group's links their ω, ε and the motion of their origins
+        (what `plan` solves and `place` hands on) and say where the plan is
+        regular (`GroupPlan.regular`), without keeping the plan's records: a
+        sweep needs the links' motion; the plans are solved again from it when
+        asked for (`chain.Sweep.plans`). A kind may solve it in fewer passes
+        (RRR, RRP: `fused_rotation`)."""
+        return self.plan(m).regular(least_sin)
+
+    def known_point(self, m: dict, K: int, name: str) -> tuple[Any, Any, Any]:
+        """Position, velocity and acceleration of the point `name` of link K."""
+        p = self.loc(K, name)
+        k = m[K]
+        return k.at(p), k.vel_at(p), k.acc_at(p)
+
     def rotation(self, link: int, P_name: str, X, K: int, m: dict) -> Leg:
         """Link `link` turning about its pair P with the known link K."""
         p = self.loc(K, P_name)
@@ -358,3 +373,15 @@ def entry(x, i: int):
 def other_link(pair: Revolute | Prismatic, link: int) -> int:
     a, b = pair.links
     return b if a == link else a
+
+
+def cramer_nan(x, det):
+    """x where det ≠ 0, NaN where the plan's lines are parallel (as `_cramer`)."""
+    if _parallel(det):
+        return np.where(det == 0, np.nan, x)
+    return x
+
+
+def conj(z):
+    """The conjugate of an array, or of a number (the frame's)."""
+    return np.conj(z) if isinstance(z, np.ndarray) else z.conjugate()
