@@ -55,6 +55,8 @@ class LinkState:
 
 def _xy(z: np.ndarray) -> np.ndarray:
     """The same numbers seen as [x, y] pairs (no copy)."""
+    if z.dtype == complex and z.flags.c_contiguous and not z.flags.writeable:  # a link's array
+        return z.view(np.float64).reshape(z.shape + (2,))  # read-only as z is
     z = np.ascontiguousarray(z, dtype=complex)
     out = z.view(np.float64).reshape(z.shape + (2,))
     out.setflags(write=False)
@@ -635,7 +637,8 @@ class Chain:
             # the links' motion, not the plan's records (`Sweep.plans` solves
             # them again when asked for)
             regular = solver.motion(m, SINGULAR_SIN)
-            singular[name] = _ro(~failed[name] & ~_over(regular, shape))
+            # not failed and not regular
+            singular[name] = _ro(_over(np.logical_not(np.logical_or(failed[name], regular)), shape))
         return m, failed, singular
 
     def reason(self, solver: DyadSolver, phi1_deg: float) -> str:

@@ -79,14 +79,19 @@ def circle_circle(A: np.ndarray, r1: float, C: np.ndarray, r2: float, sign: int)
 
 
 def circle_line(A: np.ndarray, r: float, P0: np.ndarray, u: np.ndarray, sign: int) -> np.ndarray:
-    """The point X on the line P0 + t·u (|u| = 1) with |AX| = r; sign +1 takes the larger t."""
+    """The point X on the line P0 + t·u (|u| = 1) with |AX| = r; sign +1 takes the larger t.
+
+    Seen along the guide, (P0 - A)·conj(u) = b + i·h: b how far P0 is ahead of
+    the foot of the perpendicular from A, h the distance of A from the line;
+    then X = P0 + (±√(r² - h²) - b)·u."""
     w = P0 - A
-    b = dot(w, u)
-    foot = w - b * u  # from A to the nearest point of the line
-    half2 = _at_limit(r * r - (foot.real**2 + foot.imag**2), lambda: r * r + dot(w, w))
+    t = w * np.conj(u)
+    h = t.imag
+    half2 = _at_limit(r * r - h * h, lambda: r * r + (w.real**2 + w.imag**2))
     with quiet():
         half = np.sqrt(half2)
-    return A + foot + sign * half * u
+    along = half - t.real if sign > 0 else -(half + t.real)
+    return P0 + along * u
 
 
 def line_line(P1: np.ndarray, u1: np.ndarray, P2: np.ndarray, u2: np.ndarray) -> np.ndarray:

@@ -359,8 +359,8 @@ class DyadSolver:
 
 def origin(P, e, p_local: complex):
     """Origin P - e·p of a link whose local point p sits at P. A link whose
-    origin is its pivot on the frame keeps that pivot, one number."""
-    if not p_local and not isinstance(P, np.ndarray):
+    origin is its pivot keeps that pivot (one number on the frame)."""
+    if not p_local:
         return P
     return P - e * p_local
 
@@ -375,9 +375,11 @@ def other_link(pair: Revolute | Prismatic, link: int) -> int:
     return b if a == link else a
 
 
-def cramer_nan(x, det):
-    """x where det ≠ 0, NaN where the plan's lines are parallel (as `_cramer`)."""
-    if _parallel(det):
+def cramer(numerator, det, parallel: bool):
+    """numerator / det, NaN where the plan's lines are parallel, det = 0
+    (`parallel`: anywhere, `_parallel(det)`), as `_cramer` gives."""
+    x = np.divide(numerator, det)
+    if parallel:
         return np.where(det == 0, np.nan, x)
     return x
 

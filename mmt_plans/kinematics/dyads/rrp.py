@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..geometry import circle_line, cross, turn_between
-from .base import DyadSolver, Motion, conj, cramer_nan, entry, origin
+from .base import DyadSolver, Motion, _parallel, conj, cramer, entry, origin
 
 
 class RRP(DyadSolver):
@@ -22,7 +22,7 @@ class RRP(DyadSolver):
         B = circle_line(A, abs(B1 - A1), P0, u, sign)
         e1 = turn_between(A1, B1, A, B)
         m[self.L1] = Motion(e1, origin(A, e1, A1))
-        m[self.L2] = Motion(e2, B - e2 * B2)
+        m[self.L2] = Motion(e2, B - e2 * B2 if B2 else B)
 
     def carried(self):
         return self._at_origin((self.L1, self.K1, self.outer1.point))
@@ -52,19 +52,22 @@ class RRP(DyadSolver):
         _, VA, aA = self.known_point(m, self.K1, a)
         u = L2.e * complex(*self.outer2.direction)
         r = L1.e * (B1 - A1)
-        cu, cr = conj(u), conj(r)
+        cu = conj(u)
         det = (cu * r).real
-        if isinstance(K2.w, np.ndarray) or K2.w:  # a guide that moves: B's point on it
+        parallel = _parallel(det)
+        turning = isinstance(K2.w, np.ndarray) or bool(K2.w)
+        if turning:  # a guide that turns: B's point on it
             B = L1.at(B1)
             V0, a0 = K2.vel(B), K2.acc(B)
         else:
             V0, a0 = K2.v, K2.a
         R = V0 - VA
-        w1 = cramer_nan(np.divide((cu * R).imag, det), det)
-        slide = cramer_nan(-np.divide((cr * R).real, det), det)
-        coriolis = u * (2j * K2.w * slide) if isinstance(K2.w, np.ndarray) or K2.w else 0j
-        R = (a0 + coriolis) - aA + r * (w1 * w1)
-        eps1 = cramer_nan(np.divide((cu * R).imag, det), det)
+        w1 = cramer((cu * R).imag, det, parallel)
+        R_a = (a0 - aA) + r * (w1 * w1)
+        if turning:  # the Coriolis component 2·ω_K2·V_rel·i·u
+            slide = cramer(-(conj(r) * R).real, det, parallel)
+            R_a = R_a + u * (2j * K2.w * slide)
+        eps1 = cramer((cu * R_a).imag, det, parallel)
         L1.move_with(A1, VA, aA, w1, eps1)
         # B moves with link 1's point B (to V_A + iω1·r, a_A + (iε1 - ω1²)·r)
         L2.move_with(

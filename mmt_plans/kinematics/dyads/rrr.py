@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..geometry import circle_circle, turn_between
-from .base import DyadSolver, Motion, conj, cramer_nan, entry, origin
+from .base import DyadSolver, Motion, _parallel, conj, cramer, entry, origin
 
 
 class RRR(DyadSolver):
@@ -56,12 +56,13 @@ class RRR(DyadSolver):
         r1, r2 = L1.e * (B1 - A1), L2.e * (B2 - C2)
         c1, c2 = conj(r1), conj(r2)
         det = (c1 * r2).imag
+        parallel = _parallel(det)
         R = VC - VA
-        w1 = cramer_nan(np.divide((c2 * R).real, det), det)
-        w2 = cramer_nan(np.divide((c1 * R).real, det), det)
+        w1 = cramer((c2 * R).real, det, parallel)
+        w2 = cramer((c1 * R).real, det, parallel)
         R = (aC - aA) + (r1 * (w1 * w1) - r2 * (w2 * w2))
-        eps1 = cramer_nan(np.divide((c2 * R).real, det), det)
-        eps2 = cramer_nan(np.divide((c1 * R).real, det), det)
+        eps1 = cramer((c2 * R).real, det, parallel)
+        eps2 = cramer((c1 * R).real, det, parallel)
         L1.move_with(A1, VA, aA, w1, eps1)
         L2.move_with(C2, VC, aC, w2, eps2)
         # |d1·d2| = |r1|·|r2|, the links' lengths
