@@ -198,11 +198,23 @@ def mechanisms() -> dict[str, tuple[Mechanism, Callable[[np.ndarray], tuple[obje
     }
 
 
+def _steady_allocator() -> None:
+    """Both sides timed with the allocator in the state a working process
+    reaches, not in a fresh one's: a block larger than any array of a sweep,
+    written and freed, lifts glibc's threshold for fresh mappings (and for
+    giving memory back), so that the temporaries of neither side are timed
+    as page faults. In a fresh process the 36,000-angle arrays (576 KB) are
+    each a new mapping, and the reference, with more of them, paid 4× its
+    time in faults."""
+    np.ones(3 * 2**20)  # 24 MB
+
+
 def sweep_rows(repeat: int, counts: Sequence[int] = COUNTS) -> list[list[str]]:
     """One row per case and N: µs per angle of `mmt_plans.sweep` (the cached
     chain) and of the closed form, and their ratio (CPU time, runs in turn)."""
     import mmt_plans
 
+    _steady_allocator()
     rows = []
     for name, (mech, reference) in mechanisms().items():
         mmt_plans.sweep(mech, [0.0])  # the chain built once, as a caller sweeping in a loop

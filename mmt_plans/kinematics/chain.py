@@ -21,8 +21,11 @@ from .geometry import quiet
 # reported as singular rather than solved (see tests/kinematics/test_hard_cases.py)
 SINGULAR_SIN = 1e-12
 BRANCH_GRID = 720
-# a long sweep is solved at most this many angles at a time (working arrays of 256 KB)
-CHUNK = 16384
+# a long sweep is solved at most this many angles at a time (working arrays of
+# 2 MB). Below it one pass: measured in a steady allocator (bench/sweeps.py),
+# copying chunks into one block cost more than the cache saved (36,000 angles:
+# 1.37× numpy in chunks of 16,384, 1.00× in one pass).
+CHUNK = 131072
 
 
 @dataclass(frozen=True)
@@ -123,6 +126,13 @@ def _state(mo: Motion, n: int) -> LinkState:
         _full(mo.spin, n, complex),
         _full(mo.spin_acc, n, complex),
     )
+
+
+@lru_cache(maxsize=64)
+def _frame_state(n: int) -> LinkState:
+    """The frame's state over n angles: plain numbers spread out, the same for
+    every sweep of that many angles."""
+    return _state(Motion(1 + 0j, 0j), n)
 
 
 class _Arena:
@@ -568,10 +578,12 @@ class Chain:
         n = len(phi1_deg)
         if n <= CHUNK:
             m, failed, singular = self._solve(np.radians(phi1_deg))
-            states = {lid: _state(mo, n) for lid, mo in m.items()}
+            states = {
+                lid: _state(mo, n) if lid != FRAME else _frame_state(n) for lid, mo in m.items()
+            }
             return Sweep(self, _ro(phi1_deg.copy()), states, failed, singular)
         # Many angles: solve about CHUNK at a time, so the working arrays stay
-        # small (in cache, and the same memory again for every chunk), and write
+        # bounded (the same memory again for every chunk), and write
         # the results into one block of memory for the whole sweep. The angles
         # are shared out evenly, in as many chunks as CHUNK goes into them
         # (rounded): a short last chunk would pay the per-chunk overhead in full.

@@ -74,16 +74,24 @@ class Motion:
             self.spin = (self.e * 1j) * w
         else:
             self.spin = self.e * (1j * w) if w else 0j
-        self.spin_acc = self.e * _complex(-(w * w), eps) if _given(w) or _given(eps) else 0j
+        if isinstance(w, np.ndarray) and isinstance(eps, np.ndarray) and w.shape == eps.shape:
+            # -ω² written straight into the real parts, ε into the imaginary
+            factor = np.empty(w.shape, dtype=complex)
+            np.multiply(w, w, out=factor.real)
+            np.negative(factor.real, out=factor.real)
+            factor.imag = eps
+            self.spin_acc = self.e * factor
+        else:
+            self.spin_acc = self.e * _complex(-(w * w), eps) if _given(w) or _given(eps) else 0j
 
     def at(self, p_local: complex):
-        return self.o + self.e * p_local if p_local else self.o
+        return _plus(self.o, self.e * p_local) if p_local else self.o
 
     def vel_at(self, p_local: complex):
-        return self.v + self.spin * p_local if p_local else self.v
+        return _plus(self.v, self.spin * p_local) if p_local else self.v
 
     def acc_at(self, p_local: complex):
-        return self.a + self.spin_acc * p_local if p_local else self.a
+        return _plus(self.a, self.spin_acc * p_local) if p_local else self.a
 
     def vel(self, P):
         """Velocity of the link's point that is at P now."""
@@ -104,6 +112,14 @@ class Motion:
     def local(self, P):
         """Local coordinates of the link's point that is at P now."""
         return (P - self.o) * np.conj(self.e)
+
+
+def _plus(base, x):
+    """base + x, where base is zero as a plain number (the crank's pivot at
+    the origin, a pivot's velocity and acceleration) x itself: no pass."""
+    if base.__class__ is complex and not base:
+        return x
+    return base + x
 
 
 def _complex(re, im):
