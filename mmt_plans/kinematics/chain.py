@@ -4,6 +4,7 @@ they are attached, each solved in closed form over all crank angles at once.
 
 from __future__ import annotations
 
+import cmath
 import math
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
@@ -58,8 +59,6 @@ class LinkState:
 
 def _xy(z: np.ndarray) -> np.ndarray:
     """The same numbers seen as [x, y] pairs (no copy)."""
-    if z.dtype == complex and z.flags.c_contiguous and not z.flags.writeable:  # a link's array
-        return z.view(np.float64).reshape(z.shape + (2,))  # read-only as z is
     z = np.ascontiguousarray(z, dtype=complex)
     out = z.view(np.float64).reshape(z.shape + (2,))
     out.setflags(write=False)
@@ -75,6 +74,16 @@ def _full(x, n: int, dtype) -> np.ndarray:
         x = x.astype(dtype)
     x.setflags(write=False)
     return x
+
+
+def _link_xy(z: np.ndarray, n: int) -> np.ndarray:
+    """`_xy` of a link state's complex array (read-only, so is the view):
+    seen as pairs at once where it is contiguous, as it is but for a spread
+    number (which `_recipe` does not ask for) or a strided one."""
+    try:
+        return z.view(np.float64).reshape(n, 2)
+    except ValueError:
+        return _xy(z)
 
 
 @lru_cache(maxsize=512)
@@ -334,7 +343,31 @@ def _work_out_fields(block: np.ndarray, links: dict, chain: Chain) -> None:
             link = links[lid]
             out = rows[where]
             np.multiply(getattr(link, per_unit), column, out=out)
-            np.add(getattr(link, base), out, out=out)
+            origin = getattr(link, base)
+            if not _nothing(origin):  # the crank's pivot, its V and a: zero, no pass
+                np.add(origin, out, out=out)
+
+
+def _nothing(x) -> bool:
+    """Whether x is zero at every angle: a plain zero, or one spread out."""
+    if isinstance(x, np.ndarray):
+        return x.ndim == 1 and x.size > 0 and not x.strides[0] and not x[0]
+    return not x
+
+
+def _not_finite(values: tuple) -> Any:
+    """Where any of the values is not finite. One sum is finite exactly where
+    all its terms are (NaN and ±inf carry); a finite plain number (the
+    frame's) adds nothing to it. A group fixed to the frame has only numbers."""
+    arrays = [x for x in values if isinstance(x, np.ndarray)]
+    if any(not cmath.isfinite(x) for x in values if not isinstance(x, np.ndarray)):
+        return np.ones(np.broadcast_shapes(*(x.shape for x in arrays)), dtype=bool)
+    if not arrays:
+        return False
+    total = arrays[0]
+    for x in arrays[1:]:
+        total = total + x
+    return ~np.isfinite(total)
 
 
 def _over(x, shape: tuple[int, ...]) -> np.ndarray:
@@ -412,7 +445,7 @@ class Sweep:
                     name: (
                         rows[at]
                         if how == "row"
-                        else _xy(getattr(links[at], base))
+                        else _link_xy(getattr(links[at], base), n)
                         if how == "link"
                         else _still(at, n)
                     )
@@ -541,7 +574,7 @@ class Chain:
     # --- one pass over the angles ----------------------------------------------------
     def crank(self, phi_rad: np.ndarray) -> Motion:
         w = self.mech.drive.signed_omega
-        turn = phi_rad - self.crank_local_angle
+        turn = phi_rad - self.crank_local_angle if self.crank_local_angle else phi_rad
         e = np.empty(turn.shape, dtype=complex)  # e^{i·turn}
         np.cos(turn, out=e.real)
         np.sin(turn, out=e.imag)
@@ -643,9 +676,7 @@ class Chain:
         for solver in self.solvers:
             name = solver.name
             L1, L2 = m[solver.L1], m[solver.L2]
-            # one sum is finite exactly where all four are (NaN and ±inf carry)
-            # broadcast: a group fixed to the frame only has plain numbers
-            failed[name] = _ro(_over(~np.isfinite(L1.o + L2.o + L1.e + L2.e), shape))
+            failed[name] = _ro(_over(_not_finite((L1.o, L2.o, L1.e, L2.e)), shape))
             # the links' motion, not the plan's records (`Sweep.plans` solves
             # them again when asked for)
             regular = solver.motion(m, SINGULAR_SIN)
