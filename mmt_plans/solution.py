@@ -212,7 +212,7 @@ def sweep(mechanism: Mechanism, phi1_deg: Sequence[float] | np.ndarray) -> Sweep
     link, over many crank angles at once (NaN where a group cannot assemble;
     see `Sweep.check()`). The chain is built on the first call for a Mechanism
     and reused after (`kinematics(mechanism)`)."""
-    return kinematics(mechanism).sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=float)))
+    return kinematics(mechanism).sweep(phi1_deg)
 
 
 def output_along(mech: Mechanism, sweep: Sweep) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import cmath
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 from typing import Any
@@ -584,7 +585,7 @@ class Chain:
         return Motion(e, self.O + r, w, 1j * w * r, 0.0, -w * w * r)
 
     def frame(self) -> Motion:
-        return Motion(1 + 0j, 0j)
+        return Motion(1 + 0j, 0j, 0.0, 0j, 0.0, 0j)
 
     def place_all(self, phi_rad: np.ndarray, branches: dict[str, int]) -> dict[int, Motion]:
         return self.place(phi_rad, branches)
@@ -606,8 +607,13 @@ class Chain:
                 solver.positions(m, branches.get(solver.name, 1))
         return m
 
-    def sweep(self, phi1_deg: np.ndarray) -> Sweep:
-        phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+    def sweep(self, phi1_deg: float | Iterable[float] | np.ndarray) -> Sweep:
+        """Every point's position, V and a, every link's ω and ε, at the crank
+        angles given (deg)."""
+        if not (phi1_deg.__class__ is np.ndarray and phi1_deg.ndim == 1):
+            phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+        elif phi1_deg.dtype != np.float64:
+            phi1_deg = phi1_deg.astype(np.float64)
         n = len(phi1_deg)
         if n <= CHUNK:
             m, failed, singular = self._solve(np.radians(phi1_deg))

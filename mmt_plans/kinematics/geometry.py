@@ -85,13 +85,14 @@ def circle_line(A: np.ndarray, r: float, P0: np.ndarray, u: np.ndarray, sign: in
     the foot of the perpendicular from A, h the distance of A from the line;
     then X = P0 + (±√(r² - h²) - b)·u."""
     w = P0 - A
-    t = w * np.conj(u)
+    along_x = u.__class__ is complex and u == 1  # a guide along x: no turn
+    t = w if along_x else w * np.conj(u)
     h = t.imag
     half2 = _at_limit(r * r - h * h, lambda: r * r + (w.real**2 + w.imag**2))
     with quiet():
         half = np.sqrt(half2)
     along = half - t.real if sign > 0 else -(half + t.real)
-    return P0 + along * u
+    return P0 + (along if along_x else along * u)
 
 
 def line_line(P1: np.ndarray, u1: np.ndarray, P2: np.ndarray, u2: np.ndarray) -> np.ndarray:

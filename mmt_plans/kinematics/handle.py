@@ -64,7 +64,7 @@ class Kinematics:
         """Positions, velocities and accelerations of every point, ω and ε of
         every link, at the crank angles given (deg); NaN where a group cannot
         assemble (`Sweep.check()` raises it)."""
-        return self.chain.sweep(np.atleast_1d(np.asarray(phi1_deg, dtype=np.float64)))
+        return self.chain.sweep(phi1_deg)
 
     def at(self, phi1_deg: float) -> Sweep:
         """The kinematics at one crank angle; AssemblyError (naming the angle

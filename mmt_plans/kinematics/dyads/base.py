@@ -114,12 +114,15 @@ class Motion:
         return (P - self.o) * np.conj(self.e)
 
 
+def _zero(x) -> bool:
+    """Whether x is zero as a plain number (the crank's pivot at the origin,
+    a pivot's velocity and acceleration, the frame's)."""
+    return x.__class__ is complex and not x
+
+
 def _plus(base, x):
-    """base + x, where base is zero as a plain number (the crank's pivot at
-    the origin, a pivot's velocity and acceleration) x itself: no pass."""
-    if base.__class__ is complex and not base:
-        return x
-    return base + x
+    """base + x; x itself where base is a plain zero (`_zero`): no pass."""
+    return x if _zero(base) else base + x
 
 
 def _complex(re, im):

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..geometry import circle_line, cross, turn_between
-from .base import DyadSolver, Motion, _parallel, conj, cramer, entry, origin
+from .base import DyadSolver, Motion, _parallel, _zero, conj, cramer, entry, origin
 
 
 class RRP(DyadSolver):
@@ -63,7 +63,7 @@ class RRP(DyadSolver):
             V0, a0 = K2.v, K2.a
         R = V0 - VA
         w1 = cramer((cu * R).imag, det, parallel)
-        R_a = (a0 - aA) + r * (w1 * w1)
+        R_a = r * (w1 * w1) - aA if _zero(a0) else (a0 - aA) + r * (w1 * w1)
         if turning:  # the Coriolis component 2·ω_K2·V_rel·i·u
             slide = cramer(-(conj(r) * R).real, det, parallel)
             R_a = R_a + u * (2j * K2.w * slide)
