@@ -418,8 +418,16 @@ class Sweep:
         state = self.links[link]
         return state.acc(state.at(local))
 
-    @cached_property
+    @property
     def _fields(self) -> tuple[dict[str, np.ndarray], ...]:
+        # kept in the instance's dictionary, as `cached_property` would (whose
+        # lock costs more than the lookup): read at every points, v, a
+        found = self.__dict__.get("_worked_out")
+        if found is None:
+            found = self.__dict__["_worked_out"] = self._work_out()
+        return found  # type: ignore[no-any-return]
+
+    def _work_out(self) -> tuple[dict[str, np.ndarray], ...]:
         """o + e·p, v + iω·e·p and a + (iε - ω²)·e·p for every point p of
         every link, as [x, y] pairs. The products share one block of memory
         (one allocation instead of three per point; a long sweep filled it

@@ -347,11 +347,11 @@ class DyadSolver:
         (RRR, RRP: `fused_rotation`)."""
         return self.plan(m).regular(least_sin)
 
-    def known_point(self, m: dict, K: int, name: str) -> tuple[Any, Any, Any]:
-        """Position, velocity and acceleration of the point `name` of link K."""
+    def known_point(self, m: dict, K: int, name: str) -> tuple[Any, Any]:
+        """Velocity and acceleration of the point `name` of link K."""
         p = self.loc(K, name)
         k = m[K]
-        return k.at(p), k.vel_at(p), k.acc_at(p)
+        return k.vel_at(p), k.acc_at(p)
 
     def rotation(self, link: int, P_name: str, X, K: int, m: dict) -> Leg:
         """Link `link` turning about its pair P with the known link K."""

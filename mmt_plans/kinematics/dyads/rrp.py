@@ -49,7 +49,7 @@ class RRP(DyadSolver):
         a, b = self.outer1.point, self.inner.point
         A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
         L1, L2, K2 = m[self.L1], m[self.L2], m[self.K2]
-        _, VA, aA = self.known_point(m, self.K1, a)
+        VA, aA = self.known_point(m, self.K1, a)
         u = L2.e * complex(*self.outer2.direction)
         r = L1.e * (B1 - A1)
         cu = conj(u)

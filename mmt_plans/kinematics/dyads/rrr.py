@@ -51,8 +51,8 @@ class RRR(DyadSolver):
         A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
         C2, B2 = self.loc(self.L2, c), self.loc(self.L2, b)
         L1, L2 = m[self.L1], m[self.L2]
-        _, VA, aA = self.known_point(m, self.K1, a)
-        _, VC, aC = self.known_point(m, self.K2, c)
+        VA, aA = self.known_point(m, self.K1, a)
+        VC, aC = self.known_point(m, self.K2, c)
         r1, r2 = L1.e * (B1 - A1), L2.e * (B2 - C2)
         c1, c2 = conj(r1), conj(r2)
         det = (c1 * r2).imag
