@@ -124,17 +124,22 @@ _ATTR = {name: attr for name, attr, _ in _STATE}
 _KEPT = _STATE[:6]
 
 
+# the kinds as numpy's own dtypes: an array's dtype is compared with one
+# without converting a Python type at every field of every link of a sweep
+_C, _F = np.dtype(complex), np.dtype(float)
+
+
 def _state(mo: Motion, n: int) -> LinkState:
     # _STATE's fields in order, written out: a sweep makes one per link
     return LinkState(
-        _full(mo.e, n, complex),
-        _full(mo.o, n, complex),
-        _full(mo.w, n, float),
-        _full(mo.v, n, complex),
-        _full(mo.eps, n, float),
-        _full(mo.a, n, complex),
-        _full(mo.spin, n, complex),
-        _full(mo.spin_acc, n, complex),
+        _full(mo.e, n, _C),
+        _full(mo.o, n, _C),
+        _full(mo.w, n, _F),
+        _full(mo.v, n, _C),
+        _full(mo.eps, n, _F),
+        _full(mo.a, n, _C),
+        _full(mo.spin, n, _C),
+        _full(mo.spin_acc, n, _C),
     )
 
 
