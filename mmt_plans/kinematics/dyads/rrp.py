@@ -78,7 +78,7 @@ class RRP(DyadSolver):
             K2.eps,
         )
         # |d1·d2| = |r|·|u|, the link's length times the guide's
-        return np.abs(det) > least_sin * (abs(B1 - A1) * np.abs(u))
+        return np.abs(det) > least_sin * (abs(B1 - A1) * abs(u))
 
     def place(self, m, plan):
         l1, _ = plan.legs
