@@ -107,12 +107,16 @@ def turn_between(p_local: complex, q_local: complex, P: Any, Q: Any) -> Any:
     """e^{iθ} of a link whose local points p, q sit at global P, Q: the
     direction of (Q - P)/(q - p).
 
-    Dividing by a real number is a product with its reciprocal, to the last
-    bit (numpy's complex division does just that when the imaginary part is
-    zero), and much cheaper: so for the length, and for q - p along the
-    link's local x axis, the usual case."""
+    With q - p along the link's local x axis, the usual case, the division is
+    by a real number, whose size the direction does not keep: Q - P itself,
+    or P - Q where q lies behind p. The length is divided by as a product
+    with its reciprocal (numpy's complex division by a real number does just
+    that, to the last bit, and takes longer)."""
     c = q_local - p_local
-    q = (Q - P) * (1.0 / c.real) if c.imag == 0 and c.real else (Q - P) / c
+    if c.imag == 0 and c.real:
+        q = Q - P if c.real > 0 else P - Q
+    else:
+        q = (Q - P) / c
     if not isinstance(q, np.ndarray) or not q.ndim:  # a group fixed to the frame: numbers
         q = complex(q)
         return q / abs(q) if q else complex("nan")
