@@ -37,6 +37,10 @@ LegKind = Literal["rotation", "slide"]
 PARALLEL = 1e-6
 
 
+# ω and ε of a link only placed (a group's positions, before its plan)
+_REST = 0.0
+
+
 class Motion:
     """Working state of one link over N crank angles: pose e^{iθ}, origin o,
     ω, velocity and acceleration of the origin, ε.
@@ -50,8 +54,13 @@ class Motion:
 
     __slots__ = ("e", "o", "w", "v", "eps", "a", "spin", "spin_acc")
 
-    def __init__(self, e, o, w=0.0, v=0j, eps=0.0, a=0j) -> None:
+    def __init__(self, e, o, w=_REST, v=0j, eps=_REST, a=0j) -> None:
         self.e, self.o = e, o
+        if w is _REST and eps is _REST:
+            # placed, not yet turning (a group's positions): iω·e = (iε - ω²)·e = 0
+            self.w, self.v, self.eps, self.a = w, v, eps, a
+            self.spin = self.spin_acc = 0j
+            return
         self._set(w, v, eps, a)
 
     @classmethod
