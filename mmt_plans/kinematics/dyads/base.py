@@ -123,15 +123,15 @@ class Motion:
         return (P - self.o) * np.conj(self.e)
 
 
-def _zero(x) -> bool:
+def plain_zero(x) -> bool:
     """Whether x is zero as a plain number (the crank's pivot at the origin,
     a pivot's velocity and acceleration, the frame's)."""
     return x.__class__ is complex and not x
 
 
 def _plus(base, x):
-    """base + x; x itself where base is a plain zero (`_zero`): no pass."""
-    return x if _zero(base) else base + x
+    """base + x; x itself where base is a plain zero (`plain_zero`): no pass."""
+    return x if plain_zero(base) else base + x
 
 
 def _complex(re, im):
@@ -232,7 +232,7 @@ def _cramer(det, d1, d2, rhs, singular=None):
         x1 = cross(d2, rhs) / det
         x2 = cross(d1, rhs) / det
     if singular is None:
-        singular = _parallel(det)
+        singular = parallel_somewhere(det)
     if singular:
         zero = det == 0
         x1 = np.where(zero, np.nan, x1)
@@ -240,7 +240,7 @@ def _cramer(det, d1, d2, rhs, singular=None):
     return x1, x2
 
 
-def _parallel(det) -> bool:
+def parallel_somewhere(det) -> bool:
     """Whether the determinant is zero at any angle."""
     # an array's all() is whether every entry is non-zero (NaN counts as non-zero)
     return not det.all() if isinstance(det, np.ndarray) else det == 0
@@ -335,7 +335,7 @@ class DyadSolver:
         its links their ω, ε and the motion of their origins."""
         X_name, X, leg1, leg2 = self.legs(m)
         det = cross(leg2.d, leg1.d)
-        parallel = _parallel(det)
+        parallel = parallel_somewhere(det)
         leg1.x, leg2.x = _cramer(det, leg1.d, leg2.d, leg2.V0 - leg1.V0, parallel)
         self.after_velocities(m, leg1, leg2)
         leg1.n, leg2.n = leg1.normal(m), leg2.normal(m)
@@ -353,11 +353,11 @@ class DyadSolver:
         regular (`GroupPlan.regular`), without keeping the plan's records: a
         sweep needs the links' motion; the plans are solved again from it when
         asked for (`chain.Sweep.plans`). A kind may solve it in fewer passes
-        (RRR, RRP: `fused_rotation`)."""
+        (RRR and RRP do, in closed form)."""
         return self.plan(m).regular(least_sin)
 
-    def known_point(self, m: dict, K: int, name: str) -> tuple[Any, Any]:
-        """Velocity and acceleration of the point `name` of link K."""
+    def known_motion(self, m: dict, K: int, name: str) -> tuple[Any, Any]:
+        """Velocity and acceleration of the point `name` of the known link K."""
         p = self.loc(K, name)
         k = m[K]
         return k.vel_at(p), k.acc_at(p)
@@ -405,7 +405,7 @@ def other_link(pair: Revolute | Prismatic, link: int) -> int:
 
 def cramer(numerator, det, parallel: bool):
     """numerator / det, NaN where the plan's lines are parallel, det = 0
-    (`parallel`: anywhere, `_parallel(det)`), as `_cramer` gives."""
+    (`parallel`: anywhere, `parallel_somewhere(det)`), as `_cramer` gives."""
     x = np.divide(numerator, det)
     if parallel:
         return np.where(det == 0, np.nan, x)

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..geometry import circle_line, cross, turn_between
-from .base import DyadSolver, Motion, _parallel, _zero, conj, cramer, entry, origin
+from .base import DyadSolver, Motion, conj, cramer, entry, origin, parallel_somewhere, plain_zero
 
 
 class RRP(DyadSolver):
@@ -49,12 +49,12 @@ class RRP(DyadSolver):
         a, b = self.outer1.point, self.inner.point
         A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
         L1, L2, K2 = m[self.L1], m[self.L2], m[self.K2]
-        VA, aA = self.known_point(m, self.K1, a)
+        VA, aA = self.known_motion(m, self.K1, a)
         u = L2.e * complex(*self.outer2.direction)
         r = L1.e * (B1 - A1)
         cu = conj(u)
         det = (cu * r).real
-        parallel = _parallel(det)
+        parallel = parallel_somewhere(det)
         turning = isinstance(K2.w, np.ndarray) or bool(K2.w)
         if turning:  # a guide that turns: B's point on it
             B = L1.at(B1)
@@ -63,7 +63,7 @@ class RRP(DyadSolver):
             V0, a0 = K2.v, K2.a
         R = V0 - VA
         w1 = cramer((cu * R).imag, det, parallel)
-        R_a = r * (w1 * w1) - aA if _zero(a0) else (a0 - aA) + r * (w1 * w1)
+        R_a = r * (w1 * w1) - aA if plain_zero(a0) else (a0 - aA) + r * (w1 * w1)
         if turning:  # the Coriolis component 2·ω_K2·V_rel·i·u
             slide = cramer(-(conj(r) * R).real, det, parallel)
             R_a = R_a + u * (2j * K2.w * slide)

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..geometry import circle_circle, turn_between
-from .base import DyadSolver, Motion, _parallel, conj, cramer, entry, origin
+from .base import DyadSolver, Motion, conj, cramer, entry, origin, parallel_somewhere
 
 
 class RRR(DyadSolver):
@@ -51,12 +51,12 @@ class RRR(DyadSolver):
         A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
         C2, B2 = self.loc(self.L2, c), self.loc(self.L2, b)
         L1, L2 = m[self.L1], m[self.L2]
-        VA, aA = self.known_point(m, self.K1, a)
-        VC, aC = self.known_point(m, self.K2, c)
+        VA, aA = self.known_motion(m, self.K1, a)
+        VC, aC = self.known_motion(m, self.K2, c)
         r1, r2 = L1.e * (B1 - A1), L2.e * (B2 - C2)
         c1, c2 = conj(r1), conj(r2)
         det = (c1 * r2).imag
-        parallel = _parallel(det)
+        parallel = parallel_somewhere(det)
         R = VC - VA
         w1 = cramer((c2 * R).real, det, parallel)
         w2 = cramer((c1 * R).real, det, parallel)
