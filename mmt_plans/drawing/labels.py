@@ -650,6 +650,13 @@ def _point_box(px: np.ndarray, py: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.hypot(dx, dy)
 
 
+def _box_box(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Distance between upright boxes (x0, y0, x1, y1 columns), row by row, 0 where they meet."""
+    dx = np.maximum(np.maximum(b[:, 0] - a[:, 2], a[:, 0] - b[:, 2]), 0.0)
+    dy = np.maximum(np.maximum(b[:, 1] - a[:, 3], a[:, 1] - b[:, 3]), 0.0)
+    return np.hypot(dx, dy)
+
+
 def _point_segment(px: np.ndarray, py: np.ndarray, s: np.ndarray) -> np.ndarray:
     """Distance from points to segments (x0, y0, x1, y1 columns of `s`)."""
     vx, vy = s[:, 2] - s[:, 0], s[:, 3] - s[:, 1]
@@ -716,8 +723,8 @@ class _ObstacleIndex:
     """What labels avoid, cut into pieces a query measures cheaply: every line,
     polyline and ring as its segments, a point as a segment of no length,
     solids (filled polygons, text boxes, arrowheads) whole; a tree of the
-    pieces' boxes. A query asks the tree for the pieces whose boxes come within
-    the largest clearance, measures exactly (numpy for segments, shapely for
+    pieces' boxes, each grown by its own clearance. A query asks the tree for
+    the pieces whose grown boxes it meets, measures exactly (numpy for segments, shapely for
     solids) and returns each (query, obstacle) pair once."""
 
     def __init__(
@@ -753,8 +760,22 @@ class _ObstacleIndex:
                 shapely.bounds(self.whole).reshape(-1, 4),
             ]
         )
+        # the solids that are upright rectangles (text boxes mostly): a box's
+        # distance to one is measured in numpy, box to box
+        self.whole_bounds = bounds[self.n_segs :]
+        wb = self.whole_bounds
+        self.upright = (shapely.get_type_id(self.whole) == 3) & (
+            shapely.get_num_coordinates(self.whole) == 5
+        )
+        self.upright &= np.isclose(
+            shapely.area(self.whole), (wb[:, 2] - wb[:, 0]) * (wb[:, 3] - wb[:, 1]), rtol=1e-12
+        )
+        # each piece's box grown by its own clearance: a query box meets it
+        # wherever the piece may come within that clearance (a large one, a
+        # circle's radius, does not widen every query)
+        g = self.reach[self.owner][:, None] if len(self.owner) else np.zeros((0, 1))
+        bounds = bounds + np.c_[-g, -g, g, g]
         self.tree = STRtree(shapely.box(bounds[:, 0], bounds[:, 1], bounds[:, 2], bounds[:, 3]))
-        self.grow = float(self.reach.max()) if len(self.reach) else 0.0
         self.n = len(shapes)
 
     def _pairs(self, near: np.ndarray, gap: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -767,8 +788,7 @@ class _ObstacleIndex:
         self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
     ) -> tuple[np.ndarray, np.ndarray]:
         """(box, obstacle) pairs: the boxes within each obstacle's clearance."""
-        g = self.grow
-        near = self.tree.query(shapely.box(x0 - g, y0 - g, x1 + g, y1 + g))
+        near = self.tree.query(shapely.box(x0, y0, x1, y1))
         if not near.shape[1]:
             return near[0], near[1]
         b = np.stack([x0, y0, x1, y1], axis=1)[near[0]]
@@ -776,19 +796,25 @@ class _ObstacleIndex:
         seg = near[1] < self.n_segs
         gap[seg] = _segment_box(self.segs[near[1][seg]], b[seg])
         if (~seg).any():
-            rest = near[:, ~seg]
-            gap[~seg] = shapely.distance(
-                shapely.box(x0[rest[0]], y0[rest[0]], x1[rest[0]], y1[rest[0]]),
-                self.whole[rest[1] - self.n_segs],
-            )
+            solid = near[1] - self.n_segs
+            upright = ~seg & self.upright[np.where(seg, 0, solid)]
+            if upright.any():
+                gap[upright] = _box_box(b[upright], self.whole_bounds[solid[upright]])
+            other = ~seg & ~upright
+            if other.any():
+                rest = near[:, other]
+                gap[other] = shapely.distance(
+                    shapely.box(x0[rest[0]], y0[rest[0]], x1[rest[0]], y1[rest[0]]),
+                    self.whole[rest[1] - self.n_segs],
+                )
         return self._pairs(near, gap)
 
     def lines_near(self, lines: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(line, obstacle) pairs for two-point `lines`: those within each
         obstacle's clearance."""
         xy = shapely.get_coordinates(lines).reshape(-1, 4)
-        lo = np.minimum(xy[:, :2], xy[:, 2:]) - self.grow
-        hi = np.maximum(xy[:, :2], xy[:, 2:]) + self.grow
+        lo = np.minimum(xy[:, :2], xy[:, 2:])
+        hi = np.maximum(xy[:, :2], xy[:, 2:])
         near = self.tree.query(shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1]))
         if not near.shape[1]:
             return near[0], near[1]
