@@ -336,6 +336,7 @@ class _ArcPlacer:
         st = np.asarray(starts, dtype=float)
         m, n_spins = len(cs), len(spins)
         score = 0.01 * np.arange(m, dtype=float)
+        own: list[np.ndarray] = []  # points of each candidate's own arcs, 0.5 mm apart or less
         # the arcs: the same polylines as arc_line draws
         for radius, _ in spins:
             inset = _inset(radius)
@@ -345,6 +346,12 @@ class _ArcPlacer:
             i, j = self._near_all(shapely.linestrings(xy), 0.6)
             if i.size:
                 score += np.bincount(i, weights=self._w[j], minlength=m)
+            fine = np.radians(
+                (st + inset)[:, None] + np.linspace(0.0, span, int(span * radius / 25.0) + 2)
+            )
+            own.append(
+                np.stack([cs[:, :1] + radius * np.cos(fine), cs[:, 1:] + radius * np.sin(fine)], -1)
+            )
         # the label boxes: 8 directions × the rings round each arrowhead
         rings = 1.5 + np.asarray(_ARC_LABEL_RINGS)
         dirs = 45.0 * np.arange(8)
@@ -368,6 +375,14 @@ class _ArcPlacer:
         # free box there (a free inner box beats any outer one).
         near = 8 * _NEAR_RINGS
         covered = np.full(boxes_xy.shape[:3], -1, dtype=int)
+        # a label's room is not on the link's own arcs (drawn after this choice),
+        # their arrowheads included: the label's box and its clearance
+        arcs_xy = np.concatenate(own, axis=1)  # (m, points, 2)
+        on_own = np.zeros(boxes_xy.shape[:3], dtype=int)
+        for s_ in range(n_spins):
+            dx = np.abs(boxes_xy[:, s_, :, None, 0] - arcs_xy[:, None, :, 0])
+            dy = np.abs(boxes_xy[:, s_, :, None, 1] - arcs_xy[:, None, :, 1])
+            on_own[:, s_] = np.any((dx <= 3.2 + 0.7) & (dy <= 2.6 + 0.7), axis=2)
 
         def count(xy: np.ndarray) -> np.ndarray:
             flat = xy.reshape(-1, 2)
@@ -376,13 +391,15 @@ class _ArcPlacer:
             i, _ = self._near_all(geoms, 0.0)
             return np.bincount(i, minlength=len(flat)).reshape(xy.shape[:-1])
 
-        covered[:, :, :near] = count(boxes_xy[:, :, :near])
+        covered[:, :, :near] = count(boxes_xy[:, :, :near]) + on_own[:, :, :near]
         # the candidates with a label that has no free inner box: their outer
         # rings in one query too
         full = np.all(covered[:, :, :near] > 0, axis=2)
         lacking = np.flatnonzero(np.any(full, axis=1))
         if lacking.size:
-            covered[lacking, :, near:] = count(boxes_xy[lacking, :, near:])
+            covered[lacking, :, near:] = (
+                count(boxes_xy[lacking, :, near:]) + on_own[lacking, :, near:]
+            )
         ring_of = 0.5 * np.repeat(np.asarray(_ARC_LABEL_RINGS), 8)
         chosen_all: list[list[int]] = []
         for c in range(m):
@@ -397,7 +414,7 @@ class _ArcPlacer:
                     chosen.append(s * 10_000)
                     continue
                 if not (ok[:near] & (covered[c, s, :near] == 0)).any() and covered[c, s, near] < 0:
-                    covered[c, :, near:] = count(boxes_xy[c, :, near:])
+                    covered[c, :, near:] = count(boxes_xy[c, :, near:]) + on_own[c, :, near:]
                 sc = np.where(ok, 10.0 * covered[c, s] + ring_of, np.inf)
                 sc[covered[c, s] < 0] = np.inf
                 k = int(np.argmin(sc))
@@ -564,7 +581,8 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                 for x, y in (at(p, 0) for p, (l0, _) in owners.items() if l0 == 0 and p in pts)
             ]
         )
-        queued: list[tuple[np.ndarray, str, np.ndarray]] = []  # (tip, label, towards)
+        # (tip, label, towards, the room kept for it)
+        queued: list[tuple[np.ndarray, str, np.ndarray, np.ndarray | None]] = []
         sw = solution.sweep
         w1 = abs(float(mech.drive.signed_omega))
         for i in solution.plan_positions:
@@ -596,7 +614,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                         start_deg + _SPAN - inset,
                         line,
                     )
-                    queued.append((tip, f"{sym}_{{{lid}}}", room - tip))
+                    queued.append((tip, f"{sym}_{{{lid}}}", room - tip, room))
         centre = pivot
         start_deg = arcs.round_pivot(centre, _CRANK_R, float(mech.drive.signed_omega))
         tip = sense_arc(
@@ -605,9 +623,9 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         crank = [at(mech.crank_pin, k) - centre for k in range(n)]
         # ω1 names its arc's arrowhead, written towards the gap between the spokes
         anchor = _between_spokes(centre, tip, crank, 7.0)
-        queued.append((tip, "ω_{1}", anchor - tip))
-        for tip, markup, towards in queued:
-            labels.later(tip, markup, towards)
+        queued.append((tip, "ω_{1}", anchor - tip, None))
+        for tip, markup, towards, kept in queued:
+            labels.later(tip, markup, towards, first=kept)
         labels.write_later()
         # Numbered positions of the crank pin, in smaller figures and out beyond
         # the pin's circle, so that "0" is not read as a pivot's "O"; an entry
