@@ -623,9 +623,9 @@ class Labels:
             )
         )
         crossed = self._met_at_feet(clear, self._crossings(clear), ax, ay)
-        if self.boxes:  # never through lettering
+        if self.boxes:  # never through lettering (passing it by a hair is not through)
             written = np.asarray(self.boxes, dtype=object)
-            near = STRtree(written).query(clear, predicate="dwithin", distance=self.clearance)
+            near = STRtree(written).query(clear, predicate="dwithin", distance=_FOOT_CLEAR)
             crossed[np.unique(near[0])] = np.iinfo(np.int64).max
         # the first that crosses nothing, else the first that crosses a few thin lines
         for most in (0, *_LEADER_CROSSINGS):
@@ -677,9 +677,10 @@ class Labels:
             gap = shapely.distance(clear[mine][:, None], shapes[at][None, :])
             reach = np.asarray(self._clearance)[at]
             kept = ((gap < reach) * weight).sum(axis=1)
-            crossed[mine] = np.maximum(crossed[mine] - kept, 0) + (
-                (gap < _FOOT_CLEAR) * weight
-            ).sum(axis=1)
+            hair = np.minimum(reach, _FOOT_CLEAR)
+            crossed[mine] = np.maximum(crossed[mine] - kept, 0) + ((gap < hair) * weight).sum(
+                axis=1
+            )
         return crossed
 
     def _runs_along(self, line: BaseGeometry) -> bool:

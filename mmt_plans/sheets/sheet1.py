@@ -194,10 +194,11 @@ class _ArcPlacer:
     """Where the ω/ε arcs of a link go: round a point of the link, on one side
     of it, crossing as little of what is drawn as it can (a main line of a link
     or block counts 1, a thin line of another position or a trajectory 0.2, an
-    arc or the room kept for a label 3, a label written 10), with a free box
-    for each label next to its arrowhead."""
+    arc or the room kept for a label 3, a label or its leader written 50: an
+    arc over it puts a label on a line), with a free box for each label next
+    to its arrowhead."""
 
-    _WEIGHT = {"main": 1.0, "thin": 0.2, "arc": 3.0, "label": 10.0}
+    _WEIGHT = {"main": 1.0, "thin": 0.2, "arc": 3.0, "label": 50.0}
 
     def __init__(self, sk: Sketch) -> None:
         self.sk = sk
