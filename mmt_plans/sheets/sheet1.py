@@ -134,6 +134,9 @@ _SPAN = 150.0
 _ARC_LABEL_RINGS = (0.0, 1.5, 3.0)
 _NEAR_RINGS = 2  # the rings of a label's boxes tried first, for all candidates at once
 _MAX_SEGMENTS = 6  # a link of many points: its arcs are tried beside its longest segments
+# the box an ω/ε label keeps free round its centre, mm: left/right, down, up (the
+# placer's box of "ω_{10}" at _TEXT, its index hanging below, and its 0.4 mm clearance)
+_ROOM_X, _ROOM_DOWN, _ROOM_UP = 3.7, 3.45, 2.4
 # a diagram's number or pole letter goes no further than this from its point, mm
 _TICK_RINGS = (
     0.0,
@@ -382,13 +385,18 @@ class _ArcPlacer:
         on_own = np.zeros(boxes_xy.shape[:3], dtype=int)
         for s_ in range(n_spins):
             dx = np.abs(boxes_xy[:, s_, :, None, 0] - arcs_xy[:, None, :, 0])
-            dy = np.abs(boxes_xy[:, s_, :, None, 1] - arcs_xy[:, None, :, 1])
-            on_own[:, s_] = np.any((dx <= 3.2 + 0.7) & (dy <= 2.6 + 0.7), axis=2)
+            dy = arcs_xy[:, None, :, 1] - boxes_xy[:, s_, :, None, 1]
+            inside = (dx <= _ROOM_X + 0.3) & (dy >= -_ROOM_DOWN - 0.3) & (dy <= _ROOM_UP + 0.3)
+            on_own[:, s_] = np.any(inside, axis=2)
 
         def count(xy: np.ndarray) -> np.ndarray:
             flat = xy.reshape(-1, 2)
-            w, h = 3.2 + 0.3, 2.6 + 0.3
-            geoms = shapely.box(flat[:, 0] - w, flat[:, 1] - h, flat[:, 0] + w, flat[:, 1] + h)
+            geoms = shapely.box(
+                flat[:, 0] - _ROOM_X,
+                flat[:, 1] - _ROOM_DOWN,
+                flat[:, 0] + _ROOM_X,
+                flat[:, 1] + _ROOM_UP,
+            )
             i, _ = self._near_all(geoms, 0.0)
             return np.bincount(i, minlength=len(flat)).reshape(xy.shape[:-1])
 
@@ -410,7 +418,7 @@ class _ArcPlacer:
                 for k in chosen:  # not on the link's other label (boxes that touch)
                     dx = np.abs(boxes_xy[c, s, :, 0] - boxes_xy[c, k // 10_000, k % 10_000, 0])
                     dy = np.abs(boxes_xy[c, s, :, 1] - boxes_xy[c, k // 10_000, k % 10_000, 1])
-                    ok &= ~((dx <= 6.4) & (dy <= 5.2))
+                    ok &= ~((dx <= 2 * _ROOM_X) & (dy <= _ROOM_DOWN + _ROOM_UP))
                 if not ok.any():
                     chosen.append(s * 10_000)
                     continue
@@ -424,7 +432,9 @@ class _ArcPlacer:
             chosen_all.append(chosen)
         best = int(np.argmin(score))
         picked = [boxes_xy[best, k // 10_000, k % 10_000] for k in chosen_all[best]]
-        self.reserve([shapely.box(x - 3.2, y - 2.6, x + 3.2, y + 2.6) for x, y in picked])
+        self.reserve(
+            [shapely.box(x - _ROOM_X, y - _ROOM_DOWN, x + _ROOM_X, y + _ROOM_UP) for x, y in picked]
+        )
         return cs[best], float(st[best]), [np.asarray(p, dtype=float) for p in picked]
 
     def round_pivot(self, centre: np.ndarray, radius: float, sense: float) -> float:
