@@ -72,6 +72,7 @@ _COMPASS = tuple(
         -67.5,
         -112.5,
         -157.5,
+        *(11.25 + 22.5 * k for k in range(16)),
     )
 )
 # mm further out, tried in turn: finely within NEAR_MM, then beyond (a place
