@@ -38,7 +38,18 @@ from shapely.geometry.base import BaseGeometry
 from ..render.backend import PointLike
 from ..render.recording import Call, NamingKind, RecordingBackend
 
-__all__ = ["BLOCK_MM", "LOOKALIKE_MM", "NEAR_MM", "Labels", "arc_line", "drawn_shapes", "enclosing"]
+__all__ = [
+    "BLOCK_MM",
+    "FINE_LEADER_DIRS",
+    "FINE_LEADER_GROUP",
+    "FINE_LEADER_RINGS",
+    "LOOKALIKE_MM",
+    "NEAR_MM",
+    "Labels",
+    "arc_line",
+    "drawn_shapes",
+    "enclosing",
+]
 
 # The rule of every label (and of the sheet linter's label-near): its box
 # within NEAR_MM of what it names, or a thin leader of its own joins the two.
@@ -80,8 +91,16 @@ _COMPASS = tuple(
 _RINGS = (0.0, 1.2, 2.5, 3.5, 4.2, 5.0, 9.0, 14.0)
 # where no ring near the anchor is free: further out, tied to the anchor by a
 # thin leader line, in 24 directions
-_LEADER_RINGS = (4.5, 6.0, 7.5, 9.0, 11.0, 13.0, 15.5, 18.0, 21.0, 24.5, 28.0, 32.0, 36.0)
-_LEADER_DIRS = tuple(np.exp(1j * math.radians(10.0 * k)) for k in range(36))
+_LEADER_RINGS = (6.0, 10.0, 15.0, 21.0, 28.0, 36.0)
+_LEADER_DIRS = 24
+# finer, for a drawing crowded round its points (sheet 1's mechanism and plans):
+# rings 1.5-3.5 mm apart from just past the near places, every 10°
+FINE_LEADER_RINGS = (4.5, 6.0, 7.5, 9.0, 11.0, 13.0, 15.5, 18.0, 21.0, 24.5, 28.0, 32.0, 36.0)
+FINE_LEADER_DIRS = 36
+# with the fine rings, this many asked about together, nearest first: a short
+# leader that crosses a thin line is better than one three times as long that
+# crosses none
+FINE_LEADER_GROUP = 4
 # the leader is clear of everything from this far (mm) from the anchor on,
 # past the pin and the lines that meet there
 _LEADER_START = 1.8
@@ -113,6 +132,9 @@ class Labels:
         clearance: float = 0.4,
         spacing: float | None = 0.0,
         leaders: bool = True,
+        leader_rings: Sequence[float] = _LEADER_RINGS,
+        leader_dirs: int = _LEADER_DIRS,
+        leader_group: int | None = None,
     ) -> None:
         self.sketch = sketch
         self.size = size
@@ -124,6 +146,11 @@ class Labels:
         # alone), a label with no free place near its anchor goes further out,
         # tied to the anchor by a thin leader line
         self.leaders = leaders
+        # how far out a leader's box may go (mm past `distance`, in turn), in how many directions
+        self.leader_rings = np.array(leader_rings, dtype=float)
+        self._leader_dirs = np.exp(1j * np.radians(360.0 / leader_dirs * np.arange(leader_dirs)))
+        # how many rings are asked about together (None: all at once)
+        self.leader_group = leader_group or len(self.leader_rings)
         # with `follow`, every call recorded on `sketch` is avoided, `clearance` mm off
         self.follow = follow
         self.clearance = clearance
@@ -580,7 +607,7 @@ class Labels:
             p, q = np.asarray(names[1], dtype=float), np.asarray(names[2], dtype=float)
             if float(np.hypot(*(q - p))) > 2.0 * _LEADER_START:
                 starts += [tuple(p + t * (q - p)) for t in _ALONG]
-        dirs = np.array(_LEADER_DIRS)
+        dirs = self._leader_dirs
         if towards is not None and math.hypot(*towards) > 1e-12:
             t = complex(towards[0], towards[1]) / math.hypot(*towards)
             dirs = dirs[np.argsort(-(dirs.real * t.real + dirs.imag * t.imag), kind="stable")]
@@ -589,17 +616,39 @@ class Labels:
             (w / 2) / np.maximum(np.abs(dirs.real), 1e-9),
             (h / 2 + drop / 2) / np.maximum(np.abs(dirs.imag), 1e-9),
         )
-        ring = (distance + np.array(_LEADER_RINGS))[:, None]
+        ring = (distance + self.leader_rings)[:, None]
         st = np.asarray(starts, dtype=float)
         # nearest ring first, then each start in turn, then the direction
         ox = (dirs.real * (ring + half)).ravel()
         oy = (dirs.imag * (ring + half) + drop / 2).ravel()
-        n_rings = len(_LEADER_RINGS)
+        n_rings = len(self.leader_rings)
         shape = (n_rings, len(st), len(dirs))
         ax = np.broadcast_to(st[None, :, 0, None], shape).ravel()
         ay = np.broadcast_to(st[None, :, 1, None], shape).ravel()
         cx = ax + np.broadcast_to(ox.reshape(n_rings, 1, -1), shape).ravel()
         cy = ay + np.broadcast_to(oy.reshape(n_rings, 1, -1), shape).ravel()
+        per_ring = len(st) * len(dirs)
+        for r0 in range(0, n_rings, self.leader_group):
+            part = slice(r0 * per_ring, (r0 + self.leader_group) * per_ring)
+            found = self._leader_among(cx[part], cy[part], ax[part], ay[part], w, h, drop, markup)
+            if found is not None:
+                return found
+        return None
+
+    def _leader_among(
+        self,
+        cx: np.ndarray,
+        cy: np.ndarray,
+        ax: np.ndarray,
+        ay: np.ndarray,
+        w: float,
+        h: float,
+        drop: float,
+        markup: str,
+    ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
+        """Of the boxes centred at cx, cy, each led from ax, ay: the first free
+        one whose leader crosses nothing, else the first whose leader crosses a
+        few thin lines; None if none is free or reachable."""
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = self._label_cost(x0, y0, x1, y1) + self._obstacle_cost(x0, y0, x1, y1)
         cost += self._lookalike_cost(markup, x0, y0, x1, y1)

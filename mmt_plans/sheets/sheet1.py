@@ -22,7 +22,15 @@ from ..diagrams import (
     ILL_CONDITIONED,
     KinematicDiagrams,
 )
-from ..drawing.labels import Labels, arc_line, drawn_shapes, segments_meet_boxes
+from ..drawing.labels import (
+    FINE_LEADER_DIRS,
+    FINE_LEADER_GROUP,
+    FINE_LEADER_RINGS,
+    Labels,
+    arc_line,
+    drawn_shapes,
+    segments_meet_boxes,
+)
 from ..drawing.layout import LayoutError, SheetLayout
 from ..drawing.markup import component_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
@@ -568,7 +576,14 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         # the joints' names first (the arcs are then drawn clear of them), then
         # ω and ε once every arc is drawn, then the positions' numbers.
         pivot = at(mech.crank_pivot, 0)
-        labels = Labels(sk, _TEXT, rings=_MECHANISM_RINGS, leaders=True)
+        labels = Labels(
+            sk,
+            _TEXT,
+            rings=_MECHANISM_RINGS,
+            leader_rings=FINE_LEADER_RINGS,
+            leader_dirs=FINE_LEADER_DIRS,
+            leader_group=FINE_LEADER_GROUP,
+        )
         labels.avoid_drawn(sk.calls)
         # the crank's pivot named on the side away from the pin at position 0,
         # so that its "O" stands far from the position number "0"
@@ -716,7 +731,14 @@ def sketch_plan(
     gid = f"{kind}-plan-{index}"
     pole = "p" if kind == "velocity" else "π"
     moving = _moving_points(solution)
-    placer = Labels(sk, _TEXT)  # the components' labels are written last, at _SMALL
+    # the components' labels are written last, at _SMALL
+    placer = Labels(
+        sk,
+        _TEXT,
+        leader_rings=FINE_LEADER_RINGS,
+        leader_dirs=FINE_LEADER_DIRS,
+        leader_group=FINE_LEADER_GROUP,
+    )
     with sk.group(gid, "plan"):
         # Components of the vector equations, dashed.
         for g in view.groups:
