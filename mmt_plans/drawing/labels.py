@@ -38,7 +38,18 @@ from shapely.geometry.base import BaseGeometry
 from ..render.backend import PointLike
 from ..render.recording import Call, NamingKind, RecordingBackend
 
-__all__ = ["BLOCK_MM", "NEAR_MM", "Labels", "arc_line", "drawn_shapes", "enclosing"]
+__all__ = [
+    "BLOCK_MM",
+    "FINE_LEADER_DIRS",
+    "FINE_LEADER_GROUP",
+    "FINE_LEADER_RINGS",
+    "LOOKALIKE_MM",
+    "NEAR_MM",
+    "Labels",
+    "arc_line",
+    "drawn_shapes",
+    "enclosing",
+]
 
 # The rule of every label (and of the sheet linter's label-near): its box
 # within NEAR_MM of what it names, or a thin leader of its own joins the two.
@@ -72,6 +83,7 @@ _COMPASS = tuple(
         -67.5,
         -112.5,
         -157.5,
+        *(11.25 + 22.5 * k for k in range(16)),
     )
 )
 # mm further out, tried in turn: finely within NEAR_MM, then beyond (a place
@@ -80,7 +92,15 @@ _RINGS = (0.0, 1.2, 2.5, 3.5, 4.2, 5.0, 9.0, 14.0)
 # where no ring near the anchor is free: further out, tied to the anchor by a
 # thin leader line, in 24 directions
 _LEADER_RINGS = (6.0, 10.0, 15.0, 21.0, 28.0, 36.0)
-_LEADER_DIRS = tuple(np.exp(1j * math.radians(15.0 * k)) for k in range(24))
+_LEADER_DIRS = 24
+# finer, for a drawing crowded round its points (sheet 1's mechanism and plans):
+# rings 1.5-3.5 mm apart from just past the near places, every 10°
+FINE_LEADER_RINGS = (4.5, 6.0, 7.5, 9.0, 11.0, 13.0, 15.5, 18.0, 21.0, 24.5, 28.0, 32.0, 36.0)
+FINE_LEADER_DIRS = 36
+# with the fine rings, this many asked about together, nearest first: a short
+# leader that crosses a thin line is better than one three times as long that
+# crosses none
+FINE_LEADER_GROUP = 4
 # the leader is clear of everything from this far (mm) from the anchor on,
 # past the pin and the lines that meet there
 _LEADER_START = 1.8
@@ -88,6 +108,14 @@ _LEADER_ALONG = (1.5, 8.0)  # a leader longer (mm) within this of a line runs al
 # thin lines a leader may cross where none crosses fewer: the last (a pole
 # ringed by a lever's arms and lines of action) before a name stands untied
 _LEADER_CROSSINGS = (2, 6, 12)
+# what meets at a leader's foot (the arc and arrowhead of the ω it names, the
+# links at a joint) it leaves at this clearance, mm, not the one kept from
+# all else: it touches them there by design, and past the pin it crosses none
+_FOOT_CLEAR = 0.15
+# names that read alike (O and 0, o and 0, l and 1) stand at least this far
+# apart, mm, box to box (the sheet linter's names-unique)
+LOOKALIKE_MM = 15.0
+_LOOKALIKE = ({"O", "0"}, {"o", "0"}, {"l", "1"}, {"O", "o"})
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
 
@@ -104,6 +132,9 @@ class Labels:
         clearance: float = 0.4,
         spacing: float | None = 0.0,
         leaders: bool = True,
+        leader_rings: Sequence[float] = _LEADER_RINGS,
+        leader_dirs: int = _LEADER_DIRS,
+        leader_group: int | None = None,
     ) -> None:
         self.sketch = sketch
         self.size = size
@@ -115,6 +146,11 @@ class Labels:
         # alone), a label with no free place near its anchor goes further out,
         # tied to the anchor by a thin leader line
         self.leaders = leaders
+        # how far out a leader's box may go (mm past `distance`, in turn), in how many directions
+        self.leader_rings = np.array(leader_rings, dtype=float)
+        self._leader_dirs = np.exp(1j * np.radians(360.0 / leader_dirs * np.arange(leader_dirs)))
+        # how many rings are asked about together (None: all at once)
+        self.leader_group = leader_group or len(self.leader_rings)
         # with `follow`, every call recorded on `sketch` is avoided, `clearance` mm off
         self.follow = follow
         self.clearance = clearance
@@ -123,6 +159,7 @@ class Labels:
         # the last ring it is written where it covers least
         self.rings = np.array(rings, dtype=float)
         self.boxes: list[BaseGeometry] = []
+        self._texts: list[str] = []  # the markup of each of `boxes`
         self._obstacles: list[BaseGeometry] = []  # shapes, each kept its `_clearance` mm off
         self._clearance: list[float] = []
         self._heavy: list[bool] = []  # which obstacles are main (heavy) lines: never crossed
@@ -132,7 +169,7 @@ class Labels:
         self._grown: BaseGeometry | None = None
         self.unsettled = 0  # labels written where they cover something: no place was free
         self.far = 0  # labels written far from what they name with no leader: none reached
-        self._later: list[tuple[str, Sequence[float], str, PointLike | None]] = []
+        self._later: list[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]] = []
 
     def avoid(self, shape: BaseGeometry, clearance: float, *, heavy: bool = False) -> None:
         """Keep labels `clearance` mm off any shape (a filled polygon is avoided
@@ -217,25 +254,32 @@ class Labels:
         probe = RecordingBackend(look=self.sketch.look)
         return max(probe.rich_text((0.0, 0.0), line, self.size) for line in markup.split("\n"))
 
-    def later(self, anchor: PointLike, markup: str, towards: PointLike | None = None) -> None:
-        """A label to write with `write_later`, once every line is drawn and avoided."""
-        self._later.append(("at", tuple(float(v) for v in anchor), markup, towards))
+    def later(
+        self,
+        anchor: PointLike,
+        markup: str,
+        towards: PointLike | None = None,
+        first: PointLike | None = None,
+    ) -> None:
+        """A label to write with `write_later`, once every line is drawn and avoided
+        (`first`: the centre tried before all others, a room kept for it)."""
+        self._later.append(("at", tuple(float(v) for v in anchor), markup, towards, first))
 
     def later_along(self, start: PointLike, end: PointLike, markup: str) -> None:
         """A label to write beside the segment start–end (`place_along`) with `write_later`."""
         self._later.append(
-            ("along", tuple(float(v) for v in start), markup, tuple(float(v) for v in end))
+            ("along", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), None)
         )
 
     def later_arrow(self, start: PointLike, end: PointLike, markup: str) -> None:
         """A label to write at the head of the arrow start–end (`place_arrow`) with `write_later`."""
         self._later.append(
-            ("arrow", tuple(float(v) for v in start), markup, tuple(float(v) for v in end))
+            ("arrow", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), None)
         )
 
     def write_later(self) -> None:
         """Write the labels kept by `later`, `later_along` and `later_arrow`, in the order they came."""
-        for kind, anchor, markup, other in self._later:
+        for kind, anchor, markup, other, first in self._later:
             if kind == "along":
                 assert other is not None
                 self.place_along(anchor, other, markup, around=True)
@@ -243,7 +287,7 @@ class Labels:
                 assert other is not None
                 self.place_arrow(anchor, other, markup)
             else:
-                self.place(anchor, markup, towards=other)
+                self.place(anchor, markup, towards=other, first=first)
         self._later.clear()
 
     def place(
@@ -254,11 +298,16 @@ class Labels:
         towards: PointLike | None = None,
         distance: float = 1.5,
         group: str | None = None,
+        first: PointLike | None = None,
     ) -> BaseGeometry:
-        """Write `markup` beside `anchor`, first trying the side `towards` points to;
+        """Write `markup` beside `anchor`, first trying the side `towards` points to
+        (centred at `first` before all, where given: a room kept for it);
         inside a group `group` (class "label") if one is named."""
         x, y = float(anchor[0]), float(anchor[1])
         cx, cy, w, h, drop = self._around(np.array([x, y]), markup, towards, distance)
+        if first is not None:
+            cx = np.concatenate([[float(first[0])], cx])
+            cy = np.concatenate([[float(first[1])], cy])
         return self._write(
             cx,
             cy,
@@ -419,6 +468,20 @@ class Labels:
         dy = np.minimum(y1[:, None], b[:, 3]) - np.maximum(y0[:, None], b[:, 1])
         return (np.clip(dx, 0, None) * np.clip(dy, 0, None)).sum(axis=1)
 
+    def _lookalike_cost(
+        self, markup: str, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
+    ) -> np.ndarray:
+        """1 for each label written that reads like `markup` (O and 0, l and 1)
+        within LOOKALIKE_MM of a candidate box: a reader takes one for the other."""
+        cost = np.zeros(x0.size)
+        alike = [g.bounds for g, t in zip(self.boxes, self._texts) if {t, markup} in _LOOKALIKE]
+        if not alike or not x0.size:
+            return cost
+        b = np.array(alike)
+        dx = np.maximum(np.maximum(b[:, 0] - x1[:, None], x0[:, None] - b[:, 2]), 0.0)
+        dy = np.maximum(np.maximum(b[:, 1] - y1[:, None], y0[:, None] - b[:, 3]), 0.0)
+        return (np.hypot(dx, dy) < LOOKALIKE_MM + 0.5).sum(axis=1).astype(float)
+
     def _write(self, *args: Any, **kwargs: Any) -> BaseGeometry:
         """`_write_first_free` that always writes."""
         footprint = self._write_first_free(*args, **kwargs)
@@ -446,7 +509,7 @@ class Labels:
         self._sync()
         leader = leader if self.leaders else None
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
-        cost = self._label_cost(x0, y0, x1, y1)
+        cost = self._label_cost(x0, y0, x1, y1) + self._lookalike_cost(markup, x0, y0, x1, y1)
         # a point inside a block is named beside the block
         outline = enclosing(names[1], self._outlines) if names and names[2] is None else None
         # the one rule: written within NEAR_MM of what it names, or led to it
@@ -473,7 +536,7 @@ class Labels:
         if k < 0 and leader is not None:
             # nothing near is free: further out, tied to it by a leader that
             # crosses nothing, else only thin lines
-            found = self._leader_place(leader, w, h, drop, names, outline)
+            found = self._leader_place(leader, w, h, drop, names, outline, markup)
             if found is not None:
                 (lx, ly), line = found
                 cx, cy = np.array([lx]), np.array([ly])
@@ -514,6 +577,7 @@ class Labels:
             self._leaders.add(len(self._obstacles))
             self.avoid(LineString(line), self.clearance)
         self.boxes.append(footprint)
+        self._texts.append(markup)
         return footprint
 
     def _leader_place(
@@ -524,6 +588,7 @@ class Labels:
         drop: float,
         names: tuple[NamingKind, PointLike, PointLike | None] | None = None,
         outline: BaseGeometry | None = None,
+        markup: str = "",
     ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
         """The centre of the first free box further out round the anchor that a
         straight leader from the anchor reaches without touching anything but
@@ -542,7 +607,7 @@ class Labels:
             p, q = np.asarray(names[1], dtype=float), np.asarray(names[2], dtype=float)
             if float(np.hypot(*(q - p))) > 2.0 * _LEADER_START:
                 starts += [tuple(p + t * (q - p)) for t in _ALONG]
-        dirs = np.array(_LEADER_DIRS)
+        dirs = self._leader_dirs
         if towards is not None and math.hypot(*towards) > 1e-12:
             t = complex(towards[0], towards[1]) / math.hypot(*towards)
             dirs = dirs[np.argsort(-(dirs.real * t.real + dirs.imag * t.imag), kind="stable")]
@@ -551,19 +616,42 @@ class Labels:
             (w / 2) / np.maximum(np.abs(dirs.real), 1e-9),
             (h / 2 + drop / 2) / np.maximum(np.abs(dirs.imag), 1e-9),
         )
-        ring = (distance + np.array(_LEADER_RINGS))[:, None]
+        ring = (distance + self.leader_rings)[:, None]
         st = np.asarray(starts, dtype=float)
         # nearest ring first, then each start in turn, then the direction
         ox = (dirs.real * (ring + half)).ravel()
         oy = (dirs.imag * (ring + half) + drop / 2).ravel()
-        n_rings = len(_LEADER_RINGS)
+        n_rings = len(self.leader_rings)
         shape = (n_rings, len(st), len(dirs))
         ax = np.broadcast_to(st[None, :, 0, None], shape).ravel()
         ay = np.broadcast_to(st[None, :, 1, None], shape).ravel()
         cx = ax + np.broadcast_to(ox.reshape(n_rings, 1, -1), shape).ravel()
         cy = ay + np.broadcast_to(oy.reshape(n_rings, 1, -1), shape).ravel()
+        per_ring = len(st) * len(dirs)
+        for r0 in range(0, n_rings, self.leader_group):
+            part = slice(r0 * per_ring, (r0 + self.leader_group) * per_ring)
+            found = self._leader_among(cx[part], cy[part], ax[part], ay[part], w, h, drop, markup)
+            if found is not None:
+                return found
+        return None
+
+    def _leader_among(
+        self,
+        cx: np.ndarray,
+        cy: np.ndarray,
+        ax: np.ndarray,
+        ay: np.ndarray,
+        w: float,
+        h: float,
+        drop: float,
+        markup: str,
+    ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
+        """Of the boxes centred at cx, cy, each led from ax, ay: the first free
+        one whose leader crosses nothing, else the first whose leader crosses a
+        few thin lines; None if none is free or reachable."""
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = self._label_cost(x0, y0, x1, y1) + self._obstacle_cost(x0, y0, x1, y1)
+        cost += self._lookalike_cost(markup, x0, y0, x1, y1)
         free = np.flatnonzero(cost <= 1e-9)
         # each leader ends 0.4 mm short of its box's nearest point
         ax, ay = ax[free], ay[free]
@@ -584,10 +672,10 @@ class Labels:
                 axis=1,
             )
         )
-        crossed = self._crossings(clear)
-        if self.boxes:  # never through lettering
+        crossed = self._met_at_feet(clear, self._crossings(clear), ax, ay)
+        if self.boxes:  # never through lettering (passing it by a hair is not through)
             written = np.asarray(self.boxes, dtype=object)
-            near = STRtree(written).query(clear, predicate="dwithin", distance=self.clearance)
+            near = STRtree(written).query(clear, predicate="dwithin", distance=_FOOT_CLEAR)
             crossed[np.unique(near[0])] = np.iinfo(np.int64).max
         # the first that crosses nothing, else the first that crosses a few thin lines
         for most in (0, *_LEADER_CROSSINGS):
@@ -615,6 +703,35 @@ class Labels:
         weight[np.isin(owner, list(self._leaders))] = 10**6
         np.add.at(out, line, weight)
         return out
+
+    def _met_at_feet(
+        self, clear: np.ndarray, crossed: np.ndarray, ax: np.ndarray, ay: np.ndarray
+    ) -> np.ndarray:
+        """`crossed` (`_crossings` of the leaders `clear`, whose feet are ax, ay)
+        with what touches a leader's foot (the arc and the arrowhead of the ω
+        it names, the links meeting at a joint) counted only where the leader
+        comes within _FOOT_CLEAR of it: it leaves them there, and only a leader
+        that runs over one of them crosses it."""
+        if not self._obstacles or not len(clear):
+            return crossed
+        shapes = np.asarray(self._obstacles, dtype=object)
+        lines = np.flatnonzero(shapely.get_type_id(shapes) != 0)  # a point keeps its clearance
+        index = self._index()
+        crossed = crossed.copy()
+        for fx, fy in np.unique(np.c_[ax, ay], axis=0):
+            at = lines[shapely.dwithin(shapes[lines], Point(fx, fy), 0.05)]
+            if not at.size:
+                continue
+            mine = np.flatnonzero((ax == fx) & (ay == fy))
+            weight = np.where(index.uncrossable[at] | np.isin(at, list(self._leaders)), 10**6, 1)
+            gap = shapely.distance(clear[mine][:, None], shapes[at][None, :])
+            reach = np.asarray(self._clearance)[at]
+            kept = ((gap < reach) * weight).sum(axis=1)
+            hair = np.minimum(reach, _FOOT_CLEAR)
+            crossed[mine] = np.maximum(crossed[mine] - kept, 0) + ((gap < hair) * weight).sum(
+                axis=1
+            )
+        return crossed
 
     def _runs_along(self, line: BaseGeometry) -> bool:
         """True when a leader runs along a drawn segment (more than 8 mm of it

@@ -22,7 +22,15 @@ from ..diagrams import (
     ILL_CONDITIONED,
     KinematicDiagrams,
 )
-from ..drawing.labels import Labels, arc_line, drawn_shapes, segments_meet_boxes
+from ..drawing.labels import (
+    FINE_LEADER_DIRS,
+    FINE_LEADER_GROUP,
+    FINE_LEADER_RINGS,
+    Labels,
+    arc_line,
+    drawn_shapes,
+    segments_meet_boxes,
+)
 from ..drawing.layout import LayoutError, SheetLayout
 from ..drawing.markup import component_markup, image_markup, point_markup
 from ..drawing.page import Page, Rect, draw_page
@@ -134,6 +142,9 @@ _SPAN = 150.0
 _ARC_LABEL_RINGS = (0.0, 1.5, 3.0)
 _NEAR_RINGS = 2  # the rings of a label's boxes tried first, for all candidates at once
 _MAX_SEGMENTS = 6  # a link of many points: its arcs are tried beside its longest segments
+# the box an ω/ε label keeps free round its centre, mm: left/right, down, up (the
+# placer's box of "ω_{10}" at _TEXT, its index hanging below, and its 0.4 mm clearance)
+_ROOM_X, _ROOM_DOWN, _ROOM_UP = 3.7, 3.45, 2.4
 # a diagram's number or pole letter goes no further than this from its point, mm
 _TICK_RINGS = (
     0.0,
@@ -194,10 +205,11 @@ class _ArcPlacer:
     """Where the ω/ε arcs of a link go: round a point of the link, on one side
     of it, crossing as little of what is drawn as it can (a main line of a link
     or block counts 1, a thin line of another position or a trajectory 0.2, an
-    arc or the room kept for a label 3, a label written 10), with a free box
-    for each label next to its arrowhead."""
+    arc or the room kept for a label 3, a label or its leader written 50: an
+    arc over it puts a label on a line), with a free box for each label next
+    to its arrowhead."""
 
-    _WEIGHT = {"main": 1.0, "thin": 0.2, "arc": 3.0, "label": 10.0}
+    _WEIGHT = {"main": 1.0, "thin": 0.2, "arc": 3.0, "label": 50.0}
 
     def __init__(self, sk: Sketch) -> None:
         self.sk = sk
@@ -336,6 +348,7 @@ class _ArcPlacer:
         st = np.asarray(starts, dtype=float)
         m, n_spins = len(cs), len(spins)
         score = 0.01 * np.arange(m, dtype=float)
+        own: list[np.ndarray] = []  # points of each candidate's own arcs, 0.5 mm apart or less
         # the arcs: the same polylines as arc_line draws
         for radius, _ in spins:
             inset = _inset(radius)
@@ -345,6 +358,12 @@ class _ArcPlacer:
             i, j = self._near_all(shapely.linestrings(xy), 0.6)
             if i.size:
                 score += np.bincount(i, weights=self._w[j], minlength=m)
+            fine = np.radians(
+                (st + inset)[:, None] + np.linspace(0.0, span, int(span * radius / 25.0) + 2)
+            )
+            own.append(
+                np.stack([cs[:, :1] + radius * np.cos(fine), cs[:, 1:] + radius * np.sin(fine)], -1)
+            )
         # the label boxes: 8 directions × the rings round each arrowhead
         rings = 1.5 + np.asarray(_ARC_LABEL_RINGS)
         dirs = 45.0 * np.arange(8)
@@ -368,21 +387,36 @@ class _ArcPlacer:
         # free box there (a free inner box beats any outer one).
         near = 8 * _NEAR_RINGS
         covered = np.full(boxes_xy.shape[:3], -1, dtype=int)
+        # a label's room is not on the link's own arcs (drawn after this choice),
+        # their arrowheads included: the label's box and its clearance
+        arcs_xy = np.concatenate(own, axis=1)  # (m, points, 2)
+        on_own = np.zeros(boxes_xy.shape[:3], dtype=int)
+        for s_ in range(n_spins):
+            dx = np.abs(boxes_xy[:, s_, :, None, 0] - arcs_xy[:, None, :, 0])
+            dy = arcs_xy[:, None, :, 1] - boxes_xy[:, s_, :, None, 1]
+            inside = (dx <= _ROOM_X + 0.3) & (dy >= -_ROOM_DOWN - 0.3) & (dy <= _ROOM_UP + 0.3)
+            on_own[:, s_] = np.any(inside, axis=2)
 
         def count(xy: np.ndarray) -> np.ndarray:
             flat = xy.reshape(-1, 2)
-            w, h = 3.2 + 0.3, 2.6 + 0.3
-            geoms = shapely.box(flat[:, 0] - w, flat[:, 1] - h, flat[:, 0] + w, flat[:, 1] + h)
+            geoms = shapely.box(
+                flat[:, 0] - _ROOM_X,
+                flat[:, 1] - _ROOM_DOWN,
+                flat[:, 0] + _ROOM_X,
+                flat[:, 1] + _ROOM_UP,
+            )
             i, _ = self._near_all(geoms, 0.0)
             return np.bincount(i, minlength=len(flat)).reshape(xy.shape[:-1])
 
-        covered[:, :, :near] = count(boxes_xy[:, :, :near])
+        covered[:, :, :near] = count(boxes_xy[:, :, :near]) + on_own[:, :, :near]
         # the candidates with a label that has no free inner box: their outer
         # rings in one query too
         full = np.all(covered[:, :, :near] > 0, axis=2)
         lacking = np.flatnonzero(np.any(full, axis=1))
         if lacking.size:
-            covered[lacking, :, near:] = count(boxes_xy[lacking, :, near:])
+            covered[lacking, :, near:] = (
+                count(boxes_xy[lacking, :, near:]) + on_own[lacking, :, near:]
+            )
         ring_of = 0.5 * np.repeat(np.asarray(_ARC_LABEL_RINGS), 8)
         chosen_all: list[list[int]] = []
         for c in range(m):
@@ -392,12 +426,12 @@ class _ArcPlacer:
                 for k in chosen:  # not on the link's other label (boxes that touch)
                     dx = np.abs(boxes_xy[c, s, :, 0] - boxes_xy[c, k // 10_000, k % 10_000, 0])
                     dy = np.abs(boxes_xy[c, s, :, 1] - boxes_xy[c, k // 10_000, k % 10_000, 1])
-                    ok &= ~((dx <= 6.4) & (dy <= 5.2))
+                    ok &= ~((dx <= 2 * _ROOM_X) & (dy <= _ROOM_DOWN + _ROOM_UP))
                 if not ok.any():
                     chosen.append(s * 10_000)
                     continue
                 if not (ok[:near] & (covered[c, s, :near] == 0)).any() and covered[c, s, near] < 0:
-                    covered[c, :, near:] = count(boxes_xy[c, :, near:])
+                    covered[c, :, near:] = count(boxes_xy[c, :, near:]) + on_own[c, :, near:]
                 sc = np.where(ok, 10.0 * covered[c, s] + ring_of, np.inf)
                 sc[covered[c, s] < 0] = np.inf
                 k = int(np.argmin(sc))
@@ -406,7 +440,9 @@ class _ArcPlacer:
             chosen_all.append(chosen)
         best = int(np.argmin(score))
         picked = [boxes_xy[best, k // 10_000, k % 10_000] for k in chosen_all[best]]
-        self.reserve([shapely.box(x - 3.2, y - 2.6, x + 3.2, y + 2.6) for x, y in picked])
+        self.reserve(
+            [shapely.box(x - _ROOM_X, y - _ROOM_DOWN, x + _ROOM_X, y + _ROOM_UP) for x, y in picked]
+        )
         return cs[best], float(st[best]), [np.asarray(p, dtype=float) for p in picked]
 
     def round_pivot(self, centre: np.ndarray, radius: float, sense: float) -> float:
@@ -540,7 +576,14 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         # the joints' names first (the arcs are then drawn clear of them), then
         # ω and ε once every arc is drawn, then the positions' numbers.
         pivot = at(mech.crank_pivot, 0)
-        labels = Labels(sk, _TEXT, rings=_MECHANISM_RINGS, leaders=True)
+        labels = Labels(
+            sk,
+            _TEXT,
+            rings=_MECHANISM_RINGS,
+            leader_rings=FINE_LEADER_RINGS,
+            leader_dirs=FINE_LEADER_DIRS,
+            leader_group=FINE_LEADER_GROUP,
+        )
         labels.avoid_drawn(sk.calls)
         # the crank's pivot named on the side away from the pin at position 0,
         # so that its "O" stands far from the position number "0"
@@ -564,7 +607,8 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                 for x, y in (at(p, 0) for p, (l0, _) in owners.items() if l0 == 0 and p in pts)
             ]
         )
-        queued: list[tuple[np.ndarray, str, np.ndarray]] = []  # (tip, label, towards)
+        # (tip, label, towards, the room kept for it)
+        queued: list[tuple[np.ndarray, str, np.ndarray, np.ndarray | None]] = []
         sw = solution.sweep
         w1 = abs(float(mech.drive.signed_omega))
         for i in solution.plan_positions:
@@ -596,7 +640,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                         start_deg + _SPAN - inset,
                         line,
                     )
-                    queued.append((tip, f"{sym}_{{{lid}}}", room - tip))
+                    queued.append((tip, f"{sym}_{{{lid}}}", room - tip, room))
         centre = pivot
         start_deg = arcs.round_pivot(centre, _CRANK_R, float(mech.drive.signed_omega))
         tip = sense_arc(
@@ -605,9 +649,9 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         crank = [at(mech.crank_pin, k) - centre for k in range(n)]
         # ω1 names its arc's arrowhead, written towards the gap between the spokes
         anchor = _between_spokes(centre, tip, crank, 7.0)
-        queued.append((tip, "ω_{1}", anchor - tip))
-        for tip, markup, towards in queued:
-            labels.later(tip, markup, towards)
+        queued.append((tip, "ω_{1}", anchor - tip, None))
+        for tip, markup, towards, kept in queued:
+            labels.later(tip, markup, towards, first=kept)
         labels.write_later()
         # Numbered positions of the crank pin, in smaller figures and out beyond
         # the pin's circle, so that "0" is not read as a pivot's "O"; an entry
@@ -687,7 +731,14 @@ def sketch_plan(
     gid = f"{kind}-plan-{index}"
     pole = "p" if kind == "velocity" else "π"
     moving = _moving_points(solution)
-    placer = Labels(sk, _TEXT)  # the components' labels are written last, at _SMALL
+    # the components' labels are written last, at _SMALL
+    placer = Labels(
+        sk,
+        _TEXT,
+        leader_rings=FINE_LEADER_RINGS,
+        leader_dirs=FINE_LEADER_DIRS,
+        leader_group=FINE_LEADER_GROUP,
+    )
     with sk.group(gid, "plan"):
         # Components of the vector equations, dashed.
         for g in view.groups:

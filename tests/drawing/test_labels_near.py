@@ -1,0 +1,101 @@
+"""Sheet 1's labels near what they name (issue #21), judged by the sheet
+linter's own rules: a name that reads like another (O, o and 0; l and 1)
+stands LOOKALIKE_MM from it, led to its point where that is far; the name at
+an arc's arrowhead is led out past the arc and the arrowhead it leaves; and
+regressions of the generated and sample mechanisms whose labels stood far."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from shapely.geometry import Point
+
+from mmt_plans.drawing.labels import LOOKALIKE_MM, NEAR_MM, Labels
+from mmt_plans.drawing.sketch import Sketch
+from mmt_plans.drawing.symbols import sense_arc
+from mmt_plans.generate import generate_one
+from mmt_plans.render.recording import Line, RecordingBackend
+from mmt_plans.sheets.lint import SheetView, lint
+from mmt_plans.sheets.sheet1 import compose_sheet1
+from mmt_plans.solution import solve
+from mmt_plans.spec import loads
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _findings(sk: Sketch, rules: list[str]) -> list[str]:
+    """The linter's findings on `sk` drawn as one plan of a sheet."""
+    with_group = RecordingBackend(sk.width, sk.height)
+    with with_group.group("d", "plan"):
+        for c in sk.calls:
+            with_group.calls.append(c.with_changes(groups=("d", *c.groups)))
+    return [str(f) for f in lint(SheetView.of(with_group, "en", "t"), rules)]
+
+
+def _leaders(sk: Sketch) -> list[Line]:
+    return [c for c in sk.calls if isinstance(c, Line) and c.naming is not None]
+
+
+@pytest.mark.parametrize(("first", "second"), [("O", "0"), ("o", "0"), ("l", "1")])
+def test_a_look_alike_name_of_the_same_point_stands_apart_and_is_led(first, second):
+    """A crank pin named "o" is also position 0: both name one point, so the
+    second goes LOOKALIKE_MM off the first, tied to the point by a leader."""
+    sk = Sketch(RecordingBackend().look)
+    sk.line((-20.0, 0.0), (0.0, 0.0), "main")
+    sk.circle((0.0, 0.0), 1.0, "main", "white")
+    labels = Labels(sk, 3.5)
+    a = labels.place((0.0, 0.0), first, towards=(1.0, 1.0))
+    b = labels.place((0.0, 0.0), second, towards=(1.0, 1.0))
+    assert a.distance(Point(0.0, 0.0)) <= NEAR_MM
+    assert a.distance(b) >= LOOKALIKE_MM
+    assert len(_leaders(sk)) == 1
+    assert _findings(sk, ["label-near", "label-clear", "names-unique"]) == []
+
+
+def test_a_name_unlike_the_other_stays_beside_it():
+    """The look-alike cost touches look-alikes only: "A" and "1" of one point
+    both stand near it, with no leader."""
+    sk = Sketch(RecordingBackend().look)
+    labels = Labels(sk, 3.5)
+    for text in ("A", "1"):
+        assert labels.place((0.0, 0.0), text).distance(Point(0.0, 0.0)) <= NEAR_MM
+    assert _leaders(sk) == []
+
+
+def test_an_arrowheads_name_is_led_out_past_its_arc():
+    """An ω arc's arrowhead among thin rings 1.4 mm apart (no box near it is
+    free): its name goes further out with a leader that leaves the arrowhead
+    and crosses no main line (the arc, the arrowhead, a main line beside)."""
+    sk = Sketch(RecordingBackend().look)
+    tip = sense_arc(sk, (0.0, 0.0), 5.0, 1.0, 20.0, 170.0, "main")
+    for r in np.arange(1.4, 9.0, 1.4):
+        sk.circle(tuple(tip), float(r), "thin")
+    sk.line((-15.0, -3.0), (15.0, -3.0), "main")
+    labels = Labels(sk, 3.5)
+    labels.place(tip, "ω_{2}", towards=(-1.0, 1.0))
+    assert len(_leaders(sk)) == 1
+    assert _findings(sk, ["label-near", "label-clear"]) == []
+
+
+def _sheet1(toml: str, name: str, rules: list[str]) -> list[str]:
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet1(solve(loads(toml, name)), backend, "en")
+    return [str(f) for f in lint(SheetView.of(backend, "en", name), rules)]
+
+
+@pytest.mark.parametrize("seed", [9, 14, 34, 35, 38])
+def test_generated_crank_pin_o_and_position_0_read_apart(seed):
+    """Regression: these generated mechanisms wrote "o" or "O" 1-5 mm from the
+    position number "0" on sheet 1."""
+    g = generate_one(seed)
+    assert _sheet1(g.toml, g.name, ["names-unique"]) == []
+
+
+def test_four_bar_coupler_names_its_point_b_near_or_led():
+    """Regression: sheet 1 of four_bar_coupler wrote "B" 21 mm from its joint."""
+    path = ROOT / "samples" / "four_bar_coupler.toml"
+    found = _sheet1(path.read_text(encoding="utf-8"), str(path), ["label-near"])
+    assert [f for f in found if "'B'" in f] == []
