@@ -43,6 +43,7 @@ __all__ = [
     "FINE_LEADER_DIRS",
     "FINE_LEADER_GROUP",
     "FINE_LEADER_RINGS",
+    "LOOKALIKE",
     "LOOKALIKE_MM",
     "NEAR_MM",
     "Labels",
@@ -115,7 +116,7 @@ _FOOT_CLEAR = 0.15
 # names that read alike (O and 0, o and 0, l and 1) stand at least this far
 # apart, mm, box to box (the sheet linter's names-unique)
 LOOKALIKE_MM = 15.0
-_LOOKALIKE = ({"O", "0"}, {"o", "0"}, {"l", "1"}, {"O", "o"})
+LOOKALIKE = ({"O", "0"}, {"o", "0"}, {"l", "1"}, {"O", "o"})
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 
 
@@ -474,7 +475,7 @@ class Labels:
         """1 for each label written that reads like `markup` (O and 0, l and 1)
         within LOOKALIKE_MM of a candidate box: a reader takes one for the other."""
         cost = np.zeros(x0.size)
-        alike = [g.bounds for g, t in zip(self.boxes, self._texts) if {t, markup} in _LOOKALIKE]
+        alike = [g.bounds for g, t in zip(self.boxes, self._texts) if {t, markup} in LOOKALIKE]
         if not alike or not x0.size:
             return cost
         b = np.array(alike)

@@ -60,7 +60,7 @@ from shapely import STRtree
 from shapely.geometry import LineString, Point, box
 from shapely.geometry.base import BaseGeometry
 
-from ..drawing.labels import NEAR_MM, drawn_shapes, enclosing
+from ..drawing.labels import LOOKALIKE, LOOKALIKE_MM, NEAR_MM, drawn_shapes, enclosing
 from ..render.look import load_look
 from ..render.recording import Arrow, BeginGroup, Call, Line, Naming, RecordingBackend, Text
 
@@ -81,14 +81,12 @@ LABEL_OVERLAP = 0.5
 COLLINEAR_DEG = 1.0
 COLLINEAR_MM = 0.4
 OVERLAP_MM = 1.0
-LOOKALIKE_MM = 15.0
 ARROW_NAME_MM = 8.0
 MIN_LETTER = 2.5
 PLAN_MM = (100.0, 200.0)
 POLYGON_MM = (150.0, 300.0)
 EMPTY_MAX = 0.5
 _NOT_DRAWINGS = ("table", "title-block", "frame")
-_LOOKALIKE = ({"O", "0"}, {"o", "0"}, {"l", "1"}, {"O", "o"})
 
 
 @dataclass(frozen=True)
@@ -355,7 +353,7 @@ def names_unique(v: SheetView) -> Iterator[Finding]:
                     _at(b.box),
                     v.name,
                 )
-            elif {a.text, b.text} in _LOOKALIKE and a.box.distance(b.box) < LOOKALIKE_MM:
+            elif {a.text, b.text} in LOOKALIKE and a.box.distance(b.box) < LOOKALIKE_MM:
                 yield Finding(
                     "names-unique",
                     f"{a.text!r} and {b.text!r} read alike {a.box.distance(b.box):.0f} mm apart",
