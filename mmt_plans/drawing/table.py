@@ -20,7 +20,7 @@ from ..render.look import Lettering, load_look
 from .page import Rect
 from .sketch import PAD, Sketch
 
-__all__ = ["Table", "rows_per_part", "table_sketch"]
+__all__ = ["TABLE_PART_MM", "Table", "rows_per_part", "table_sketch"]
 
 _PAD = 1.0  # clearance between lettering and cell lines, mm
 _TITLE_GAP = 3.0  # between the title's baseline and the table's top line, mm
@@ -231,6 +231,11 @@ def _one_format_per_column(rows: Sequence[Sequence[str]]) -> list[list[str]]:
 
 
 _ROW_H, _HEAD_H = 8.0, 12.0  # table_sketch's body rows and header, mm
+# A table part at most this tall on a sheet (about half the A1 field's 574 mm,
+# so that the tables stand in two rows at most): a longer table continues in
+# parts side by side, the header repeated (GOST 2.105 §4.4.9), and the sheet's
+# tables are then numbered so that the continuation can name its table.
+TABLE_PART_MM = 280.0
 PART_GAP = 8.0  # between the parts of a table continued side by side, mm
 
 

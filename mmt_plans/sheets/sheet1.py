@@ -30,7 +30,7 @@ from ..drawing.pose import Block, Guide, Pose, draw_poses
 from ..drawing.sketch import PAD as _PAD
 from ..drawing.sketch import Sketch
 from ..drawing.symbols import sense_arc, unit_vector
-from ..drawing.table import rows_per_part, table_sketch
+from ..drawing.table import TABLE_PART_MM, rows_per_part, table_sketch
 from ..errors import shown
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend
@@ -954,13 +954,6 @@ def _stack(parts: Sequence[Sketch], look: Any, gap: float = 6.0) -> Sketch:
 
 
 # --- tables ------------------------------------------------------------------------
-
-
-# A table part at most this tall (about half the A1 field's 574 mm, so that the
-# tables stand in two rows at most): a longer table continues in parts side by
-# side, the header repeated (GOST 2.105 §4.4.9); the sheet's tables are then
-# numbered so the continuation can name its table.
-TABLE_PART_MM = 280.0
 
 
 @dataclass(frozen=True)
