@@ -1109,6 +1109,15 @@ class _Composer:
             (f"mu_l {dl.link}", self._pin_points({dl.link})),
         ]
 
+    def shared_drawings(self) -> dict[tuple[Any, ...], Any]:
+        """The drawings of links made so far, which a compact sheet draws the
+        same (its polygons, tables and the sketches holding them differ)."""
+        return {
+            k: v
+            for k, v in self.cache.items()
+            if k[0] in ("group", "driving-link") or (k[0] == "noted" and isinstance(k[1], int))
+        }
+
     def _pin_points(self, lids: set[int]) -> np.ndarray:
         """The points (m) of the revolute pairs that _Drawing.links draws for `lids`."""
         state = self.fa.loads.state
@@ -1431,7 +1440,9 @@ def compose_sheet2(
     steps = composer.first_fit()
     if steps is None:
         # many groups: the equations in short lines, the tables in parts
+        plain = composer
         composer = _Composer(fa, solution, backend.look, lang, page, compact=True)
+        composer.cache.update(plain.shared_drawings())
         steps = composer.first_fit()
     if steps is None:
         what = composer.last or (
