@@ -18,9 +18,9 @@ from ..i18n import Language, catalogue
 from ..render.backend import Backend, HAlign, PointLike, as_point
 from ..render.look import Lettering, load_look
 from .page import Rect
-from .sketch import Sketch
+from .sketch import PAD, Sketch
 
-__all__ = ["Table", "table_sketch"]
+__all__ = ["TABLE_PART_MM", "Table", "rows_per_part", "table_sketch"]
 
 _PAD = 1.0  # clearance between lettering and cell lines, mm
 _TITLE_GAP = 3.0  # between the title's baseline and the table's top line, mm
@@ -230,6 +230,28 @@ def _one_format_per_column(rows: Sequence[Sequence[str]]) -> list[list[str]]:
     return out
 
 
+_ROW_H, _HEAD_H = 8.0, 12.0  # table_sketch's body rows and header, mm
+# A table part at most this tall on a sheet (about half the A1 field's 574 mm,
+# so that the tables stand in two rows at most): a longer table continues in
+# parts side by side, the header repeated (GOST 2.105 §4.4.9), and the sheet's
+# tables are then numbered so that the continuation can name its table.
+TABLE_PART_MM = 280.0
+PART_GAP = 8.0  # between the parts of a table continued side by side, mm
+
+
+def rows_per_part(rows: int, max_height: float, title: bool = True) -> int:
+    """Body rows in each part of a table of `rows` rows of table_sketch's sizes
+    that must be at most `max_height` tall: as few parts as hold them, the
+    rows shared evenly among them (GOST 2.105 §4.4.9: a long table continues
+    with its header repeated)."""
+    room = max_height - (_TEXT + 3.0 if title else 0.0) - _HEAD_H
+    fit = max(1, math.floor(room / _ROW_H + 1e-9))
+    if rows <= fit:
+        return max(rows, 1)
+    parts = math.ceil(rows / fit)
+    return math.ceil(rows / parts)
+
+
 def table_sketch(
     look: Any,
     gid: str,
@@ -240,21 +262,62 @@ def table_sketch(
     first_markup: Sequence[str],
     lang: Language = "en",
     header_markup: Sequence[str | None] | None = None,
+    *,
+    max_height: float | None = None,
+    continued: str | None = None,
 ) -> Sketch:
     """A Table whose first column is set with indices (rich_text) over empty cells;
     so is each header cell given a markup in `header_markup` (V_{plan}, not
     "V plan"). Ukrainian tables write numbers with a decimal comma, as the
-    scale labels do."""
-    sk = Sketch(look)
+    scale labels do. A table taller than `max_height` is drawn in parts side
+    by side, each no taller, each repeating the header; the parts after the
+    first are titled `continued` ("Continuation of Table 1") and are groups
+    `gid`-2, `gid`-3…"""
 
     def cell(text: str) -> str:
         return catalogue(lang).localise(text) if _NUMBER.fullmatch(text) else text
 
+    # one number format per column over the whole table, then split
     body = [["", *(cell(t) for t in r[1:])] for r in _one_format_per_column(rows)]
-    row_h, head_h = 8.0, 12.0
     marks = list(header_markup or [None] * len(header))
     if len(marks) != len(header):
         raise ValueError(f"header_markup has {len(marks)} cells for {len(header)} columns")
+    per = len(body) if max_height is None else rows_per_part(len(body), max_height)
+    if per >= len(body):
+        return _table_part(look, gid, title, header, body, widths, first_markup, marks)
+    if continued is None:
+        raise ValueError(f"{gid} is continued in parts but has no title for them")
+    sk = Sketch(look)
+    x = 0.0
+    for k, start in enumerate(range(0, len(body), per)):
+        part = _table_part(
+            look,
+            gid if k == 0 else f"{gid}-{k + 1}",
+            title if k == 0 else continued,
+            header,
+            body[start : start + per],
+            widths,
+            first_markup[start : start + per],
+            marks,
+        )
+        part.replay(sk, x, 0.0)
+        x += part.extent().width - 2 * PAD + PART_GAP
+    return sk
+
+
+def _table_part(
+    look: Any,
+    gid: str,
+    title: str,
+    header: Sequence[str],
+    body: Sequence[Sequence[str]],
+    widths: Sequence[float],
+    first_markup: Sequence[str],
+    marks: Sequence[str | None],
+) -> Sketch:
+    """One table (or one part of a continued one) with its overlays, at (0, 0)."""
+    sk = Sketch(look)
+    row_h, head_h = _ROW_H, _HEAD_H
     table = Table(
         ["" if m is not None else h for h, m in zip(header, marks)],
         body,

@@ -409,8 +409,22 @@ _UNIT = re.compile(
 _TITLE_UNIT = re.compile(r",\s*\S+$")  # "Reactions in the pairs, N": the unit of every column
 
 
+def _table_title(v: SheetView, g: str) -> str:
+    """The lettering above a table's outline: its title."""
+    outline = [c.bbox() for c in v.calls if g in c.groups and c.name == "polygon"]
+    top = max((b[3] for b in outline if b is not None), default=math.inf)
+    return " ".join(c.content for c in v.texts if g in c.groups and c.pos[1] > top)
+
+
 def table_format(v: SheetView) -> Iterator[Finding]:
     groups = [g for g, k in v.classes.items() if k == "table"]
+    # a part of a continued table (drawing/table: gid-2, gid-3…, titled
+    # "Continuation of Table n", GOST 2.105) has its unit in its table's title
+    continued = {
+        g: m.group(1)
+        for g in groups
+        if (m := re.fullmatch(r"(.+)-\d+", g)) is not None and m.group(1) in groups
+    }
     for g in groups:
         texts = [c for c in v.texts if g in c.groups]
         lines = [c for c in v.calls if isinstance(c, Line) and g in c.groups and c.line == "main"]
@@ -435,6 +449,8 @@ def table_format(v: SheetView) -> Iterator[Finding]:
             elif c.valign == "middle":
                 columns.setdefault(round(c.pos[0], 1), []).append(c)
         title_text = " ".join(c.content for c in title)
+        if g in continued:
+            title_text += " " + _table_title(v, continued[g])
         for x, cells in columns.items():
             decimals = set()
             plain = True

@@ -38,7 +38,7 @@ from ..drawing.pose import Block, Guide, Pose, draw_poses
 from ..drawing.sketch import PAD as _PAD
 from ..drawing.sketch import Sketch
 from ..drawing.symbols import sense_arc, unit_vector
-from ..drawing.table import table_sketch
+from ..drawing.table import TABLE_PART_MM, rows_per_part, table_sketch
 from ..errors import shown
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend
@@ -1007,12 +1007,51 @@ def _stack(parts: Sequence[Sketch], look: Any, gap: float = 6.0) -> Sketch:
 # --- tables ------------------------------------------------------------------------
 
 
+@dataclass(frozen=True)
+class _TableSpec:
+    """What table_sketch draws of one of sheet 1's tables."""
+
+    gid: str
+    title: str
+    header: Sequence[str]
+    rows: Sequence[Sequence[str]]
+    widths: Sequence[float]
+    marks: Sequence[str]
+    header_markup: Sequence[str | None] | None = None
+
+
+def _continued_tables(specs: Sequence[_TableSpec], look: Any, lang: Language) -> dict[str, Sketch]:
+    """The tables; where one is taller than TABLE_PART_MM, every table of the
+    sheet numbered ("Table 1 – Velocities, m/s") and the long one in parts
+    ("Continuation of Table 1")."""
+    w = _words(lang)
+    numbered = any(rows_per_part(len(t.rows), TABLE_PART_MM) < len(t.rows) for t in specs)
+    out: dict[str, Sketch] = {}
+    for n, t in enumerate(specs, start=1):
+        title = w["table_numbered"].format(n=n, title=t.title) if numbered else t.title
+        out[t.gid] = table_sketch(
+            look,
+            t.gid,
+            title,
+            t.header,
+            t.rows,
+            t.widths,
+            t.marks,
+            lang,
+            header_markup=t.header_markup,
+            max_height=TABLE_PART_MM,
+            continued=w["table_continued"].format(n=n),
+        )
+    return out
+
+
 def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, Sketch]:
     w = _words(lang)
     idx = list(solution.plan_positions)
     views = [solution.plan(i) for i in idx]
     moving = _moving_points(solution)
     out: dict[str, Sketch] = {}
+    specs: list[_TableSpec] = []
 
     for kind, gid, title, sym in (
         ("velocity", "table-velocities", w["velocities"], "V"),
@@ -1048,9 +1087,7 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
             rows.append([lab, *vals])
             marks.append(component_markup(lab))
         header = [w["quantity"], *(f"{w['position']} {i}" for i in idx)]
-        out[gid] = table_sketch(
-            look, gid, title, header, rows, [22.0] + [20.0] * len(idx), marks, lang
-        )
+        specs.append(_TableSpec(gid, title, header, rows, [22.0] + [20.0] * len(idx), marks))
 
     rows = []
     marks = []
@@ -1068,15 +1105,10 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
     units = catalogue(lang)
     for i in idx:
         header += [f"ω, {units.unit('1/s')} ({i})", f"ε, {units.unit('1/s2')} ({i})"]
-    out["table-omega-eps"] = table_sketch(
-        look,
-        "table-omega-eps",
-        w["omega_eps"],
-        header,
-        rows,
-        [14.0] + [20.0] * (2 * len(idx)),
-        marks,
-        lang,
+    specs.append(
+        _TableSpec(
+            "table-omega-eps", w["omega_eps"], header, rows, [14.0] + [20.0] * (2 * len(idx)), marks
+        )
     )
 
     dg = solution.require_diagrams()
@@ -1115,17 +1147,13 @@ def _sketch_tables(solution: Solution, look: Any, lang: Language) -> dict[str, S
             f"{q}_{{{w['diagram']}}}\n{u}",
             f"Δ_{{{q}}}, %",
         ]
-    sk = table_sketch(
-        look,
-        "table-check",
-        w["check"],
-        header,
-        rows,
-        [12.0] + [18.0] * 6,
-        marks,
-        lang,
-        header_markup=header_marks,
+    specs.append(
+        _TableSpec(
+            "table-check", w["check"], header, rows, [12.0] + [18.0] * 6, marks, header_marks
+        )
     )
+    out.update(_continued_tables(specs, look, lang))
+    sk = out["table-check"]
     step = 360.0 / sc.intervals
     notes = [w["grid"].format(n=sc.intervals, step=f"{step:g}")]
     for val in sc.values:

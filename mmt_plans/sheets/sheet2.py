@@ -39,7 +39,7 @@ from ..drawing.page import Page, Rect, draw_page
 from ..drawing.pose import Block, Guide, Pose, draw_poses
 from ..drawing.sketch import PAD, Sketch
 from ..drawing.symbols import sense_arc, unit_vector
-from ..drawing.table import table_sketch
+from ..drawing.table import TABLE_PART_MM, table_sketch
 from ..errors import shown
 from ..forces import ForceAnalysis, ForcePolygon
 from ..forces.state import PositionState
@@ -548,8 +548,29 @@ def _side_by_side(
     return s, e
 
 
+def _wrapped(markup: str, width: float, look: Any) -> list[str]:
+    """An equation's markup in lines no wider than `width` mm where its terms
+    allow, broken before a "+" (the continued line opens with it)."""
+    probe = Sketch(look)
+    terms = markup.split(" + ")
+    lines = [terms[0]]
+    for term in terms[1:]:
+        joined = f"{lines[-1]} + {term}"
+        if probe.rich_text((0.0, 0.0), joined, _TEXT) <= width:
+            lines[-1] = joined
+        else:
+            lines.append(f"+ {term}")
+    return lines
+
+
 def sketch_force_polygons(
-    polygons: Sequence[ForcePolygon], mu_F: float, look: Any, lang: Language, gid: str, title: str
+    polygons: Sequence[ForcePolygon],
+    mu_F: float,
+    look: Any,
+    lang: Language,
+    gid: str,
+    title: str,
+    equation_width: float | None = None,
 ) -> Sketch:
     """The polygons of one group (or of the driving link) to μF, head to tail
     from their origin. A polygon that starts with the sides of one already
@@ -644,8 +665,11 @@ def sketch_force_polygons(
         ext = sk.extent()
         y = ext.bottom - 5.0
         for poly in polygons:
-            sk.rich_text((ext.left + _PAD, y), _equation_markup(poly.equation), _TEXT)
-            y -= 6.0
+            markup = _equation_markup(poly.equation)
+            lines = [markup] if equation_width is None else _wrapped(markup, equation_width, look)
+            for line in lines:
+                sk.rich_text((ext.left + _PAD, y), line, _TEXT)
+                y -= 6.0
         if short:
             note = _words(lang)["zero_polygon" if zero else "short"]
             sk.rich_text((ext.left + _PAD, y), note.format(names=", ".join(short)), _TEXT)
@@ -762,10 +786,15 @@ def _table(
     widths: Sequence[float],
     marks: Sequence[str],
     lang: Language,
+    number: int | None = None,
 ) -> Sketch:
     """table_sketch with the header cells that carry indices (a_{S}, R^{n})
-    lettered as rich text: split after the comma onto two lines if too wide."""
+    lettered as rich text: split after the comma onto two lines if too wide.
+    With a `number` (a compact sheet, _Composer), the table is titled "Table
+    n – …" and continues in parts no taller than TABLE_PART_MM."""
     rich = [bool(re.search(r"[_^]", h)) for h in header]
+    if number is not None:
+        return _continued_table(look, gid, title, header, rows, widths, marks, lang, number)
     sk = table_sketch(
         look,
         gid,
@@ -795,7 +824,53 @@ def _table(
     return sk
 
 
-def sketch_loads_table(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
+# the tables of a compact sheet 2 numbered in the order the analysis makes them
+_TABLE_NUMBERS = {"table-loads": 1, "table-reactions": 2, "table-lever": 3, "table-balancing": 4}
+
+
+def _continued_table(
+    look: Any,
+    gid: str,
+    title: str,
+    header: Sequence[str],
+    rows: Sequence[Sequence[str]],
+    widths: Sequence[float],
+    marks: Sequence[str],
+    lang: Language,
+    number: int,
+) -> Sketch:
+    """_table numbered, in parts no taller than TABLE_PART_MM side by side,
+    each repeating the header (GOST 2.105): the indexed header cells given to
+    table_sketch as markup so that every part letters them."""
+    w = _words(lang)
+    probe = Sketch(look)
+    header_marks: list[str | None] = []
+    for h, width in zip(header, widths):
+        if not re.search(r"[_^]", h):
+            header_marks.append(None)
+        elif probe.rich_text((0.0, 0.0), h, _TEXT) > width - 2.0 and ", " in h:
+            head, unit = h.split(", ", 1)
+            header_marks.append(f"{head},\n{unit}")
+        else:
+            header_marks.append(h)
+    return table_sketch(
+        look,
+        gid,
+        w["table_numbered"].format(n=number, title=title),
+        header,
+        rows,
+        widths,
+        marks,
+        lang,
+        header_markup=header_marks,
+        max_height=TABLE_PART_MM,
+        continued=w["table_continued"].format(n=number),
+    )
+
+
+def sketch_loads_table(
+    fa: ForceAnalysis, mu_l: float, look: Any, lang: Language, compact: bool = False
+) -> Sketch:
     """G, F_IN, M_IN and the arm h of every link; h in mm of the drawing at μ_l (19)."""
     w = _words(lang)
     rows, marks = [], []
@@ -825,11 +900,16 @@ def sketch_loads_table(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language
         [12.0, 14.0, 16.0, 16.0, 16.0, 16.0, 16.0, 16.0, 14.0],
         marks,
         lang,
+        _TABLE_NUMBERS["table-loads"] if compact else None,
     )
 
 
 def _sketch_tables(
-    fa: ForceAnalysis, arms: Sequence[tuple[str, float]], look: Any, lang: Language
+    fa: ForceAnalysis,
+    arms: Sequence[tuple[str, float]],
+    look: Any,
+    lang: Language,
+    compact: bool = False,
 ) -> dict[str, Sketch]:
     w = _words(lang)
     out: dict[str, Sketch] = {}
@@ -856,6 +936,7 @@ def _sketch_tables(
         [16.0, 18.0, 18.0, 18.0, 18.0, 18.0],
         marks,
         lang,
+        _TABLE_NUMBERS["table-reactions"] if compact else None,
     )
     rows, marks = [], []
     by_label = {f.label: f for f in (*fa.lever.forces, fa.lever.balancing)}
@@ -880,6 +961,7 @@ def _sketch_tables(
         [16.0, 12.0, 18.0, 16.0, 22.0],
         marks,
         lang,
+        _TABLE_NUMBERS["table-lever"] if compact else None,
     )
     d = fa.discrepancy_percent
     rows = [
@@ -897,6 +979,7 @@ def _sketch_tables(
         [66.0, 24.0],
         [w["plans"], w["by_lever"], w["delta"], w["moment"]],
         lang,
+        _TABLE_NUMBERS["table-balancing"] if compact else None,
     )
     return out
 
@@ -976,6 +1059,7 @@ def _with_note(sketch: Sketch, note: str) -> Sketch:
     return out
 
 
+COMPACT_EQUATION_MM = 90.0  # a compact sheet's equations under the polygons, at most
 _LEVER_MAX = 250.0  # mm: the longest pa the lever is enlarged to
 _ORDERS = 16  # orders of the drawings tried beyond the textbook's and by size
 _PARTS_FINER = 1  # series steps a group may be drawn larger or smaller than the loaded mechanism
@@ -989,9 +1073,19 @@ class _Composer:
     textbook's, each drawing made once per scale, and their layout."""
 
     def __init__(
-        self, fa: ForceAnalysis, solution: Solution, look: Any, lang: Language, page: Page
+        self,
+        fa: ForceAnalysis,
+        solution: Solution,
+        look: Any,
+        lang: Language,
+        page: Page,
+        compact: bool = False,
     ) -> None:
         self.fa, self.look, self.lang, self.page = fa, look, lang, page
+        # compact (compose_sheet2's reduction for a sheet of many groups): the
+        # equations under the polygons in lines of COMPACT_EQUATION_MM, the
+        # tables numbered and continued in parts (GOST 2.105)
+        self.compact = compact
         self.mu0 = float(solution.mu_l)
         self.cache: dict[tuple[Any, ...], Any] = {}
         self._extents: dict[int, Rect] = {}
@@ -1014,6 +1108,15 @@ class _Composer:
             *((f"mu_l {g.name}", self._pin_points(set(g.links))) for g in fa.groups),
             (f"mu_l {dl.link}", self._pin_points({dl.link})),
         ]
+
+    def shared_drawings(self) -> dict[tuple[Any, ...], Any]:
+        """The drawings of links made so far, which a compact sheet draws the
+        same (its polygons, tables and the sketches holding them differ)."""
+        return {
+            k: v
+            for k, v in self.cache.items()
+            if k[0] in ("group", "driving-link") or (k[0] == "noted" and isinstance(k[1], int))
+        }
 
     def _pin_points(self, lids: set[int]) -> np.ndarray:
         """The points (m) of the revolute pairs that _Drawing.links draws for `lids`."""
@@ -1048,7 +1151,7 @@ class _Composer:
         def make() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
             arms: list[tuple[str, float]] = []
             sketch = sketch_lever(self.fa, mu_V, self.look, self.lang, arms)
-            return sketch, arms, _sketch_tables(self.fa, arms, self.look, self.lang)
+            return sketch, arms, _sketch_tables(self.fa, arms, self.look, self.lang, self.compact)
 
         return self.memo(("lever", mu_V), make)  # type: ignore[no-any-return]
 
@@ -1059,7 +1162,15 @@ class _Composer:
         gid = f"force-polygon-{name}"
         return self.memo(  # type: ignore[no-any-return]
             (gid, mu_F),
-            lambda: sketch_force_polygons(polygons, mu_F, self.look, self.lang, gid, title),
+            lambda: sketch_force_polygons(
+                polygons,
+                mu_F,
+                self.look,
+                self.lang,
+                gid,
+                title,
+                COMPACT_EQUATION_MM if self.compact else None,
+            ),
         )
 
     def extent(self, sketch: Sketch) -> Rect:
@@ -1136,7 +1247,7 @@ class _Composer:
             ("force-mechanism", mu_l),
             lambda: (
                 sketch_loaded_mechanism(fa, mu_l, look, lang),
-                sketch_loads_table(fa, mu_l, look, lang),
+                sketch_loads_table(fa, mu_l, look, lang, self.compact),
             ),
         )
         return sketches, arms
@@ -1327,6 +1438,12 @@ def compose_sheet2(
     fa = forces if forces is not None else solution.require_forces()
     composer = _Composer(fa, solution, backend.look, lang, page)
     steps = composer.first_fit()
+    if steps is None:
+        # many groups: the equations in short lines, the tables in parts
+        plain = composer
+        composer = _Composer(fa, solution, backend.look, lang, page, compact=True)
+        composer.cache.update(plain.shared_drawings())
+        steps = composer.first_fit()
     if steps is None:
         what = composer.last or (
             f"its {len(composer.drawings)} drawings ({', '.join(composer.drawings)}) and "

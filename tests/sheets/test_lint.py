@@ -182,6 +182,25 @@ def test_one_number_format_per_column_and_units_in_the_header():
     assert rules(b, "table-format") == []
 
 
+def test_a_continued_table_has_its_unit_in_its_table_title():
+    # GOST 2.105: a table's further parts are titled "Continuation of Table
+    # 1" alone; the unit in the first part's title ", m/s" is theirs too
+    # (drawing/table.table_sketch names the parts t, t-2, t-3)
+    def continued(first_title: str) -> RecordingBackend:
+        b = RecordingBackend()
+        body = [["1", "84.74"], ["2", "80.62"]]
+        Table(["Pos", "V"], body, [20, 30], title=first_title).draw(b, (10, 100), "t")
+        Table(["Pos", "V"], body, [20, 30], title="Continuation of Table 1").draw(
+            b, (70, 100), "t-2"
+        )
+        return b
+
+    assert rules(continued("Table 1 – Velocities, m/s"), "table-format") == []
+    found = [f.message for f in rules(continued("Table 1 – Velocities"), "table-format")]
+    assert any("of t-2 has no unit" in m for m in found)
+    assert any("of t has no unit" in m for m in found)
+
+
 def test_a_column_is_written_with_one_number_of_decimals():
     # four significant figures of the largest (15140 → 0 decimals), two of the
     # smallest non-zero (52.88 → 0): all in whole newtons

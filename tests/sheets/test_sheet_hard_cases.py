@@ -14,6 +14,7 @@ from click.testing import CliRunner
 import mmt_plans
 from mmt_plans.cli import main
 from mmt_plans.drawing.layout import LayoutError
+from mmt_plans.drawing.page import Page
 from mmt_plans.errors import MmtError
 from mmt_plans.i18n import catalogue
 from mmt_plans.render.recording import RecordingBackend
@@ -130,10 +131,14 @@ def test_beside_keeps_the_longest_segments_of_a_link_of_many_points():
     assert 10.0 < centre[0] < 95.0
 
 
-def test_chain_25_links_sheet2_fails_early_naming_the_file(monkeypatch):
-    # At the README's limit of 25 links, sheet 2 cannot hold twelve groups and
-    # their polygons: it fails once the coarsest scales are found not to fit,
-    # with the file, what did not fit and what to do.
+def test_chain_25_links_sheet2_on_a3_fails_early_naming_the_file(monkeypatch):
+    # Where even the compact sheet 2 (equations in short lines, tables in
+    # parts) cannot hold twelve groups and their polygons (here on A3; on A1
+    # it now composes, test_chain_25_links_composes_both_sheets), it fails once
+    # the coarsest scales are found not to fit, plain and compact, with the
+    # file, what did not fit and what to do. (Issue #21 item 1 changed this
+    # test: it was A1, which then failed; two layouts are now tried, so the
+    # bound is two rows of scales and coarsest, 5 each.)
     solution = _solution("chain_25_links")
     tried: list[dict[str, int]] = []
     real = sheet2_module._Composer.fits
@@ -144,16 +149,25 @@ def test_chain_25_links_sheet2_fails_early_naming_the_file(monkeypatch):
 
     monkeypatch.setattr(sheet2_module._Composer, "fits", counting)
     with pytest.raises(LayoutError) as err:
-        compose_sheet2(solution, RecordingBackend(), "en")
+        compose_sheet2(solution, RecordingBackend(), "en", page=Page.of("A3"))
     text = str(err.value)
     assert isinstance(err.value, MmtError)
     assert "chain_25_links.toml" in text
     assert "dm²" in text or "no room" in text  # what did not fit
     assert "fix:" in text
-    assert len(tried) <= 5, "failing takes a row of scales and the coarsest, no more"
+    assert len(tried) <= 2 * 5, "failing takes a row of scales and the coarsest, no more"
 
 
-def test_chain_25_links_draw_exits_2_and_writes_no_sheet(tmp_path):
+def test_a_sheet_that_cannot_compose_exits_2_and_writes_no_sheet(tmp_path, monkeypatch):
+    # chain_25_links on A3 (the A1 sheets now hold it): draw stops with exit
+    # 2, the file named, no traceback, no sheet left written.
+    class A3:
+        @staticmethod
+        def of(name: str) -> Page:
+            return Page.of("A3")
+
+    for module in (sheet1_module, sheet2_module):
+        monkeypatch.setattr(module, "Page", A3)
     out = tmp_path / "out"
     result = CliRunner().invoke(
         main, ["draw", str(HARD / "chain_25_links.toml"), "-o", str(out), "--format", "svg"]
@@ -162,6 +176,67 @@ def test_chain_25_links_draw_exits_2_and_writes_no_sheet(tmp_path):
     assert "chain_25_links.toml" in result.output
     assert "Traceback" not in result.output
     assert not list(out.glob("sheet*")), "no sheet is left written when one cannot be laid out"
+
+
+@cache
+def _chain_25_sheets():
+    solution = _solution("chain_25_links")
+    first, second = RecordingBackend(), RecordingBackend()
+    return (
+        (first, compose_sheet1(solution, first, "en")),
+        (second, compose_sheet2(solution, second, "en")),
+    )
+
+
+def _bounds(backend: RecordingBackend, gid: str) -> tuple[float, float, float, float]:
+    boxes = [b for c in backend.in_group(gid) if (b := c.bbox()) is not None]
+    return (
+        min(b[0] for b in boxes),
+        min(b[1] for b in boxes),
+        max(b[2] for b in boxes),
+        max(b[3] for b in boxes),
+    )
+
+
+def test_chain_25_links_composes_both_sheets():
+    # The README's limit of 25 links, twelve RRR groups: sheet 1's tables of
+    # 74 and 93 rows continue in parts; sheet 2 is compact (the equations in
+    # lines of 90 mm, its tables in parts). Every drawing and table inside
+    # the frame, none over another.
+    frame = Page.of("A1").frame
+    for backend, result in _chain_25_sheets():
+        rects = list(result.placed.items())
+        for name, r in rects:
+            assert frame.x - 1e-6 <= r.x and r.x + r.width <= frame.x + frame.width + 1e-6, name
+            assert frame.y - 1e-6 <= r.y and r.y + r.height <= frame.y + frame.height + 1e-6, name
+        for k, (a, ra) in enumerate(rects):
+            for b, rb in rects[k + 1 :]:
+                dx = min(ra.x + ra.width, rb.x + rb.width) - max(ra.x, rb.x)
+                dy = min(ra.y + ra.height, rb.y + rb.height) - max(ra.y, rb.y)
+                assert dx <= 1e-6 or dy <= 1e-6, (a, b)
+
+
+def test_chain_25_links_tables_continue_in_parts_with_their_header():
+    (first, _), (second, _) = _chain_25_sheets()
+    groups = {
+        c["id"] for b in (first, second) for c in b.calls if c.name == "begin_group"
+    }
+    # velocities: 74 rows, ceil(74 / 32) = 3 parts (drawing/table.rows_per_part)
+    assert {"table-velocities", "table-velocities-2", "table-velocities-3"} <= groups
+    assert "table-velocities-4" not in groups
+    texts = [c["content"] for c in first.named("text")]
+    assert "Table 1 – Velocities, m/s" in texts
+    assert texts.count("Continuation of Table 1") == 2
+    assert "Continuation of Table 2" in texts  # accelerations
+    for backend in (first, second):
+        for gid in {c["id"] for c in backend.calls if c.name == "begin_group"}:
+            if gid.startswith("table"):
+                x0, y0, x1, y1 = _bounds(backend, gid)
+                assert y1 - y0 <= 280.0 + 1e-6, (gid, y1 - y0)
+    # the lever's table of 52 forces in two parts, the header in each
+    lever = [_texts(second, g) for g in ("table-lever", "table-lever-2")]
+    assert all("h" in t and "F, N" in t for t in lever)
+    assert "Continuation of Table 3" in lever[1]
 
 
 def test_point_named_p_image_is_not_the_pole():
