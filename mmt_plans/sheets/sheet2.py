@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import shapely
 
 from ..drawing.labels import Labels
 from ..drawing.layout import LayoutError, SheetLayout, pack
@@ -548,6 +549,36 @@ def _side_by_side(
     return s, e
 
 
+def _caption_place(
+    labels: Labels, corners: np.ndarray, caption: str
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """Where a link's polygon inside its group's is named ("link 4"): inside
+    the polygon, at the free place nearest its centre (the anchor and the side
+    the placer tries first put the box there); else beside the centre."""
+    centre = corners.mean(axis=0)
+    w, h = labels.width(caption) + 0.4, labels.size + 0.4
+    region = shapely.convex_hull(shapely.multipoints(corners))
+    lo, hi = corners.min(axis=0), corners.max(axis=0)
+    xs, ys = np.meshgrid(np.arange(lo[0], hi[0] + 1.0, 1.0), np.arange(lo[1], hi[1] + 1.0, 1.0))
+    grid = np.c_[xs.ravel(), ys.ravel()]
+    grid = grid[shapely.contains_xy(region, grid[:, 0], grid[:, 1])] if grid.size else grid
+    taken = np.array([b.bounds for b in labels.boxes]).reshape(-1, 4)
+    gap = labels.spacing
+    for q in grid[np.argsort(np.hypot(*(grid - centre).T), kind="stable")]:
+        x0, y0, x1, y1 = q[0] - w / 2, q[1] - h / 2, q[0] + w / 2, q[1] + h / 2
+        if (
+            (taken[:, 0] - gap < x1)
+            & (taken[:, 2] + gap > x0)
+            & (taken[:, 1] < y1)
+            & (taken[:, 3] > y0)
+        ).any():
+            continue
+        if labels.free((x0, y0, x1, y1)):
+            # the box centred on q: the placer's first place east of the anchor
+            return q - np.array([1.5 + w / 2, 0.0]), np.array([1.0, 0.0])
+    return centre, None
+
+
 def sketch_force_polygons(
     polygons: Sequence[ForcePolygon], mu_F: float, look: Any, lang: Language, gid: str, title: str
 ) -> Sketch:
@@ -563,7 +594,7 @@ def sketch_force_polygons(
     offset = np.zeros(2)
     sides: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # label → exact start, end
     arrows: list[tuple[np.ndarray, np.ndarray]] = []  # as drawn, some beside their line
-    names: dict[str, list[Any]] = {}  # label → [anchor, markup, towards], written last
+    names: dict[str, list[Any]] = {}  # label → [start, markup, end] of its side, written last
     captions: list[tuple[np.ndarray, str]] = []
     with sk.group(gid, "force-polygon"):
         for n, poly in enumerate(polygons):
@@ -589,7 +620,7 @@ def sketch_force_polygons(
                     offset = np.array([sk.extent().right + 15.0 - min(xs), 0.0])
             corners = [offset + np.asarray(v.start, float) / mu_F for v in poly.vectors]
             if len(polygons) > 1 and poly.title != title:
-                captions.append((np.mean(corners, axis=0), _polygon_title(poly.title, lang)))
+                captions.append((np.array(corners), _polygon_title(poly.title, lang)))
             for key, v in zip(keys, poly.vectors):
                 if key in drawn:
                     continue
@@ -609,8 +640,8 @@ def sketch_force_polygons(
                 s, e = _side_by_side(sk, labels, arrows, s, e)
                 sk.arrow(s, e, "dashed" if component else "main", **_ARROW)  # type: ignore[arg-type]
                 labels.avoid_line(s, e)
-                u = (e - s) / length
-                names[v.label] = [(s + e) / 2, force_markup(v.label), np.array([-u[1], u[0]])]
+                # named beside its side, anywhere along it (as the textbook writes R12 by its side)
+                names[v.label] = [s, force_markup(v.label), e]
             # R = R^n + R^t: the resultant of two consecutive components, main line
             for a, b in zip(poly.vectors, poly.vectors[1:]):
                 if (
@@ -635,11 +666,12 @@ def sketch_force_polygons(
             # zero, the polygon a single point, drawn as one
             sk.circle(offset, 0.8, "main", "black")
             labels.avoid_line(offset - 1.0, offset + 1.0)
-        for anchor, markup, towards in names.values():
-            labels.later(anchor, markup, towards)
-        for centre, caption in captions:
-            labels.later(centre, caption, None)
+        for start, markup, end in names.values():
+            labels.later_along(start, end, markup)
         labels.write_later()
+        for corners_of, caption in captions:
+            anchor, towards = _caption_place(labels, corners_of, caption)
+            labels.place(anchor, caption, towards=towards)
         _UNSETTLED[sk] = labels.unsettled
         ext = sk.extent()
         y = ext.bottom - 5.0
