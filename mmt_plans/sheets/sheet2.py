@@ -214,7 +214,6 @@ class _Drawing:
 
     def line(self, a: np.ndarray, b: np.ndarray, kind: LineType = "main") -> None:
         self.sk.line(a, b, kind)
-        self.labels.avoid_line(a, b)
 
     def later(self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None) -> None:
         """A label written after every line, so that it can avoid them all."""
@@ -235,7 +234,6 @@ class _Drawing:
             at, end = at + 2.5 * np.array([-u[1], u[0]]), end + 2.5 * np.array([-u[1], u[0]])
         self._arrows.append((at, end))
         self.sk.arrow(at, end, line, **_ARROW)  # type: ignore[arg-type]
-        self.labels.avoid_line(at, end)
         self.labels.later_arrow(at, end, force_markup(label))
 
     def moment(self, centre: np.ndarray, M: float, label: str, radius: float = 6.0) -> None:
@@ -254,7 +252,6 @@ class _Drawing:
         h = float(np.hypot(*(foot - pivot)))
         if h >= 1.0:
             self.sk.line(pivot, foot, "thin")
-            self.labels.avoid_line(pivot, foot)
             # the line of action carried on to the foot, thin
             self.sk.line(at, foot, "thin")
             self.labels.later_along(pivot, foot, label)
@@ -312,12 +309,9 @@ class _Drawing:
         pivots and guides hatched as on the kinematic diagram."""
         lids = set(lids)
         state, mech = self.state, self.state.mech
+        # the lines and blocks drawn are avoided as the labels follow the sketch
+        # (once: a line listed twice would count twice when a leader crosses it)
         drawn = draw_poses(self.sk, [self._pose(lids, frame)])
-        for a, b in drawn.segments:
-            self.labels.avoid_line(a, b)
-        for corners in drawn.blocks:
-            for a, b in zip(corners, corners[1:] + corners[:1]):
-                self.labels.avoid_line(a, b)
         for P in drawn.pivots:
             self.labels.avoid_line(P, P - np.array([0.0, 6.0]), 4.5)
         for P in [*drawn.pivots, *(c for c, _ in drawn.pins)]:
@@ -362,7 +356,6 @@ class _Drawing:
                 K = self.mm(sh.point)
                 if float(np.hypot(*(K - S))) >= 1.0:
                     self.sk.line(S, K, "thin")
-                    self.labels.avoid_line(S, K)
                     self.labels.later_along(S, K, f"h_{{{lid}}}")
                 self.force(K, ll.inertia_force, f"F_in{lid}", largest)
             elif ll.mass:
@@ -543,7 +536,6 @@ def _side_by_side(
     if float(np.hypot(*shift)) > 0.0:
         for at in (s, e):
             sk.line(at, at + shift, "thin")
-            labels.avoid_line(at, at + shift)
         s, e = s + shift, e + shift
     arrows.append((s, e))
     return s, e
@@ -639,7 +631,6 @@ def sketch_force_polygons(
                 sides[v.label] = (s, e)
                 s, e = _side_by_side(sk, labels, arrows, s, e)
                 sk.arrow(s, e, "dashed" if component else "main", **_ARROW)  # type: ignore[arg-type]
-                labels.avoid_line(s, e)
                 # named beside its side, anywhere along it (as the textbook writes R12 by its side)
                 names[v.label] = [s, force_markup(v.label), e]
             # R = R^n + R^t: the resultant of two consecutive components, main line
@@ -658,7 +649,6 @@ def sketch_force_polygons(
                     drawn[key] = True
                     s, e = _side_by_side(sk, labels, arrows, s, e)
                     sk.arrow(s, e, "main", **_ARROW)  # type: ignore[arg-type]
-                    labels.avoid_line(s, e)
                     labels.later_along(s, e, force_markup(a.label[:-2]))
         zero = not sides and guide_side(polygons) <= 0.0
         if zero:
@@ -707,13 +697,11 @@ def sketch_lever(
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
                 sk.line((0.0, 0.0), img[n], "thin")
-                labels.avoid_line((0.0, 0.0), img[n])
         for link in mech.links.values():
             names = [p for p in link.points if p in img]
             for i in range(len(names)):
                 for j in range(i + 1, len(names)):
                     sk.line(img[names[i]], img[names[j]], "main")
-                    labels.avoid_line(img[names[i]], img[names[j]])
         # the images named, those at one point in one label: "d, s_{5}, k_{5}"
         marks: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
 
