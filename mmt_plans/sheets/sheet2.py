@@ -25,7 +25,7 @@ import math
 import random
 import re
 import weakref
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -208,6 +208,10 @@ class _Drawing:
         self.state = state
         self.mu_l = mu_l
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
+        # the labels, written once everything is drawn: those with the fewest
+        # places first (a sense arc's name by its tip, then points, then forces,
+        # named anywhere along the shaft, then arms, along the arm or led from it)
+        self._labels: list[tuple[int, Callable[[], None]]] = []
 
     def mm(self, P: Any) -> np.ndarray:
         return _xy(_c(P)) / self.mu_l
@@ -215,9 +219,17 @@ class _Drawing:
     def line(self, a: np.ndarray, b: np.ndarray, kind: LineType = "main") -> None:
         self.sk.line(a, b, kind)
 
-    def later(self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None) -> None:
+    def later(
+        self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None, rank: int = 1
+    ) -> None:
         """A label written after every line, so that it can avoid them all."""
-        self.labels.later(anchor, markup, towards)
+        self._labels.append((rank, lambda: self.labels.later(anchor, markup, towards)))
+
+    def later_arrow(self, start: np.ndarray, end: np.ndarray, markup: str) -> None:
+        self._labels.append((2, lambda: self.labels.later_arrow(start, end, markup)))
+
+    def later_along(self, start: np.ndarray, end: np.ndarray, markup: str) -> None:
+        self._labels.append((3, lambda: self.labels.later_along(start, end, markup)))
 
     def force(
         self, at: np.ndarray, F: np.ndarray, label: str, largest: float, line: str = "main"
@@ -234,15 +246,16 @@ class _Drawing:
             at, end = at + 2.5 * np.array([-u[1], u[0]]), end + 2.5 * np.array([-u[1], u[0]])
         self._arrows.append((at, end))
         self.sk.arrow(at, end, line, **_ARROW)  # type: ignore[arg-type]
-        self.labels.later_arrow(at, end, force_markup(label))
+        self.later_arrow(at, end, force_markup(label))
 
     def moment(self, centre: np.ndarray, M: float, label: str, radius: float = 6.0) -> None:
         """A couple as an arc with its arrowhead in the sense of M (ccw positive)."""
         if M == 0.0:
             return
+        # the arc is avoided as drawn (the labels follow the sketch), not as a
+        # disc: the points inside it (the pivot it turns round) are named there
         tip = sense_arc(self.sk, centre, radius, M)
-        self.labels.avoid_circle(centre, radius + 0.4)
-        self.later(tip, force_markup(label), unit_vector(tip - centre))
+        self.later(tip, force_markup(label), unit_vector(tip - centre), rank=0)
 
     def arm(self, pivot: np.ndarray, at: np.ndarray, F: np.ndarray, label: str) -> float:
         """The perpendicular from `pivot` to the force's line of action; its length, mm."""
@@ -254,7 +267,7 @@ class _Drawing:
             self.sk.line(pivot, foot, "thin")
             # the line of action carried on to the foot, thin
             self.sk.line(at, foot, "thin")
-            self.labels.later_along(pivot, foot, label)
+            self.later_along(pivot, foot, label)
         return h
 
     # the mechanism's links -----------------------------------------------------------
@@ -356,7 +369,7 @@ class _Drawing:
                 K = self.mm(sh.point)
                 if float(np.hypot(*(K - S))) >= 1.0:
                     self.sk.line(S, K, "thin")
-                    self.labels.later_along(S, K, f"h_{{{lid}}}")
+                    self.later_along(S, K, f"h_{{{lid}}}")
                 self.force(K, ll.inertia_force, f"F_in{lid}", largest)
             elif ll.mass:
                 self.force(S, ll.inertia_force, f"F_in{lid}", largest)
@@ -369,6 +382,8 @@ class _Drawing:
                 self.later(self.mm(f.point), f"{force_markup(f.name)} = 0", np.array([0.0, 1.0]))
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
+        for _, queue in sorted(self._labels, key=lambda item: item[0]):
+            queue()
         self.labels.write_later()
         _UNSETTLED[self.sk] = self.labels.unsettled
         ext = self.sk.extent()
@@ -544,30 +559,31 @@ def _side_by_side(
 def _caption_place(
     labels: Labels, corners: np.ndarray, caption: str
 ) -> tuple[np.ndarray, np.ndarray | None]:
-    """Where a link's polygon inside its group's is named ("link 4"): inside
-    the polygon, at the free place nearest its centre (the anchor and the side
-    the placer tries first put the box there); else beside the centre."""
+    """Where a link's polygon inside its group's is named ("link 4"): on the
+    polygon or by it (the box within 3 mm of it), at the free place nearest its centre
+    (the anchor and the side the placer tries first put the box there); else
+    beside the centre."""
     centre = corners.mean(axis=0)
     w, h = labels.width(caption) + 0.4, labels.size + 0.4
     region = shapely.convex_hull(shapely.multipoints(corners))
-    lo, hi = corners.min(axis=0), corners.max(axis=0)
-    xs, ys = np.meshgrid(np.arange(lo[0], hi[0] + 1.0, 1.0), np.arange(lo[1], hi[1] + 1.0, 1.0))
-    grid = np.c_[xs.ravel(), ys.ravel()]
-    grid = grid[shapely.contains_xy(region, grid[:, 0], grid[:, 1])] if grid.size else grid
+    lo, hi = corners.min(axis=0) - (w / 2 + 3.0), corners.max(axis=0) + (w / 2 + 3.0)
+    xs, ys = np.meshgrid(np.arange(lo[0], hi[0], 1.0), np.arange(lo[1], hi[1], 1.0))
+    q = np.c_[xs.ravel(), ys.ravel()]
+    x0, y0, x1, y1 = q[:, 0] - w / 2, q[:, 1] - h / 2, q[:, 0] + w / 2, q[:, 1] + h / 2
+    on = shapely.distance(shapely.box(x0, y0, x1, y1), region) <= 3.0
     taken = np.array([b.bounds for b in labels.boxes]).reshape(-1, 4)
     gap = labels.spacing
-    for q in grid[np.argsort(np.hypot(*(grid - centre).T), kind="stable")]:
-        x0, y0, x1, y1 = q[0] - w / 2, q[1] - h / 2, q[0] + w / 2, q[1] + h / 2
-        if (
-            (taken[:, 0] - gap < x1)
-            & (taken[:, 2] + gap > x0)
-            & (taken[:, 1] < y1)
-            & (taken[:, 3] > y0)
-        ).any():
-            continue
-        if labels.free((x0, y0, x1, y1)):
+    clash = (
+        (taken[None, :, 0] - gap < x1[:, None])
+        & (taken[None, :, 2] + gap > x0[:, None])
+        & (taken[None, :, 1] < y1[:, None])
+        & (taken[None, :, 3] > y0[:, None])
+    ).any(axis=1)
+    ok = np.flatnonzero(on & ~clash)
+    for k in ok[np.argsort(np.hypot(*(q[ok] - centre).T), kind="stable")][:3000]:
+        if labels.free((x0[k], y0[k], x1[k], y1[k])):
             # the box centred on q: the placer's first place east of the anchor
-            return q - np.array([1.5 + w / 2, 0.0]), np.array([1.0, 0.0])
+            return q[k] - np.array([1.5 + w / 2, 0.0]), np.array([1.0, 0.0])
     return centre, None
 
 
