@@ -10,6 +10,7 @@ from functools import cache
 from pathlib import Path
 
 import pytest
+from shapely.geometry import Point
 
 import mmt_plans
 from mmt_plans.generate import generate_one
@@ -94,3 +95,24 @@ def test_regression_a_link_polygon_named_on_it(seed):
         captions = [lab for lab in v.labels if lab.text.startswith(("link", "ланка"))]
         assert captions
         assert not [f for f in _findings_in(v, "force-polygon") if "link" in f or "ланка" in f]
+
+
+def test_a_sense_arc_leaves_the_pivot_it_turns_round_free_for_its_name():
+    """ω1's arc (radius 9 mm) round the crank's pivot O: O is named inside the
+    arc, beside the pivot (the arc was avoided as a disc of 9.4 mm on main
+    3ca52af, so every name of a point inside it went out past the arc)."""
+    import numpy as np
+
+    from mmt_plans.render.look import load_look
+    from mmt_plans.sheets.sheet2 import _Drawing
+
+    d = _Drawing(load_look(), None, 1.0)  # type: ignore[arg-type]
+    with d.sk.group("force-mechanism", "mechanism"):
+        d.sk.circle((0.0, 0.0), 1.2, "main", "white")
+        d.moment(np.zeros(2), 1.0, "ω_{1}", radius=9.0)
+        d.later(np.zeros(2), "O", np.array([-0.6, 0.8]))
+        sk = d.finish("test")
+    v = SheetView(list(sk.calls), 841.0, 594.0, "en")
+    (o,) = [lab for lab in v.labels if lab.text == "O"]
+    assert o.box.distance(Point(0.0, 0.0)) < 9.0 - 0.5  # inside the arc
+    assert lint(v, NEAR_RULES) == []
