@@ -25,7 +25,7 @@ import math
 import random
 import re
 import weakref
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -208,10 +208,6 @@ class _Drawing:
         self.state = state
         self.mu_l = mu_l
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
-        # the labels, written once everything is drawn: those with the fewest
-        # places first (a sense arc's name by its tip, then points, then forces,
-        # named anywhere along the shaft, then arms, along the arm or led from it)
-        self._labels: list[tuple[int, Callable[[], None]]] = []
 
     def mm(self, P: Any) -> np.ndarray:
         return _xy(_c(P)) / self.mu_l
@@ -219,17 +215,15 @@ class _Drawing:
     def line(self, a: np.ndarray, b: np.ndarray, kind: LineType = "main") -> None:
         self.sk.line(a, b, kind)
 
-    def later(
-        self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None, rank: int = 1
-    ) -> None:
+    def later(self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None) -> None:
         """A label written after every line, so that it can avoid them all."""
-        self._labels.append((rank, lambda: self.labels.later(anchor, markup, towards)))
+        self.labels.later(anchor, markup, towards)
 
     def later_arrow(self, start: np.ndarray, end: np.ndarray, markup: str) -> None:
-        self._labels.append((2, lambda: self.labels.later_arrow(start, end, markup)))
+        self.labels.later_arrow(start, end, markup)
 
     def later_along(self, start: np.ndarray, end: np.ndarray, markup: str) -> None:
-        self._labels.append((3, lambda: self.labels.later_along(start, end, markup)))
+        self.labels.later_along(start, end, markup)
 
     def force(
         self, at: np.ndarray, F: np.ndarray, label: str, largest: float, line: str = "main"
@@ -255,7 +249,7 @@ class _Drawing:
         # the arc is avoided as drawn (the labels follow the sketch), not as a
         # disc: the points inside it (the pivot it turns round) are named there
         tip = sense_arc(self.sk, centre, radius, M)
-        self.later(tip, force_markup(label), unit_vector(tip - centre), rank=0)
+        self.later(tip, force_markup(label), unit_vector(tip - centre))
 
     def arm(self, pivot: np.ndarray, at: np.ndarray, F: np.ndarray, label: str) -> float:
         """The perpendicular from `pivot` to the force's line of action; its length, mm."""
@@ -382,8 +376,6 @@ class _Drawing:
                 self.later(self.mm(f.point), f"{force_markup(f.name)} = 0", np.array([0.0, 1.0]))
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
-        for _, queue in sorted(self._labels, key=lambda item: item[0]):
-            queue()
         self.labels.write_later()
         _UNSETTLED[self.sk] = self.labels.unsettled
         ext = self.sk.extent()
