@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import shapely
 
 from ..drawing.labels import Labels
 from ..drawing.layout import LayoutError, SheetLayout, pack
@@ -213,11 +214,16 @@ class _Drawing:
 
     def line(self, a: np.ndarray, b: np.ndarray, kind: LineType = "main") -> None:
         self.sk.line(a, b, kind)
-        self.labels.avoid_line(a, b)
 
     def later(self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None) -> None:
         """A label written after every line, so that it can avoid them all."""
         self.labels.later(anchor, markup, towards)
+
+    def later_arrow(self, start: np.ndarray, end: np.ndarray, markup: str) -> None:
+        self.labels.later_arrow(start, end, markup)
+
+    def later_along(self, start: np.ndarray, end: np.ndarray, markup: str) -> None:
+        self.labels.later_along(start, end, markup)
 
     def force(
         self, at: np.ndarray, F: np.ndarray, label: str, largest: float, line: str = "main"
@@ -234,15 +240,15 @@ class _Drawing:
             at, end = at + 2.5 * np.array([-u[1], u[0]]), end + 2.5 * np.array([-u[1], u[0]])
         self._arrows.append((at, end))
         self.sk.arrow(at, end, line, **_ARROW)  # type: ignore[arg-type]
-        self.labels.avoid_line(at, end)
-        self.labels.later_arrow(at, end, force_markup(label))
+        self.later_arrow(at, end, force_markup(label))
 
     def moment(self, centre: np.ndarray, M: float, label: str, radius: float = 6.0) -> None:
         """A couple as an arc with its arrowhead in the sense of M (ccw positive)."""
         if M == 0.0:
             return
+        # the arc is avoided as drawn (the labels follow the sketch), not as a
+        # disc: the points inside it (the pivot it turns round) are named there
         tip = sense_arc(self.sk, centre, radius, M)
-        self.labels.avoid_circle(centre, radius + 0.4)
         self.later(tip, force_markup(label), unit_vector(tip - centre))
 
     def arm(self, pivot: np.ndarray, at: np.ndarray, F: np.ndarray, label: str) -> float:
@@ -253,10 +259,9 @@ class _Drawing:
         h = float(np.hypot(*(foot - pivot)))
         if h >= 1.0:
             self.sk.line(pivot, foot, "thin")
-            self.labels.avoid_line(pivot, foot)
             # the line of action carried on to the foot, thin
             self.sk.line(at, foot, "thin")
-            self.labels.later_along(pivot, foot, label)
+            self.later_along(pivot, foot, label)
         return h
 
     # the mechanism's links -----------------------------------------------------------
@@ -311,12 +316,9 @@ class _Drawing:
         pivots and guides hatched as on the kinematic diagram."""
         lids = set(lids)
         state, mech = self.state, self.state.mech
+        # the lines and blocks drawn are avoided as the labels follow the sketch
+        # (once: a line listed twice would count twice when a leader crosses it)
         drawn = draw_poses(self.sk, [self._pose(lids, frame)])
-        for a, b in drawn.segments:
-            self.labels.avoid_line(a, b)
-        for corners in drawn.blocks:
-            for a, b in zip(corners, corners[1:] + corners[:1]):
-                self.labels.avoid_line(a, b)
         for P in drawn.pivots:
             self.labels.avoid_line(P, P - np.array([0.0, 6.0]), 4.5)
         for P in [*drawn.pivots, *(c for c, _ in drawn.pins)]:
@@ -361,8 +363,7 @@ class _Drawing:
                 K = self.mm(sh.point)
                 if float(np.hypot(*(K - S))) >= 1.0:
                     self.sk.line(S, K, "thin")
-                    self.labels.avoid_line(S, K)
-                    self.labels.later_along(S, K, f"h_{{{lid}}}")
+                    self.later_along(S, K, f"h_{{{lid}}}")
                 self.force(K, ll.inertia_force, f"F_in{lid}", largest)
             elif ll.mass:
                 self.force(S, ll.inertia_force, f"F_in{lid}", largest)
@@ -542,7 +543,6 @@ def _side_by_side(
     if float(np.hypot(*shift)) > 0.0:
         for at in (s, e):
             sk.line(at, at + shift, "thin")
-            labels.avoid_line(at, at + shift)
         s, e = s + shift, e + shift
     arrows.append((s, e))
     return s, e
@@ -561,6 +561,37 @@ def _wrapped(markup: str, width: float, look: Any) -> list[str]:
         else:
             lines.append(f"+ {term}")
     return lines
+
+
+def _caption_place(
+    labels: Labels, corners: np.ndarray, caption: str
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """Where a link's polygon inside its group's is named ("link 4"): on the
+    polygon or by it (the box within 3 mm of it), at the free place nearest its centre
+    (the anchor and the side the placer tries first put the box there); else
+    beside the centre."""
+    centre = corners.mean(axis=0)
+    w, h = labels.width(caption) + 0.4, labels.size + 0.4
+    region = shapely.convex_hull(shapely.multipoints(corners))
+    lo, hi = corners.min(axis=0) - (w / 2 + 3.0), corners.max(axis=0) + (w / 2 + 3.0)
+    xs, ys = np.meshgrid(np.arange(lo[0], hi[0], 1.0), np.arange(lo[1], hi[1], 1.0))
+    q = np.c_[xs.ravel(), ys.ravel()]
+    x0, y0, x1, y1 = q[:, 0] - w / 2, q[:, 1] - h / 2, q[:, 0] + w / 2, q[:, 1] + h / 2
+    on = shapely.distance(shapely.box(x0, y0, x1, y1), region) <= 3.0
+    taken = np.array([b.bounds for b in labels.boxes]).reshape(-1, 4)
+    gap = labels.spacing
+    clash = (
+        (taken[None, :, 0] - gap < x1[:, None])
+        & (taken[None, :, 2] + gap > x0[:, None])
+        & (taken[None, :, 1] < y1[:, None])
+        & (taken[None, :, 3] > y0[:, None])
+    ).any(axis=1)
+    ok = np.flatnonzero(on & ~clash)
+    for k in ok[np.argsort(np.hypot(*(q[ok] - centre).T), kind="stable")][:3000]:
+        if labels.free((x0[k], y0[k], x1[k], y1[k])):
+            # the box centred on q: the placer's first place east of the anchor
+            return q[k] - np.array([1.5 + w / 2, 0.0]), np.array([1.0, 0.0])
+    return centre, None
 
 
 def sketch_force_polygons(
@@ -584,7 +615,7 @@ def sketch_force_polygons(
     offset = np.zeros(2)
     sides: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # label → exact start, end
     arrows: list[tuple[np.ndarray, np.ndarray]] = []  # as drawn, some beside their line
-    names: dict[str, list[Any]] = {}  # label → [anchor, markup, towards], written last
+    names: dict[str, list[Any]] = {}  # label → [start, markup, end] of its side, written last
     captions: list[tuple[np.ndarray, str]] = []
     with sk.group(gid, "force-polygon"):
         for n, poly in enumerate(polygons):
@@ -610,7 +641,7 @@ def sketch_force_polygons(
                     offset = np.array([sk.extent().right + 15.0 - min(xs), 0.0])
             corners = [offset + np.asarray(v.start, float) / mu_F for v in poly.vectors]
             if len(polygons) > 1 and poly.title != title:
-                captions.append((np.mean(corners, axis=0), _polygon_title(poly.title, lang)))
+                captions.append((np.array(corners), _polygon_title(poly.title, lang)))
             for key, v in zip(keys, poly.vectors):
                 if key in drawn:
                     continue
@@ -629,9 +660,8 @@ def sketch_force_polygons(
                 sides[v.label] = (s, e)
                 s, e = _side_by_side(sk, labels, arrows, s, e)
                 sk.arrow(s, e, "dashed" if component else "main", **_ARROW)  # type: ignore[arg-type]
-                labels.avoid_line(s, e)
-                u = (e - s) / length
-                names[v.label] = [(s + e) / 2, force_markup(v.label), np.array([-u[1], u[0]])]
+                # named beside its side, anywhere along it (as the textbook writes R12 by its side)
+                names[v.label] = [s, force_markup(v.label), e]
             # R = R^n + R^t: the resultant of two consecutive components, main line
             for a, b in zip(poly.vectors, poly.vectors[1:]):
                 if (
@@ -648,7 +678,6 @@ def sketch_force_polygons(
                     drawn[key] = True
                     s, e = _side_by_side(sk, labels, arrows, s, e)
                     sk.arrow(s, e, "main", **_ARROW)  # type: ignore[arg-type]
-                    labels.avoid_line(s, e)
                     labels.later_along(s, e, force_markup(a.label[:-2]))
         zero = not sides and guide_side(polygons) <= 0.0
         if zero:
@@ -656,11 +685,12 @@ def sketch_force_polygons(
             # zero, the polygon a single point, drawn as one
             sk.circle(offset, 0.8, "main", "black")
             labels.avoid_line(offset - 1.0, offset + 1.0)
-        for anchor, markup, towards in names.values():
-            labels.later(anchor, markup, towards)
-        for centre, caption in captions:
-            labels.later(centre, caption, None)
+        for start, markup, end in names.values():
+            labels.later_along(start, end, markup)
         labels.write_later()
+        for corners_of, caption in captions:
+            anchor, towards = _caption_place(labels, corners_of, caption)
+            labels.place(anchor, caption, towards=towards)
         _UNSETTLED[sk] = labels.unsettled
         ext = sk.extent()
         y = ext.bottom - 5.0
@@ -699,13 +729,11 @@ def sketch_lever(
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
                 sk.line((0.0, 0.0), img[n], "thin")
-                labels.avoid_line((0.0, 0.0), img[n])
         for link in mech.links.values():
             names = [p for p in link.points if p in img]
             for i in range(len(names)):
                 for j in range(i + 1, len(names)):
                     sk.line(img[names[i]], img[names[j]], "main")
-                    labels.avoid_line(img[names[i]], img[names[j]])
         # the images named, those at one point in one label: "d, s_{5}, k_{5}"
         marks: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
 
