@@ -25,7 +25,7 @@ drawing has to list its lines by hand.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from contextlib import nullcontext
 from typing import Any, cast
 
@@ -136,9 +136,13 @@ class Labels:
         leader_rings: Sequence[float] = _LEADER_RINGS,
         leader_dirs: int = _LEADER_DIRS,
         leader_group: int | None = None,
+        words: Callable[[str], str] | None = None,
     ) -> None:
         self.sketch = sketch
         self.size = size
+        # the lettering as the sheet's language writes it (F_in4 is F_i4 on a
+        # Ukrainian sheet): measured and written so, where it is placed
+        self._say = words or (lambda markup: markup)
         # labels side by side keep `spacing` mm apart; None: a word space (else they read as one)
         self.spacing = (
             sketch.look.lettering.advance_width(" ", size) + 0.2 if spacing is None else spacing
@@ -253,7 +257,8 @@ class Labels:
     def width(self, markup: str) -> float:
         """The width of the lettering, mm (of its longest line)."""
         probe = RecordingBackend(look=self.sketch.look)
-        return max(probe.rich_text((0.0, 0.0), line, self.size) for line in markup.split("\n"))
+        lines = self._say(markup).split("\n")
+        return max(probe.rich_text((0.0, 0.0), line, self.size) for line in lines)
 
     def later(
         self,
@@ -561,7 +566,7 @@ class Labels:
                 self.unsettled += 1
             self.far += 1
         footprint = box(x0[k], y0[k], x1[k], y1[k])
-        lines = markup.split("\n")
+        lines = self._say(markup).split("\n")
         # the recording keeps what the label names, for the sheet linter
         naming = self.sketch.naming(markup, *names) if names is not None else nullcontext()
         with self.sketch.group(group, "label") if group is not None else nullcontext(), naming:

@@ -25,7 +25,7 @@ import math
 import random
 import re
 import weakref
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -202,9 +202,9 @@ def _arrow_length(magnitude: float, largest: float) -> float:
 class _Drawing:
     """One drawing of sheet 2 in progress: a sketch, its labels, the state."""
 
-    def __init__(self, look: Any, state: PositionState, mu_l: float) -> None:
+    def __init__(self, look: Any, state: PositionState, mu_l: float, lang: Language = "en") -> None:
         self.sk = Sketch(look)
-        self.labels = Labels(self.sk, _TEXT, spacing=None, leaders=True)
+        self.labels = Labels(self.sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang))
         self.state = state
         self.mu_l = mu_l
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
@@ -407,7 +407,7 @@ def _largest_load(
 def sketch_loaded_mechanism(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
     state = fa.loads.state
     mech = state.mech
-    d = _Drawing(look, state, mu_l)
+    d = _Drawing(look, state, mu_l, lang)
     with d.sk.group("force-mechanism", "mechanism"):
         d.links(mech.links, frame=True)
         largest = _largest_load(fa, mech.links, [fa.driving_link.balancing_vector])
@@ -448,7 +448,7 @@ def sketch_group(
 ) -> Sketch:
     state = fa.loads.state
     mech = state.mech
-    d = _Drawing(look, state, mu_l)
+    d = _Drawing(look, state, mu_l, lang)
     gid = f"group-{g.name}"
     with d.sk.group(gid, "assur-group"):
         d.links(g.links, frame=False)
@@ -497,7 +497,7 @@ def sketch_group(
 def sketch_driving_link(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
     state = fa.loads.state
     dl = fa.driving_link
-    d = _Drawing(look, state, mu_l)
+    d = _Drawing(look, state, mu_l, lang)
     with d.sk.group("driving-link", "driving-link"):
         d.links([dl.link], frame=False)
         forces = [
@@ -609,7 +609,7 @@ def sketch_force_polygons(
     the textbook closes R54 inside the polygon of group 4-5; one that shares
     nothing is drawn beside it."""
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT, spacing=None, leaders=True)
+    labels = Labels(sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang))
     drawn: dict[tuple[str, int, int], bool] = {}
     short: list[str] = []
     offset = np.zeros(2)
@@ -721,7 +721,7 @@ def sketch_lever(
     lever = fa.lever
     mech = fa.loads.state.mech
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT, spacing=None, leaders=True)
+    labels = Labels(sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang))
     img = {n: np.asarray(v, float) / mu_V for n, v in lever.images.items()}
     dotted: set[str] = set()  # images of S_i and K_i marked with a dot
     with sk.group("zhukovsky-lever", "lever"):
@@ -1060,6 +1060,17 @@ def _polygon_note(polygons: Sequence[ForcePolygon], mu_F: float, lang: Language)
 
 
 # indices of the textbook's symbols that differ by language
+
+
+def _index_words(lang: Language) -> Callable[[str], str]:
+    """A label's markup with the symbols' indices in `lang` ("F_{in4}" →
+    "F_{i4}"), as the placer measures and writes it: the box it keeps free is
+    the lettering's own."""
+    runs = {k: str(v) for k, v in catalogue(lang).words("symbol_indices").items() if k != v}
+    if not runs:
+        return lambda markup: markup
+    index = re.compile(f"_{{({'|'.join(map(re.escape, runs))})(\\d*)}}")
+    return lambda markup: index.sub(lambda m: f"_{{{runs[m.group(1)]}{m.group(2)}}}", markup)
 
 
 def _translated(sketch: Sketch, lang: Language) -> Sketch:
