@@ -839,10 +839,7 @@ def _table(
     x = 0.0
     for h, r, w in zip(header, rich, widths):
         if r:
-            lines = [h]
-            if probe.rich_text((0.0, 0.0), h, _TEXT) > w - 2.0 and ", " in h:
-                head, unit = h.split(", ", 1)
-                lines = [head + ",", unit]
+            lines = _header_lines(probe, h, w)
             pitch = 4.8
             for k, line in enumerate(lines):
                 y = mid_y + pitch * ((len(lines) - 1) / 2 - k)
@@ -850,6 +847,15 @@ def _table(
         x += w
     sk.add_to_last_group(extra, gid)
     return sk
+
+
+def _header_lines(probe: Sketch, header: str, width: float) -> list[str]:
+    """An indexed header cell's lettering: split after its comma onto two
+    lines where it is wider than its column."""
+    if probe.rich_text((0.0, 0.0), header, _TEXT) > width - 2.0 and ", " in header:
+        head, unit = header.split(", ", 1)
+        return [head + ",", unit]
+    return [header]
 
 
 # the tables of a compact sheet 2 numbered in the order the analysis makes them
@@ -874,13 +880,8 @@ def _continued_table(
     probe = Sketch(look)
     header_marks: list[str | None] = []
     for h, width in zip(header, widths):
-        if not re.search(r"[_^]", h):
-            header_marks.append(None)
-        elif probe.rich_text((0.0, 0.0), h, _TEXT) > width - 2.0 and ", " in h:
-            head, unit = h.split(", ", 1)
-            header_marks.append(f"{head},\n{unit}")
-        else:
-            header_marks.append(h)
+        indexed = re.search(r"[_^]", h)
+        header_marks.append("\n".join(_header_lines(probe, h, width)) if indexed else None)
     return table_sketch(
         look,
         gid,
