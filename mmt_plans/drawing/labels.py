@@ -483,10 +483,9 @@ class Labels:
         alike = [g.bounds for g, t in zip(self.boxes, self._texts) if {t, markup} in LOOKALIKE]
         if not alike or not x0.size:
             return cost
-        b = np.array(alike)
-        dx = np.maximum(np.maximum(b[:, 0] - x1[:, None], x0[:, None] - b[:, 2]), 0.0)
-        dy = np.maximum(np.maximum(b[:, 1] - y1[:, None], y0[:, None] - b[:, 3]), 0.0)
-        return (np.hypot(dx, dy) < LOOKALIKE_MM + 0.5).sum(axis=1).astype(float)
+        candidates = np.stack([x0, y0, x1, y1], axis=-1)[:, None, :]
+        gap = _box_box(candidates, np.array(alike)[None, :, :])
+        return (gap < LOOKALIKE_MM + 0.5).sum(axis=1).astype(float)
 
     def _write(self, *args: Any, **kwargs: Any) -> BaseGeometry:
         """`_write_first_free` that always writes."""
@@ -774,9 +773,10 @@ def _point_box(px: np.ndarray, py: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def _box_box(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Distance between upright boxes (x0, y0, x1, y1 columns), row by row, 0 where they meet."""
-    dx = np.maximum(np.maximum(b[:, 0] - a[:, 2], a[:, 0] - b[:, 2]), 0.0)
-    dy = np.maximum(np.maximum(b[:, 1] - a[:, 3], a[:, 1] - b[:, 3]), 0.0)
+    """Distance between upright boxes (x0, y0, x1, y1 in the last axis), row by
+    row or as the two broadcast, 0 where they meet."""
+    dx = np.maximum(np.maximum(b[..., 0] - a[..., 2], a[..., 0] - b[..., 2]), 0.0)
+    dy = np.maximum(np.maximum(b[..., 1] - a[..., 3], a[..., 1] - b[..., 3]), 0.0)
     return np.hypot(dx, dy)
 
 
