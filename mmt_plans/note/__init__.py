@@ -229,10 +229,16 @@ def write_note(
     """Write the note as one multi-page A4 PDF at `target` (atomically, with
     fixed dates: note/pdf.py), in forms 2/2a or 5/5a (note_form), from the
     sheets `composed` (composed here when not given)."""
-    from .pdf import pages_to_pdf
+    from ..files import write_bytes_atomic
+    from .pdf import PdfDocument
 
+    # drawn straight onto the PDF's pages: the same calls a recording of the
+    # pages would replay there (pages_to_pdf), without recording them first
     look = note_look()
-    pages = draw_note(
-        analysis, lambda w, h, title: RecordingBackend(w, h, look), lang, form, composed
-    )
-    return pages_to_pdf(pages, Path(target))
+    document = PdfDocument()
+    try:
+        draw_note(analysis, lambda w, h, title: document.page(w, h, look), lang, form, composed)
+        data = document.finish()
+    finally:
+        document.close()
+    return write_bytes_atomic(Path(target), data)

@@ -24,7 +24,18 @@ from typing import TYPE_CHECKING, Literal
 from ..drawing.page import Rect
 from ..i18n import check_language
 from ..render.backend import Backend
-from ..render.recording import Call
+from ..render.recording import (
+    Arc,
+    Arrow,
+    BeginGroup,
+    Call,
+    Circle,
+    EndGroup,
+    Line,
+    Polygon,
+    Polyline,
+    Text,
+)
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..drawing.sketch import Sketch
@@ -85,14 +96,14 @@ def _calls(composed: ComposedSheets, part: FigurePart) -> tuple[Call, ...]:
 
 
 def _text_box(
-    c: Call, width_of: Callable[[str, float, float | None], float]
+    c: Text, width_of: Callable[[str, float, float | None], float]
 ) -> list[tuple[float, float]]:
-    x, y = c["pos"]
-    size = c["size"]
-    w = width_of(c["content"], size, c["max_width"])
-    x0 = {"left": 0.0, "center": -w / 2, "right": -w}[c["anchor"]]
-    y0 = {"baseline": 0.0, "middle": -size / 2, "top": -size}[c["valign"]]
-    a = math.radians(c["rotation"])
+    x, y = c.pos
+    size = c.size
+    w = width_of(c.content, size, c.max_width)
+    x0 = {"left": 0.0, "center": -w / 2, "right": -w}[c.anchor]
+    y0 = {"baseline": 0.0, "middle": -size / 2, "top": -size}[c.valign]
+    a = math.radians(c.rotation)
     ca, sa = math.cos(a), math.sin(a)
     corners = [
         (x0, y0 - 0.3 * size),
@@ -109,10 +120,10 @@ def bounds(composed: ComposedSheets, part: FigurePart) -> tuple[float, float, fl
     xs: list[float] = []
     ys: list[float] = []
     for c in _calls(composed, part):
-        if c.name == "text":
+        if isinstance(c, Text):
             pts = _text_box(c, look.lettering.width)
-        elif c.name == "arrow":
-            pts = [c["start"], c["end"]]
+        elif isinstance(c, Arrow):
+            pts = [c.start, c.end]
         else:
             pts = c.points()
         for x, y in pts:
@@ -167,36 +178,35 @@ def replay_scaled(calls: Sequence[Call], backend: Backend, k: float, dx: float, 
         return (k * p[0] + dx, k * p[1] + dy)
 
     for c in calls:
-        a = c.args
-        if c.name == "line":
-            backend.line(t(a["start"]), t(a["end"]), a["line"])
-        elif c.name == "polyline":
-            backend.polyline([t(p) for p in a["points"]], a["line"])
-        elif c.name == "polygon":
-            backend.polygon([t(p) for p in a["points"]], a["line"], a["fill"])
-        elif c.name == "circle":
-            backend.circle(t(a["center"]), k * a["radius"], a["line"], a["fill"])
-        elif c.name == "arc":
-            backend.arc(t(a["center"]), k * a["radius"], a["start_deg"], a["end_deg"], a["line"])
-        elif c.name == "arrow":
-            backend.arrow(
-                t(a["start"]),
-                t(a["end"]),
-                a["line"],
-                head_length=k * a["head_length"],
-                head_width=k * a["head_width"],
-            )
-        elif c.name == "text":
+        if isinstance(c, Line):
+            backend.line(t(c.start), t(c.end), c.line)
+        elif isinstance(c, Text):
             backend.text(
-                t(a["pos"]),
-                a["content"],
-                k * a["size"],
-                anchor=a["anchor"],
-                valign=a["valign"],
-                rotation=a["rotation"],
-                max_width=None if a["max_width"] is None else k * a["max_width"],
+                t(c.pos),
+                c.content,
+                k * c.size,
+                anchor=c.anchor,
+                valign=c.valign,
+                rotation=c.rotation,
+                max_width=None if c.max_width is None else k * c.max_width,
             )
-        elif c.name in ("begin_group", "end_group"):
+        elif isinstance(c, Polygon):
+            backend.polygon([t(p) for p in c.vertices], c.line, c.fill)
+        elif isinstance(c, Polyline):
+            backend.polyline([t(p) for p in c.vertices], c.line)
+        elif isinstance(c, Circle):
+            backend.circle(t(c.center), k * c.radius, c.line, c.fill)
+        elif isinstance(c, Arc):
+            backend.arc(t(c.center), k * c.radius, c.start_deg, c.end_deg, c.line)
+        elif isinstance(c, Arrow):
+            backend.arrow(
+                t(c.start),
+                t(c.end),
+                c.line,
+                head_length=k * c.head_length,
+                head_width=k * c.head_width,
+            )
+        elif isinstance(c, (BeginGroup, EndGroup)):
             continue
         else:  # pragma: no cover - a new primitive must be added here
             raise ValueError(f"cannot replay {c.name!r}")

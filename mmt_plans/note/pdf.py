@@ -3,6 +3,6 @@ same path the sheets' PDF takes."""
 
 from __future__ import annotations
 
-from ..render.cairo_pdf import CairoPage, pages_to_pdf, pages_to_pdf_bytes
+from ..render.cairo_pdf import CairoPage, PdfDocument, pages_to_pdf, pages_to_pdf_bytes
 
-__all__ = ["CairoPage", "pages_to_pdf", "pages_to_pdf_bytes"]
+__all__ = ["CairoPage", "PdfDocument", "pages_to_pdf", "pages_to_pdf_bytes"]

@@ -56,6 +56,12 @@ _FILLS = get_args(Fill)
 
 def as_point(p: PointLike) -> Point:
     """A 2-d point as a tuple of two finite floats."""
+    if type(p) is tuple and len(p) == 2:  # the common case, without a generator
+        x, y = p
+        if type(x) is float and type(y) is float:
+            if x - x == 0.0 and y - y == 0.0:  # finite (inf - inf and nan are nan)
+                return p
+            raise ValueError(f"a drawn point must be finite, got ({x}, {y})")
     x, y = (float(v) for v in p)  # raises on the wrong number of coordinates
     if not (math.isfinite(x) and math.isfinite(y)):
         raise ValueError(f"a drawn point must be finite, got ({x}, {y})")

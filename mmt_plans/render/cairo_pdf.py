@@ -24,9 +24,37 @@ from .backend import Backend, Fill, HAlign, PointLike, VAlign, as_point
 from .look import LineType, Look
 from .recording import RecordingBackend
 
-__all__ = ["CairoPage", "pages_to_pdf", "pages_to_pdf_bytes"]
+__all__ = ["CairoPage", "PdfDocument", "pages_to_pdf", "pages_to_pdf_bytes"]
 
 PT_PER_MM = 72.0 / 25.4
+
+
+def import_cairo() -> Any:
+    """cairocffi, imported without ctypes' library search on Linux.
+
+    cairocffi looks for libcairo with `ctypes.util.find_library`, which on
+    Linux runs ldconfig, gcc and ld (about a quarter of a second of a cold
+    `mmt-plans note`) before it opens "libcairo.so.2" by name anyway; the
+    dynamic loader finds the same library by that name. Where it does not,
+    the import is made again with the search."""
+    import sys
+
+    if "cairocffi" in sys.modules or not sys.platform.startswith("linux"):
+        import cairocffi
+
+        return cairocffi
+    import ctypes.util
+
+    search = ctypes.util.find_library
+    ctypes.util.find_library = lambda name: None
+    try:
+        import cairocffi
+    except OSError:
+        ctypes.util.find_library = search
+        import cairocffi
+    finally:
+        ctypes.util.find_library = search
+    return cairocffi
 
 
 @functools.cache
@@ -46,43 +74,73 @@ class CairoPage(Backend):
 
     def __init__(self, context: Any, width: float, height: float, look: Look) -> None:
         super().__init__(width, height, look)
-        import cairocffi
-
+        cairocffi = import_cairo()
         self._cairo = cairocffi
         self.ctx = context
         self.ctx.set_line_cap(cairocffi.LINE_CAP_ROUND)
         self.ctx.set_line_join(cairocffi.LINE_JOIN_ROUND)
         self.ctx.select_font_face(_family(tuple(look.lettering.families)))
+        # the lettering's slant, worked out once per page rather than per text
+        slant = look.lettering.slant_deg
+        self._lean = math.tan(math.radians(slant))
+        self._shear = cairocffi.Matrix(1.0, 0.0, math.tan(-math.radians(slant)), 1.0)
+        # Cairo's own functions on the context, for the calls made thousands
+        # of times a page (the same calls cairocffi's methods make)
+        self._lib = cairocffi.cairo
+        self._ptr = context._pointer
+        self._dash_arrays: dict[tuple[float, ...], Any] = {}
 
     def _xy(self, p: PointLike) -> tuple[float, float]:
         x, y = as_point(p)
         return x, self.height - y
 
+    def _checked(self) -> None:
+        """Raise Cairo's error, if a call since the last check made one (an
+        error stays on the context: one check after a primitive's calls is
+        as good as one after each, which cairocffi's methods make)."""
+        status = self._lib.cairo_status(self._ptr)
+        if status:
+            self._cairo._check_status(status)
+
+    def _dashes(self, dash: tuple[float, ...]) -> Any:
+        """A line type's dash pattern as Cairo's array, made once per page."""
+        found = self._dash_arrays.get(dash)
+        if found is None:
+            found = self._dash_arrays[dash] = self._cairo.ffi.new("double[]", list(dash))
+        return found
+
     def _path(self, points: Sequence[PointLike], close: bool) -> None:
         pts = [self._xy(p) for p in points]
-        self.ctx.new_path()
-        self.ctx.move_to(*pts[0])
-        for p in pts[1:]:
-            self.ctx.line_to(*p)
+        lib, ptr = self._lib, self._ptr
+        lib.cairo_new_path(ptr)
+        lib.cairo_move_to(ptr, *pts[0])
+        for x, y in pts[1:]:
+            lib.cairo_line_to(ptr, x, y)
         if close:
-            self.ctx.close_path()
+            lib.cairo_close_path(ptr)
 
     def _finish(self, line: LineType | None, fill: Fill = "none") -> None:
-        ctx = self.ctx
+        lib, ptr = self._lib, self._ptr
         if fill != "none":
-            ctx.set_source_rgb(*((0.0, 0.0, 0.0) if fill == "black" else (1.0, 1.0, 1.0)))
+            lib.cairo_set_source_rgb(
+                ptr, *((0.0, 0.0, 0.0) if fill == "black" else (1.0, 1.0, 1.0))
+            )
             if line is None:
-                ctx.fill()
+                lib.cairo_fill(ptr)
+                self._checked()
                 return
-            ctx.fill_preserve()
+            lib.cairo_fill_preserve(ptr)
         if line is None:
-            ctx.new_path()
+            lib.cairo_new_path(ptr)
+            self._checked()
             return
         style = self.look.line(line)
-        ctx.set_source_rgb(0.0, 0.0, 0.0)
-        ctx.set_line_width(style.width)
-        ctx.set_dash(list(style.dash) if style.dash else [])
-        ctx.stroke()
+        dash = tuple(style.dash) if style.dash else ()
+        lib.cairo_set_source_rgb(ptr, 0.0, 0.0, 0.0)
+        lib.cairo_set_line_width(ptr, style.width)
+        lib.cairo_set_dash(ptr, self._dashes(dash), len(dash), 0)
+        lib.cairo_stroke(ptr)
+        self._checked()
 
     def line(self, start: PointLike, end: PointLike, line: LineType = "main") -> None:
         self._path([start, end], False)
@@ -142,7 +200,7 @@ class CairoPage(Backend):
         let = self.look.lettering
         content = str(content)
         squeeze = let.squeeze(content, size, max_width)
-        lean = math.tan(math.radians(let.slant_deg))
+        lean = self._lean
         # as render/svg.py: offsets along and across the baseline (y up)
         along = {"left": 0.0, "center": -lean * size / 2.0, "right": -lean * size}[anchor] * squeeze
         across = {"baseline": 0.0, "middle": -size / 2.0, "top": -size}[valign]
@@ -150,22 +208,23 @@ class CairoPage(Backend):
         x, y = as_point(pos)
         bx = x + along * math.cos(a) - across * math.sin(a)
         by = y + along * math.sin(a) + across * math.cos(a)
-        ctx = self.ctx
-        ctx.save()
-        ctx.translate(bx, self.height - by)
+        lib, ptr = self._lib, self._ptr
+        lib.cairo_save(ptr)
+        lib.cairo_translate(ptr, bx, self.height - by)
         if rotation % 360.0:
-            ctx.rotate(-a)
+            lib.cairo_rotate(ptr, -a)
         if squeeze != 1.0:
-            ctx.scale(squeeze, 1.0)
+            lib.cairo_scale(ptr, squeeze, 1.0)
         if let.slant_deg:
-            ctx.transform(self._cairo.Matrix(1.0, 0.0, math.tan(-math.radians(let.slant_deg)), 1.0))
-        ctx.set_font_size(let.font_size(size))
-        width = ctx.text_extents(content)[4] if anchor != "left" else 0.0
-        ctx.move_to({"left": 0.0, "center": -width / 2.0, "right": -width}[anchor], 0.0)
-        ctx.set_source_rgb(0.0, 0.0, 0.0)
-        ctx.show_text(content)
-        ctx.new_path()
-        ctx.restore()
+            lib.cairo_transform(ptr, self._shear._pointer)
+        lib.cairo_set_font_size(ptr, let.font_size(size))
+        width = self.ctx.text_extents(content)[4] if anchor != "left" else 0.0
+        lib.cairo_move_to(ptr, {"left": 0.0, "center": -width / 2.0, "right": -width}[anchor], 0.0)
+        lib.cairo_set_source_rgb(ptr, 0.0, 0.0, 0.0)
+        lib.cairo_show_text(ptr, content.encode("utf-8"))  # bytes end in NUL: a C string
+        lib.cairo_new_path(ptr)
+        lib.cairo_restore(ptr)
+        self._checked()
 
     def _begin_group(self, id: str, cls: str | None) -> None:
         pass
@@ -174,36 +233,75 @@ class CairoPage(Backend):
         pass
 
 
+class PdfDocument:
+    """One vector PDF made page by page on one Cairo surface: `page(width,
+    height, look)` starts a page and gives the backend to draw it through;
+    `finish()` the bytes. A document drawn straight onto its pages (the
+    note) pays no recording and no replay; `pages_to_pdf_bytes` replays
+    recorded pages through it, so both give the same bytes."""
+
+    def __init__(self, title: str | None = None) -> None:
+        import io
+
+        from ..files import document_date
+
+        cairocffi = import_cairo()
+
+        self._cairo = cairocffi
+        self._buffer = io.BytesIO()
+        self._surface = cairocffi.PDFSurface(self._buffer, 1, 1)
+        date = document_date()
+        for key in (cairocffi.PDF_METADATA_CREATE_DATE, cairocffi.PDF_METADATA_MOD_DATE):
+            self._surface.set_metadata(key, date)
+        if title:
+            self._surface.set_metadata(cairocffi.PDF_METADATA_TITLE, title)
+        self._open = False
+        self._done = False
+
+    def page(self, width: float, height: float, look: Look) -> CairoPage:
+        """A new page of `width` × `height` mm, white, to draw on in `look`."""
+        if self._done:
+            raise RuntimeError("the PDF is finished")
+        if self._open:
+            self._surface.show_page()
+        self._surface.set_size(width * PT_PER_MM, height * PT_PER_MM)
+        ctx = self._cairo.Context(self._surface)
+        ctx.scale(PT_PER_MM, PT_PER_MM)
+        ctx.set_source_rgb(1.0, 1.0, 1.0)
+        ctx.rectangle(0, 0, width, height)
+        ctx.fill()
+        self._open = True
+        return CairoPage(ctx, width, height, look)
+
+    def finish(self) -> bytes:
+        """The PDF's bytes (at least one page must have been started)."""
+        if not self._done:
+            self._done = True
+            if self._open:
+                self._surface.show_page()
+            self._surface.finish()
+            if not self._open:
+                raise ValueError("a PDF needs at least one page")
+        return self._buffer.getvalue()
+
+    def close(self) -> None:
+        """Let go of the surface, finished or not (after an error)."""
+        if not self._done:
+            self._done = True
+            self._surface.finish()
+
+
 def pages_to_pdf_bytes(pages: Sequence[RecordingBackend], title: str | None = None) -> bytes:
     """The recorded pages as the bytes of one vector PDF, a page each."""
-    import io
-
-    import cairocffi
-
-    from ..files import document_date
-
     if not pages:
         raise ValueError("a PDF needs at least one page")
-    buffer = io.BytesIO()
-    surface = cairocffi.PDFSurface(buffer, 1, 1)
-    date = document_date()
-    for key in (cairocffi.PDF_METADATA_CREATE_DATE, cairocffi.PDF_METADATA_MOD_DATE):
-        surface.set_metadata(key, date)
-    if title:
-        surface.set_metadata(cairocffi.PDF_METADATA_TITLE, title)
+    document = PdfDocument(title)
     try:
         for page in pages:
-            surface.set_size(page.width * PT_PER_MM, page.height * PT_PER_MM)
-            ctx = cairocffi.Context(surface)
-            ctx.scale(PT_PER_MM, PT_PER_MM)
-            ctx.set_source_rgb(1.0, 1.0, 1.0)
-            ctx.rectangle(0, 0, page.width, page.height)
-            ctx.fill()
-            page.replay(CairoPage(ctx, page.width, page.height, page.look))
-            surface.show_page()
+            page.replay(document.page(page.width, page.height, page.look))
+        return document.finish()
     finally:
-        surface.finish()
-    return buffer.getvalue()
+        document.close()
 
 
 def pages_to_pdf(pages: Sequence[RecordingBackend], target: str | os.PathLike[str]) -> Path:

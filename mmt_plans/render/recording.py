@@ -105,6 +105,7 @@ class _Args(dict[str, Any]):
 
 
 _FIELDS: dict[type, tuple[dataclasses.Field, ...]] = {}
+_ARG_NAMES: dict[type, tuple[str, ...]] = {}  # the fields `Call.args` gives, by class
 
 
 def _fields_of(cls: type) -> tuple[dataclasses.Field, ...]:
@@ -179,14 +180,14 @@ class Call:
     @property
     def args(self) -> dict[str, Any]:
         """The drawing call's arguments by name (without groups and naming)."""
-        skip = ("groups", "naming", "width", "label")
-        out = _Args(
-            {
-                f.name: getattr(self, f.name)
-                for f in dataclasses.fields(self)  # type: ignore[arg-type]
-                if f.name not in skip
-            }
-        )
+        names = _ARG_NAMES.get(type(self))
+        if names is None:
+            skip = ("groups", "naming", "width", "label")
+            names = _ARG_NAMES[type(self)] = tuple(
+                f.name for f in _fields_of(type(self)) if f.name not in skip
+            )
+        values = self.__dict__
+        out = _Args({name: values[name] for name in names})
         out.update(self._derived())
         out.record = self
         return out
@@ -435,6 +436,16 @@ class Text(Call):
 Record = Call
 
 
+def _made(cls: type[Any], values: dict[str, Any]) -> Any:
+    """A record of `cls` from the values of all its fields, checked by the
+    caller (RecordingBackend's methods): what `Call.__init__` makes, without
+    its argument matching, which a sheet or a note pays tens of thousands of
+    times (tests/render/test_recording.py holds the two alike)."""
+    record = object.__new__(cls)
+    record.__dict__.update(values)
+    return record
+
+
 class RecordingBackend(Backend):
     """Keeps `calls` (typed records) in order; `begin_group`/`end_group` are recorded too."""
 
@@ -522,20 +533,31 @@ class RecordingBackend(Backend):
 
     def line(self, start: PointLike, end: PointLike, line: LineType = "main") -> None:
         self._check_line(line)
-        self._add(
-            Line(
-                as_point(start),
-                as_point(end),
-                line,
-                groups=tuple(self._open_groups),
-                naming=self._naming,
+        naming = self._naming
+        self.calls.append(
+            _made(
+                Line,
+                {
+                    "start": as_point(start),
+                    "end": as_point(end),
+                    "line": line,
+                    "groups": tuple(self._open_groups),
+                    "naming": naming,
+                },
             )
         )
+        if naming is not None:
+            self._label_ids.add(naming.label)
 
     def polyline(self, points: Sequence[PointLike], line: LineType = "main") -> None:
         self._check_line(line)
         pts = tuple(as_point(p) for p in points)
-        self._add(Polyline(vertices=pts, line=line, groups=tuple(self._open_groups)))
+        self.calls.append(
+            _made(
+                Polyline,
+                {"vertices": pts, "line": line, "groups": tuple(self._open_groups), "naming": None},
+            )
+        )
 
     def polygon(
         self, points: Sequence[PointLike], line: LineType | None = "main", fill: Fill = "none"
@@ -543,15 +565,36 @@ class RecordingBackend(Backend):
         self._check_line(line, allow_none=True)
         self._check_fill(fill)
         pts = tuple(as_point(p) for p in points)
-        self._add(Polygon(vertices=pts, line=line, fill=fill, groups=tuple(self._open_groups)))
+        self.calls.append(
+            _made(
+                Polygon,
+                {
+                    "vertices": pts,
+                    "line": line,
+                    "fill": fill,
+                    "groups": tuple(self._open_groups),
+                    "naming": None,
+                },
+            )
+        )
 
     def circle(
         self, center: PointLike, radius: float, line: LineType | None = "main", fill: Fill = "none"
     ) -> None:
         self._check_line(line, allow_none=True)
         self._check_fill(fill)
-        self._add(
-            Circle(as_point(center), float(radius), line, fill, groups=tuple(self._open_groups))
+        self.calls.append(
+            _made(
+                Circle,
+                {
+                    "center": as_point(center),
+                    "radius": float(radius),
+                    "line": line,
+                    "fill": fill,
+                    "groups": tuple(self._open_groups),
+                    "naming": None,
+                },
+            )
         )
 
     def arc(
@@ -586,8 +629,19 @@ class RecordingBackend(Backend):
         self._check_line(line)
         hl = self.look.arrow_length if head_length is None else float(head_length)
         hw = self.look.arrow_width if head_width is None else float(head_width)
-        self._add(
-            Arrow(as_point(start), as_point(end), line, hl, hw, groups=tuple(self._open_groups))
+        self.calls.append(
+            _made(
+                Arrow,
+                {
+                    "start": as_point(start),
+                    "end": as_point(end),
+                    "line": line,
+                    "head_length": hl,
+                    "head_width": hw,
+                    "groups": tuple(self._open_groups),
+                    "naming": None,
+                },
+            )
         )
 
     def text(
@@ -608,28 +662,40 @@ class RecordingBackend(Backend):
         if self._label is not None and self._label[3]:
             serial, runs, at, drawn, style = self._label
             mark = LabelRun(serial, drawn.pop(0), runs, (at[0] - p[0], at[1] - p[1]), **style)
-        self._add(
-            Text(
-                as_point(pos),
-                str(content),
-                float(size),
-                anchor,
-                valign,
-                float(rotation),
-                mw,
-                groups=tuple(self._open_groups),
-                naming=self._naming,
-                width=self.look.lettering.width(str(content), float(size), mw),
-                label=mark,
+        text, h = str(content), float(size)
+        naming = self._naming
+        self.calls.append(
+            _made(
+                Text,
+                {
+                    "pos": p,
+                    "content": text,
+                    "size": h,
+                    "anchor": anchor,
+                    "valign": valign,
+                    "rotation": float(rotation),
+                    "max_width": mw,
+                    "groups": tuple(self._open_groups),
+                    "naming": naming,
+                    "width": self.look.lettering.width(text, h, mw),
+                    "label": mark,
+                },
             )
         )
+        if naming is not None:
+            self._label_ids.add(naming.label)
 
     def _begin_group(self, id: str, cls: str | None) -> None:
         # Recorded with the groups as they were before this one opened.
-        self._add(BeginGroup(id, cls, groups=tuple(self._open_groups[:-1])))
+        self.calls.append(
+            _made(
+                BeginGroup,
+                {"id": id, "cls": cls, "groups": tuple(self._open_groups[:-1]), "naming": None},
+            )
+        )
 
     def _end_group(self) -> None:
-        self._add(EndGroup(groups=tuple(self._open_groups)))
+        self.calls.append(_made(EndGroup, {"groups": tuple(self._open_groups), "naming": None}))
 
     def replay(self, backend: Backend, dx: float = 0.0, dy: float = 0.0) -> None:
         """Draw every recorded call again on `backend`, shifted by (dx, dy) mm;
@@ -638,66 +704,42 @@ class RecordingBackend(Backend):
         def t(p: Sequence[float]) -> tuple[float, float]:
             return (p[0] + dx, p[1] + dy)
 
-        naming = backend._naming if isinstance(backend, RecordingBackend) else None
+        into = isinstance(backend, RecordingBackend)  # a recording keeps what labels name
+        target: Any = backend
+        naming = target._naming if into else None
         whole = bool(getattr(backend, "sets_labels_whole", False))
         # each label's runs as recorded now (a sheet may have translated a run's text)
         labels: dict[int, list[TextRun]] = {}
-        for c in self.calls:
-            if whole and isinstance(c, Text) and c.label is not None:
-                runs = labels.setdefault(c.label.serial, list(c.label.runs))
-                old, kind = runs[c.label.index]
-                lead = old[: len(old) - len(old.lstrip(" "))]
-                trail = old[len(old.rstrip(" ")) :]
-                runs[c.label.index] = (lead + c.content + trail, kind)
+        if whole:
+            for c in self.calls:
+                if isinstance(c, Text) and c.label is not None:
+                    runs = labels.setdefault(c.label.serial, list(c.label.runs))
+                    old, kind = runs[c.label.index]
+                    lead = old[: len(old) - len(old.lstrip(" "))]
+                    trail = old[len(old.rstrip(" ")) :]
+                    runs[c.label.index] = (lead + c.content + trail, kind)
         # a label keeps its number, unless the target has one of that number
         # already (a sketch replayed twice): then it gets a new one
         renumbered: dict[int, Naming] = {}
-        for c in self.calls:
-            if isinstance(backend, RecordingBackend) and c.naming is not None:
+        # the target's methods looked up once (a sheet replays thousands of records)
+        line, polygon, polyline = backend.line, backend.polygon, backend.polyline
+        circle, arc, arrow, text = backend.circle, backend.arc, backend.arrow, backend.text
+        records: list[Any] = self.calls  # each read by its own type below
+        for c in records:
+            made = type(c)
+            if into and c.naming is not None:
                 if c.naming.label not in renumbered:
                     label = c.naming.label
-                    if label in backend._label_ids:
+                    if label in target._label_ids:
                         label = next(_LABEL_IDS)
                     renumbered[c.naming.label] = dataclasses.replace(
                         c.naming.shifted(dx, dy), label=label
                     )
-                backend._naming = renumbered[c.naming.label]
-            if isinstance(c, BeginGroup):
-                backend.begin_group(c.id, c.cls)
-            elif isinstance(c, EndGroup):
-                backend.end_group()
-            elif isinstance(c, Line):
-                backend.line(t(c.start), t(c.end), c.line)
-            elif isinstance(c, Polygon):
-                backend.polygon([t(p) for p in c.vertices], c.line, c.fill)
-            elif isinstance(c, Polyline):
-                backend.polyline([t(p) for p in c.vertices], c.line)
-            elif isinstance(c, Circle):
-                backend.circle(t(c.center), c.radius, c.line, c.fill)
-            elif isinstance(c, Arc):
-                backend.arc(t(c.center), c.radius, c.start_deg, c.end_deg, c.line)
-            elif isinstance(c, Arrow):
-                backend.arrow(
-                    t(c.start),
-                    t(c.end),
-                    c.line,
-                    head_length=c.head_length,
-                    head_width=c.head_width,
-                )
-            elif isinstance(c, Text) and whole and c.label is not None:
-                whole_runs = labels.pop(c.label.serial, None)
-                if whole_runs is not None:  # the label's first run: the whole label
-                    x, y = t(c.pos)
-                    backend.rich_text(
-                        (x + c.label.offset[0], y + c.label.offset[1]),
-                        whole_runs,
-                        c.label.size,
-                        anchor=c.label.anchor,
-                        valign=c.label.valign,
-                        rotation=c.label.rotation,
-                    )
-            elif isinstance(c, Text):
-                backend.text(
+                target._naming = renumbered[c.naming.label]
+            if made is Line:
+                line(t(c.start), t(c.end), c.line)
+            elif made is Text and not (whole and c.label is not None):
+                text(
                     t(c.pos),
                     c.content,
                     c.size,
@@ -706,11 +748,44 @@ class RecordingBackend(Backend):
                     rotation=c.rotation,
                     max_width=c.max_width,
                 )
-                if isinstance(backend, RecordingBackend) and c.label is not None:
+                if into and c.label is not None:
                     # into another recording: the run keeps its label's mark
-                    last = backend.calls[-1]
-                    backend.calls[-1] = dataclasses.replace(last, label=c.label)  # type: ignore[type-var]
+                    last = target.calls[-1]
+                    target.calls[-1] = _made(Text, {**last.__dict__, "label": c.label})
+            elif made is BeginGroup:
+                backend.begin_group(c.id, c.cls)
+            elif made is EndGroup:
+                backend.end_group()
+            elif made is Polygon:
+                polygon([t(p) for p in c.vertices], c.line, c.fill)
+            elif made is Polyline:
+                polyline([t(p) for p in c.vertices], c.line)
+            elif made is Circle:
+                circle(t(c.center), c.radius, c.line, c.fill)
+            elif made is Arc:
+                arc(t(c.center), c.radius, c.start_deg, c.end_deg, c.line)
+            elif made is Arrow:
+                arrow(
+                    t(c.start),
+                    t(c.end),
+                    c.line,
+                    head_length=c.head_length,
+                    head_width=c.head_width,
+                )
+            elif made is Text:  # a label's run onto a backend that sets labels whole
+                whole_runs = labels.pop(c.label.serial, None)
+                if whole_runs is not None:  # the label's first run: the whole label
+                    x, y = t(c.pos)
+                    mark = c.label
+                    backend.rich_text(
+                        (x + mark.offset[0], y + mark.offset[1]),
+                        whole_runs,
+                        mark.size,
+                        anchor=mark.anchor,
+                        valign=mark.valign,
+                        rotation=mark.rotation,
+                    )
             else:  # pragma: no cover - a new primitive must be added here
                 raise ValueError(f"cannot replay {c.name!r}")
-            if isinstance(backend, RecordingBackend):
-                backend._naming = naming
+            if into:
+                target._naming = naming

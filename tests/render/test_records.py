@@ -81,3 +81,36 @@ def test_a_label_carries_what_it_names_through_a_replay():
     assert len({c.naming.label for c in moved}) == 4
     # the label is where the placer wrote it, next to what it names
     assert math.dist(moved[0].pos, moved[0].naming.anchor) < 8.0
+
+
+def test_a_recorded_call_is_the_record_its_constructor_makes():
+    """RecordingBackend makes its records without Call.__init__'s argument
+    matching (render/recording.py `_made`): each must equal, field by field,
+    the record the constructor makes from the same values, with every field
+    set (a default the fast path forgot would be missing here)."""
+    import dataclasses
+
+    from mmt_plans.render.recording import BeginGroup, Circle, EndGroup, Polyline
+
+    b = RecordingBackend()
+    with b.group("g", "plan"):
+        with b.naming("A", "point", (1.0, 2.0)):
+            b.line((0, 0), (10, 5), "thin")
+            b.text((10, 20), "AB", 5.0, anchor="right", valign="top", max_width=4.0)
+        b.polyline([(0, 0), (1, 1), (2, 0)], "thin")
+        b.polygon([(0, 0), (2, 0), (2, 2)], None, "black")
+        b.circle((1, 1), 2, "main", "white")
+        b.arc((0, 0), 2.0, 10.0, 90.0, "thin")
+        b.arrow((0, 0), (3, 4), head_length=2.0, head_width=1.0)
+        b.rich_text((0, 0), "V_{BA}", 3.5)
+    kinds = [type(c) for c in b.calls]
+    assert kinds[:8] == [BeginGroup, Line, Text, Polyline, Polygon, Circle, Arc, Arrow]
+    assert kinds[-1] is EndGroup
+    for c in b.calls:
+        again = type(c)(*[getattr(c, f.name) for f in dataclasses.fields(c)])
+        assert again == c and vars(again) == vars(c), c
+        assert hash(again) == hash(c)
+    # what a label names and a run's label mark are kept
+    assert b.calls[1].naming is not None and b.calls[1].naming.markup == "A"
+    assert b.calls[2].width == pytest.approx(b.look.lettering.width("AB", 5.0, 4.0))
+    assert [c.label is not None for c in b.calls if isinstance(c, Text)] == [False, True, True]
