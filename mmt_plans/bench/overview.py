@@ -9,7 +9,10 @@
 - `analyze` start-up over `python -c "import numpy, click"`: goal ≤ 150 ms;
 - both sheets as SVG and as PDF, the note, one batch item (both sheets
   SVG+PDF, results.json, note.pdf), each for the default sample from a loaded
-  Mechanism: goals 0.5 s, 3 s, 1 s, 1.5 s;
+  Mechanism: goals 0.5 s, 3 s, 1 s, 1.5 s; beside the note, its own part
+  (its pages from sheets composed beforehand, as in a batch item) and a
+  fresh `mmt-plans note` process (imports, fonts and Cairo included), both
+  against the note's goal;
 - with `keys`, the 55 seed-003 task keys with notes by `mmt-plans batch` on
   two workers: goal 30 s.
 
@@ -83,14 +86,19 @@ def solve_rows(sample_dir: Path, repeat: int) -> list[list[str]]:
     return rows
 
 
+def _median_run(args: list[str], runs: int) -> float:
+    """The median wall time of `runs` runs of the command `args` (s)."""
+    times = []
+    for _ in range(runs):
+        t0 = time.perf_counter()
+        subprocess.run(args, check=True, capture_output=True)
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
 def startup_row(sample_dir: Path, runs: int = 7) -> list[str]:
     def median(args: list[str]) -> float:
-        times = []
-        for _ in range(runs):
-            t0 = time.perf_counter()
-            subprocess.run(args, check=True, capture_output=True)
-            times.append(time.perf_counter() - t0)
-        return statistics.median(times)
+        return _median_run(args, runs)
 
     sample = Path(sample_dir) / f"{DEFAULT}.toml"
     base = median([sys.executable, "-c", "import numpy, click"])
@@ -108,7 +116,7 @@ def output_rows(sample_dir: Path, repeat: int) -> list[list[str]]:
     """Both sheets (SVG, PDF), the note and one batch item, from a loaded Mechanism."""
     from ..batch import process_file
     from ..note import write_note
-    from ..sheets.compose import available_sheets, write_sheets
+    from ..sheets.compose import available_sheets, compose, write_sheets
     from ..solution import solve
     from ..spec import load
 
@@ -127,6 +135,21 @@ def output_rows(sample_dir: Path, repeat: int) -> list[list[str]]:
             rows.append(_row(f"both sheets {fmt.upper()}", t, "s", "goal", GOALS[f"sheets_{fmt}"]))
         t = best_time(lambda: write_note(solve(mech), Path(out) / "note.pdf"), times)
         rows.append(_row("note (PDF)", t, "s", "goal", GOALS["note"]))
+        # the note's own part: its pages from sheets composed beforehand (a batch item's note)
+        solution = solve(mech)
+        composed = compose(solution, "en", available_sheets())
+        t_own = best_time(
+            lambda: write_note(solution, Path(out) / "note.pdf", composed=composed), times
+        )
+        rows.append(
+            _row("  of it: the note from composed sheets", t_own, "s", "goal", GOALS["note"])
+        )
+        # what a user waits for: `mmt-plans note` in a fresh process (imports, fonts, Cairo)
+        t_cli = _median_run(
+            [sys.executable, "-m", "mmt_plans", "note", str(path), "-o", str(Path(out) / "n.pdf")],
+            1 if repeat <= 3 else 3,
+        )
+        rows.append(_row("note, a fresh `mmt-plans note`", t_cli, "s", "goal", GOALS["note"]))
         t = best_time(lambda: process_file(str(path), Path(out) / "item", "en", True), times)
         rows.append(_row("batch item", t, "s", "goal", GOALS["item"]))
     return rows

@@ -202,12 +202,16 @@ class CairoPage(Backend):
         squeeze = let.squeeze(content, size, max_width)
         lean = self._lean
         # as render/svg.py: offsets along and across the baseline (y up)
-        along = {"left": 0.0, "center": -lean * size / 2.0, "right": -lean * size}[anchor] * squeeze
-        across = {"baseline": 0.0, "middle": -size / 2.0, "top": -size}[valign]
+        if anchor == "left":
+            along = 0.0 * squeeze
+        else:
+            along = (-lean * size / 2.0 if anchor == "center" else -lean * size) * squeeze
+        across = 0.0 if valign == "baseline" else -size / 2.0 if valign == "middle" else -size
         a = math.radians(rotation)
+        ca, sa = math.cos(a), math.sin(a)
         x, y = as_point(pos)
-        bx = x + along * math.cos(a) - across * math.sin(a)
-        by = y + along * math.sin(a) + across * math.cos(a)
+        bx = x + along * ca - across * sa
+        by = y + along * sa + across * ca
         lib, ptr = self._lib, self._ptr
         lib.cairo_save(ptr)
         lib.cairo_translate(ptr, bx, self.height - by)
@@ -219,7 +223,9 @@ class CairoPage(Backend):
             lib.cairo_transform(ptr, self._shear._pointer)
         lib.cairo_set_font_size(ptr, let.font_size(size))
         width = self.ctx.text_extents(content)[4] if anchor != "left" else 0.0
-        lib.cairo_move_to(ptr, {"left": 0.0, "center": -width / 2.0, "right": -width}[anchor], 0.0)
+        lib.cairo_move_to(
+            ptr, 0.0 if anchor == "left" else -width / 2.0 if anchor == "center" else -width, 0.0
+        )
         lib.cairo_set_source_rgb(ptr, 0.0, 0.0, 0.0)
         lib.cairo_show_text(ptr, content.encode("utf-8"))  # bytes end in NUL: a C string
         lib.cairo_new_path(ptr)
