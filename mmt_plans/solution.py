@@ -476,7 +476,7 @@ class _Turn:
                 "working direction: set study.working_direction or study.zero"
             )
         # brackets [φ_i, φ_i+1] of the grid where ds/dφ changes sign
-        nxt = np.roll(np.arange(grid.size), -1)
+        nxt = np.concatenate((np.arange(1, grid.size), [0]))  # np.roll(arange, -1)
         if self.limits is not None:
             nxt[-1] = grid.size - 1
         change = ok & ok[nxt] & (np.sign(ds) != np.sign(ds[nxt])) & (nxt != np.arange(grid.size))

@@ -202,7 +202,8 @@ class _Search:
         g = grid_margin
         if not np.all(np.isfinite(g)) or float(np.ptp(g)) <= self.tol:
             return np.empty(0), np.empty(0)
-        prev, nxt = np.roll(g, 1), np.roll(g, -1)
+        # the neighbours round the turn (np.roll's values, without its overhead)
+        prev, nxt = np.concatenate((g[-1:], g[:-1])), np.concatenate((g[1:], g[:1]))
         # A smooth margin dips below its lowest grid value by about a quarter
         # of its second difference there: only minima that could reach zero
         # are refined.

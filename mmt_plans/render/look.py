@@ -121,8 +121,15 @@ class Lettering:
     def index_size(self, size: float) -> float:
         """Lettering size of indices: the next smaller standard size; indices of
         the smallest size keep it (GOST 2.304: no lettering under 2.5 mm)."""
-        smaller = [s for s in self.sizes if s < size - 1e-9]
-        return max(smaller) if smaller else size
+        # one answer per size, kept beside the fields as the advances are
+        kept = self.__dict__.get("_index_sizes")
+        if kept is None or len(kept) > _EMS_KEPT:
+            kept = self.__dict__["_index_sizes"] = {}
+        found = kept.get(size)
+        if found is None:
+            smaller = [s for s in self.sizes if s < size - 1e-9]
+            found = kept[size] = max(smaller) if smaller else size
+        return found  # type: ignore[no-any-return]
 
     def squeeze(self, text: str, size: float, max_width: float | None) -> float:
         """Horizontal scale (<= 1) that narrows `text` into max_width; never below min_squeeze."""
