@@ -12,7 +12,9 @@ of writing each step: formula = numbers = result).
 the title page, task sheet, abstract, contents and references around them
 (`note_document`), `pages` sets them on A4 pages through the drawing
 interface (two passes: the contents and the abstract quote the first pass's
-pages and counts), `pdf` joins the pages' SVG into one PDF.
+pages and counts); `write_note` draws them straight onto the pages of one
+Cairo PDF (`pdf.PdfDocument`: no recording to replay), `draw_note` onto any
+backend (a RecordingBackend for tests and `note_svgs`).
 """
 
 from __future__ import annotations

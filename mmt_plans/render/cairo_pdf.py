@@ -9,7 +9,12 @@ document, which made the PDF most of a sheet's and the note's cost. The
 creation and modification dates are files.document_date(), so the same
 pages give the same bytes. The PDF is made in memory and written by
 files.write_bytes_atomic, so a full disk or a read-only folder is reported
-in words, never as Cairo's status code."""
+in words, never as Cairo's status code.
+
+`PdfDocument` is the one surface, page by page: a document drawn straight
+onto its pages (the note) skips the recording; the hot calls (paths,
+strokes, texts) go to Cairo's own functions, checked once per primitive,
+as cairocffi's methods would make them (the same bytes)."""
 
 from __future__ import annotations
 

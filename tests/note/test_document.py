@@ -358,3 +358,22 @@ def test_one_list_of_references_for_both_languages():
         assert years.findall(a) == years.findall(b), (a, b)
         pages = re.compile(r"(\d+) [pс]\.$")
         assert pages.findall(a.strip()) == pages.findall(b.strip()), (a, b)
+
+
+def test_the_note_drawn_straight_onto_its_pdf_is_the_recorded_pages_replayed(tmp_path):
+    """write_note draws its pages straight onto one Cairo PDF (no recording):
+    the bytes are those of the pages recorded first and replayed onto the
+    PDF (render.cairo_pdf.pages_to_pdf), the route the sheets' PDFs take."""
+    from mmt_plans.note.pages import note_look
+    from mmt_plans.render.cairo_pdf import pages_to_pdf_bytes
+    from mmt_plans.sheets.compose import compose
+
+    solution = mmt_plans.solve(mmt_plans.load(SEED003))
+    sheets = compose(solution, "uk")
+    look = note_look()
+    recorded = draw_note(
+        solution, lambda w, h, title: RecordingBackend(w, h, look), "uk", composed=sheets
+    )
+    assert len(recorded) >= 12 and all(page.calls for page in recorded)
+    target = write_note(solution, tmp_path / "note.pdf", lang="uk", composed=sheets)
+    assert target.read_bytes() == pages_to_pdf_bytes(recorded)
