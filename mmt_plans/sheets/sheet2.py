@@ -1105,6 +1105,7 @@ _ORDERS = 16  # orders of the drawings tried beyond the textbook's and by size
 _PARTS_FINER = 1  # series steps a group may be drawn larger or smaller than the loaded mechanism
 _COARSEST = 5  # series steps coarser than its textbook scale a drawing may go
 _FINEST = -6  # series steps finer than its textbook scale a drawing may go
+_COARSEST_CHECK = 0  # first_fit asks whether the coarsest scales fit once this shrink fits nowhere
 _FILL_PASSES = 2 * (12 - _FINEST)  # a bound on fill's passes (each a step of some kind)
 
 
@@ -1354,9 +1355,15 @@ class _Composer:
                     f"{field.width * field.height / 1e4:.0f} dm² of the sheet's field"
                 )
                 self.cache[key] = False
+                self.cache[("bounded", key)] = True
                 return False
             self.cache[key] = self.arrange(self.sketches(scales)[0]) is not None
         return bool(self.cache[key])
+
+    def _bounded(self, steps: dict[str, int]) -> bool:
+        """Whether `fits` found the drawings at `steps` larger than the field
+        by their least area alone (sketching none of the drawings of links)."""
+        return ("bounded", ("fits", tuple(sorted(steps.items())))) in self.cache
 
     def unsettled(self, steps: dict[str, int]) -> int:
         """How many labels of the drawings at `steps` found no free place."""
@@ -1374,14 +1381,20 @@ class _Composer:
         for shrink in range(-2, _COARSEST + 1):
             if found and shrink > max(v for k, v in found[0].items() if k != "mech") + 2:
                 break
+            hopeless = True  # every scale of this shrink larger than the field by its least area
             for bigger in range(max(2, shrink + 2), -1, -1):
                 steps = self._steps(shrink, shrink - bigger)
                 if self.fits(steps):
                     found.append(steps)
                     break
-            if not found and not coarsest_tried:
-                # after the first scale that fits nowhere, the coarsest scales:
-                # if the sheet cannot hold even those, no other will: stop now
+                hopeless &= self._bounded(steps)
+            if not found and not coarsest_tried and (hopeless or shrink >= _COARSEST_CHECK):
+                # once the textbook's scales fit nowhere (or the first scales
+                # tried are larger than the sheet even by their least area),
+                # the coarsest scales: if the sheet cannot hold even those, no
+                # other will: stop now (not sooner: drawing everything at the
+                # coarsest scales costs as much as the trials up to the
+                # textbook's, and most sheets fit by then)
                 coarsest_tried = True
                 if not self.fits(self._steps(_COARSEST, _COARSEST)):
                     return None
