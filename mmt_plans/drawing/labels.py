@@ -254,6 +254,20 @@ class Labels:
         x0, y0, x1, y1 = (np.array([v], dtype=float) for v in bounds)
         return bool(self._obstacle_cost(x0, y0, x1, y1)[0] <= 1e-9)
 
+    def first_free(self, bounds: np.ndarray) -> int | None:
+        """The index of the first of the boxes `bounds` (x0, y0, x1, y1 rows)
+        that `free` finds free, or None: the boxes asked about in growing
+        batches, not one query each."""
+        self._sync()
+        start, size = 0, 16
+        while start < len(bounds):
+            b = bounds[start : start + size]
+            free = np.flatnonzero(self._obstacle_cost(b[:, 0], b[:, 1], b[:, 2], b[:, 3]) <= 1e-9)
+            if free.size:
+                return start + int(free[0])
+            start, size = start + size, min(4 * size, 1024)
+        return None
+
     def width(self, markup: str) -> float:
         """The width of the lettering, mm (of its longest line)."""
         probe = RecordingBackend(look=self.sketch.look)

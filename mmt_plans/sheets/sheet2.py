@@ -587,10 +587,11 @@ def _caption_place(
         & (taken[None, :, 3] > y0[:, None])
     ).any(axis=1)
     ok = np.flatnonzero(on & ~clash)
-    for k in ok[np.argsort(np.hypot(*(q[ok] - centre).T), kind="stable")][:3000]:
-        if labels.free((x0[k], y0[k], x1[k], y1[k])):
-            # the box centred on q: the placer's first place east of the anchor
-            return q[k] - np.array([1.5 + w / 2, 0.0]), np.array([1.0, 0.0])
+    tried = ok[np.argsort(np.hypot(*(q[ok] - centre).T), kind="stable")][:3000]
+    first = labels.first_free(np.c_[x0[tried], y0[tried], x1[tried], y1[tried]])
+    if first is not None:
+        # the box centred on q: the placer's first place east of the anchor
+        return q[tried[first]] - np.array([1.5 + w / 2, 0.0]), np.array([1.0, 0.0])
     return centre, None
 
 
