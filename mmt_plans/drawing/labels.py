@@ -254,6 +254,20 @@ class Labels:
         x0, y0, x1, y1 = (np.array([v], dtype=float) for v in bounds)
         return bool(self._obstacle_cost(x0, y0, x1, y1)[0] <= 1e-9)
 
+    def first_free(self, bounds: np.ndarray) -> int | None:
+        """The index of the first of the boxes `bounds` (x0, y0, x1, y1 rows)
+        that `free` finds free, or None: the boxes asked about in growing
+        batches, not one query each."""
+        self._sync()
+        start, size = 0, 16
+        while start < len(bounds):
+            b = bounds[start : start + size]
+            free = np.flatnonzero(self._obstacle_cost(b[:, 0], b[:, 1], b[:, 2], b[:, 3]) <= 1e-9)
+            if free.size:
+                return start + int(free[0])
+            start, size = start + size, min(4 * size, 1024)
+        return None
+
     def width(self, markup: str) -> float:
         """The width of the lettering, mm (of its longest line)."""
         probe = RecordingBackend(look=self.sketch.look)
@@ -792,35 +806,33 @@ def _point_segment(px: np.ndarray, py: np.ndarray, s: np.ndarray) -> np.ndarray:
 
 def segments_meet_boxes(s: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Row by row, whether the segment (x0, y0, x1, y1) meets the box (xmin,
-    ymin, xmax, ymax): Liang-Barsky clipping of the segment to the box."""
+    ymin, xmax, ymax): Liang-Barsky clipping of the segment to the box (the
+    four edges at once: t0 the largest entering fraction, t1 the least leaving)."""
     x0, y0 = s[:, 0], s[:, 1]
     dx, dy = s[:, 2] - x0, s[:, 3] - y0
-    t0, t1 = np.zeros(len(s)), np.ones(len(s))
-    ok = np.ones(len(s), dtype=bool)
+    p = np.stack([-dx, dx, -dy, dy])
+    q = np.stack([x0 - b[:, 0], b[:, 2] - x0, y0 - b[:, 1], b[:, 3] - y0])
+    flat = p == 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
-        for p, q in (
-            (-dx, x0 - b[:, 0]),
-            (dx, b[:, 2] - x0),
-            (-dy, y0 - b[:, 1]),
-            (dy, b[:, 3] - y0),
-        ):
-            flat = p == 0.0
-            ok &= ~(flat & (q < 0.0))
-            r = q / np.where(flat, 1.0, p)
-            t0 = np.where(~flat & (p < 0.0), np.maximum(t0, r), t0)
-            t1 = np.where(~flat & (p > 0.0), np.minimum(t1, r), t1)
-    return ok & (t0 <= t1)
+        r = q / np.where(flat, 1.0, p)
+    t0 = np.maximum(np.where(~flat & (p < 0.0), r, 0.0).max(axis=0), 0.0)
+    t1 = np.minimum(np.where(~flat & (p > 0.0), r, 1.0).min(axis=0), 1.0)
+    return ~(flat & (q < 0.0)).any(axis=0) & (t0 <= t1)
 
 
 def _segment_box(s: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Distance from segments to boxes, row by row: 0 where the segment
     meets the box (Liang-Barsky clipping), else the least of its ends' to the
-    box and the box's corners' to it."""
+    box and the box's corners' to it (the two ends, the four corners, each
+    measured as `_point_box` and `_point_segment` do, in one pass)."""
     meets = segments_meet_boxes(s, b)
-    d = np.minimum(_point_box(s[:, 0], s[:, 1], b), _point_box(s[:, 2], s[:, 3], b))
-    for cx, cy in ((b[:, 0], b[:, 1]), (b[:, 2], b[:, 1]), (b[:, 2], b[:, 3]), (b[:, 0], b[:, 3])):
-        d = np.minimum(d, _point_segment(cx, cy, s))
-    return np.where(meets, 0.0, d)
+    ex, ey = s[:, [0, 2]].T, s[:, [1, 3]].T
+    dx = np.maximum(np.maximum(b[:, 0] - ex, ex - b[:, 2]), 0.0)
+    dy = np.maximum(np.maximum(b[:, 1] - ey, ey - b[:, 3]), 0.0)
+    ends = np.hypot(dx, dy).min(axis=0)
+    cx, cy = b[:, [0, 2, 2, 0]].T, b[:, [1, 1, 3, 3]].T
+    corners = _point_segment(cx, cy, s).min(axis=0)
+    return np.where(meets, 0.0, np.minimum(ends, corners))
 
 
 def _segment_segment(s: np.ndarray, t: np.ndarray) -> np.ndarray:
@@ -840,6 +852,12 @@ def _segment_segment(s: np.ndarray, t: np.ndarray) -> np.ndarray:
         np.minimum(_point_segment(s[:, 0], s[:, 1], t), _point_segment(s[:, 2], s[:, 3], t)),
     )
     return np.where(crossing, 0.0, d)
+
+
+# below this many (query, piece) pairs an index compares boxes in numpy
+# rather than asking its tree (the same pairs: a tree pays its building and
+# a geometry per query box)
+_BRUTE_PAIRS = 20_000
 
 
 class _ObstacleIndex:
@@ -897,9 +915,32 @@ class _ObstacleIndex:
         # wherever the piece may come within that clearance (a large one, a
         # circle's radius, does not widen every query)
         g = self.reach[self.owner][:, None] if len(self.owner) else np.zeros((0, 1))
-        bounds = bounds + np.c_[-g, -g, g, g]
-        self.tree = STRtree(shapely.box(bounds[:, 0], bounds[:, 1], bounds[:, 2], bounds[:, 3]))
+        self.grown = bounds + np.c_[-g, -g, g, g]
+        self._tree: STRtree | None = None
         self.n = len(shapes)
+
+    @property
+    def tree(self) -> STRtree:
+        """The tree of the pieces' grown boxes (built at the first query that needs it)."""
+        if self._tree is None:
+            g = self.grown
+            self._tree = STRtree(shapely.box(g[:, 0], g[:, 1], g[:, 2], g[:, 3]))
+        return self._tree
+
+    def _query(self, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+        """(query, piece) pairs whose boxes meet (edges touching count), for
+        query boxes from `lo` (x, y rows) to `hi`, as the tree gives them:
+        few pieces and queries are compared all at once, many asked of the tree."""
+        g = self.grown
+        if len(lo) * len(g) > _BRUTE_PAIRS:
+            return np.asarray(self.tree.query(shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1])))
+        meet = (
+            (lo[:, 0, None] <= g[:, 2])
+            & (hi[:, 0, None] >= g[:, 0])
+            & (lo[:, 1, None] <= g[:, 3])
+            & (hi[:, 1, None] >= g[:, 1])
+        )
+        return np.array(np.nonzero(meet), dtype=np.intp).reshape(2, -1)
 
     def _pairs(self, near: np.ndarray, gap: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         owner = self.owner[near[1]]
@@ -911,7 +952,10 @@ class _ObstacleIndex:
         self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
     ) -> tuple[np.ndarray, np.ndarray]:
         """(box, obstacle) pairs: the boxes within each obstacle's clearance."""
-        near = self.tree.query(shapely.box(x0, y0, x1, y1))
+        near = self._query(
+            np.c_[np.minimum(x0, x1), np.minimum(y0, y1)],
+            np.c_[np.maximum(x0, x1), np.maximum(y0, y1)],
+        )
         if not near.shape[1]:
             return near[0], near[1]
         b = np.stack([x0, y0, x1, y1], axis=1)[near[0]]
@@ -938,7 +982,7 @@ class _ObstacleIndex:
         xy = shapely.get_coordinates(lines).reshape(-1, 4)
         lo = np.minimum(xy[:, :2], xy[:, 2:])
         hi = np.maximum(xy[:, :2], xy[:, 2:])
-        near = self.tree.query(shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1]))
+        near = self._query(lo, hi)
         if not near.shape[1]:
             return near[0], near[1]
         gap = np.empty(near.shape[1])

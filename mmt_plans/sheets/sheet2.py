@@ -25,7 +25,7 @@ import math
 import random
 import re
 import weakref
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -587,10 +587,11 @@ def _caption_place(
         & (taken[None, :, 3] > y0[:, None])
     ).any(axis=1)
     ok = np.flatnonzero(on & ~clash)
-    for k in ok[np.argsort(np.hypot(*(q[ok] - centre).T), kind="stable")][:3000]:
-        if labels.free((x0[k], y0[k], x1[k], y1[k])):
-            # the box centred on q: the placer's first place east of the anchor
-            return q[k] - np.array([1.5 + w / 2, 0.0]), np.array([1.0, 0.0])
+    tried = ok[np.argsort(np.hypot(*(q[ok] - centre).T), kind="stable")][:3000]
+    first = labels.first_free(np.c_[x0[tried], y0[tried], x1[tried], y1[tried]])
+    if first is not None:
+        # the box centred on q: the placer's first place east of the anchor
+        return q[tried[first]] - np.array([1.5 + w / 2, 0.0]), np.array([1.0, 0.0])
     return centre, None
 
 
@@ -1105,6 +1106,10 @@ _ORDERS = 16  # orders of the drawings tried beyond the textbook's and by size
 _PARTS_FINER = 1  # series steps a group may be drawn larger or smaller than the loaded mechanism
 _COARSEST = 5  # series steps coarser than its textbook scale a drawing may go
 _FINEST = -6  # series steps finer than its textbook scale a drawing may go
+_COARSEST_CHECK = 0  # first_fit asks whether the coarsest scales fit once this shrink fits nowhere
+# first_fit asks about the coarsest scales at once where the first scales
+# tried take this many times the field by their least area
+_HOPELESS = 1.5
 _FILL_PASSES = 2 * (12 - _FINEST)  # a bound on fill's passes (each a step of some kind)
 
 
@@ -1239,6 +1244,14 @@ class _Composer:
     def sketches(
         self, scales: dict[str, float]
     ) -> tuple[dict[str, Sketch], list[tuple[str, float]]]:
+        arms: list[tuple[str, float]] = []
+        return dict(self._sketched(scales, arms)), arms
+
+    def _sketched(
+        self, scales: dict[str, float], arms: list[tuple[str, float]]
+    ) -> Iterator[tuple[str, Sketch]]:
+        """The drawings and tables at `scales` one at a time (name, sketch),
+        the lever's arms into `arms`."""
         fa, look, lang = self.fa, self.look, self.lang
         mu_l, mu_V = scales["mu_l"], scales["mu_V"]
 
@@ -1259,38 +1272,39 @@ class _Composer:
             )
             return self.memo(("noted", id(plain), mu_l), lambda: _with_note(plain, other))
 
-        sketches: dict[str, Sketch] = {}
         arm_names: tuple[str, ...] = ()  # the arms are numbered on through the groups
         for g, mu in zip(fa.groups, group_mu):
             before = arm_names
             plain, arm_names = self.memo(
                 ("group", g.name, mu, before), lambda: group_at(g, mu, before)
             )
-            sketches[f"group-{g.name}"] = noted(plain, mu)
+            yield f"group-{g.name}", noted(plain, mu)
         driving = self.memo(
             ("driving-link", mu_d), lambda: sketch_driving_link(fa, mu_d, look, lang)
         )
-        sketches["driving-link"] = noted(driving, mu_d)
+        yield "driving-link", noted(driving, mu_d)
         for name, polygons, title in self.polygon_sets:
             mu_F = scales[f"mu_F {name}"]
             gid = f"force-polygon-{name}"
             note = _polygon_note(polygons, mu_F, lang)
-            sketches[gid] = self.polygons(name, polygons, title, mu_F)
+            drawn = self.polygons(name, polygons, title, mu_F)
             if note:
-                sketches[gid] = self.memo(
-                    ("noted", gid, mu_F), lambda: _with_note(sketches[gid], note)
-                )
+                drawn = self.memo(("noted", gid, mu_F), lambda: _with_note(drawn, note))
+            yield gid, drawn
 
-        sketches["zhukovsky-lever"], arms, tables = self.lever(mu_V)
-        sketches.update(tables)
-        sketches["force-mechanism"], sketches["table-loads"] = self.memo(
+        lever, lever_arms, tables = self.lever(mu_V)
+        arms.extend(lever_arms)
+        yield "zhukovsky-lever", lever
+        yield from tables.items()
+        mechanism, loads = self.memo(
             ("force-mechanism", mu_l),
             lambda: (
                 sketch_loaded_mechanism(fa, mu_l, look, lang),
                 sketch_loads_table(fa, mu_l, look, lang, self.compact),
             ),
         )
-        return sketches, arms
+        yield "force-mechanism", mechanism
+        yield "table-loads", loads
 
     def arrange(self, sketches: dict[str, Sketch]) -> tuple[SheetLayout, dict[str, Rect]] | None:
         """The loaded mechanism top left, the tables top right, the drawings
@@ -1354,9 +1368,56 @@ class _Composer:
                     f"{field.width * field.height / 1e4:.0f} dm² of the sheet's field"
                 )
                 self.cache[key] = False
+                self.cache[("bounded", key)] = least / (field.width * field.height)
                 return False
-            self.cache[key] = self.arrange(self.sketches(scales)[0]) is not None
+            self.cache[key] = self._staged(scales) and (
+                self.arrange(self.sketches(scales)[0]) is not None
+            )
         return bool(self.cache[key])
+
+    def _staged(self, scales: dict[str, float]) -> bool:
+        """False where the drawings at `scales`, sketched one at a time, take
+        more than the field before all are sketched: each counted as its own
+        extent once sketched, the rest by their least area (least_area's
+        parts); arrange would find them larger still. True otherwise."""
+        field = self.page.frame.inset(5.0)
+        most = field.width * field.height * (1.0 + 1e-9)  # arrange decides the close ones
+        area = dict(self._least_parts(scales))
+        for name, sketch in self._sketched(scales, []):
+            ext = self.extent(sketch)
+            area[name] = ext.width * ext.height
+            if sum(area.values()) > most:
+                self.last = LayoutError(
+                    f"the drawings and tables take at least {sum(area.values()) / 1e4:.0f} "
+                    f"dm², more than the {field.width * field.height / 1e4:.0f} dm² of "
+                    "the sheet's field"
+                )
+                return False
+        return True
+
+    def _least_parts(self, scales: dict[str, float]) -> Iterator[tuple[str, float]]:
+        """least_area's parts by drawing (mm²): the drawings of links by the
+        boxes of their pins, the lever, its tables and the polygons (without
+        a note) as sketched."""
+        owner = {"mu_l": "force-mechanism", f"mu_l {self.fa.driving_link.link}": "driving-link"}
+        owner.update({f"mu_l {g.name}": f"group-{g.name}" for g in self.fa.groups})
+        for key, pts in self._pins:
+            if len(pts):
+                w, h = np.ptp(pts, axis=0) / scales[key] + 2.0 * PAD
+                yield owner[key], float(w * h)
+        lever, _, tables = self.lever(scales["mu_V"])
+        for name, sketch in (("zhukovsky-lever", lever), *tables.items()):
+            yield name, self.extent(sketch).width * self.extent(sketch).height
+        for name, polygons, title in self.polygon_sets:
+            sketch = self.polygons(name, polygons, title, scales[f"mu_F {name}"])
+            yield f"force-polygon-{name}", self.extent(sketch).width * self.extent(sketch).height
+
+    def _bounded(self, steps: dict[str, int]) -> bool:
+        """Whether `fits` found the drawings at `steps` far larger than the
+        field by their least area alone (sketching none of the drawings of
+        links): by more than _HOPELESS times its area."""
+        over = self.cache.get(("bounded", ("fits", tuple(sorted(steps.items())))), 0.0)
+        return bool(over > _HOPELESS)
 
     def unsettled(self, steps: dict[str, int]) -> int:
         """How many labels of the drawings at `steps` found no free place."""
@@ -1374,14 +1435,20 @@ class _Composer:
         for shrink in range(-2, _COARSEST + 1):
             if found and shrink > max(v for k, v in found[0].items() if k != "mech") + 2:
                 break
+            hopeless = True  # every scale of this shrink larger than the field by its least area
             for bigger in range(max(2, shrink + 2), -1, -1):
                 steps = self._steps(shrink, shrink - bigger)
                 if self.fits(steps):
                     found.append(steps)
                     break
-            if not found and not coarsest_tried:
-                # after the first scale that fits nowhere, the coarsest scales:
-                # if the sheet cannot hold even those, no other will: stop now
+                hopeless &= self._bounded(steps)
+            if not found and not coarsest_tried and (hopeless or shrink >= _COARSEST_CHECK):
+                # once the textbook's scales fit nowhere (or the first scales
+                # tried are larger than the sheet even by their least area),
+                # the coarsest scales: if the sheet cannot hold even those, no
+                # other will: stop now (not sooner: drawing everything at the
+                # coarsest scales costs as much as the trials up to the
+                # textbook's, and most sheets fit by then)
                 coarsest_tried = True
                 if not self.fits(self._steps(_COARSEST, _COARSEST)):
                     return None
