@@ -19,8 +19,11 @@ import numpy as np
 import shapely
 
 from ..diagrams import (
+    DIAGRAM_HEIGHT_MM,
     ILL_CONDITIONED,
+    ROUND_POLE_DISTANCES_MM,
     KinematicDiagrams,
+    graphical_differentiation,
 )
 from ..drawing.labels import (
     FINE_LEADER_DIRS,
@@ -47,6 +50,7 @@ from ..render.recording import RecordingBackend
 from ..scales import (
     LENGTH_MANTISSA_TEXT,
     Quantity,
+    is_standard,
     scale_label,
     series,
 )
@@ -1335,6 +1339,14 @@ def _sketch_all(
         "mu_a": plan_mu[f"acceleration {first}"],
         **{f"mu_V {i}": plan_mu[f"velocity {i}"] for i in solution.plan_positions},
         **{f"mu_a {i}": plan_mu[f"acceleration {i}"] for i in solution.plan_positions},
+        **_diagram_scales(drawn),
+    }
+    return sketches, scales, drawn
+
+
+def _diagram_scales(drawn: KinematicDiagrams) -> dict[str, float]:
+    """The scales record's entries of the diagrams as drawn."""
+    return {
         "mu_S": drawn.mu_S,
         "mu_t": drawn.mu_t,
         "mu_V_diagram": drawn.mu_V,
@@ -1342,7 +1354,6 @@ def _sketch_all(
         "H1": drawn.H1,
         "H2": drawn.H2,
     }
-    return sketches, scales, drawn
 
 
 def _geometric_extent(solution: Solution) -> tuple[float, float]:
@@ -1517,6 +1528,162 @@ def _may_fit(
     return False, in_field
 
 
+# --- the diagrams take the room that is left ------------------------------------------
+
+_STACK_GAP = 6.0  # _stack's gap between the S, V and a diagrams
+
+
+def _diagram_rooms(layout: SheetLayout, rect: Rect, gap: float) -> list[Rect]:
+    """The free rectangles the diagrams' column at `rect` may grow into: from
+    its bottom-left corner, right up to the region's edge or `gap` short of an
+    element (the title block, a plan, a table), up to `gap` under the lowest
+    element above that width; largest first. Each is as wide as `rect` at
+    least and three quarters as high (a wider, lower room where plans come
+    down beside the column)."""
+    region = layout.region
+    others = [e.bounds for e in layout.elements if e.name != "diagrams"]
+    left, bottom = rect.left, rect.bottom
+    rights = {region.right, *(b.left - gap for b in others if b.left - gap >= rect.right - 1e-6)}
+    rooms = []
+    for right in sorted(rights):
+        top = min(
+            [region.top]
+            + [
+                b.bottom - gap
+                for b in others
+                if b.left < right + gap - 1e-6 and b.right > left - gap + 1e-6 and b.top > bottom
+            ]
+        )
+        if top >= rect.bottom + 0.75 * rect.height - 1e-6 and right >= rect.right - 1e-6:
+            rooms.append(Rect.from_bounds(left, bottom, right, top))
+    return sorted(rooms, key=lambda r: -r.width * r.height)
+
+
+def _grown_scales(
+    s: np.ndarray, n1: float, L: float, mu_l: float, coarsest: float, cap: float
+) -> tuple[float, float, float] | None:
+    """μ_S, OH1, OH2 for diagrams over an `L` mm time axis, each at most `cap`
+    mm tall: μ_S the finest series value from μ_l up to `coarsest` (the
+    Solution's μ_S: a line under S says why μ_S ≠ μ_l, the diagrams' height,
+    which holds then) that draws S within `cap` (seed 003 §1.7: μ_S = μ_l
+    where it can); the poles whole millimetres
+    of ROUND_POLE_DISTANCES_MM making μ_V and μ_a series values, of those the
+    tallest V and a (a long axis flattens them: the pole lengthens instead).
+    The heights scale as 1/μ_S, OH1/μ_S and OH1·OH2/μ_S (the construction is
+    linear in them); None where no choice keeps μ_V and μ_a series values."""
+    ref = graphical_differentiation(s, n1=n1, mu_S=mu_l, L=L, H1=40.0, H2=40.0)
+    h_s, h_v, h_a = ref.heights_mm
+    for mu_S in series(mu_l * (1 - 1e-9), coarsest, LENGTH_MANTISSA_TEXT):
+        k = mu_l / mu_S
+        if h_s * k > cap * (1 + 1e-9):
+            continue
+        best: tuple[tuple[float, float], tuple[float, float, float]] | None = None
+        for H1 in ROUND_POLE_DISTANCES_MM:
+            tall_v = h_v * k * H1 / 40.0
+            if tall_v > cap * (1 + 1e-9) or not is_standard(ref.mu_V * 40.0 / (k * H1)):
+                continue
+            for H2 in ROUND_POLE_DISTANCES_MM:
+                tall_a = h_a * k * H1 * H2 / 1600.0
+                mu_a = ref.mu_a * 1600.0 / (k * H1 * H2)
+                if tall_a > cap * (1 + 1e-9) or not is_standard(mu_a):
+                    continue
+                key = (min(tall_v, tall_a), tall_v + tall_a)
+                if best is None or key > best[0]:
+                    best = (key, (mu_S, H1, H2))
+        if best is not None:
+            return best[1]
+    return None
+
+
+def _grown_diagrams(
+    solution: Solution,
+    look: Any,
+    lang: Language,
+    layout: SheetLayout,
+    sketches: Mapping[str, Sketch],
+    placed: Mapping[str, Rect],
+    drawn: KinematicDiagrams,
+    mu_l: float,
+    gap: float,
+    extents: _Extents,
+) -> tuple[Sketch, Rect, KinematicDiagrams] | None:
+    """The diagrams' column redrawn into the room left beside and above it
+    (_diagram_rooms), or None where it cannot grow. The rule: one turn of
+    the crank on the time axis at the finest series μ_t whose axis (with the
+    pole and the lettering) fits the room's width; each diagram at most a
+    third of the room's height (less the lettering), at series μ_S, μ_V, μ_a
+    (_grown_scales). The construction is the Solution's on the same grid
+    (its V and a in SI do not depend on the scales: the 5 % check stands)."""
+    if "diagrams" not in placed:
+        return None
+    rect = placed["diagrams"]
+    base = extents(sketches["diagrams"])
+    dg = solution.require_diagrams()
+    s = np.asarray(drawn.s, dtype=float)
+    T = 60.0 / drawn.n1
+    over_w = base.width - drawn.L - max(drawn.H1, drawn.H2)
+    over_h = base.height - sum(drawn.heights_mm)
+    for room in _diagram_rooms(layout, rect, gap)[:3]:
+        if room.width * room.height < 1.15 * base.width * base.height:
+            continue
+        cap = (room.height - over_h) / 3.0
+        if room.height >= rect.height:
+            cap = max(cap, DIAGRAM_HEIGHT_MM)
+        tried = 0
+        for mu_t in series(T / max(room.width - over_w - 40.0, drawn.L), T / drawn.L):
+            L = T / mu_t
+            if L <= drawn.L * (1 + 1e-9) and cap <= max(drawn.heights_mm) + 1e-6:
+                break
+            for share in (1.0, 0.85, 0.7, 0.55):
+                chosen = _grown_scales(
+                    s, drawn.n1, L, float(solution.mu_l), drawn.mu_S, cap * share
+                )
+                if chosen is None:
+                    continue
+                mu_S, H1, H2 = chosen
+                c = graphical_differentiation(s, n1=drawn.n1, mu_S=mu_S, L=L, H1=H1, H2=H2)
+                if (
+                    L + max(H1, H2) + over_w > room.width
+                    or sum(c.heights_mm) + over_h > room.height
+                ):
+                    continue
+                tried += 1
+                parts = [
+                    sketch_diagram(
+                        c,
+                        which,
+                        look,
+                        lang,
+                        solution.s_dense,
+                        dg.refinement,
+                        mu_l=mu_l if which == "s" else None,
+                        mu_l_solution=float(solution.mu_l),
+                    )
+                    for which in ("s", "v", "a")
+                ]
+                grown = _stack(parts, look, _STACK_GAP)
+                ext = extents(grown)
+                fits = ext.width <= room.width + 1e-6 and ext.height <= room.height + 1e-6
+                if fits and ext.width * ext.height >= 1.15 * base.width * base.height:
+                    at = Rect(room.left, room.bottom, ext.width, ext.height)
+                    return grown, at, c
+                if tried >= 4:
+                    break
+            if tried >= 4:
+                break
+    return None
+
+
+def _with_diagrams(layout: SheetLayout, page: Page, gap: float, rect: Rect) -> SheetLayout:
+    """`layout` with the diagrams' footprint at `rect`."""
+    out = SheetLayout(page, gap=gap)
+    for e in layout.elements:
+        if e.name == "title-block":
+            continue
+        out.register(e.name, rect if e.name == "diagrams" else e.footprint, e.kind)
+    return out
+
+
 def compose_sheet1(
     solution: Solution, backend: Backend, lang: Language = "en", *, page: Page | None = None
 ) -> Sheet1:
@@ -1584,6 +1751,14 @@ def compose_sheet1(
                     in_field = in_field or not str(err).startswith("mechanism")
                     placed_field = placed_field or in_field
                     continue
+                grown = _grown_diagrams(
+                    solution, look, lang, layout, sketches, placed, drawn, mu_l, gap, extents
+                )
+                if grown is not None:  # the diagrams take the room that is left
+                    sketches, drawn = {**sketches, "diagrams": grown[0]}, grown[2]
+                    placed = {**placed, "diagrams": grown[1]}
+                    layout = _with_diagrams(layout, page, gap, grown[1])
+                    scales = {**scales, **_diagram_scales(drawn)}
                 scales["mu_l"] = mu_l
                 result = Sheet1(layout, scales, shrink=shrink, field=field, diagrams=drawn)
                 return _draw(
