@@ -898,7 +898,7 @@ def sketch_diagram(
         ticks = []  # numbered once every line is drawn, where they cover none
         for i, x in enumerate(grid):
             if i % refinement == 0:  # the positions are numbered, the finer grid is not
-                ticks.append((x, str((i // refinement) % (len(grid) // refinement))))
+                ticks.append((x, str((i // refinement) % ((len(grid) - 1) // refinement))))
             if which == "s":
                 y = float(c.s_points[i][1])
                 if abs(y) > 0.5:
@@ -1534,18 +1534,22 @@ _STACK_GAP = 6.0  # _stack's gap between the S, V and a diagrams
 
 
 def _diagram_rooms(layout: SheetLayout, rect: Rect, gap: float) -> list[Rect]:
-    """The free rectangles the diagrams' column at `rect` may grow into: from
-    its bottom-left corner, right up to the region's edge or `gap` short of an
-    element (the title block, a plan, a table), up to `gap` under the lowest
-    element above that width; largest first. Each is as wide as `rect` at
-    least and three quarters as high (a wider, lower room where plans come
+    """The free rectangles the diagrams' column at `rect` may be redrawn in:
+    on its bottom edge, from the region's left edge or `gap` right of an
+    element (the mechanism) to the region's right edge or `gap` short of one
+    (the title block, a plan, a table), up to `gap` under the lowest element
+    above that span; largest first. Each spans the column's width at least
+    and three quarters of its height (a wider, lower room where plans come
     down beside the column)."""
     region = layout.region
     others = [e.bounds for e in layout.elements if e.name != "diagrams"]
-    left, bottom = rect.left, rect.bottom
+    bottom = rect.bottom
+    lefts = {region.left, *(b.right + gap for b in others if b.right + gap <= rect.left + 1e-6)}
     rights = {region.right, *(b.left - gap for b in others if b.left - gap >= rect.right - 1e-6)}
     rooms = []
-    for right in sorted(rights):
+    for left, right in itertools.product(lefts, rights):
+        if right - left < rect.width - 1e-6:
+            continue
         top = min(
             [region.top]
             + [
@@ -1554,35 +1558,44 @@ def _diagram_rooms(layout: SheetLayout, rect: Rect, gap: float) -> list[Rect]:
                 if b.left < right + gap - 1e-6 and b.right > left - gap + 1e-6 and b.top > bottom
             ]
         )
-        if top >= rect.bottom + 0.75 * rect.height - 1e-6 and right >= rect.right - 1e-6:
+        if top >= bottom + 0.75 * rect.height - 1e-6:
             rooms.append(Rect.from_bounds(left, bottom, right, top))
     return sorted(rooms, key=lambda r: -r.width * r.height)
 
 
 def _grown_scales(
-    s: np.ndarray, n1: float, L: float, mu_l: float, coarsest: float, cap: float
+    s: np.ndarray,
+    n1: float,
+    L: float,
+    mu_S_range: tuple[float, float],
+    budget: float,
+    longest_pole: float,
 ) -> tuple[float, float, float] | None:
-    """μ_S, OH1, OH2 for diagrams over an `L` mm time axis, each at most `cap`
-    mm tall: μ_S the finest series value from μ_l up to `coarsest` (the
-    Solution's μ_S: a line under S says why μ_S ≠ μ_l, the diagrams' height,
-    which holds then) that draws S within `cap` (seed 003 §1.7: μ_S = μ_l
-    where it can); the poles whole millimetres
-    of ROUND_POLE_DISTANCES_MM making μ_V and μ_a series values, of those the
-    tallest V and a (a long axis flattens them: the pole lengthens instead).
-    The heights scale as 1/μ_S, OH1/μ_S and OH1·OH2/μ_S (the construction is
+    """μ_S, OH1, OH2 for diagrams over an `L` mm time axis sharing `budget` mm
+    of height: μ_S the finest series value of `mu_S_range` (from μ_l, seed 003
+    §1.7: μ_S = μ_l where it can) that draws S within a third of it (a fixed
+    μ_S: within three fifths); V and a each within half of what S leaves, the
+    poles whole millimetres of ROUND_POLE_DISTANCES_MM, at most
+    `longest_pole`, making μ_V and μ_a series values, of those the tallest V
+    and a (a long axis flattens them: the pole lengthens instead). The
+    heights scale as 1/μ_S, OH1/μ_S and OH1·OH2/μ_S (the construction is
     linear in them); None where no choice keeps μ_V and μ_a series values."""
-    ref = graphical_differentiation(s, n1=n1, mu_S=mu_l, L=L, H1=40.0, H2=40.0)
+    ref = graphical_differentiation(s, n1=n1, mu_S=mu_S_range[0], L=L, H1=40.0, H2=40.0)
     h_s, h_v, h_a = ref.heights_mm
-    for mu_S in series(mu_l * (1 - 1e-9), coarsest, LENGTH_MANTISSA_TEXT):
-        k = mu_l / mu_S
-        if h_s * k > cap * (1 + 1e-9):
+    poles = [H for H in ROUND_POLE_DISTANCES_MM if H <= longest_pole]
+    lo, hi = mu_S_range
+    share_s = budget / 3.0 if hi > lo else budget * 0.6
+    for mu_S in itertools.islice(series(lo * (1 - 1e-9), hi, LENGTH_MANTISSA_TEXT), 8):
+        k = lo / mu_S
+        if h_s * k > share_s * (1 + 1e-9):
             continue
+        cap = (budget - h_s * k) / 2.0
         best: tuple[tuple[float, float], tuple[float, float, float]] | None = None
-        for H1 in ROUND_POLE_DISTANCES_MM:
+        for H1 in poles:
             tall_v = h_v * k * H1 / 40.0
             if tall_v > cap * (1 + 1e-9) or not is_standard(ref.mu_V * 40.0 / (k * H1)):
                 continue
-            for H2 in ROUND_POLE_DISTANCES_MM:
+            for H2 in poles:
                 tall_a = h_a * k * H1 * H2 / 1600.0
                 mu_a = ref.mu_a * 1600.0 / (k * H1 * H2)
                 if tall_a > cap * (1 + 1e-9) or not is_standard(mu_a):
@@ -1612,40 +1625,44 @@ def _grown_diagrams(
     the crank on the time axis at the finest series μ_t whose axis (with the
     pole and the lettering) fits the room's width; each diagram at most a
     third of the room's height (less the lettering), at series μ_S, μ_V, μ_a
-    (_grown_scales). The construction is the Solution's on the same grid
-    (its V and a in SI do not depend on the scales: the 5 % check stands)."""
+    (_grown_scales); of the rooms, the one the column then covers most of.
+    μ_S stays the Solution's where the sheet draws the mechanism at another
+    μ_l than the calculation's (the line under S names it the calculation's
+    scale), else it is μ_l or the series step above that S needs. The
+    construction is the Solution's on the same grid (its V and a in SI do not
+    depend on the scales: the 5 % check stands)."""
     if "diagrams" not in placed:
         return None
     rect = placed["diagrams"]
     base = extents(sketches["diagrams"])
+    least = 1.15 * base.width * base.height  # worth redrawing: 15 % more paper covered
     dg = solution.require_diagrams()
     s = np.asarray(drawn.s, dtype=float)
     T = 60.0 / drawn.n1
     over_w = base.width - drawn.L - max(drawn.H1, drawn.H2)
     over_h = base.height - sum(drawn.heights_mm)
+    own = abs(mu_l / float(solution.mu_l) - 1.0) <= 1e-9
+    mu_S_range = (float(solution.mu_l), float(solution.mu_l) * 1e4) if own else (drawn.mu_S,) * 2
+    best: tuple[float, Sketch, Rect, KinematicDiagrams] | None = None
     for room in _diagram_rooms(layout, rect, gap)[:3]:
-        if room.width * room.height < 1.15 * base.width * base.height:
+        if room.width * room.height < max(least, best[0] if best else 0.0):
             continue
-        cap = (room.height - over_h) / 3.0
-        if room.height >= rect.height:
-            cap = max(cap, DIAGRAM_HEIGHT_MM)
+        budget = room.height - over_h  # the three diagrams' heights share it
+        if room.height >= rect.height:  # not lower than the Solution's, where it can
+            budget = max(budget, 3.0 * DIAGRAM_HEIGHT_MM)
         tried = 0
-        for mu_t in series(T / max(room.width - over_w - 40.0, drawn.L), T / drawn.L):
+        for mu_t in series(T / max(room.width - over_w - 20.0, drawn.L), T / drawn.L):
             L = T / mu_t
-            if L <= drawn.L * (1 + 1e-9) and cap <= max(drawn.heights_mm) + 1e-6:
+            if tried >= 3 or (L <= drawn.L * (1 + 1e-9) and budget <= sum(drawn.heights_mm)):
                 break
             for share in (1.0, 0.85, 0.7, 0.55):
-                chosen = _grown_scales(
-                    s, drawn.n1, L, float(solution.mu_l), drawn.mu_S, cap * share
-                )
+                longest = room.width - over_w - L
+                chosen = _grown_scales(s, drawn.n1, L, mu_S_range, budget * share, longest)
                 if chosen is None:
                     continue
                 mu_S, H1, H2 = chosen
                 c = graphical_differentiation(s, n1=drawn.n1, mu_S=mu_S, L=L, H1=H1, H2=H2)
-                if (
-                    L + max(H1, H2) + over_w > room.width
-                    or sum(c.heights_mm) + over_h > room.height
-                ):
+                if sum(c.heights_mm) + over_h > room.height:
                     continue
                 tried += 1
                 parts = [
@@ -1663,15 +1680,14 @@ def _grown_diagrams(
                 ]
                 grown = _stack(parts, look, _STACK_GAP)
                 ext = extents(grown)
+                covered = ext.width * ext.height
                 fits = ext.width <= room.width + 1e-6 and ext.height <= room.height + 1e-6
-                if fits and ext.width * ext.height >= 1.15 * base.width * base.height:
-                    at = Rect(room.left, room.bottom, ext.width, ext.height)
-                    return grown, at, c
-                if tried >= 4:
-                    break
-            if tried >= 4:
+                if fits and covered >= max(least, best[0] if best else 0.0):
+                    best = (covered, grown, Rect(room.left, room.bottom, ext.width, ext.height), c)
+                break  # the tallest that fits this axis, or none
+            if best is not None and best[0] >= room.width * room.height * 0.8:
                 break
-    return None
+    return None if best is None else best[1:]
 
 
 def _with_diagrams(layout: SheetLayout, page: Page, gap: float, rect: Rect) -> SheetLayout:
