@@ -1653,10 +1653,10 @@ def _grown_diagrams(
         tried = 0
         for mu_t in series(T / max(room.width - over_w - 20.0, drawn.L), T / drawn.L):
             L = T / mu_t
-            if tried >= 3 or (L <= drawn.L * (1 + 1e-9) and budget <= sum(drawn.heights_mm)):
+            if tried >= 4 or (L <= drawn.L * (1 + 1e-9) and budget <= sum(drawn.heights_mm)):
                 break
             for share in (1.0, 0.85, 0.7, 0.55):
-                longest = room.width - over_w - L
+                longest = room.width - over_w - L - 8.0  # the lettering's widths vary
                 chosen = _grown_scales(s, drawn.n1, L, mu_S_range, budget * share, longest)
                 if chosen is None:
                     continue
@@ -1681,10 +1681,13 @@ def _grown_diagrams(
                 grown = _stack(parts, look, _STACK_GAP)
                 ext = extents(grown)
                 covered = ext.width * ext.height
-                fits = ext.width <= room.width + 1e-6 and ext.height <= room.height + 1e-6
-                if fits and covered >= max(least, best[0] if best else 0.0):
+                if ext.width > room.width + 1e-6:
+                    break  # too wide: a shorter axis
+                if ext.height > room.height + 1e-6:
+                    continue  # too tall: lower diagrams
+                if covered >= max(least, best[0] if best else 0.0):
                     best = (covered, grown, Rect(room.left, room.bottom, ext.width, ext.height), c)
-                break  # the tallest that fits this axis, or none
+                break  # the tallest that fits this axis
             if best is not None and best[0] >= room.width * room.height * 0.8:
                 break
     return None if best is None else best[1:]
