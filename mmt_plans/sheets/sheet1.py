@@ -995,15 +995,7 @@ def _stack(parts: Sequence[Sketch], look: Any, gap: float = 6.0) -> Sketch:
     for part in parts:
         ext = part.extent()
         dy = y - ext.top
-        for c in part.calls:
-            shifted = Sketch(look)
-            shifted.calls = [c]
-            rec = Sketch(look)
-            shifted.replay(rec, 0.0, dy) if c.name not in ("begin_group", "end_group") else None
-            if c.name in ("begin_group", "end_group"):
-                out.calls.append(c)
-            else:
-                out.calls.extend(type(k)(k.name, k.args, c.groups) for k in rec.calls)
+        part.replay(out, 0.0, dy)  # each call with its groups, shifted down
         y = ext.bottom + dy - gap
     return out
 
@@ -1644,6 +1636,7 @@ def _grown_diagrams(
     own = abs(mu_l / float(solution.mu_l) - 1.0) <= 1e-9
     mu_S_range = (float(solution.mu_l), float(solution.mu_l) * 1e4) if own else (drawn.mu_S,) * 2
     best: tuple[float, Sketch, Rect, KinematicDiagrams] | None = None
+    drawn_parts: dict[tuple[Any, ...], Sketch] = {}
     for room in _diagram_rooms(layout, rect, gap)[:3]:
         if room.width * room.height < max(least, best[0] if best else 0.0):
             continue
@@ -1665,19 +1658,24 @@ def _grown_diagrams(
                 if sum(c.heights_mm) + over_h > room.height:
                     continue
                 tried += 1
-                parts = [
-                    sketch_diagram(
-                        c,
-                        which,
-                        look,
-                        lang,
-                        solution.s_dense,
-                        dg.refinement,
-                        mu_l=mu_l if which == "s" else None,
-                        mu_l_solution=float(solution.mu_l),
-                    )
-                    for which in ("s", "v", "a")
-                ]
+                parts = []
+                for which, key in (
+                    ("s", ("s", L, mu_S)),
+                    ("v", ("v", L, mu_S, H1)),
+                    ("a", ("a", L, mu_S, H1, H2)),
+                ):
+                    if key not in drawn_parts:  # the rooms try the same axes again
+                        drawn_parts[key] = sketch_diagram(
+                            c,
+                            which,
+                            look,
+                            lang,
+                            solution.s_dense,
+                            dg.refinement,
+                            mu_l=mu_l if which == "s" else None,
+                            mu_l_solution=float(solution.mu_l),
+                        )
+                    parts.append(drawn_parts[key])
                 grown = _stack(parts, look, _STACK_GAP)
                 ext = extents(grown)
                 covered = ext.width * ext.height
