@@ -19,8 +19,11 @@ import numpy as np
 import shapely
 
 from ..diagrams import (
+    DIAGRAM_HEIGHT_MM,
     ILL_CONDITIONED,
+    ROUND_POLE_DISTANCES_MM,
     KinematicDiagrams,
+    graphical_differentiation,
 )
 from ..drawing.labels import (
     FINE_LEADER_DIRS,
@@ -47,6 +50,7 @@ from ..render.recording import RecordingBackend
 from ..scales import (
     LENGTH_MANTISSA_TEXT,
     Quantity,
+    is_standard,
     scale_label,
     series,
 )
@@ -894,7 +898,7 @@ def sketch_diagram(
         ticks = []  # numbered once every line is drawn, where they cover none
         for i, x in enumerate(grid):
             if i % refinement == 0:  # the positions are numbered, the finer grid is not
-                ticks.append((x, str((i // refinement) % (len(grid) // refinement))))
+                ticks.append((x, str((i // refinement) % ((len(grid) - 1) // refinement))))
             if which == "s":
                 y = float(c.s_points[i][1])
                 if abs(y) > 0.5:
@@ -991,15 +995,7 @@ def _stack(parts: Sequence[Sketch], look: Any, gap: float = 6.0) -> Sketch:
     for part in parts:
         ext = part.extent()
         dy = y - ext.top
-        for c in part.calls:
-            shifted = Sketch(look)
-            shifted.calls = [c]
-            rec = Sketch(look)
-            shifted.replay(rec, 0.0, dy) if c.name not in ("begin_group", "end_group") else None
-            if c.name in ("begin_group", "end_group"):
-                out.calls.append(c)
-            else:
-                out.calls.extend(type(k)(k.name, k.args, c.groups) for k in rec.calls)
+        part.replay(out, 0.0, dy)  # each call with its groups, shifted down
         y = ext.bottom + dy - gap
     return out
 
@@ -1335,6 +1331,14 @@ def _sketch_all(
         "mu_a": plan_mu[f"acceleration {first}"],
         **{f"mu_V {i}": plan_mu[f"velocity {i}"] for i in solution.plan_positions},
         **{f"mu_a {i}": plan_mu[f"acceleration {i}"] for i in solution.plan_positions},
+        **_diagram_scales(drawn),
+    }
+    return sketches, scales, drawn
+
+
+def _diagram_scales(drawn: KinematicDiagrams) -> dict[str, float]:
+    """The scales record's entries of the diagrams as drawn."""
+    return {
         "mu_S": drawn.mu_S,
         "mu_t": drawn.mu_t,
         "mu_V_diagram": drawn.mu_V,
@@ -1342,7 +1346,6 @@ def _sketch_all(
         "H1": drawn.H1,
         "H2": drawn.H2,
     }
-    return sketches, scales, drawn
 
 
 def _geometric_extent(solution: Solution) -> tuple[float, float]:
@@ -1517,6 +1520,187 @@ def _may_fit(
     return False, in_field
 
 
+# --- the diagrams take the room that is left ------------------------------------------
+
+_STACK_GAP = 6.0  # _stack's gap between the S, V and a diagrams
+
+
+def _diagram_rooms(layout: SheetLayout, rect: Rect, gap: float) -> list[Rect]:
+    """The free rectangles the diagrams' column at `rect` may be redrawn in:
+    on its bottom edge, from the region's left edge or `gap` right of an
+    element (the mechanism) to the region's right edge or `gap` short of one
+    (the title block, a plan, a table), up to `gap` under the lowest element
+    above that span; largest first. Each spans the column's width at least
+    and three quarters of its height (a wider, lower room where plans come
+    down beside the column)."""
+    region = layout.region
+    others = [e.bounds for e in layout.elements if e.name != "diagrams"]
+    bottom = rect.bottom
+    lefts = {region.left, *(b.right + gap for b in others if b.right + gap <= rect.left + 1e-6)}
+    rights = {region.right, *(b.left - gap for b in others if b.left - gap >= rect.right - 1e-6)}
+    rooms = []
+    for left, right in itertools.product(lefts, rights):
+        if right - left < rect.width - 1e-6:
+            continue
+        top = min(
+            [region.top]
+            + [
+                b.bottom - gap
+                for b in others
+                if b.left < right + gap - 1e-6 and b.right > left - gap + 1e-6 and b.top > bottom
+            ]
+        )
+        if top >= bottom + 0.75 * rect.height - 1e-6:
+            rooms.append(Rect.from_bounds(left, bottom, right, top))
+    return sorted(rooms, key=lambda r: -r.width * r.height)
+
+
+def _grown_scales(
+    s: np.ndarray,
+    n1: float,
+    L: float,
+    mu_S_range: tuple[float, float],
+    budget: float,
+    longest_pole: float,
+) -> tuple[float, float, float] | None:
+    """μ_S, OH1, OH2 for diagrams over an `L` mm time axis sharing `budget` mm
+    of height: μ_S the finest series value of `mu_S_range` (from μ_l, seed 003
+    §1.7: μ_S = μ_l where it can) that draws S within a third of it (a fixed
+    μ_S: within three fifths); V and a each within half of what S leaves, the
+    poles whole millimetres of ROUND_POLE_DISTANCES_MM, at most
+    `longest_pole`, making μ_V and μ_a series values, of those the tallest V
+    and a (a long axis flattens them: the pole lengthens instead). The
+    heights scale as 1/μ_S, OH1/μ_S and OH1·OH2/μ_S (the construction is
+    linear in them); None where no choice keeps μ_V and μ_a series values."""
+    ref = graphical_differentiation(s, n1=n1, mu_S=mu_S_range[0], L=L, H1=40.0, H2=40.0)
+    h_s, h_v, h_a = ref.heights_mm
+    poles = [H for H in ROUND_POLE_DISTANCES_MM if H <= longest_pole]
+    lo, hi = mu_S_range
+    share_s = budget / 3.0 if hi > lo else budget * 0.6
+    for mu_S in itertools.islice(series(lo * (1 - 1e-9), hi, LENGTH_MANTISSA_TEXT), 8):
+        k = lo / mu_S
+        if h_s * k > share_s * (1 + 1e-9):
+            continue
+        cap = (budget - h_s * k) / 2.0
+        best: tuple[tuple[float, float], tuple[float, float, float]] | None = None
+        for H1 in poles:
+            tall_v = h_v * k * H1 / 40.0
+            if tall_v > cap * (1 + 1e-9) or not is_standard(ref.mu_V * 40.0 / (k * H1)):
+                continue
+            for H2 in poles:
+                tall_a = h_a * k * H1 * H2 / 1600.0
+                mu_a = ref.mu_a * 1600.0 / (k * H1 * H2)
+                if tall_a > cap * (1 + 1e-9) or not is_standard(mu_a):
+                    continue
+                key = (min(tall_v, tall_a), tall_v + tall_a)
+                if best is None or key > best[0]:
+                    best = (key, (mu_S, H1, H2))
+        if best is not None:
+            return best[1]
+    return None
+
+
+def _grown_diagrams(
+    solution: Solution,
+    look: Any,
+    lang: Language,
+    layout: SheetLayout,
+    sketches: Mapping[str, Sketch],
+    placed: Mapping[str, Rect],
+    drawn: KinematicDiagrams,
+    mu_l: float,
+    gap: float,
+    extents: _Extents,
+) -> tuple[Sketch, Rect, KinematicDiagrams] | None:
+    """The diagrams' column redrawn into the room left beside and above it
+    (_diagram_rooms), or None where it cannot grow. The rule: one turn of
+    the crank on the time axis at the finest series μ_t whose axis (with the
+    pole and the lettering) fits the room's width; each diagram at most a
+    third of the room's height (less the lettering), at series μ_S, μ_V, μ_a
+    (_grown_scales); of the rooms, the one the column then covers most of.
+    μ_S stays the Solution's where the sheet draws the mechanism at another
+    μ_l than the calculation's (the line under S names it the calculation's
+    scale), else it is μ_l or the series step above that S needs. The
+    construction is the Solution's on the same grid (its V and a in SI do not
+    depend on the scales: the 5 % check stands)."""
+    if "diagrams" not in placed:
+        return None
+    rect = placed["diagrams"]
+    base = extents(sketches["diagrams"])
+    least = 1.15 * base.width * base.height  # worth redrawing: 15 % more paper covered
+    dg = solution.require_diagrams()
+    s = np.asarray(drawn.s, dtype=float)
+    T = 60.0 / drawn.n1
+    over_w = base.width - drawn.L - max(drawn.H1, drawn.H2)
+    over_h = base.height - sum(drawn.heights_mm)
+    own = abs(mu_l / float(solution.mu_l) - 1.0) <= 1e-9
+    mu_S_range = (float(solution.mu_l), float(solution.mu_l) * 1e4) if own else (drawn.mu_S,) * 2
+    best: tuple[float, Sketch, Rect, KinematicDiagrams] | None = None
+    drawn_parts: dict[tuple[Any, ...], Sketch] = {}
+    for room in _diagram_rooms(layout, rect, gap)[:3]:
+        if room.width * room.height < max(least, best[0] if best else 0.0):
+            continue
+        budget = room.height - over_h  # the three diagrams' heights share it
+        if room.height >= rect.height:  # not lower than the Solution's, where it can
+            budget = max(budget, 3.0 * DIAGRAM_HEIGHT_MM)
+        tried = 0
+        for mu_t in series(T / max(room.width - over_w - 20.0, drawn.L), T / drawn.L):
+            L = T / mu_t
+            if tried >= 4 or (L <= drawn.L * (1 + 1e-9) and budget <= sum(drawn.heights_mm)):
+                break
+            for share in (1.0, 0.85, 0.7, 0.55):
+                longest = room.width - over_w - L - 8.0  # the lettering's widths vary
+                chosen = _grown_scales(s, drawn.n1, L, mu_S_range, budget * share, longest)
+                if chosen is None:
+                    continue
+                mu_S, H1, H2 = chosen
+                c = graphical_differentiation(s, n1=drawn.n1, mu_S=mu_S, L=L, H1=H1, H2=H2)
+                if sum(c.heights_mm) + over_h > room.height:
+                    continue
+                tried += 1
+                parts = []
+                for which, key in (
+                    ("s", ("s", L, mu_S)),
+                    ("v", ("v", L, mu_S, H1)),
+                    ("a", ("a", L, mu_S, H1, H2)),
+                ):
+                    if key not in drawn_parts:  # the rooms try the same axes again
+                        drawn_parts[key] = sketch_diagram(
+                            c,
+                            which,
+                            look,
+                            lang,
+                            solution.s_dense,
+                            dg.refinement,
+                            mu_l=mu_l if which == "s" else None,
+                            mu_l_solution=float(solution.mu_l),
+                        )
+                    parts.append(drawn_parts[key])
+                grown = _stack(parts, look, _STACK_GAP)
+                ext = extents(grown)
+                covered = ext.width * ext.height
+                if ext.width > room.width + 1e-6:
+                    break  # too wide: a shorter axis
+                if ext.height > room.height + 1e-6:
+                    continue  # too tall: lower diagrams
+                if covered >= max(least, best[0] if best else 0.0):
+                    best = (covered, grown, Rect(room.left, room.bottom, ext.width, ext.height), c)
+                break  # the tallest that fits this axis
+            if best is not None and best[0] >= room.width * room.height * 0.8:
+                break
+    return None if best is None else best[1:]
+
+
+def _with_diagrams(layout: SheetLayout, page: Page, gap: float, rect: Rect) -> SheetLayout:
+    """`layout` with the diagrams' footprint at `rect`."""
+    out = SheetLayout(page, gap=gap)
+    for e in layout.elements:
+        if e.name == "title-block":
+            continue
+        out.register(e.name, rect if e.name == "diagrams" else e.footprint, e.kind)
+    return out
+
+
 def compose_sheet1(
     solution: Solution, backend: Backend, lang: Language = "en", *, page: Page | None = None
 ) -> Sheet1:
@@ -1584,6 +1768,14 @@ def compose_sheet1(
                     in_field = in_field or not str(err).startswith("mechanism")
                     placed_field = placed_field or in_field
                     continue
+                grown = _grown_diagrams(
+                    solution, look, lang, layout, sketches, placed, drawn, mu_l, gap, extents
+                )
+                if grown is not None:  # the diagrams take the room that is left
+                    sketches, drawn = {**sketches, "diagrams": grown[0]}, grown[2]
+                    placed = {**placed, "diagrams": grown[1]}
+                    layout = _with_diagrams(layout, page, gap, grown[1])
+                    scales = {**scales, **_diagram_scales(drawn)}
                 scales["mu_l"] = mu_l
                 result = Sheet1(layout, scales, shrink=shrink, field=field, diagrams=drawn)
                 return _draw(

@@ -165,7 +165,13 @@ def check_poles(solution, backend, sheet, lang):
         said = catalogue(lang).plain_number(float(f"{k:.6g}")) + "·μ"
         assert said in s_texts and reason.split()[-1] in s_texts, s_texts
         if same:
-            assert solution.diagrams.scales.mu_S_steps > 0
+            # a step above μ_l for the diagrams' height: the Solution's (70 mm
+            # each), or the sheet's where it redrew them lower and wider into
+            # the room left (#21: the diagrams take the room that is left)
+            redrawn = not math.isclose(sheet.scales["mu_t"], solution.diagrams.construction.mu_t, rel_tol=1e-9)
+            assert solution.diagrams.scales.mu_S_steps > 0 or redrawn
+        else:  # the line names it the calculation's scale of S: it is
+            assert math.isclose(sheet.scales["mu_S"], solution.diagrams.construction.mu_S, rel_tol=1e-9)
     else:
         assert "·μ" not in s_texts
 
