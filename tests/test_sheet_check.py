@@ -118,8 +118,10 @@ DRAWN = [ROOT / "samples" / "six_link_press.toml", ROOT / "samples" / "shaper.to
 @pytest.mark.parametrize("path", DRAWN, ids=lambda p: Path(p).stem)
 def test_the_check_reads_the_diagrams_sheet_1_draws(path):
     """The values judged by (12)/(13) are the ordinates sheet 1 draws, read off
-    its V and a curves in millimetres and times the scales the JSON gives; the
-    poles written on the sheet are the JSON's."""
+    its V and a curves in millimetres and times the scales the sheet prints
+    (sheet 1 may draw the diagrams larger than the JSON's construction, in the
+    room it leaves them: the same curves at other series scales); the poles
+    written on the sheet are the sheet's."""
     from mmt_plans.drawing.page import Page
     from mmt_plans.i18n import catalogue
     from mmt_plans.render.recording import RecordingBackend
@@ -131,12 +133,17 @@ def test_the_check_reads_the_diagrams_sheet_1_draws(path):
     backend.close()
     js = diagrams_json(sol)
     scales = js["scales"]
-    for key, name in (("mu_S", "mu_S"), ("mu_V_diagram", "mu_V"), ("mu_a_diagram", "mu_a"),
-                      ("H1", "H1_mm"), ("H2", "H2_mm")):
-        assert sheet.scales[key] == scales[name], key
+    drawn = sheet.scales
+    # the sheet's diagram scales hang together as the construction's do
+    assert drawn["mu_V_diagram"] == pytest.approx(drawn["mu_S"] / (drawn["mu_t"] * drawn["H1"]))
+    assert drawn["mu_a_diagram"] == pytest.approx(
+        drawn["mu_V_diagram"] / (drawn["mu_t"] * drawn["H2"])
+    )
+    assert drawn["L"] * drawn["mu_t"] == pytest.approx(scales["L_mm"] * scales["mu_t"])  # one turn
     c = sol.diagrams.construction
-    for gid, q, mu, H in (("diagram-v", "v", scales["mu_V"], scales["H1_mm"]),
-                          ("diagram-a", "a", scales["mu_a"], scales["H2_mm"])):
+    stretch = drawn["L"] / scales["L_mm"]
+    for gid, q, mu, H in (("diagram-v", "v", drawn["mu_V_diagram"], drawn["H1"]),
+                          ("diagram-a", "a", drawn["mu_a_diagram"], drawn["H2"])):
         calls = backend.in_group(gid)
         axis = [a for a in calls if a.name == "arrow" and a["line"] == "main"
                 and abs(a["start"][1] - a["end"][1]) < 1e-9]
@@ -149,7 +156,7 @@ def test_the_check_reads_the_diagrams_sheet_1_draws(path):
         words = catalogue("en").words("diagram_axes")["pole"].format(H=f"{H:g}")
         assert words in [t["content"] for t in calls if t.name == "text"]
         for val in (v for v in js["investigated"] if v["quantity"] == q):
-            x = c.abscissae[val["index"] * sol.diagrams.refinement]
+            x = c.abscissae[val["index"] * sol.diagrams.refinement] * stretch
             k = int(np.argmin(np.abs(pts[:, 0] - x0 - x)))
             assert abs(pts[k, 0] - x0 - x) < 1e-9
             drawn = (pts[k, 1] - y0) * mu

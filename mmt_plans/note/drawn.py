@@ -20,6 +20,7 @@ from . import sources as src
 if TYPE_CHECKING:  # pragma: no cover
     from ..forces import ForcePolygon
     from ..sheets.compose import ComposedSheets
+    from ..sheets.scales_record import DiagramScales
     from ..solution import Solution
 
 __all__ = ["Drawn"]
@@ -69,6 +70,11 @@ class Drawn:
         if x <= 0:
             return 1.0, "1.0"
         return scale_for(x, guide), f"scale_for(hyp({src.point(a, i, pin, q)}), {name})"
+
+    def diagrams(self) -> DiagramScales | None:
+        """The S, V, a diagrams' scales as sheet 1 draws them (source
+        "sheet1.diagrams.<name>"), or None without sheet 1."""
+        return None if self.first is None else self.first.diagrams
 
     # sheet 2 ----------------------------------------------------------------------------
     def loaded(self) -> Scale:

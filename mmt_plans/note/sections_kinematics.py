@@ -20,7 +20,9 @@ from .literature import cite
 from .writer import Writer, sub, vec
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..diagrams import KinematicDiagrams
     from ..kinematics.plans import GroupPlanView, PlanView
+    from ..sheets.scales_record import DiagramScales
 
 __all__ = ["sheet1", "plan_scales"]
 
@@ -611,6 +613,32 @@ def _acceleration_plan(wr: Writer, i: int, view: PlanView, mu_a: float, ma: str)
 
 
 # --- 1.7, 1.8 --------------------------------------------------------------------------------
+def _diagrams_as_drawn(wr: Writer, d: DiagramScales, c: KinematicDiagrams) -> str:
+    """Where sheet 1 draws the diagrams at other scales than the construction
+    above (larger, in the room the sheet leaves them), the sentence that says
+    them; μ_S of the drawing, as a marker, for the figure's caption."""
+    D = "sheet1.diagrams"
+    mu_S = wr.v(d.mu_S, f"{D}.mu_S")
+    same = all(
+        wr.cat.number(x) == wr.cat.number(y)
+        for x, y in ((d.L, c.L), (d.mu_S, c.mu_S), (d.H1, c.H1), (d.H2, c.H2))
+    )
+    if same:
+        return mu_S
+    u = wr.u
+    wr.text(wr.w["diagrams_drawn"])
+    wr.eq(
+        f"L = {wr.v(d.L, f'{D}.L')} {u['mm']}; μ_t = {wr.v(d.mu_t, f'{D}.mu_t')} {u['s/mm']}; "
+        f"μ_S = {mu_S} {u['m/mm']};"
+    )
+    wr.eq(
+        f"OH_1 = {wr.v(d.H1, f'{D}.H1')} {u['mm']}, μ_V = {wr.v(d.mu_V, f'{D}.mu_V')} "
+        f"{u['v/mm']}; OH_2 = {wr.v(d.H2, f'{D}.H2')} {u['mm']}, "
+        f"μ_a = {wr.v(d.mu_a, f'{D}.mu_a')} {u['a/mm']}"
+    )
+    return mu_S
+
+
 def diagrams(wr: Writer) -> None:
     a, w, u = wr.solution, wr.w, wr.u
     wr.heading("1.7")
@@ -668,10 +696,12 @@ def diagrams(wr: Writer) -> None:
     drawings = [(1, ("diagram-s",)), (1, ("diagram-v",)), (1, ("diagram-a",))]
     n_fig = wr.next_figure if wr.has_figure(drawings) else None
     wr.text(w["diagram_read"][:-1] + wr.cite(n_fig) + ".")
+    mu_S_drawn = wr.v(c.mu_S, MUS)
+    on_sheet = wr.drawn.diagrams()
+    if on_sheet is not None and n_fig is not None:
+        mu_S_drawn = _diagrams_as_drawn(wr, on_sheet, c)
     if n_fig is not None:
-        wr.figure(
-            drawings, w["fig_diagrams"].format(out=wr.mech.study.output, mu=wr.v(c.mu_S, MUS))
-        )
+        wr.figure(drawings, w["fig_diagrams"].format(out=wr.mech.study.output, mu=mu_S_drawn))
     wr.heading("1.8")
     plans = set(a.plan_positions)
     check = dg.check

@@ -22,26 +22,52 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
 
-__all__ = ["Sheet1Scales", "Sheet2Scales"]
+__all__ = ["DiagramScales", "Sheet1Scales", "Sheet2Scales"]
+
+
+@dataclass(frozen=True)
+class DiagramScales:
+    """The S, V, a diagrams as sheet 1 draws them: the time axis L (mm) of one
+    turn at μ_t (s/mm), μ_S (m/mm), the poles OH_1, OH_2 (mm) and the μ_V,
+    μ_a they give. Sheet 1 may draw them larger than the calculation's
+    construction (the room the sheet leaves them); the values read from them
+    are the same."""
+
+    L: float
+    mu_t: float
+    mu_S: float
+    mu_V: float
+    mu_a: float
+    H1: float
+    H2: float
 
 
 @dataclass(frozen=True)
 class Sheet1Scales:
     """Sheet 1: μ_l of the mechanism (m/mm); μV (m/s per mm) and μa (m/s² per
-    mm) of the plans, by plan position."""
+    mm) of the plans, by plan position; the diagrams' scales when it draws
+    them."""
 
     mu_l: float
     mu_V: Mapping[int, float]
     mu_a: Mapping[int, float]
+    diagrams: DiagramScales | None = None
 
     @classmethod
     def of(cls, s: Mapping[str, float], positions: Sequence[int]) -> Sheet1Scales:
         """From sheet 1's scales by name ("mu_l"; "mu_V 3", "mu_a 3" of the plans
-        of position 3, or "mu_V", "mu_a" serving every position)."""
+        of position 3, or "mu_V", "mu_a" serving every position; the
+        diagrams' "L", "mu_t", "mu_S", "mu_V_diagram", "mu_a_diagram", "H1",
+        "H2")."""
+        names = ("L", "mu_t", "mu_S", "mu_V_diagram", "mu_a_diagram", "H1", "H2")
+        diagrams = (
+            DiagramScales(*(float(s[k]) for k in names)) if all(k in s for k in names) else None
+        )
         return cls(
             float(s["mu_l"]),
             MappingProxyType({i: float(s.get(f"mu_V {i}", s["mu_V"])) for i in positions}),
             MappingProxyType({i: float(s.get(f"mu_a {i}", s["mu_a"])) for i in positions}),
+            diagrams,
         )
 
 

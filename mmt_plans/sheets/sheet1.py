@@ -1339,6 +1339,7 @@ def _sketch_all(
 def _diagram_scales(drawn: KinematicDiagrams) -> dict[str, float]:
     """The scales record's entries of the diagrams as drawn."""
     return {
+        "L": drawn.L,
         "mu_S": drawn.mu_S,
         "mu_t": drawn.mu_t,
         "mu_V_diagram": drawn.mu_V,

@@ -149,6 +149,13 @@ def test_every_scale_of_the_sheets_is_stated(case):
         for i in first.mu_V:
             assert stated("μ_V", first.mu_V[i]), ("μ_V", i)
             assert stated("μ_a", first.mu_a[i]), ("μ_a", i)
+        if first.diagrams is not None:  # the S, V, a diagrams as sheet 1 draws them
+            d = first.diagrams
+            for symbol, mu in (("μ_t", d.mu_t), ("μ_S", d.mu_S), ("μ_V", d.mu_V), ("μ_a", d.mu_a)):
+                # "μ_t = 0.001" or the construction's "μ_t = 60/(n_1·L) = … = 0.004"
+                value = re.escape(cat.number(mu))
+                pattern = rf"{symbol} = (?:[^=;]*= )*{value}(?![\d.,])"
+                assert re.search(pattern, text), (symbol, "diagrams")
     if second is not None:
         assert stated("μ_l", second.mu_l)
         assert stated("μ_l", second.mu_l_driving)

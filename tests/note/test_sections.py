@@ -99,6 +99,16 @@ def drawn_scales(path: Path, lang: str) -> tuple[SimpleNamespace, SimpleNamespac
         # each position's plans at their own μ where one cannot hold both (#21)
         mu_V={i: s1.get(f"mu_V {i}", s1["mu_V"]) for i in plans},
         mu_a={i: s1.get(f"mu_a {i}", s1["mu_a"]) for i in plans},
+        # the S, V, a diagrams as sheet 1 draws them (larger where it has room)
+        diagrams=SimpleNamespace(
+            L=s1["L"],
+            mu_t=s1["mu_t"],
+            mu_S=s1["mu_S"],
+            mu_V=s1["mu_V_diagram"],
+            mu_a=s1["mu_a_diagram"],
+            H1=s1["H1"],
+            H2=s1["H2"],
+        ),
     )
     sheet2 = SimpleNamespace()
     if S.forces is not None:
