@@ -117,14 +117,14 @@ _FOOT_CLEAR = 0.15
 # apart, mm, box to box (the sheet linter's names-unique)
 LOOKALIKE_MM = 15.0
 LOOKALIKE = ({"O", "0"}, {"o", "0"}, {"l", "1"}, {"O", "o"})
-_ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)
+_ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
 # where no place of the compass round an anchor is free: every place on a grid
 # this fine (mm) within NEAR_MM of it, at least _FINE_OFF mm off it, tried
 # (nearest first) before a leader; not for a label whose grid would hold more
 # than _FINE_MOST places (a long arrow's)
-_FINE_STEP = 0.25
+_FINE_STEP = 0.5
 _FINE_OFF = 0.5
-_FINE_MOST = 40_000  # where along a segment a label is tried, in turn
+_FINE_MOST = 40_000
 
 
 class Labels:

@@ -312,6 +312,14 @@ class _ArcPlacer:
         near = self._near(arc, 0.6)
         return float(self._w[near].sum()) if near.size else 0.0
 
+    def costs(self, arcs: Sequence[Any]) -> np.ndarray:
+        """`cost` of each of `arcs`, in one query."""
+        i, j = self._near_all(np.asarray(arcs, dtype=object), 0.6)
+        out = np.zeros(len(arcs))
+        if i.size:
+            out += np.bincount(i, weights=self._w[j], minlength=len(arcs))
+        return out
+
     def kept_near(self, centre: np.ndarray) -> bool:
         """Whether a label's box centred at `centre` touches a room kept for
         another label (or an arc)."""
@@ -488,24 +496,32 @@ def _crank_arc(
     and of the band just outside the crank pin's circle (radius `crank`, mm),
     where the positions' numbers are written next, first. None where no arc
     leaves its label room."""
+    starts = np.arange(0.0, 360.0, 15.0)
+    tries = [(r, float(a)) for r in _CRANK_RADII for a in starts]
+    # what each arc crosses, all in one query; then the arcs asked about their
+    # labels' room in that order, until none left can beat the best found
+    arcs_drawn = [arc_line(centre, r, a, a + 120.0) for r, a in tries]
+    score = np.array(
+        [0.5 * _CRANK_RADII.index(r) + 1e-3 * abs(a - 30.0) for r, a in tries]
+    ) + arcs.costs(arcs_drawn)
     options: list[tuple[float, float, float, np.ndarray]] = []
-    for order, radius in enumerate(_CRANK_RADII):
-        for a in np.arange(0.0, 360.0, 15.0):
-            arc = arc_line(centre, radius, float(a), float(a) + 120.0)
-            score = arcs.cost(arc) + 0.5 * order + 1e-3 * abs(float(a) - 30.0)
-            tip_deg = math.radians(float(a) + 120.0 if sense > 0 else float(a))
-            u = np.array([math.cos(tip_deg), math.sin(tip_deg)])
-            free = labels.rooms(centre + radius * u, "ω_{1}", towards=u, keep_off=arc)
-            if len(free):
-                # a room another label keeps costs as much as crossing a main
-                # line, one where the positions' numbers go a little less
-                band = np.abs(np.hypot(*(free - centre).T) - crank - _NUMBER_BAND[0])
-                cost = [
-                    (1.0 if arcs.kept_near(room) else 0.0) + (0.8 if b < _NUMBER_BAND[1] else 0.0)
-                    for room, b in zip(free, band)
-                ]
-                k = int(np.argmin(cost))
-                options.append((score + cost[k], radius, float(a), free[k]))
+    for i in np.argsort(score, kind="stable"):
+        if options and score[i] >= min(o[0] for o in options):
+            break
+        radius, a = tries[i]
+        tip_deg = math.radians(a + 120.0 if sense > 0 else a)
+        u = np.array([math.cos(tip_deg), math.sin(tip_deg)])
+        free = labels.rooms(centre + radius * u, "ω_{1}", towards=u, keep_off=arcs_drawn[i])
+        if len(free):
+            # a room another label keeps costs as much as crossing a main
+            # line, one where the positions' numbers go a little less
+            band = np.abs(np.hypot(*(free - centre).T) - crank - _NUMBER_BAND[0])
+            extra = [
+                (1.0 if arcs.kept_near(room) else 0.0) + (0.8 if b < _NUMBER_BAND[1] else 0.0)
+                for room, b in zip(free, band)
+            ]
+            k = int(np.argmin(extra))
+            options.append((float(score[i]) + extra[k], radius, a, free[k]))
     if not options:
         return None
     _, radius, start, room = min(options, key=lambda o: o[0])
