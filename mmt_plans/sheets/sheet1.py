@@ -504,10 +504,14 @@ def _crank_arc(
     score = np.array(
         [0.5 * _CRANK_RADII.index(r) + 1e-3 * abs(a - 30.0) for r, a in tries]
     ) + arcs.costs(arcs_drawn)
+    # never over a label written (a joint's name): the arc and its arrowhead
+    written = shapely.STRtree(labels.boxes) if labels.boxes else None
     options: list[tuple[float, float, float, np.ndarray]] = []
     for i in np.argsort(score, kind="stable"):
         if options and score[i] >= min(o[0] for o in options):
             break
+        if written is not None and written.query(arcs_drawn[i], "dwithin", 1.2).size:
+            continue
         radius, a = tries[i]
         tip_deg = math.radians(a + 120.0 if sense > 0 else a)
         u = np.array([math.cos(tip_deg), math.sin(tip_deg)])
