@@ -118,6 +118,13 @@ _FOOT_CLEAR = 0.15
 LOOKALIKE_MM = 15.0
 LOOKALIKE = ({"O", "0"}, {"o", "0"}, {"l", "1"}, {"O", "o"})
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
+# where no place of the compass round an anchor is free: every place on a grid
+# this fine (mm) within NEAR_MM of it, at least _FINE_OFF mm off it, tried
+# (nearest first) before a leader; not for a label whose grid would hold more
+# than _FINE_MOST places (a long arrow's)
+_FINE_STEP = 0.5
+_FINE_OFF = 0.5
+_FINE_MOST = 40_000
 
 
 class Labels:
@@ -267,6 +274,39 @@ class Labels:
                 return start + int(free[0])
             start, size = start + size, min(4 * size, 1024)
         return None
+
+    def rooms(
+        self,
+        anchor: PointLike,
+        markup: str,
+        *,
+        towards: PointLike | None = None,
+        distance: float = 1.5,
+        keep_off: BaseGeometry | None = None,
+    ) -> np.ndarray:
+        """The centres (n × 2, in the order `place` tries them) of the places
+        near `anchor` (within NEAR_MM) where `markup` would stand free of
+        everything drawn and written, and of `keep_off` (a shape still to be
+        drawn: the arc the label names) by the clearance. Asking writes
+        nothing: a drawing chooses where its symbol goes by where its label
+        finds room."""
+        self._sync()
+        x, y = float(anchor[0]), float(anchor[1])
+        cx, cy, w, h, drop = self._around(np.array([x, y]), markup, towards, distance)
+        x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+        near = _gap(("point", (x, y), None), x0, y0, x1, y1) <= _NEAR_KEPT
+        idx = np.flatnonzero(near)
+        if not idx.size:
+            return np.zeros((0, 2))
+        x0, x1, y0, y1 = x0[idx], x1[idx], y0[idx], y1[idx]
+        cost = self._label_cost(x0, y0, x1, y1) + self._lookalike_cost(markup, x0, y0, x1, y1)
+        cost += self._obstacle_cost(x0, y0, x1, y1)
+        if keep_off is not None:
+            gap = shapely.distance(shapely.box(x0, y0, x1, y1), keep_off)
+            # (its arrowhead stands 0.5 mm either side of it)
+            cost += np.asarray(gap, dtype=float) < self.clearance + 0.6
+        k = idx[cost <= 1e-9]
+        return np.c_[cx[k], cy[k]]
 
     def width(self, markup: str) -> float:
         """The width of the lettering, mm (of its longest line)."""
@@ -552,6 +592,14 @@ class Labels:
                 k = r0 + int(free[0])
                 break
         line: tuple[tuple[float, float], tuple[float, float]] | None = None
+        if k < 0 and names is not None:
+            # between the compass's places: every place near it on a fine grid,
+            # nearest first (a gap between lines narrower than a ring apart)
+            found_near = self._fine_near(names, outline, w, h, drop, markup)
+            if found_near is not None:
+                cx, cy = np.array([found_near[0]]), np.array([found_near[1]])
+                x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+                k = 0
         if k < 0 and leader is not None:
             # nothing near is free: further out, tied to it by a leader that
             # crosses nothing, else only thin lines
@@ -598,6 +646,49 @@ class Labels:
         self.boxes.append(footprint)
         self._texts.append(markup)
         return footprint
+
+    def _fine_near(
+        self,
+        names: tuple[NamingKind, PointLike, PointLike | None],
+        outline: BaseGeometry | None,
+        w: float,
+        h: float,
+        drop: float,
+        markup: str,
+    ) -> tuple[float, float] | None:
+        """The centre of the free box nearest what the label names on a grid
+        _FINE_STEP mm apart over every place within NEAR_MM of it; None where
+        none is free."""
+        _, a, b = names
+        pts = np.array([a, a if b is None else b], dtype=float)
+        if outline is not None:
+            pts = np.concatenate([pts, shapely.get_coordinates(outline)])
+        reach = _NEAR_KEPT + max(w, h + drop) / 2
+        lo, hi = pts.min(axis=0) - reach, pts.max(axis=0) + reach
+        nx = int((hi[0] - lo[0]) / _FINE_STEP) + 1
+        ny = int((hi[1] - lo[1]) / _FINE_STEP) + 1
+        if nx * ny > _FINE_MOST:
+            return None
+        gx, gy = np.meshgrid(lo[0] + _FINE_STEP * np.arange(nx), lo[1] + _FINE_STEP * np.arange(ny))
+        cx, cy = gx.ravel(), gy.ravel()
+        x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+        gap = _gap(names, x0, y0, x1, y1, outline)
+        # not on what it names: as far off it as the compass's nearest ring
+        keep = np.flatnonzero((gap <= _NEAR_KEPT) & (gap >= _FINE_OFF))
+        keep = keep[np.argsort(gap[keep], kind="stable")]
+        if not keep.size:
+            return None
+        x0, x1, y0, y1 = x0[keep], x1[keep], y0[keep], y1[keep]
+        cost = self._label_cost(x0, y0, x1, y1) + self._lookalike_cost(markup, x0, y0, x1, y1)
+        ok = np.flatnonzero(cost <= 1e-9)
+        if not ok.size:
+            return None
+        ob = self._obstacle_cost(x0[ok], y0[ok], x1[ok], y1[ok])
+        free = ok[ob <= 1e-9]
+        if not free.size:
+            return None
+        k = keep[free[0]]
+        return float(cx[k]), float(cy[k])
 
     def _leader_place(
         self,

@@ -29,6 +29,7 @@ from ..drawing.labels import (
     FINE_LEADER_DIRS,
     FINE_LEADER_GROUP,
     FINE_LEADER_RINGS,
+    NEAR_MM,
     Labels,
     arc_line,
     drawn_shapes,
@@ -315,6 +316,22 @@ class _ArcPlacer:
         near = self._near(arc, 0.6)
         return float(self._w[near].sum()) if near.size else 0.0
 
+    def costs(self, arcs: Sequence[Any]) -> np.ndarray:
+        """`cost` of each of `arcs`, in one query."""
+        i, j = self._near_all(np.asarray(arcs, dtype=object), 0.6)
+        out = np.zeros(len(arcs))
+        if i.size:
+            out += np.bincount(i, weights=self._w[j], minlength=len(arcs))
+        return out
+
+    def kept_near(self, centre: np.ndarray) -> bool:
+        """Whether a label's box centred at `centre` touches a room kept for
+        another label (or an arc)."""
+        x, y = float(centre[0]), float(centre[1])
+        room = shapely.box(x - _ROOM_X, y - _ROOM_DOWN, x + _ROOM_X, y + _ROOM_UP)
+        _, near = self._near_all(np.array([room], dtype=object), 0.0)
+        return bool(near.size and (self._w[near] >= self._WEIGHT["arc"]).any())
+
     def _covered(self, box: Any) -> int:
         return int(self._near(box, 0.3).size)
 
@@ -463,6 +480,62 @@ class _ArcPlacer:
         best = min(options, key=lambda o: (o[0], o[1]))
         self.reserve(best[2])
         return best[1]
+
+
+# the radii tried for ω1's arc round the crank's pivot, mm, the usual first
+_CRANK_RADII = (_CRANK_R, 6.5, 10.0, 12.0, 5.0, 14.0)
+# the positions' numbers stand about this far out of the crank pin's circle,
+# mm, give or take the second
+_NUMBER_BAND = (5.0, 4.5)
+
+
+def _crank_arc(
+    arcs: _ArcPlacer, labels: Labels, centre: np.ndarray, sense: float, crank: float
+) -> tuple[float, float, np.ndarray] | None:
+    """Radius and start angle (deg) of ω1's 120° arc round the crank's pivot,
+    and the centre of its label's box: of the arcs whose label finds a free
+    place within NEAR_MM of the arrowhead (asked of the placer that will write
+    it, the arc itself kept clear), the one that crosses least, the usual
+    radius first; a place out of the rooms kept for the links' ω and ε labels
+    and of the band just outside the crank pin's circle (radius `crank`, mm),
+    where the positions' numbers are written next, first. None where no arc
+    leaves its label room."""
+    starts = np.arange(0.0, 360.0, 15.0)
+    tries = [(r, float(a)) for r in _CRANK_RADII for a in starts]
+    # what each arc crosses, all in one query; then the arcs asked about their
+    # labels' room in that order, until none left can beat the best found
+    arcs_drawn = [arc_line(centre, r, a, a + 120.0) for r, a in tries]
+    score = np.array(
+        [0.5 * _CRANK_RADII.index(r) + 1e-3 * abs(a - 30.0) for r, a in tries]
+    ) + arcs.costs(arcs_drawn)
+    # never over a label written (a joint's name): the arc and its arrowhead
+    written = shapely.STRtree(labels.boxes) if labels.boxes else None
+    options: list[tuple[float, float, float, np.ndarray]] = []
+    for i in np.argsort(score, kind="stable"):
+        if options and score[i] >= min(o[0] for o in options):
+            break
+        if written is not None and written.query(arcs_drawn[i], "dwithin", 1.2).size:
+            continue
+        radius, a = tries[i]
+        tip_deg = math.radians(a + 120.0 if sense > 0 else a)
+        u = np.array([math.cos(tip_deg), math.sin(tip_deg)])
+        free = labels.rooms(centre + radius * u, "ω_{1}", towards=u, keep_off=arcs_drawn[i])
+        if len(free):
+            # a room another label keeps costs as much as crossing a main
+            # line, one where the positions' numbers go a little less
+            band = np.abs(np.hypot(*(free - centre).T) - crank - _NUMBER_BAND[0])
+            extra = [
+                (1.0 if arcs.kept_near(room) else 0.0) + (0.8 if b < _NUMBER_BAND[1] else 0.0)
+                for room, b in zip(free, band)
+            ]
+            k = int(np.argmin(extra))
+            options.append((float(score[i]) + extra[k], radius, a, free[k]))
+    if not options:
+        return None
+    _, radius, start, room = min(options, key=lambda o: o[0])
+    x, y = room
+    arcs.reserve([shapely.box(x - _ROOM_X, y - _ROOM_DOWN, x + _ROOM_X, y + _ROOM_UP)])
+    return radius, start, room
 
 
 def _trajectories(sk: Sketch, solution: Solution, mu_l: float) -> None:
@@ -646,14 +719,21 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                     )
                     queued.append((tip, f"{sym}_{{{lid}}}", room - tip, room))
         centre = pivot
-        start_deg = arcs.round_pivot(centre, _CRANK_R, float(mech.drive.signed_omega))
-        tip = sense_arc(
-            sk, centre, _CRANK_R, float(mech.drive.signed_omega), start_deg, start_deg + 120.0
-        )
+        sense = float(mech.drive.signed_omega)
         crank = [at(mech.crank_pin, k) - centre for k in range(n)]
-        # ω1 names its arc's arrowhead, written towards the gap between the spokes
-        anchor = _between_spokes(centre, tip, crank, 7.0)
-        queued.append((tip, "ω_{1}", anchor - tip, None))
+        reach = max(float(np.hypot(*v)) for v in crank)
+        found = _crank_arc(arcs, labels, centre, sense, reach)
+        if found is not None:
+            # the arc where its label finds room beside its arrowhead
+            radius, start_deg, room = found
+            tip = sense_arc(sk, centre, radius, sense, start_deg, start_deg + 120.0)
+            queued.insert(0, (tip, "ω_{1}", room - tip, room))
+        else:
+            start_deg = arcs.round_pivot(centre, _CRANK_R, sense)
+            tip = sense_arc(sk, centre, _CRANK_R, sense, start_deg, start_deg + 120.0)
+            # ω1 names its arc's arrowhead, written towards the gap between the spokes
+            anchor = _between_spokes(centre, tip, crank, 7.0)
+            queued.append((tip, "ω_{1}", anchor - tip, None))
         for tip, markup, towards, kept in queued:
             labels.later(tip, markup, towards, first=kept)
         labels.write_later()
@@ -666,9 +746,8 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             if index is None:
                 continue
             p = at(mech.crank_pin, k)
-            labels.place(p, str(index), towards=unit_vector(p - centre), distance=3.0)
+            labels.place(p, str(index), towards=unit_vector(p - pivot), distance=3.0)
         labels.size = _TEXT
-
         ext = sk.extent()
         label = scale_label(mu_l, "length", lang)
         sk.rich_text((ext.x + _PAD, ext.bottom - 6.0), label.markup(), _TEXT)
@@ -800,10 +879,10 @@ def sketch_plan(
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         placer.avoid_drawn(sk.calls)
         placer.place((0.0, 0.0), pole, towards=(-1.0, -1.0))
-        for key, names in labels.items():
+        # the images among most lines first: they have the fewest places near them
+        named = [names for names in labels.values() if float(np.hypot(*images[names[0]])) >= 0.5]
+        for names in _crowded_first(placer, [images[names[0]] for names in named], named):
             v = images[names[0]]
-            if float(np.hypot(*v)) < 0.5:
-                continue
             placer.place(v, ", ".join(image_markup(n) for n in names), towards=unit_vector(v))
         placer.size = _SMALL
         placer.write_later()
@@ -820,6 +899,17 @@ def sketch_plan(
         title = _words(lang)[f"{kind}_plan"].format(i=index)
         sk.text(((ext.left + ext.right) / 2, ext.top + 3.0), title, _TEXT, anchor="center")
     return sk, images
+
+
+def _crowded_first(
+    placer: Labels, anchors: Sequence[np.ndarray], items: Sequence[Any]
+) -> list[Any]:
+    """`items` (one for each of `anchors`) in the order their labels are best
+    written: the anchor with most drawn round it (within NEAR_MM) first, for
+    it has the fewest free places near it and one written before would take them."""
+    crowd = [placer.covered(shapely.Point(*map(float, a)).buffer(NEAR_MM)) for a in anchors]
+    order = sorted(range(len(items)), key=lambda i: -crowd[i])
+    return [items[i] for i in order]
 
 
 # --- diagrams ----------------------------------------------------------------------

@@ -143,3 +143,41 @@ def test_a_point_ringed_by_many_thin_lines_is_led_across_them():
     labels.place((0.0, 0.0), "p", towards=(-1.0, 1.0))
     assert len(_leaders(sk)) == 1 and labels.far == 0
     assert _findings(sk, ["label-near", "label-clear"]) == []
+
+
+def test_a_pocket_between_the_compass_places_is_found_before_a_leader():
+    """A point on a main line over a filled base, thin lines 3 mm apart
+    either side and a thin line 5.1 mm above: the only free place near it is
+    a pocket 4.3 mm tall over the point, which no place of the compass fits.
+    The fine grid finds it; the label stands in it with no leader."""
+    sk = _sketch()
+    sk.polygon([(-30.0, 0.0), (30.0, 0.0), (30.0, -20.0), (-30.0, -20.0)], "main", "black")
+    sk.line((-30.0, 5.1), (30.0, 5.1), "thin")
+    for x in 3.0 + 3.0 * np.arange(6):
+        sk.line((-float(x), 0.0), (-float(x), 5.1), "thin")
+        sk.line((float(x), 0.0), (float(x), 5.1), "thin")
+    labels = Labels(sk, 3.5)
+    footprint = labels.place((0.0, 0.0), "B", towards=(0.0, 1.0))
+    assert footprint.distance(Point(0.0, 0.0)) <= NEAR_MM
+    assert box(-3.0, 0.0, 3.0, 5.1).contains(footprint)
+    assert _leaders(sk) == [] and labels.far == 0
+    assert _findings(sk, ["label-near", "label-clear"]) == []
+
+
+def test_rooms_are_the_free_places_near_a_point_clear_of_a_shape_to_come():
+    """`rooms` writes nothing and names only places the rule allows: within
+    NEAR_MM of the point, on no line drawn, and off the shape still to be
+    drawn (an arc) by the clearance."""
+    sk = _sketch()
+    sk.line((-20.0, 0.0), (20.0, 0.0), "main")
+    labels = Labels(sk, 3.5)
+    arc = LineString([(-10.0, 3.0), (10.0, 3.0)])
+    free = labels.rooms((0.0, 0.0), "ω_{1}", towards=(0.0, 1.0), keep_off=arc)
+    assert len(free) > 0
+    assert len(sk.calls) == 1 and labels.boxes == []
+    w, h, drop = labels._extent("ω_{1}")
+    for x, y in free:
+        b = box(x - w / 2, y - h / 2 - drop, x + w / 2, y + h / 2)
+        assert b.distance(Point(0.0, 0.0)) <= NEAR_MM
+        assert b.distance(LineString([(-20.0, 0.0), (20.0, 0.0)])) >= labels.clearance
+        assert b.distance(arc) >= labels.clearance
