@@ -118,6 +118,9 @@ _FOOT_CLEAR = 0.15
 LOOKALIKE_MM = 15.0
 LOOKALIKE = ({"O", "0"}, {"o", "0"}, {"l", "1"}, {"O", "o"})
 _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, in turn
+# how many times `write_later(retry=True)` writes the labels again, those that
+# found no place first
+_RETRIES = 1
 
 
 class Labels:
@@ -283,9 +286,47 @@ class Labels:
             ("arrow", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), None)
         )
 
-    def write_later(self) -> None:
-        """Write the labels kept by `later`, `later_along` and `later_arrow`, in the order they came."""
-        for kind, anchor, markup, other, first in self._later:
+    def write_later(self, *, retry: bool = False) -> None:
+        """Write the labels kept by `later`, `later_along` and `later_arrow`, in the order they came.
+
+        With `retry`, where some of them found no place near what they name
+        (nor a leader to one), all are written again with those first: a
+        draughtsman letters the crowded places before the easy ones. The
+        order kept is the one that leaves fewest written on something, then
+        fewest far (the first, on a tie)."""
+        todo = list(self._later)
+        self._later.clear()
+        if not retry:
+            self._write_all(todo)
+            return
+        saved = self._state()
+        far = self._write_all(todo)
+        # the better order: fewer written on something, then fewer far
+        best: tuple[tuple[int, int], list[int]] = (
+            (self.unsettled - saved[-2], len(far)),
+            list(range(len(todo))),
+        )
+        order = best[1]
+        for _ in range(_RETRIES):
+            if not far:
+                break
+            # those that went far, first
+            order = [*(order[i] for i in far), *(j for k, j in enumerate(order) if k not in far)]
+            self._restore(saved)
+            far = self._write_all([todo[j] for j in order])
+            if (self.unsettled - saved[-2], len(far)) < best[0]:
+                best = ((self.unsettled - saved[-2], len(far)), order)
+        if order is not best[1]:  # the last order written is not the best: the best again
+            self._restore(saved)
+            self._write_all([todo[j] for j in best[1]])
+
+    def _write_all(
+        self, todo: Sequence[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]]
+    ) -> list[int]:
+        """Write `todo` in order; which of them (their places in it) went far."""
+        far: list[int] = []
+        for k, (kind, anchor, markup, other, first) in enumerate(todo):
+            before = self.far
             if kind == "along":
                 assert other is not None
                 self.place_along(anchor, other, markup, around=True)
@@ -294,7 +335,35 @@ class Labels:
                 self.place_arrow(anchor, other, markup)
             else:
                 self.place(anchor, markup, towards=other, first=first)
-        self._later.clear()
+            if self.far > before:
+                far.append(k)
+        return far
+
+    def _state(self) -> tuple[Any, ...]:
+        """What writing labels changes, to go back to (`_restore`)."""
+        self._sync()
+        return (
+            len(self.sketch.calls),
+            len(self.boxes),
+            len(self._obstacles),
+            len(self._outlines),
+            set(self._leaders),
+            self.unsettled,
+            self.far,
+        )
+
+    def _restore(self, state: tuple[Any, ...]) -> None:
+        """Undo the labels written since `_state` (their lettering and leaders)."""
+        calls, boxes, obstacles, outlines, leaders, unsettled, far = state
+        del self.sketch.calls[calls:]
+        del self.boxes[boxes:], self._texts[boxes:]
+        del self._obstacles[obstacles:], self._clearance[obstacles:], self._heavy[obstacles:]
+        del self._outlines[outlines:]
+        self._leaders = set(leaders)
+        self.unsettled, self.far = unsettled, far
+        self._seen = len(self.sketch.calls)
+        self._tree = None
+        self._grown = None
 
     def place(
         self,
