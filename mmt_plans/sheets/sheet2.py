@@ -376,7 +376,7 @@ class _Drawing:
                 self.later(self.mm(f.point), f"{force_markup(f.name)} = 0", np.array([0.0, 1.0]))
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
-        self.labels.write_later()
+        self.labels.write_later(retry=True)
         _UNSETTLED[self.sk] = self.labels.unsettled
         ext = self.sk.extent()
         y = ext.bottom - 5.0
@@ -687,7 +687,7 @@ def sketch_force_polygons(
             labels.avoid_line(offset - 1.0, offset + 1.0)
         for start, markup, end in names.values():
             labels.later_along(start, end, markup)
-        labels.write_later()
+        labels.write_later(retry=True)
         for corners_of, caption in captions:
             anchor, towards = _caption_place(labels, corners_of, caption)
             labels.place(anchor, caption, towards=towards)
@@ -789,7 +789,7 @@ def sketch_lever(
             labels.later_arrow(start, end, ", ".join(force_markup(n) for n in names))
         for foot, numbers in feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}")
-        labels.write_later()
+        labels.write_later(retry=True)
         _UNSETTLED[sk] = labels.unsettled
         ext = sk.extent()
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
