@@ -274,10 +274,17 @@ class Labels:
         (`first`: the centre tried before all others, a room kept for it)."""
         self._later.append(("at", tuple(float(v) for v in anchor), markup, towards, first))
 
-    def later_along(self, start: PointLike, end: PointLike, markup: str) -> None:
-        """A label to write beside the segment start–end (`place_along`) with `write_later`."""
+    def later_along(
+        self,
+        start: PointLike,
+        end: PointLike,
+        markup: str,
+        along: Sequence[float] | None = None,
+    ) -> None:
+        """A label to write beside the segment start–end (`place_along`, at the
+        fractions `along` of it where given) with `write_later`."""
         self._later.append(
-            ("along", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), None)
+            ("along", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), along)
         )
 
     def later_arrow(self, start: PointLike, end: PointLike, markup: str) -> None:
@@ -327,9 +334,10 @@ class Labels:
         far: list[int] = []
         for k, (kind, anchor, markup, other, first) in enumerate(todo):
             before = self.far
-            if kind == "along":
+            if kind == "along":  # `first` holds the fractions along it, if any
                 assert other is not None
-                self.place_along(anchor, other, markup, around=True)
+                along = None if first is None else [float(t) for t in first]
+                self.place_along(anchor, other, markup, around=True, along=along)
             elif kind == "arrow":
                 assert other is not None
                 self.place_arrow(anchor, other, markup)
@@ -468,10 +476,12 @@ class Labels:
         distance: float = 1.0,
         group: str | None = None,
         around: bool = False,
+        along: Sequence[float] | None = None,
     ) -> BaseGeometry:
         """Write `markup` `distance` mm beside the segment start–end (a link's
-        number): at its middle if that is free, else further along, either side;
-        with `around`, else round the middle further out (an arm h among others)."""
+        number): at its middle if that is free, else further along (at the
+        fractions `along` of it, in turn), either side; with `around`, else
+        round the middle further out (an arm h among others)."""
         w, h, drop = self._extent(markup)
         a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
         d = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
@@ -480,7 +490,7 @@ class Labels:
         reach = w / 2 * np.abs(sides.real) + np.where(sides.imag > 0, h / 2 + drop, h / 2) * np.abs(
             sides.imag
         )
-        anchors = a + np.array(_ALONG)[:, None] * (b - a)
+        anchors = a + np.array(_ALONG if along is None else along)[:, None] * (b - a)
         # nearest ring first, then along the segment, then the side
         ring = (distance + self.rings)[:, None, None]
         cx = (anchors[:, 0][:, None] + sides.real * (ring + reach)).ravel()
