@@ -382,7 +382,7 @@ class _Drawing:
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
         self.labels.write_later(retry=True)
-        _UNSETTLED[self.sk] = self.labels.unsettled
+        _UNSETTLED[self.sk] = self.labels.unsettled + self.labels.far
         ext = self.sk.extent()
         y = ext.bottom - 5.0
         for note in notes:
@@ -696,7 +696,7 @@ def sketch_force_polygons(
         for corners_of, caption in captions:
             anchor, towards = _caption_place(labels, corners_of, caption)
             labels.place(anchor, caption, towards=towards)
-        _UNSETTLED[sk] = labels.unsettled
+        _UNSETTLED[sk] = labels.unsettled + labels.far
         ext = sk.extent()
         y = ext.bottom - 5.0
         for poly in polygons:
@@ -795,7 +795,7 @@ def sketch_lever(
         for foot, numbers in feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
         labels.write_later(retry=True)
-        _UNSETTLED[sk] = labels.unsettled
+        _UNSETTLED[sk] = labels.unsettled + labels.far
         ext = sk.extent()
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
         sk.rich_text(
