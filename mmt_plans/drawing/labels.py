@@ -125,6 +125,9 @@ _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, 
 _FINE_STEP = 0.5
 _FINE_OFF = 0.5
 _FINE_MOST = 40_000
+# how many times `write_later(retry=True)` writes the labels again, those that
+# found no place first
+_RETRIES = 1
 
 
 class Labels:
@@ -325,10 +328,17 @@ class Labels:
         (`first`: the centre tried before all others, a room kept for it)."""
         self._later.append(("at", tuple(float(v) for v in anchor), markup, towards, first))
 
-    def later_along(self, start: PointLike, end: PointLike, markup: str) -> None:
-        """A label to write beside the segment start–end (`place_along`) with `write_later`."""
+    def later_along(
+        self,
+        start: PointLike,
+        end: PointLike,
+        markup: str,
+        along: Sequence[float] | None = None,
+    ) -> None:
+        """A label to write beside the segment start–end (`place_along`, at the
+        fractions `along` of it where given) with `write_later`."""
         self._later.append(
-            ("along", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), None)
+            ("along", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), along)
         )
 
     def later_arrow(self, start: PointLike, end: PointLike, markup: str) -> None:
@@ -337,18 +347,85 @@ class Labels:
             ("arrow", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), None)
         )
 
-    def write_later(self) -> None:
-        """Write the labels kept by `later`, `later_along` and `later_arrow`, in the order they came."""
-        for kind, anchor, markup, other, first in self._later:
-            if kind == "along":
+    def write_later(self, *, retry: bool = False) -> None:
+        """Write the labels kept by `later`, `later_along` and `later_arrow`, in the order they came.
+
+        With `retry`, where some of them found no place near what they name
+        (nor a leader to one), all are written again with those first: a
+        draughtsman letters the crowded places before the easy ones. The
+        order kept is the one that leaves fewest written on something, then
+        fewest far (the first, on a tie)."""
+        todo = list(self._later)
+        self._later.clear()
+        if not retry:
+            self._write_all(todo)
+            return
+        saved = self._state()
+        far = self._write_all(todo)
+        # the better order: fewer written on something, then fewer far
+        best: tuple[tuple[int, int], list[int]] = (
+            (self.unsettled - saved[-2], len(far)),
+            list(range(len(todo))),
+        )
+        order = best[1]
+        for _ in range(_RETRIES):
+            if not far:
+                break
+            # those that went far, first
+            order = [*(order[i] for i in far), *(j for k, j in enumerate(order) if k not in far)]
+            self._restore(saved)
+            far = self._write_all([todo[j] for j in order])
+            if (self.unsettled - saved[-2], len(far)) < best[0]:
+                best = ((self.unsettled - saved[-2], len(far)), order)
+        if order is not best[1]:  # the last order written is not the best: the best again
+            self._restore(saved)
+            self._write_all([todo[j] for j in best[1]])
+
+    def _write_all(
+        self, todo: Sequence[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]]
+    ) -> list[int]:
+        """Write `todo` in order; which of them (their places in it) went far."""
+        far: list[int] = []
+        for k, (kind, anchor, markup, other, first) in enumerate(todo):
+            before = self.far
+            if kind == "along":  # `first` holds the fractions along it, if any
                 assert other is not None
-                self.place_along(anchor, other, markup, around=True)
+                along = None if first is None else [float(t) for t in first]
+                self.place_along(anchor, other, markup, around=True, along=along)
             elif kind == "arrow":
                 assert other is not None
                 self.place_arrow(anchor, other, markup)
             else:
                 self.place(anchor, markup, towards=other, first=first)
-        self._later.clear()
+            if self.far > before:
+                far.append(k)
+        return far
+
+    def _state(self) -> tuple[Any, ...]:
+        """What writing labels changes, to go back to (`_restore`)."""
+        self._sync()
+        return (
+            len(self.sketch.calls),
+            len(self.boxes),
+            len(self._obstacles),
+            len(self._outlines),
+            set(self._leaders),
+            self.unsettled,
+            self.far,
+        )
+
+    def _restore(self, state: tuple[Any, ...]) -> None:
+        """Undo the labels written since `_state` (their lettering and leaders)."""
+        calls, boxes, obstacles, outlines, leaders, unsettled, far = state
+        del self.sketch.calls[calls:]
+        del self.boxes[boxes:], self._texts[boxes:]
+        del self._obstacles[obstacles:], self._clearance[obstacles:], self._heavy[obstacles:]
+        del self._outlines[outlines:]
+        self._leaders = set(leaders)
+        self.unsettled, self.far = unsettled, far
+        self._seen = len(self.sketch.calls)
+        self._tree = None
+        self._grown = None
 
     def place(
         self,
@@ -453,10 +530,12 @@ class Labels:
         distance: float = 1.0,
         group: str | None = None,
         around: bool = False,
+        along: Sequence[float] | None = None,
     ) -> BaseGeometry:
         """Write `markup` `distance` mm beside the segment start–end (a link's
-        number): at its middle if that is free, else further along, either side;
-        with `around`, else round the middle further out (an arm h among others)."""
+        number): at its middle if that is free, else further along (at the
+        fractions `along` of it, in turn), either side; with `around`, else
+        round the middle further out (an arm h among others)."""
         w, h, drop = self._extent(markup)
         a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
         d = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
@@ -465,7 +544,7 @@ class Labels:
         reach = w / 2 * np.abs(sides.real) + np.where(sides.imag > 0, h / 2 + drop, h / 2) * np.abs(
             sides.imag
         )
-        anchors = a + np.array(_ALONG)[:, None] * (b - a)
+        anchors = a + np.array(_ALONG if along is None else along)[:, None] * (b - a)
         # nearest ring first, then along the segment, then the side
         ring = (distance + self.rings)[:, None, None]
         cx = (anchors[:, 0][:, None] + sides.real * (ring + reach)).ravel()

@@ -62,6 +62,9 @@ _PAD = 2.0
 _UNSETTLED: weakref.WeakKeyDictionary[Sketch, int] = weakref.WeakKeyDictionary()
 _ARROW = dict(head_length=3.5, head_width=1.2)
 _FAR_MM = 40.0  # a reaction applied farther than this from its group's points moves to them
+# where along an arm h its name is tried, in turn: the middle first, then out to
+# both ends (the arms of a lever all leave the pole, where their names crowd)
+_ARM_ALONG = (0.5, 0.65, 0.35, 0.8, 0.2, 0.9, 0.1, 0.75, 0.25, 0.95, 0.05, 0.55, 0.45)
 
 GROUPS = (
     "force-mechanism",
@@ -222,8 +225,10 @@ class _Drawing:
     def later_arrow(self, start: np.ndarray, end: np.ndarray, markup: str) -> None:
         self.labels.later_arrow(start, end, markup)
 
-    def later_along(self, start: np.ndarray, end: np.ndarray, markup: str) -> None:
-        self.labels.later_along(start, end, markup)
+    def later_along(
+        self, start: np.ndarray, end: np.ndarray, markup: str, along: Sequence[float] | None = None
+    ) -> None:
+        self.labels.later_along(start, end, markup, along)
 
     def force(
         self, at: np.ndarray, F: np.ndarray, label: str, largest: float, line: str = "main"
@@ -261,7 +266,7 @@ class _Drawing:
             self.sk.line(pivot, foot, "thin")
             # the line of action carried on to the foot, thin
             self.sk.line(at, foot, "thin")
-            self.later_along(pivot, foot, label)
+            self.later_along(pivot, foot, label, _ARM_ALONG)
         return h
 
     # the mechanism's links -----------------------------------------------------------
@@ -363,7 +368,7 @@ class _Drawing:
                 K = self.mm(sh.point)
                 if float(np.hypot(*(K - S))) >= 1.0:
                     self.sk.line(S, K, "thin")
-                    self.later_along(S, K, f"h_{{{lid}}}")
+                    self.later_along(S, K, f"h_{{{lid}}}", _ARM_ALONG)
                 self.force(K, ll.inertia_force, f"F_in{lid}", largest)
             elif ll.mass:
                 self.force(S, ll.inertia_force, f"F_in{lid}", largest)
@@ -376,8 +381,8 @@ class _Drawing:
                 self.later(self.mm(f.point), f"{force_markup(f.name)} = 0", np.array([0.0, 1.0]))
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
-        self.labels.write_later()
-        _UNSETTLED[self.sk] = self.labels.unsettled
+        self.labels.write_later(retry=True)
+        _UNSETTLED[self.sk] = self.labels.unsettled + self.labels.far
         ext = self.sk.extent()
         y = ext.bottom - 5.0
         for note in notes:
@@ -688,11 +693,11 @@ def sketch_force_polygons(
             labels.avoid_line(offset - 1.0, offset + 1.0)
         for start, markup, end in names.values():
             labels.later_along(start, end, markup)
-        labels.write_later()
+        labels.write_later(retry=True)
         for corners_of, caption in captions:
             anchor, towards = _caption_place(labels, corners_of, caption)
             labels.place(anchor, caption, towards=towards)
-        _UNSETTLED[sk] = labels.unsettled
+        _UNSETTLED[sk] = labels.unsettled + labels.far
         ext = sk.extent()
         y = ext.bottom - 5.0
         for poly in polygons:
@@ -789,9 +794,9 @@ def sketch_lever(
             sk.arrow(start, end, "main", **_ARROW)  # type: ignore[arg-type]
             labels.later_arrow(start, end, ", ".join(force_markup(n) for n in names))
         for foot, numbers in feet.values():
-            labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}")
-        labels.write_later()
-        _UNSETTLED[sk] = labels.unsettled
+            labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
+        labels.write_later(retry=True)
+        _UNSETTLED[sk] = labels.unsettled + labels.far
         ext = sk.extent()
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
         sk.rich_text(

@@ -181,3 +181,18 @@ def test_rooms_are_the_free_places_near_a_point_clear_of_a_shape_to_come():
         assert b.distance(Point(0.0, 0.0)) <= NEAR_MM
         assert b.distance(LineString([(-20.0, 0.0), (20.0, 0.0)])) >= labels.clearance
         assert b.distance(arc) >= labels.clearance
+
+
+def test_a_segments_name_tried_at_the_fractions_given():
+    """An arm whose middle is crowded with thin lines and whose far end is
+    free: named beside the end when the fractions tried along it reach there
+    (`along`), with no leader."""
+    sk = _sketch()
+    sk.line((0.0, 0.0), (60.0, 0.0), "thin")
+    for x in np.arange(3.0, 49.0, 1.5):
+        sk.line((float(x), -14.0), (float(x), 14.0), "thin")
+    labels = Labels(sk, 3.5, leaders=False)
+    footprint = labels.place_along((0.0, 0.0), (60.0, 0.0), "h_{1}", along=(0.5, 0.9))
+    assert footprint.distance(LineString([(0.0, 0.0), (60.0, 0.0)])) <= NEAR_MM
+    assert footprint.bounds[0] > 48.0 and labels.far == 0 and _leaders(sk) == []
+    assert _findings(sk, ["label-near", "label-clear"]) == []
