@@ -22,8 +22,6 @@ Ratios are measured/goal, or ours/numpy: under 1 meets the goal.
 from __future__ import annotations
 
 import os
-import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -33,7 +31,7 @@ from pathlib import Path
 from ..model import Mechanism
 from ..report import table
 from .sweeps import mechanisms, sweep_rows
-from .timing import best_cpu_times, best_time
+from .timing import best_cpu_times, best_time, median_run
 
 DEFAULT = "six_link_press"
 GOALS = {
@@ -86,19 +84,9 @@ def solve_rows(sample_dir: Path, repeat: int) -> list[list[str]]:
     return rows
 
 
-def _median_run(args: list[str], runs: int) -> float:
-    """The median wall time of `runs` runs of the command `args` (s)."""
-    times = []
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        subprocess.run(args, check=True, capture_output=True)
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
-
-
 def startup_row(sample_dir: Path, runs: int = 7) -> list[str]:
     def median(args: list[str]) -> float:
-        return _median_run(args, runs)
+        return median_run(args, runs)
 
     sample = Path(sample_dir) / f"{DEFAULT}.toml"
     base = median([sys.executable, "-c", "import numpy, click"])
@@ -145,7 +133,7 @@ def output_rows(sample_dir: Path, repeat: int) -> list[list[str]]:
             _row("  of it: the note from composed sheets", t_own, "s", "goal", GOALS["note"])
         )
         # what a user waits for: `mmt-plans note` in a fresh process (imports, fonts, Cairo)
-        t_cli = _median_run(
+        t_cli = median_run(
             [sys.executable, "-m", "mmt_plans", "note", str(path), "-o", str(Path(out) / "n.pdf")],
             1 if repeat <= 3 else 3,
         )

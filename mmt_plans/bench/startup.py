@@ -3,31 +3,22 @@ the median of 7 runs of each, in the same bench run (target: under 150 ms)."""
 
 from __future__ import annotations
 
-import statistics
-import subprocess
 import sys
-import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from ..report import table
+from .timing import median_run
 
 RUNS = 7
 
 
-def _median_time(args: list[str]) -> float:
-    times = []
-    for _ in range(RUNS):
-        t0 = time.perf_counter()
-        subprocess.run(args, check=True, capture_output=True)
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
-
-
 def bench_startup(files: Sequence[Path], repeat: int, echo: Callable[[str], None]) -> None:
     sample = next((p for p in files if p.stem == "six_link_press"), files[0])
-    base = _median_time([sys.executable, "-c", "import numpy, click"])
-    analyze = _median_time([sys.executable, "-m", "mmt_plans", "analyze", str(sample), "--quiet"])
+    base = median_run([sys.executable, "-c", "import numpy, click"], RUNS)
+    analyze = median_run(
+        [sys.executable, "-m", "mmt_plans", "analyze", str(sample), "--quiet"], RUNS
+    )
     echo(
         f"Start-up: mmt-plans analyze against `python -c 'import numpy, click'` "
         f"(median of {RUNS} runs each):"

@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import statistics
+import subprocess
 import time
 from collections.abc import Callable, Sequence
 from typing import Any
@@ -13,6 +15,16 @@ from ..kinematics.chain import Chain
 from ..model import Mechanism
 from ..results_json import results
 from ..solution import solve
+
+
+def median_run(args: list[str], runs: int) -> float:
+    """The median wall time of `runs` runs of the command `args` (s)."""
+    times = []
+    for _ in range(runs):
+        t0 = time.perf_counter()
+        subprocess.run(args, check=True, capture_output=True)
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
 
 
 def best_time(fn: Callable[[], object], repeat: int, number: int = 1) -> float:

@@ -1393,16 +1393,7 @@ def _sketch_all(
     drawn = dg.construction
 
     def diagram(which: str) -> Sketch:
-        return sketch_diagram(
-            drawn,
-            which,
-            look,
-            lang,
-            solution.s_dense,
-            dg.refinement,
-            mu_l=mu_l if which == "s" else None,
-            mu_l_solution=float(solution.mu_l),
-        )
+        return _diagram_sketch(solution, drawn, which, look, lang, mu_l)
 
     # V and a do not depend on the mechanism's μ_l: drawn once
     parts = [
@@ -1424,6 +1415,28 @@ def _sketch_all(
         **_diagram_scales(drawn),
     }
     return sketches, scales, drawn
+
+
+def _diagram_sketch(
+    solution: Solution,
+    construction: KinematicDiagrams,
+    which: str,
+    look: Any,
+    lang: Language,
+    mu_l: float,
+) -> Sketch:
+    """The diagram `which` ("s", "v", "a") of `construction`; S beside a
+    mechanism drawn at μ_l `mu_l`."""
+    return sketch_diagram(
+        construction,
+        which,
+        look,
+        lang,
+        solution.s_dense,
+        solution.require_diagrams().refinement,
+        mu_l=mu_l if which == "s" else None,
+        mu_l_solution=float(solution.mu_l),
+    )
 
 
 def _diagram_scales(drawn: KinematicDiagrams) -> dict[str, float]:
@@ -1719,7 +1732,6 @@ def _grown_diagrams(
     rect = placed["diagrams"]
     base = extents(sketches["diagrams"])
     least = 1.15 * base.width * base.height  # worth redrawing: 15 % more paper covered
-    dg = solution.require_diagrams()
     s = np.asarray(drawn.s, dtype=float)
     T = 60.0 / drawn.n1
     over_w = base.width - drawn.L - max(drawn.H1, drawn.H2)
@@ -1756,16 +1768,7 @@ def _grown_diagrams(
                     ("a", ("a", L, mu_S, H1, H2)),
                 ):
                     if key not in drawn_parts:  # the rooms try the same axes again
-                        drawn_parts[key] = sketch_diagram(
-                            c,
-                            which,
-                            look,
-                            lang,
-                            solution.s_dense,
-                            dg.refinement,
-                            mu_l=mu_l if which == "s" else None,
-                            mu_l_solution=float(solution.mu_l),
-                        )
+                        drawn_parts[key] = _diagram_sketch(solution, c, which, look, lang, mu_l)
                     parts.append(drawn_parts[key])
                 grown = _stack(parts, look, _STACK_GAP)
                 ext = extents(grown)
