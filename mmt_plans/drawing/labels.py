@@ -264,7 +264,7 @@ class Labels:
         labels avoid (one query of the segment index; `covered` measures how much)."""
         self._sync()
         x0, y0, x1, y1 = (np.array([v], dtype=float) for v in bounds)
-        return bool(self._obstacle_cost(x0, y0, x1, y1)[0] <= 1e-9)
+        return bool(self._clear(x0, y0, x1, y1)[0])
 
     def first_free(self, bounds: np.ndarray) -> int | None:
         """The index of the first of the boxes `bounds` (x0, y0, x1, y1 rows)
@@ -274,7 +274,7 @@ class Labels:
         start, size = 0, 16
         while start < len(bounds):
             b = bounds[start : start + size]
-            free = np.flatnonzero(self._obstacle_cost(b[:, 0], b[:, 1], b[:, 2], b[:, 3]) <= 1e-9)
+            free = np.flatnonzero(self._clear(b[:, 0], b[:, 1], b[:, 2], b[:, 3]))
             if free.size:
                 return start + int(free[0])
             start, size = start + size, min(4 * size, 1024)
@@ -626,6 +626,13 @@ class Labels:
             cost += 0.25 * np.bincount(box_, minlength=x0.size)
         return cost
 
+    def _clear(self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray) -> np.ndarray:
+        """Which candidate boxes come within the clearance of no avoided thing
+        (`_obstacle_cost` zero), asked as that: a box met once is not asked again."""
+        if not self._obstacles or not x0.size:
+            return np.ones(x0.size, dtype=bool)
+        return self._index().boxes_clear(x0, y0, x1, y1)
+
     def _index(self) -> _ObstacleIndex:
         """The obstacles as segments and solids in a tree (built again after a change)."""
         if self._tree is None:
@@ -698,17 +705,16 @@ class Labels:
         # first: most labels find room in the first ring (the same pick as asking
         # about all of them, since the candidates are in order of preference).
         per_ring = max(1, cx.size // len(self.rings))
+        # (only those near and off the lettering are asked, and only whether any is met)
         k = -1
-        asked = np.zeros(cx.size, dtype=bool)
         for r0 in range(0, cx.size, per_ring):
-            ring = slice(r0, min(cx.size, r0 + per_ring))
-            if not near[ring].any():
+            ring = np.arange(r0, min(cx.size, r0 + per_ring))
+            ring = ring[(cost[ring] <= 1e-9) & near[ring]]
+            if not ring.size:
                 continue
-            cost[ring] += self._obstacle_cost(x0[ring], y0[ring], x1[ring], y1[ring])
-            asked[ring] = True
-            free = np.flatnonzero((cost[ring] <= 1e-9) & near[ring])
+            free = ring[self._clear(x0[ring], y0[ring], x1[ring], y1[ring])]
             if free.size:
-                k = r0 + int(free[0])
+                k = int(free[0])
                 break
         line: tuple[tuple[float, float], tuple[float, float]] | None = None
         if k < 0 and names is not None:
@@ -734,9 +740,7 @@ class Labels:
             # No place near it and none a leader reaches: a free place further
             # out (a label on a line or a label reads as neither), else the
             # place near it that covers least, lettering first.
-            rest = ~asked
-            if rest.any():
-                cost[rest] += self._obstacle_cost(x0[rest], y0[rest], x1[rest], y1[rest])
+            cost += self._obstacle_cost(x0, y0, x1, y1)
             free = np.flatnonzero(cost <= 1e-9)
             if free.size:
                 k = int(free[0])
@@ -806,8 +810,7 @@ class Labels:
         start, size = 0, _FINE_BLOCK
         while start < ok.size:
             part = ok[start : start + size]
-            ob = self._obstacle_cost(x0[part], y0[part], x1[part], y1[part])
-            free = part[ob <= 1e-9]
+            free = part[self._clear(x0[part], y0[part], x1[part], y1[part])]
             if free.size:
                 k = keep[free[0]]
                 return float(cx[k]), float(cy[k])
@@ -884,9 +887,9 @@ class Labels:
         one whose leader crosses nothing, else the first whose leader crosses a
         few thin lines; None if none is free or reachable."""
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
-        cost = self._label_cost(x0, y0, x1, y1) + self._obstacle_cost(x0, y0, x1, y1)
-        cost += self._lookalike_cost(markup, x0, y0, x1, y1)
+        cost = self._label_cost(x0, y0, x1, y1) + self._lookalike_cost(markup, x0, y0, x1, y1)
         free = np.flatnonzero(cost <= 1e-9)
+        free = free[self._clear(x0[free], y0[free], x1[free], y1[free])]  # and off the obstacles
         # each leader ends 0.4 mm short of its box's nearest point
         ax, ay = ax[free], ay[free]
         px, py = np.clip(ax, x0[free], x1[free]), np.clip(ay, y0[free], y1[free])
@@ -1190,6 +1193,43 @@ class _ObstacleIndex:
                     self.whole[rest[1] - self.n_segs],
                 )
         return self._pairs(near, gap)
+
+    def boxes_clear(
+        self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
+    ) -> np.ndarray:
+        """Which boxes are within no obstacle's clearance (no pair of `boxes_near`):
+        the upright solids asked first, then the segments and the other solids
+        about the boxes still clear."""
+        clear = np.ones(x0.size, dtype=bool)
+        near = self._query(
+            np.c_[np.minimum(x0, x1), np.minimum(y0, y1)],
+            np.c_[np.maximum(x0, x1), np.maximum(y0, y1)],
+        )
+        if not near.shape[1]:
+            return clear
+        b = np.stack([x0, y0, x1, y1], axis=1)[near[0]]
+        reach = self.reach[self.owner[near[1]]]
+        seg = near[1] < self.n_segs
+        solid = near[1] - self.n_segs
+        upright = np.zeros_like(seg)
+        if (~seg).any():
+            upright = ~seg & self.upright[np.where(seg, 0, solid)]
+        if upright.any():
+            gap = _box_box(b[upright], self.whole_bounds[solid[upright]])
+            clear[near[0][upright][gap < reach[upright]]] = False
+        ask = seg & clear[near[0]]
+        if ask.any():
+            gap = _segment_box(self.segs[near[1][ask]], b[ask])
+            clear[near[0][ask][gap < reach[ask]]] = False
+        ask = ~seg & ~upright & clear[near[0]]
+        if ask.any():
+            rest = near[:, ask]
+            gap = shapely.distance(
+                shapely.box(x0[rest[0]], y0[rest[0]], x1[rest[0]], y1[rest[0]]),
+                self.whole[rest[1] - self.n_segs],
+            )
+            clear[rest[0][gap < reach[ask]]] = False
+        return clear
 
     def lines_near(self, lines: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(line, obstacle) pairs for two-point `lines`: those within each
