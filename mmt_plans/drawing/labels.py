@@ -149,6 +149,7 @@ class Labels:
         leader_dirs: int = _LEADER_DIRS,
         leader_group: int | None = None,
         words: Callable[[str], str] | None = None,
+        fine: bool = True,
     ) -> None:
         self.sketch = sketch
         self.size = size
@@ -163,6 +164,9 @@ class Labels:
         # alone), a label with no free place near its anchor goes further out,
         # tied to the anchor by a thin leader line
         self.leaders = leaders
+        # with `fine`, a label none of the compass's places holds is tried on
+        # a fine grid of places near its anchor before a leader (_fine_near)
+        self.fine = fine
         # how far out a leader's box may go (mm past `distance`, in turn), in how many directions
         self.leader_rings = np.array(leader_rings, dtype=float)
         self._leader_dirs = np.exp(1j * np.radians(360.0 / leader_dirs * np.arange(leader_dirs)))
@@ -717,7 +721,7 @@ class Labels:
                 k = int(free[0])
                 break
         line: tuple[tuple[float, float], tuple[float, float]] | None = None
-        if k < 0 and names is not None:
+        if k < 0 and names is not None and self.fine:
             # between the compass's places: every place near it on a fine grid,
             # nearest first (a gap between lines narrower than a ring apart)
             found_near = self._fine_near(names, outline, w, h, drop, markup)

@@ -207,7 +207,9 @@ class _Drawing:
 
     def __init__(self, look: Any, state: PositionState, mu_l: float, lang: Language = "en") -> None:
         self.sk = Sketch(look)
-        self.labels = Labels(self.sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang))
+        self.labels = Labels(
+            self.sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang), fine=False
+        )
         self.state = state
         self.mu_l = mu_l
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
@@ -382,7 +384,7 @@ class _Drawing:
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
         self.labels.write_later(retry=True)
-        _UNSETTLED[self.sk] = self.labels.unsettled + self.labels.far
+        _UNSETTLED[self.sk] = self.labels.unsettled
         ext = self.sk.extent()
         y = ext.bottom - 5.0
         for note in notes:
@@ -615,7 +617,7 @@ def sketch_force_polygons(
     the textbook closes R54 inside the polygon of group 4-5; one that shares
     nothing is drawn beside it."""
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang))
+    labels = Labels(sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang), fine=False)
     drawn: dict[tuple[str, int, int], bool] = {}
     short: list[str] = []
     offset = np.zeros(2)
@@ -697,7 +699,7 @@ def sketch_force_polygons(
         for corners_of, caption in captions:
             anchor, towards = _caption_place(labels, corners_of, caption)
             labels.place(anchor, caption, towards=towards)
-        _UNSETTLED[sk] = labels.unsettled + labels.far
+        _UNSETTLED[sk] = labels.unsettled
         ext = sk.extent()
         y = ext.bottom - 5.0
         for poly in polygons:
@@ -727,7 +729,7 @@ def sketch_lever(
     lever = fa.lever
     mech = fa.loads.state.mech
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang))
+    labels = Labels(sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang), fine=False)
     img = {n: np.asarray(v, float) / mu_V for n, v in lever.images.items()}
     dotted: set[str] = set()  # images of S_i and K_i marked with a dot
     with sk.group("zhukovsky-lever", "lever"):
@@ -796,7 +798,7 @@ def sketch_lever(
         for foot, numbers in feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
         labels.write_later(retry=True)
-        _UNSETTLED[sk] = labels.unsettled + labels.far
+        _UNSETTLED[sk] = labels.unsettled
         ext = sk.extent()
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
         sk.rich_text(
