@@ -26,40 +26,13 @@ from pathlib import Path
 from typing import Any
 
 from .backend import Backend, Fill, HAlign, PointLike, VAlign, as_point
+from .cairo_lib import import_cairo
 from .look import LineType, Look
 from .recording import RecordingBackend
 
 __all__ = ["CairoPage", "PdfDocument", "pages_to_pdf", "pages_to_pdf_bytes"]
 
 PT_PER_MM = 72.0 / 25.4
-
-
-def import_cairo() -> Any:
-    """cairocffi, imported without ctypes' library search on Linux.
-
-    cairocffi looks for libcairo with `ctypes.util.find_library`, which on
-    Linux runs ldconfig, gcc and ld (about a quarter of a second of a cold
-    `mmt-plans note`) before it opens "libcairo.so.2" by name anyway; the
-    dynamic loader finds the same library by that name. Where it does not,
-    the import is made again with the search."""
-    import sys
-
-    if "cairocffi" in sys.modules or not sys.platform.startswith("linux"):
-        import cairocffi
-
-        return cairocffi
-    import ctypes.util
-
-    search = ctypes.util.find_library
-    ctypes.util.find_library = lambda name: None
-    try:
-        import cairocffi
-    except OSError:
-        ctypes.util.find_library = search
-        import cairocffi
-    finally:
-        ctypes.util.find_library = search
-    return cairocffi
 
 
 @functools.cache

@@ -106,7 +106,7 @@ def svg_to_pdf_bytes(svg: SvgSource) -> bytes:
 
 def svg_to_png_bytes(svg: SvgSource, dpi: float = 96.0) -> bytes:
     """A PNG of the page at `dpi`, as bytes."""
-    from .cairo_pdf import import_cairo
+    from .cairo_lib import import_cairo
 
     import_cairo()  # before cairosvg imports it: without the library search
     import cairosvg
@@ -138,7 +138,7 @@ def _pdf(svgs: Iterable[str], target: Any) -> None:
     each page, `set_size()` sizes the next one. The creation and modification
     dates are files.document_date() (SOURCE_DATE_EPOCH, else a fixed date),
     not the clock, so the same pages give the same bytes."""
-    from .cairo_pdf import import_cairo
+    from .cairo_lib import import_cairo
 
     cairocffi = import_cairo()
     from cairosvg.parser import Tree

@@ -6,7 +6,8 @@ import ctypes.util
 
 import pytest
 
-from mmt_plans.render.cairo_pdf import PdfDocument, import_cairo, pages_to_pdf_bytes
+from mmt_plans.render.cairo_lib import import_cairo
+from mmt_plans.render.cairo_pdf import PdfDocument, pages_to_pdf_bytes
 from mmt_plans.render.recording import RecordingBackend
 
 
