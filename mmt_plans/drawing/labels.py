@@ -275,10 +275,18 @@ class Labels:
         that `free` finds free, or None: the boxes asked about in growing
         batches, not one query each."""
         self._sync()
-        start, size = 0, 16
-        while start < len(bounds):
-            b = bounds[start : start + size]
-            free = np.flatnonzero(self._clear(b[:, 0], b[:, 1], b[:, 2], b[:, 3]))
+        return self._first_clear(bounds[:, 0], bounds[:, 1], bounds[:, 2], bounds[:, 3], 16)
+
+    def _first_clear(
+        self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray, block: int
+    ) -> int | None:
+        """The index of the first of the boxes that `_clear` finds clear, or
+        None: asked about in blocks of `block`, then 4 times as many (at most
+        1024), the first clear one ending it."""
+        start, size = 0, block
+        while start < x0.size:
+            part = slice(start, start + size)
+            free = np.flatnonzero(self._clear(x0[part], y0[part], x1[part], y1[part]))
             if free.size:
                 return start + int(free[0])
             start, size = start + size, min(4 * size, 1024)
@@ -452,11 +460,7 @@ class Labels:
         self._clearance.extend(clearance)
         self._heavy.extend(heavy)
         self._outlines.extend(outlines)
-        self._leaders = set(leaders)
-        self.unsettled, self.far = unsettled, far
-        self._seen = len(self.sketch.calls)
-        self._tree = None
-        self._grown = None
+        self._counts_back(leaders, unsettled, far)
 
     def _restore(self, state: tuple[Any, ...]) -> None:
         """Undo the labels written since `_state` (their lettering and leaders)."""
@@ -465,6 +469,11 @@ class Labels:
         del self.boxes[boxes:], self._texts[boxes:]
         del self._obstacles[obstacles:], self._clearance[obstacles:], self._heavy[obstacles:]
         del self._outlines[outlines:]
+        self._counts_back(leaders, unsettled, far)
+
+    def _counts_back(self, leaders: set[Any], unsettled: int, far: int) -> None:
+        """After the written labels' lists were cut or extended: the leaders
+        and counts as they were then, the obstacles indexed again."""
         self._leaders = set(leaders)
         self.unsettled, self.far = unsettled, far
         self._seen = len(self.sketch.calls)
@@ -811,15 +820,11 @@ class Labels:
         if not ok.size:
             return None
         # asked about in blocks, nearest first: the first free one ends it
-        start, size = 0, _FINE_BLOCK
-        while start < ok.size:
-            part = ok[start : start + size]
-            free = part[self._clear(x0[part], y0[part], x1[part], y1[part])]
-            if free.size:
-                k = keep[free[0]]
-                return float(cx[k]), float(cy[k])
-            start, size = start + size, 4 * size
-        return None
+        first = self._first_clear(x0[ok], y0[ok], x1[ok], y1[ok], _FINE_BLOCK)
+        if first is None:
+            return None
+        k = keep[ok[first]]
+        return float(cx[k]), float(cy[k])
 
     def _leader_place(
         self,

@@ -150,6 +150,13 @@ _MAX_SEGMENTS = 6  # a link of many points: its arcs are tried beside its longes
 # the box an ω/ε label keeps free round its centre, mm: left/right, down, up (the
 # placer's box of "ω_{10}" at _TEXT, its index hanging below, and its 0.4 mm clearance)
 _ROOM_X, _ROOM_DOWN, _ROOM_UP = 3.7, 3.45, 2.4
+
+
+def _room_box(x: float, y: float) -> Any:
+    """The room kept for an ω or ε label whose box is centred at (x, y)."""
+    return shapely.box(x - _ROOM_X, y - _ROOM_DOWN, x + _ROOM_X, y + _ROOM_UP)
+
+
 # a diagram's number or pole letter goes no further than this from its point, mm
 _TICK_RINGS = (
     0.0,
@@ -328,7 +335,7 @@ class _ArcPlacer:
         """Whether a label's box centred at `centre` touches a room kept for
         another label (or an arc)."""
         x, y = float(centre[0]), float(centre[1])
-        room = shapely.box(x - _ROOM_X, y - _ROOM_DOWN, x + _ROOM_X, y + _ROOM_UP)
+        room = _room_box(x, y)
         _, near = self._near_all(np.array([room], dtype=object), 0.0)
         return bool(near.size and (self._w[near] >= self._WEIGHT["arc"]).any())
 
@@ -461,9 +468,7 @@ class _ArcPlacer:
             chosen_all.append(chosen)
         best = int(np.argmin(score))
         picked = [boxes_xy[best, k // 10_000, k % 10_000] for k in chosen_all[best]]
-        self.reserve(
-            [shapely.box(x - _ROOM_X, y - _ROOM_DOWN, x + _ROOM_X, y + _ROOM_UP) for x, y in picked]
-        )
+        self.reserve([_room_box(x, y) for x, y in picked])
         return cs[best], float(st[best]), [np.asarray(p, dtype=float) for p in picked]
 
     def round_pivot(self, centre: np.ndarray, radius: float, sense: float) -> float:
@@ -534,7 +539,7 @@ def _crank_arc(
         return None
     _, radius, start, room = min(options, key=lambda o: o[0])
     x, y = room
-    arcs.reserve([shapely.box(x - _ROOM_X, y - _ROOM_DOWN, x + _ROOM_X, y + _ROOM_UP)])
+    arcs.reserve([_room_box(x, y)])
     return radius, start, room
 
 

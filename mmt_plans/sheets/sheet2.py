@@ -1186,16 +1186,7 @@ class _Composer:
         mechanism, the groups and the driving link each no smaller than the
         box of their pins; the lever with its tables and the polygons as
         sketched (without a polygon's note), the table of loads as nothing."""
-        area = 0.0
-        for key, pts in self._pins:
-            if len(pts):
-                w, h = np.ptp(pts, axis=0) / scales[key] + 2.0 * PAD
-                area += float(w * h)
-        lever, _, tables = self.lever(scales["mu_V"])
-        drawn = [lever, *tables.values()]
-        for name, polygons, title in self.polygon_sets:
-            drawn.append(self.polygons(name, polygons, title, scales[f"mu_F {name}"]))
-        return area + sum(self.extent(sk).width * self.extent(sk).height for sk in drawn)
+        return sum(area for _, area in self._least_parts(scales))
 
     def lever(self, mu_V: float) -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
         """The lever at `mu_V`, its arms and the tables that read them."""
