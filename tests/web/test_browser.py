@@ -111,6 +111,22 @@ def _shot(driver, name):
     driver.set_window_size(1280, 1000)
 
 
+def _click_to_next_page(driver, element, timeout=30):
+    """Click `element` and wait until the page it leads to has replaced this
+    one (a click returns before the next page is there, and the index and
+    the variant page both hold the student form)."""
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support import expected_conditions
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    page = driver.find_element(By.TAG_NAME, "html")
+    element.click()
+    WebDriverWait(driver, timeout).until(expected_conditions.staleness_of(page))
+    WebDriverWait(driver, timeout).until(
+        lambda d: d.execute_script("return document.readyState") == "complete"
+    )
+
+
 def test_a_student_checks_values_in_a_real_browser(browser, tmp_path):
     from selenium.webdriver.common.by import By
 
@@ -130,15 +146,15 @@ def test_a_student_checks_values_in_a_real_browser(browser, tmp_path):
     try:
         browser.get(server.url + "/")
         _shot(browser, "index")
-        browser.find_element(By.LINK_TEXT, VARIANT).click()
+        _click_to_next_page(browser, browser.find_element(By.LINK_TEXT, VARIANT))
         browser.find_element(By.ID, "name").send_keys("Olena Koval")
         browser.find_element(By.ID, "group").send_keys("MM-21")
-        browser.find_element(By.ID, "save-student").click()
+        _click_to_next_page(browser, browser.find_element(By.ID, "save-student"))
         assert browser.find_element(By.ID, "who-name").text == "Olena Koval"
         for name, text in values.items():
             browser.find_element(By.NAME, name).send_keys(text)
         _shot(browser, "variant")
-        browser.find_element(By.ID, "submit").click()
+        _click_to_next_page(browser, browser.find_element(By.ID, "submit"))
 
         verdict = browser.find_element(By.ID, "verdict").text
         page = [
