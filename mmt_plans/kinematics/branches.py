@@ -159,8 +159,13 @@ class _Search:
         self.tol = TOLERANCE * max(sizes + [1e-3])
         # the links placed on the grid and the groups' margins there, by the
         # branches of the first groups: a trial of group k starts from the
-        # placing of the groups before it (the same for both its branches)
+        # placing of the groups before it (the same for both its branches),
+        # and a group is placed only when a group after it is tried
         self._on_grid: dict[Signs, tuple[dict, list]] = {}
+        self._grid_margins: dict[Signs, np.ndarray] = {}
+        # the links placed at one crank angle (the sketch's, the drawing's), by
+        # the angle and the branches of the first groups
+        self._at_angle: dict[tuple[float, Signs], dict] = {}
 
     def _grid_placed(self, signs: Signs) -> tuple[dict, list]:
         """The links' motion after the first len(signs) groups are placed on
@@ -174,13 +179,40 @@ class _Search:
                 found = (m, [])
             else:
                 before, margins = self._grid_placed(signs[:-1])
+                margin = self._grid_margin(signs[:-1])
                 m = dict(before)  # a group adds its own links, changing none before it
-                solver = self.solvers[len(signs) - 1]
                 with quiet():
-                    margin = solver.margin(m)
-                    solver.positions(m, signs[-1])
+                    self.solvers[len(signs) - 1].positions(m, signs[-1])
                 found = (m, [*margins, margin])
             self._on_grid[signs] = found
+        return found
+
+    def _grid_margin(self, before: Signs) -> np.ndarray:
+        """The margin on the grid of group len(before), the groups before it
+        placed with the branches `before` (the same for both its own)."""
+        found = self._grid_margins.get(before)
+        if found is None:
+            m, _ = self._grid_placed(before)
+            with quiet():
+                found = self._grid_margins[before] = self.solvers[len(before)].margin(m)
+        return found
+
+    def _placed_at(self, phi: np.ndarray, signs: Signs) -> dict:
+        """The links' motion at the one crank angle `phi` (rad, an array of one)
+        after the first len(signs) groups are placed with `signs` (what
+        `Chain.place` gives, by the same operations), kept by the branches of
+        the first groups: a trial of group k places that group alone."""
+        key = (float(phi[0]), signs)
+        found = self._at_angle.get(key)
+        if found is None:
+            if not signs:
+                chain = self.chain
+                found = {FRAME: chain.frame(), chain.mech.drive.link: chain.crank(phi)}
+            else:
+                found = dict(self._placed_at(phi, signs[:-1]))
+                with quiet():
+                    self.solvers[len(signs) - 1].positions(found, signs[-1])
+            self._at_angle[key] = found
         return found
 
     # --- margins -------------------------------------------------------------------
@@ -188,10 +220,18 @@ class _Search:
         """Each group's margin at the angles `phi` (rad) with the branches `signs`
         (the first len(signs) groups), NaN where an earlier group failed."""
         margins: list[np.ndarray] = []
+        signs = tuple(signs)
+        if not signs:
+            return margins
         if phi is self.grid:
-            margins = self._grid_placed(tuple(signs))[1]
+            margins = [*self._grid_placed(signs[:-1])[1], self._grid_margin(signs[:-1])]
         else:
-            self.chain.place(phi, dict(zip(self.names, signs)), upto=len(signs), margins=margins)
+            # the groups before the last placed, then the last one's margin (its
+            # own placing is not read)
+            k = len(signs) - 1
+            m = self.chain.place(phi, dict(zip(self.names, signs)), upto=k, margins=margins)
+            with quiet():
+                margins.append(self.solvers[k].margin(m))
         return [np.broadcast_to(np.asarray(g, dtype=float), phi.shape) for g in margins]
 
     def _refined_minima(
@@ -305,7 +345,7 @@ class _Search:
     def _distance(
         self, phi: np.ndarray, signs: Signs, names: list[str], target: Mapping[str, np.ndarray]
     ) -> float:
-        m = self.chain.place(phi, dict(zip(self.names, signs)), upto=len(signs))
+        m = self._placed_at(phi, signs)
         err = 0.0
         for p in names:
             lid, local = self.chain.locate[p]
