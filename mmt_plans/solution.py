@@ -43,6 +43,7 @@ from .forces.reduction import Reduction, reduce_sweep
 from .forces.state import PositionState, from_sweep
 from .kinematics.branches import Branches
 from .kinematics.chain import Chain, Sweep
+from .kinematics.geometry import quiet
 from .kinematics.handle import Kinematics, kinematics
 from .kinematics.plans import PlanView, plan_view
 from .model import Mechanism, Stroke
@@ -446,12 +447,18 @@ class _Turn:
         return ok, (P * wd).real, (V * wd).real, (A * wd).real
 
     def along(self, phi1_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """s, ds/dφ and d²s/dφ² of the output along the working direction (ε1 = 0)."""
+        """s, ds/dφ and d²s/dφ² of the output along the working direction (ε1 = 0)
+        (the kernel of `output`, without where the chain is solved)."""
         w = self.mech.drive.signed_omega
-        _, s, v, a = self.output(phi1_deg)
-        return s, v / w, a / (w * w)
+        P, V, A = self.chain.point_motion_only(phi1_deg, self.mech.study.output)
+        wd = np.conj(complex(*self.mech.study.working_direction))
+        return (P * wd).real, (V * wd).real / w, (A * wd).real / (w * w)
 
     def _extremes(self) -> tuple[float, float] | None:
+        with quiet():  # NaN is the kernels' data here (one context for every step)
+            return self._extremes_quietly()
+
+    def _extremes_quietly(self) -> tuple[float, float] | None:
         """Crank angles (deg) of the output's least and greatest position along
         the working direction: zeros of ds/dφ to machine precision (Newton with
         the exact d²s/dφ² of the acceleration plan, kept in a bracket where ds/dφ
@@ -515,8 +522,8 @@ class _Turn:
         a, b = a.astype(float).copy(), b.astype(float).copy()
         # the chord's zero: a grid step's worth of curvature from the root, so
         # Newton's quadratic steps reach machine precision in two or three
-        with np.errstate(divide="ignore", invalid="ignore"):
-            chord = a - fa * (b - a) / (fb - fa)
+        # (no warnings: `_extremes` runs quietly)
+        chord = a - fa * (b - a) / (fb - fa)
         phi = np.where(np.isfinite(chord) & (chord > a) & (chord < b), chord, 0.5 * (a + b))
         done = np.zeros(phi.shape, dtype=bool)
         s_at = np.zeros(phi.shape)
@@ -527,8 +534,7 @@ class _Turn:
             a = np.where(same, phi, a)
             fa = np.where(same, f, fa)
             b = np.where(same, b, phi)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                newton = phi - np.degrees(f / df)
+            newton = phi - np.degrees(f / df)
             # a Newton step onto an end of the bracket is still inside it: near
             # the root rounding puts it there, and bisection would crawl from afar
             inside = np.isfinite(newton) & (newton >= a) & (newton <= b)

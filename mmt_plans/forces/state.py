@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..model import FRAME, Mechanism, Prismatic, Stroke, frozen_array
+from ..model import FRAME, Mechanism, Prismatic, Stroke
 from ..structure import AssurGroup
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -24,8 +24,11 @@ def cross(a: complex, b: complex) -> float:
 
 
 def xy(z: complex) -> np.ndarray:
-    """A complex plane vector as a read-only [x, y] array."""
-    return frozen_array((z.real, z.imag))
+    """A complex plane vector as a read-only [x, y] array (`frozen_array`'s
+    float array: the parts of a complex number are floats already)."""
+    arr = np.array((z.real, z.imag))
+    arr.setflags(write=False)
+    return arr
 
 
 @dataclass(frozen=True)

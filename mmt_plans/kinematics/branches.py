@@ -39,6 +39,7 @@ import numpy as np
 from ..model import FRAME, Mechanism
 from ..structure import Structure
 from .chain import Chain
+from .dyads.base import Motion, plain_zero
 from .geometry import quiet
 
 GRID = 720
@@ -46,6 +47,10 @@ GRID = 720
 # at a toggle, not a failure to assemble
 TOLERANCE = 1e-11
 EDGE_DEG = 1e-10  # crank angles of the ends of an assembly range, to this
+
+# the search's crank angles (rad), the same for every mechanism (read-only)
+_GRID = np.linspace(0.0, 2 * np.pi, GRID, endpoint=False)
+_GRID.setflags(write=False)
 
 Rule = Literal["sketch", "as drawn", "branch order", "only one", "no branches"]
 Signs = tuple[int, ...]
@@ -152,10 +157,13 @@ class _Search:
         self.chain = chain
         self.solvers = chain.solvers
         self.names = [s.group.name for s in chain.solvers]
-        self.grid = np.linspace(0.0, 2 * np.pi, GRID, endpoint=False)
+        self.grid = _GRID
         mech = chain.mech
-        sizes = [float(np.hypot(*p)) for link in mech.links.values() for p in link.points.values()]
-        sizes += [float(np.hypot(*p)) for p in mech.frame.values()]
+        # the distance of every point from the origin, in one pass
+        points = [p for link in mech.links.values() for p in link.points.values()]
+        points += list(mech.frame.values())
+        xy = np.array(points, dtype=float).reshape(-1, 2)
+        sizes = np.hypot(xy[:, 0], xy[:, 1]).tolist()
         self.tol = TOLERANCE * max(sizes + [1e-3])
         # the links placed on the grid and the groups' margins there, by the
         # branches of the first groups: a trial of group k starts from the
@@ -232,7 +240,7 @@ class _Search:
             m = self.chain.place(phi, dict(zip(self.names, signs)), upto=k, margins=margins)
             with quiet():
                 margins.append(self.solvers[k].margin(m))
-        return [np.broadcast_to(np.asarray(g, dtype=float), phi.shape) for g in margins]
+        return [_spread_over(g, phi.shape) for g in margins]
 
     def _refined_minima(
         self, k: int, signs: Signs, grid_margin: np.ndarray
@@ -240,7 +248,10 @@ class _Search:
         """The angles (rad) and margins of group k's local minima between grid
         angles, found by golden-section search on each bracket [φ_i−1, φ_i+1]."""
         g = grid_margin
-        if not np.all(np.isfinite(g)) or float(np.ptp(g)) <= self.tol:
+        # finite everywhere (NaN and ±inf carry into the least or the greatest)
+        # and not flat
+        lowest, highest = float(g.min()), float(g.max())
+        if not (math.isfinite(lowest) and math.isfinite(highest)) or highest - lowest <= self.tol:
             return np.empty(0), np.empty(0)
         # the neighbours round the turn (np.roll's values, without its overhead)
         prev, nxt = np.concatenate((g[-1:], g[:-1])), np.concatenate((g[1:], g[:1]))
@@ -248,6 +259,10 @@ class _Search:
         # of its second difference there: only minima that could reach zero
         # are refined.
         dip = np.abs(prev - 2 * g + nxt)
+        if lowest > 2.0 * float(dip.max()) + self.tol:
+            # no grid angle is within twice its dip of zero (g >= lowest there):
+            # the test below would pick none
+            return np.empty(0), np.empty(0)
         idx = np.flatnonzero(
             (g <= prev) & (g <= nxt) & ((g < prev) | (g < nxt)) & (g <= 2.0 * dip + self.tol)
         )
@@ -271,7 +286,7 @@ class _Search:
 
     def group_turns(self, k: int, signs: Signs) -> bool:
         g = self.margins(self.grid, signs)[k]
-        if not np.all(g >= -self.tol):  # NaN fails as well
+        if not g.min() >= -self.tol:  # NaN fails as well (the least is NaN)
             return False
         _, m = self._refined_minima(k, signs, g)
         return bool(np.all(m >= -self.tol))
@@ -346,12 +361,19 @@ class _Search:
         self, phi: np.ndarray, signs: Signs, names: list[str], target: Mapping[str, np.ndarray]
     ) -> float:
         m = self._placed_at(phi, signs)
-        err = 0.0
+        # the points of each placed link at once (o + e·p, the same numbers as
+        # `Motion.at` point by point), then summed in the order of `names`
+        by_link: dict[int, list[complex]] = {}
         for p in names:
             lid, local = self.chain.locate[p]
-            if lid not in m:
-                continue
-            err += abs(complex(np.ravel(m[lid].at(local))[0]) - complex(*target[p])) ** 2
+            if lid in m:
+                by_link.setdefault(lid, []).append(local)
+        where = {lid: _points_at(m[lid], locals_) for lid, locals_ in by_link.items()}
+        err = 0.0
+        for p in names:
+            lid, _ = self.chain.locate[p]
+            if lid in m:
+                err += abs(where[lid].pop(0) - complex(*target[p])) ** 2
         return err
 
     def drawn_in_place(self) -> bool:
@@ -467,6 +489,25 @@ class _Search:
                     "change the lengths of the group's links",
                 )
         return "", "", ""
+
+
+def _points_at(mo: Motion, locals_: list[complex]) -> list[complex]:
+    """`Motion.at` of each local point, at the one angle of `mo`: o + e·p for
+    all of them in one product and one sum (o itself for a point at the origin)."""
+    at = mo.e * np.array(locals_, dtype=complex)
+    if not plain_zero(mo.o):
+        at = mo.o + at
+    values = np.ravel(at).tolist()
+    origin = complex(np.ravel(mo.o)[0])
+    return [origin if not p else v for p, v in zip(locals_, values)]
+
+
+def _spread_over(g, shape: tuple[int, ...]) -> np.ndarray:
+    """A margin as a float array over the angles: as it is when it already is
+    one (not written to), a number (a group fixed to the frame) spread out."""
+    if g.__class__ is np.ndarray and g.shape == shape and g.dtype == np.float64:
+        return g
+    return np.broadcast_to(np.asarray(g, dtype=float), shape)
 
 
 def build_chain(mech: Mechanism, structure: Structure | None = None) -> Chain:

@@ -671,6 +671,23 @@ class Chain:
         shape = phi1_deg.shape
         return ~bad, _over(mo.at(p), shape), _over(mo.vel_at(p), shape), _over(mo.acc_at(p), shape)
 
+    def point_motion_only(
+        self, phi1_deg: np.ndarray, name: str
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """`point_motion` without where the chain is solved: the position,
+        velocity and acceleration of one point (NaN where it is not solved),
+        by the same kernels, for a search that already knows its angles are
+        solved (the Newton steps of the extreme positions)."""
+        phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+        with quiet():
+            m = self.place_all(np.radians(phi1_deg), self.branches)
+            for solver in self.solvers:
+                solver.motion(m, SINGULAR_SIN)
+        lid, p = self.locate[name]
+        mo = m[lid]
+        shape = phi1_deg.shape
+        return _over(mo.at(p), shape), _over(mo.vel_at(p), shape), _over(mo.acc_at(p), shape)
+
     def point_position(self, phi1_deg: np.ndarray, name: str) -> np.ndarray:
         """The position of one point (complex) over the angles, from the
         groups' positions alone (no plans): the same numbers as
