@@ -247,12 +247,14 @@ def solve(
     # alone: searched once per handle (a Mechanism solved again reads them)
     turn = handle.kept("turn", lambda: _Turn(mech, chain, branches))
     positions = turn.positions()
-    sw = chain.sweep(np.array([p.phi1_deg for p in positions]))
+    phi0 = positions[0].phi1_deg
+    # the positions and the trajectories' angles, in one pass of the kernels
+    sw, dense = chain.sweeps(
+        np.array([p.phi1_deg for p in positions]), np.linspace(phi0, phi0 + 360.0, DENSE)
+    )
     plan_positions = turn.plan_positions(positions)
     fp = mech.study.force_position
     force_position = plan_positions[0] if fp is None else fp
-    phi0 = positions[0].phi1_deg
-    dense = chain.sweep(np.linspace(phi0, phi0 + 360.0, DENSE))
     mu_l = _mechanism_scale(mech, dense)
     diagrams, diagrams_problem, s_dense = None, None, None
     try:
@@ -302,7 +304,8 @@ def _mechanism_scale(mech: Mechanism, dense: Sweep) -> float:
     """Scale of the mechanism drawing: the standard value that draws the span
     of every point's trajectory (the dense sweep's, over one turn) in
     150–300 mm (μ_l = l_OA / OA, (2))."""
-    pts = np.concatenate([dense.position_of(n)[dense.ok] for n in mech.point_owners])
+    ok = dense.ok  # where the chain is solved (worked out once, not at every point)
+    pts = np.concatenate([dense.position_of(n)[ok] for n in mech.point_owners])
     span = max(np.ptp(pts.real), np.ptp(pts.imag), mech.crank_length)
     return scale_for(
         float(span), DrawnLength("mechanism", 150.0, 300.0, 220.0), LENGTH_MANTISSA_TEXT

@@ -38,8 +38,7 @@ import numpy as np
 
 from ..model import FRAME, Mechanism
 from ..structure import Structure
-from .chain import Chain
-from .dyads.base import Motion, plain_zero
+from .chain import Chain, motion_part
 from .geometry import quiet
 
 GRID = 720
@@ -174,6 +173,28 @@ class _Search:
         # the links placed at one crank angle (the sketch's, the drawing's), by
         # the angle and the branches of the first groups
         self._at_angle: dict[tuple[float, Signs], dict] = {}
+        # The sketch's and the drawing's crank angle ride along with the grid:
+        # every placing on the grid places the links there too (the kernels
+        # work angle by angle), and a trial of the choice reads them off it.
+        extra = [a for a in (self._sketch_angle(), self._drawing_angle()) if a is not None]
+        self._ext = np.concatenate((_GRID, extra)) if extra else _GRID
+        self._extra_at = {a: GRID + i for i, a in enumerate(extra)}
+
+    def _sketch_angle(self) -> float | None:
+        """The crank angle (rad) of the sketch (None without a sketch of the crank pin)."""
+        mech = self.chain.mech
+        if mech.crank_pin not in mech.sketch:
+            return None
+        A = complex(*mech.sketch[mech.crank_pin])
+        O = self.chain.O
+        return math.atan2((A - O).imag, (A - O).real)
+
+    def _drawing_angle(self) -> float:
+        """The crank angle (rad) at which the links' coordinates draw the crank."""
+        mech = self.chain.mech
+        crank = mech.links[mech.drive.link]
+        d = crank.points[mech.crank_pin] - crank.points[mech.crank_pivot]
+        return math.atan2(d[1], d[0])
 
     def _grid_placed(self, signs: Signs) -> tuple[dict, list]:
         """The links' motion after the first len(signs) groups are placed on
@@ -183,7 +204,7 @@ class _Search:
         if found is None:
             chain = self.chain
             if not signs:
-                m = {FRAME: chain.frame(), chain.mech.drive.link: chain.crank(self.grid)}
+                m = {FRAME: chain.frame(), chain.mech.drive.link: chain.crank(self._ext)}
                 found = (m, [])
             else:
                 before, margins = self._grid_placed(signs[:-1])
@@ -202,7 +223,10 @@ class _Search:
         if found is None:
             m, _ = self._grid_placed(before)
             with quiet():
-                found = self._grid_margins[before] = self.solvers[len(before)].margin(m)
+                found = self.solvers[len(before)].margin(m)
+            if found.__class__ is np.ndarray and found.ndim and self._ext is not _GRID:
+                found = found[:GRID]  # the grid's, without the angles riding along
+            self._grid_margins[before] = found
         return found
 
     def _placed_at(self, phi: np.ndarray, signs: Signs) -> dict:
@@ -213,7 +237,12 @@ class _Search:
         key = (float(phi[0]), signs)
         found = self._at_angle.get(key)
         if found is None:
-            if not signs:
+            at = self._extra_at.get(key[0])
+            if at is not None and signs in self._on_grid:
+                # placed on the grid already, this angle with it
+                part = slice(at, at + 1)
+                found = {lid: motion_part(mo, part) for lid, mo in self._on_grid[signs][0].items()}
+            elif not signs:
                 chain = self.chain
                 found = {FRAME: chain.frame(), chain.mech.drive.link: chain.crank(phi)}
             else:
@@ -333,11 +362,10 @@ class _Search:
         """Group by group, the branch nearest to the sketch at its crank angle
         (None without a sketch of the crank pin)."""
         mech = self.chain.mech
-        if mech.crank_pin not in mech.sketch:
+        angle = self._sketch_angle()
+        if angle is None:
             return None
-        A = complex(*mech.sketch[mech.crank_pin])
-        O = self.chain.O
-        phi = np.array([math.atan2((A - O).imag, (A - O).real)])
+        phi = np.array([angle])
         signs: Signs = ()
         for solver in self.solvers:
             names = [
@@ -361,19 +389,14 @@ class _Search:
         self, phi: np.ndarray, signs: Signs, names: list[str], target: Mapping[str, np.ndarray]
     ) -> float:
         m = self._placed_at(phi, signs)
-        # the points of each placed link at once (o + e·p, the same numbers as
-        # `Motion.at` point by point), then summed in the order of `names`
-        by_link: dict[int, list[complex]] = {}
-        for p in names:
-            lid, local = self.chain.locate[p]
-            if lid in m:
-                by_link.setdefault(lid, []).append(local)
-        where = {lid: _points_at(m[lid], locals_) for lid, locals_ in by_link.items()}
         err = 0.0
         for p in names:
-            lid, _ = self.chain.locate[p]
-            if lid in m:
-                err += abs(where[lid].pop(0) - complex(*target[p])) ** 2
+            lid, local = self.chain.locate[p]
+            if lid not in m:
+                continue
+            at = m[lid].at(local)
+            at = at[0] if at.__class__ is np.ndarray and at.shape == (1,) else np.ravel(at)[0]
+            err += abs(complex(at) - complex(*target[p])) ** 2
         return err
 
     def drawn_in_place(self) -> bool:
@@ -397,9 +420,7 @@ class _Search:
         """The combination whose points, at the crank angle of the drawing, lie
         nearest (least squares) to the links' own coordinates."""
         mech = self.chain.mech
-        crank = mech.links[mech.drive.link]
-        d = crank.points[mech.crank_pin] - crank.points[mech.crank_pivot]
-        phi = np.array([math.atan2(d[1], d[0])])
+        phi = np.array([self._drawing_angle()])
         drawn = {
             p: xy
             for link in mech.links.values()
@@ -489,17 +510,6 @@ class _Search:
                     "change the lengths of the group's links",
                 )
         return "", "", ""
-
-
-def _points_at(mo: Motion, locals_: list[complex]) -> list[complex]:
-    """`Motion.at` of each local point, at the one angle of `mo`: o + e·p for
-    all of them in one product and one sum (o itself for a point at the origin)."""
-    at = mo.e * np.array(locals_, dtype=complex)
-    if not plain_zero(mo.o):
-        at = mo.o + at
-    values = np.ravel(at).tolist()
-    origin = complex(np.ravel(mo.o)[0])
-    return [origin if not p else v for p, v in zip(locals_, values)]
 
 
 def _spread_over(g, shape: tuple[int, ...]) -> np.ndarray:

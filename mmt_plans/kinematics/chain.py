@@ -143,6 +143,16 @@ def _state(mo: Motion, n: int) -> LinkState:
     )
 
 
+def motion_part(mo: Motion, part: slice) -> Motion:
+    """The motion of a link at the angles `part` of a pass: its arrays cut
+    (views), its plain numbers (the frame's, a constant ω) as they are."""
+    out = Motion.__new__(Motion)
+    for name in Motion.__slots__:
+        x = getattr(mo, name)
+        setattr(out, name, x[part] if isinstance(x, np.ndarray) and x.ndim else x)
+    return out
+
+
 @lru_cache(maxsize=64)
 def _frame_state(n: int) -> LinkState:
     """The frame's state over n angles: plain numbers spread out, the same for
@@ -652,6 +662,37 @@ class Chain:
             del m, failed, singular
         assert arena is not None
         return arena.sweep(phi1_deg)
+
+    def sweeps(self, *phi1_deg: np.ndarray) -> tuple[Sweep, ...]:
+        """`sweep` at each of several sets of crank angles (deg, 1-d arrays),
+        solved in one pass over all of them (the kernels work angle by angle,
+        so each sweep holds the numbers its own `sweep` would) and handed out
+        as a Sweep each: one pass's fixed cost instead of one for every set."""
+        parts = [np.asarray(p, dtype=np.float64) for p in phi1_deg]
+        sizes = [p.size for p in parts]
+        total = sum(sizes)
+        if total > CHUNK or any(p.ndim != 1 for p in parts):
+            return tuple(self.sweep(p) for p in parts)
+        m, failed, singular = self._solve(np.radians(np.concatenate(parts)))
+        out = []
+        start = 0
+        for phi, n in zip(parts, sizes):
+            part = slice(start, start + n)
+            start += n
+            states = {
+                lid: _state(motion_part(mo, part), n) if lid != FRAME else _frame_state(n)
+                for lid, mo in m.items()
+            }
+            out.append(
+                Sweep(
+                    self,
+                    _ro(phi.copy()),
+                    states,
+                    {g: _ro(x[part]) for g, x in failed.items()},
+                    {g: _ro(x[part]) for g, x in singular.items()},
+                )
+            )
+        return tuple(out)
 
     def point_motion(
         self, phi1_deg: np.ndarray, name: str
