@@ -182,26 +182,31 @@ def diagram_scales(
     h_s, h_v, h_a = ref.heights_mm
     mu_t = ref.mu_t
     textbook = (POLE_DISTANCE_RANGE_MM[0], POLE_DISTANCE_RANGE_MM[1])
+    # each pole with whether it lies in 30 … 50 mm; the height allowed; the
+    # reference scales read once
+    poles = [(H, int(textbook[0] <= H <= textbook[1])) for H in ROUND_POLE_DISTANCES_MM]
+    tallest = max_height * (1 + 1e-9)
+    ref_mu_V, ref_mu_a = ref.mu_V, ref.mu_a
     relaxed: DiagramScales | None = None
     for steps, mu_S in enumerate(series(mu_l * (1 - 1e-9), mu_l * 1e4, LENGTH_MANTISSA_TEXT)):
         if h_s * mu_l / mu_S > max_height * (1 + 1e-9):
             continue
         # every pair of poles that draws both diagrams within the height, with
         # its key after `standard`: both poles in 30 … 50 mm, then the tallest
+        # (derived_scale written out: μ/(μ_t·OH), the same operations)
         pairs: list[tuple[tuple[int, float, float], float, float, float, float]] = []
-        for H1 in ROUND_POLE_DISTANCES_MM:
-            mu_V = derived_scale(mu_S, mu_t, H1)
-            tall_v = h_v * ref.mu_V / mu_V
-            if tall_v > max_height * (1 + 1e-9):
+        for H1, in_1 in poles:
+            mu_V = mu_S / (mu_t * H1)
+            tall_v = h_v * ref_mu_V / mu_V
+            if tall_v > tallest:
                 continue
-            inside_1 = textbook[0] <= H1 <= textbook[1]
-            for H2 in ROUND_POLE_DISTANCES_MM:
-                mu_a = derived_scale(mu_V, mu_t, H2)
-                tall_a = h_a * ref.mu_a / mu_a
-                if tall_a > max_height * (1 + 1e-9):
+            for H2, in_2 in poles:
+                mu_a = mu_V / (mu_t * H2)
+                tall_a = h_a * ref_mu_a / mu_a
+                if tall_a > tallest:
                     continue
-                inside = inside_1 + (textbook[0] <= H2 <= textbook[1])
-                pairs.append(((inside, min(tall_v, tall_a), tall_v + tall_a), H1, H2, mu_V, mu_a))
+                low = tall_a if tall_a < tall_v else tall_v  # min(tall_v, tall_a)
+                pairs.append(((in_1 + in_2, low, tall_v + tall_a), H1, H2, mu_V, mu_a))
         # the first pair of the highest key (standard first): the pairs from
         # the highest key after `standard` down (a stable sort keeps the first
         # of equal keys first), the first standard one, else the first of all

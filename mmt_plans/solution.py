@@ -17,6 +17,7 @@ assemble, diagrams of a partial turn) is kept as its problem, never as NaN.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Literal, cast
@@ -399,6 +400,11 @@ def _diagrams(
     return Diagrams(construction, check, v, a, sheet_check, refinement, scales)
 
 
+def _sign(x: float) -> float:
+    """np.sign of a float: -1, 0 or 1, NaN for NaN."""
+    return float((x > 0) - (x < 0)) if x == x else math.nan
+
+
 def _stroke_of(
     mech: Mechanism, chain: Chain, limits, extremes, working_span_deg, phi1_deg: float
 ) -> Stroke:
@@ -528,28 +534,40 @@ class _Turn:
         # (no warnings: `_extremes` runs quietly)
         chord = a - fa * (b - a) / (fb - fa)
         phi = np.where(np.isfinite(chord) & (chord > a) & (chord < b), chord, 0.5 * (a + b))
-        done = np.zeros(phi.shape, dtype=bool)
-        s_at = np.zeros(phi.shape)
+        # The brackets' bookkeeping is a few numbers each (one or two
+        # brackets): plain floats, by the same IEEE operations the arrays
+        # would do (math.degrees multiplies by numpy's 180/π); each step's
+        # kernel is one pass over every bracket.
+        A, B, FA = a.tolist(), b.tolist(), fa.tolist()
+        PHI = phi.tolist()
+        DONE = [False] * len(PHI)
+        S_AT = [0.0] * len(PHI)
+        eps4 = float(4 * np.finfo(float).eps)
         for _ in range(200):
-            s, f, df = self.along(phi)
-            s_at = np.where(done, s_at, s)
-            same = np.sign(f) == np.sign(fa)  # keep the sign-change bracket
-            a = np.where(same, phi, a)
-            fa = np.where(same, f, fa)
-            b = np.where(same, b, phi)
-            newton = phi - np.degrees(f / df)
-            # a Newton step onto an end of the bracket is still inside it: near
-            # the root rounding puts it there, and bisection would crawl from afar
-            inside = np.isfinite(newton) & (newton >= a) & (newton <= b)
-            new = np.where(inside, newton, 0.5 * (a + b))
-            tol = 4 * np.finfo(float).eps * np.maximum(1.0, np.abs(phi))
-            converged = (f == 0) | (np.abs(new - phi) <= tol) | (b - a <= tol)
-            # a bracket once converged stays where it converged
-            phi = np.where(done | (f == 0), phi, new)
-            done |= converged
-            if done.all():
+            s_, f_, df_ = self.along(np.array(PHI))
+            S, F, DF = s_.tolist(), f_.tolist(), df_.tolist()
+            for j, (s, f, df) in enumerate(zip(S, F, DF)):
+                if not DONE[j]:
+                    S_AT[j] = s
+                x = PHI[j]
+                if _sign(f) == _sign(FA[j]):  # keep the sign-change bracket
+                    A[j], FA[j] = x, f
+                else:
+                    B[j] = x
+                # a Newton step onto an end of the bracket is still inside it: near
+                # the root rounding puts it there, and bisection would crawl from afar
+                newton = x - math.degrees(f / df) if df != 0 else math.nan
+                inside = math.isfinite(newton) and A[j] <= newton <= B[j]
+                new = newton if inside else 0.5 * (A[j] + B[j])
+                tol = eps4 * max(1.0, abs(x))
+                converged = f == 0 or abs(new - x) <= tol or B[j] - A[j] <= tol
+                # a bracket once converged stays where it converged
+                if not (DONE[j] or f == 0):
+                    PHI[j] = new
+                DONE[j] = DONE[j] or converged
+            if all(DONE):
                 break
-        return phi, s_at
+        return np.array(PHI), np.array(S_AT)
 
     def _phi0(self) -> float:
         if self.limits is not None:  # half a step in from the first limit of assembly
