@@ -485,8 +485,11 @@ class _Turn:
             raise self.chain.sweep(grid[:1]).problem(0) or StructureError(
                 "the mechanism assembles at no crank angle"
             )
-        self.largest = (float(np.max(np.abs(v[ok]))), float(np.max(np.abs(a[ok]))))
-        if np.ptp(s[ok]) < 1e-12 * max(1.0, float(np.max(np.abs(s[ok])))):
+        everywhere = bool(ok.all())
+        # (indexing by `ok` where it holds everywhere would copy the same values)
+        v_ok, a_ok, s_ok = (v, a, s) if everywhere else (v[ok], a[ok], s[ok])
+        self.largest = (float(np.max(np.abs(v_ok))), float(np.max(np.abs(a_ok))))
+        if np.ptp(s_ok) < 1e-12 * max(1.0, float(np.max(np.abs(s_ok)))):
             raise StructureError(
                 f"{shown(self.mech.path)}: output {self.mech.study.output} does not move along the "
                 "working direction: set study.working_direction or study.zero"
@@ -495,7 +498,15 @@ class _Turn:
         nxt = np.concatenate((np.arange(1, grid.size), [0]))  # np.roll(arange, -1)
         if self.limits is not None:
             nxt[-1] = grid.size - 1
-        change = ok & ok[nxt] & (np.sign(ds) != np.sign(ds[nxt])) & (nxt != np.arange(grid.size))
+            change = (
+                ok & ok[nxt] & (np.sign(ds) != np.sign(ds[nxt])) & (nxt != np.arange(grid.size))
+            )
+        else:
+            # the whole turn: the next of the last is the first (never itself)
+            sign = np.sign(ds)
+            change = sign != np.concatenate((sign[1:], sign[:1]))
+            if not everywhere:
+                change &= ok & np.concatenate((ok[1:], ok[:1]))
         idx = np.flatnonzero(change)
         if not idx.size:
             return None

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .loads import Loads
-from .state import PositionState, cross, xy
+from .state import PositionState, cross, xy, xy_rows
 
 
 @dataclass(frozen=True)
@@ -156,7 +156,7 @@ def zhukovsky_lever(loads: Loads, *, turn_deg: float | None = None) -> Zhukovsky
     bal = b.force("F_bal", d, mech.crank_pin, A, F_bal * t)
     return ZhukovskyLever(
         -90.0 * b.s if turn_deg is None else turn_deg,
-        {k: xy(v) for k, v in b.images.items()},
+        dict(zip(b.images, xy_rows(list(b.images.values())))),
         tuple(shifted),
         bal,
         F_bal,

@@ -31,6 +31,14 @@ def xy(z: complex) -> np.ndarray:
     return arr
 
 
+def xy_rows(zs: list[complex]) -> list[np.ndarray]:
+    """`xy` of each of several vectors: the rows of one read-only array (made
+    at once, the same numbers)."""
+    arr = np.array([(z.real, z.imag) for z in zs], dtype=float).reshape(-1, 2)
+    arr.setflags(write=False)
+    return list(arr)
+
+
 @dataclass(frozen=True)
 class LinkPose:
     """Pose and motion of one link at one position: e^{iθ}, origin o, ω, V_o, ε, a_o."""

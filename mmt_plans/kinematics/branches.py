@@ -113,6 +113,13 @@ class Branches:
 
 def choose(chain: Chain) -> Branches:
     """Search the combinations of branches and choose one (module docstring)."""
+    # NaN is the search's data (a group that fails): one quiet context for
+    # all of it (its kernels' own are then a counter, not numpy's machinery)
+    with quiet():
+        return _choose(chain)
+
+
+def _choose(chain: Chain) -> Branches:
     search = _Search(chain)
     names = [s.group.name for s in chain.solvers]
     branchy = [s.group.name for s in chain.solvers if s.has_branches]
