@@ -20,6 +20,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Literal, cast
 
 import numpy as np
@@ -313,6 +314,13 @@ def _mechanism_scale(mech: Mechanism, dense: Sweep) -> float:
     )
 
 
+@lru_cache(maxsize=64)
+def _time_axis(T: float) -> float:
+    """L, mm: one turn of T s drawn at the standard μ_t that makes it 150 … 240
+    mm (the same for every mechanism at that speed)."""
+    return T / scale_for(T, TIME_AXIS)
+
+
 def _diagrams(
     mech: Mechanism,
     turn: _Turn,
@@ -332,15 +340,17 @@ def _diagrams(
             "(partial_turn), and the diagrams of 1.7 cover one turn"
         )
     n = mech.study.positions
-    k = [next(j for j, p in enumerate(positions) if p.index == i) for i in range(n)]
-    if not sw.ok[k].all():
-        bad = next(i for i in range(n) if not sw.ok[k[i]])
+    entry = {p.index: j for j, p in reversed(list(enumerate(positions)))}  # the first of each
+    k = [entry[i] for i in range(n)]
+    ok = sw.ok
+    if not ok[k].all():
+        bad = next(i for i in range(n) if not ok[k[i]])
         raise sw.problem(k[bad]) or MmtError("diagrams need every position")
     _, v, a = (x[k] for x in output_along(mech, sw))
     n1 = mech.drive.n1_rpm
     # the time axis: the standard μ_t that draws one turn in 150 … 240 mm
     T = 60.0 / n1
-    L = T / scale_for(T, TIME_AXIS)
+    L = _time_axis(T)
     # the largest magnitudes over the turn: the fine grid of the extreme search
     # and the positions themselves
     largest = (
