@@ -601,15 +601,20 @@ def central_difference_derivatives(
         raise ValueError(f"order {order} needs at least {2 * m + 1} positions, got {s_arr.size}")
     _omega(n1)
     dt = 60.0 / (n1 * s_arr.size)
-    v = np.zeros_like(s_arr)
-    a = np.zeros_like(s_arr)
     n = s_arr.size
     wrapped = np.concatenate((s_arr[n - m :], s_arr, s_arr[:m]))  # m either side, over the turn
-    for offset, c1, c2 in zip(range(-m, m + 1), _central_weights(1, m), _central_weights(2, m)):
-        shifted = wrapped[m + offset : m + offset + n]  # s_{i+offset}
-        v += c1 * shifted
-        a += c2 * shifted
+    # row j: s_{i+j-m} for every i; the weighted rows summed down the rows in
+    # order (a reduction along the first axis adds row after row, as a loop would)
+    shifted = wrapped[_window(n, m)]
+    v = np.add.reduce(_central_weights(1, m)[:, None] * shifted, axis=0)
+    a = np.add.reduce(_central_weights(2, m)[:, None] * shifted, axis=0)
     return _frozen(v / dt), _frozen(a / dt**2)
+
+
+@lru_cache(maxsize=32)
+def _window(n: int, half_width: int) -> Array:
+    """Indices of `wrapped` (half_width either side): row j holds i + j for i = 0 … n−1."""
+    return np.arange(n)[None, :] + np.arange(2 * half_width + 1)[:, None]
 
 
 def textbook_derivatives(s: ArrayLike, *, n1: float) -> tuple[Array, Array]:
@@ -805,9 +810,8 @@ def compare_with_plans(
     for name, arr in (("a_diagram", ad), ("v_plan", vp), ("a_plan", ap)):
         if arr.shape != (n,):
             raise ValueError(f"{name} has shape {arr.shape}, v_diagram {vd.shape}")
-    for arr in (vd, ad, vp, ap):
-        if not np.all(np.isfinite(arr)):
-            raise ValueError("diagram and plan values must be finite")
+    if not np.isfinite(np.concatenate((vd, ad, vp, ap))).all():
+        raise ValueError("diagram and plan values must be finite")
     s_arr = None if s is None else _check_samples(s)
 
     ev, ea = _relative_error(vp, vd), _relative_error(ap, ad)

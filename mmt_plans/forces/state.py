@@ -103,14 +103,15 @@ def from_sweep(
     problem = sweep.problem(k)
     if problem is not None:
         raise problem
+    # .item(k): entry k as a Python number (the same value, without a numpy scalar)
     links = {
         lid: LinkPose(
-            complex(s.e[k]),
-            complex(s.o[k]),
-            float(s.omega[k]),
-            complex(s.v[k]),
-            float(s.eps[k]),
-            complex(s.a[k]),
+            complex(s.e.item(k)),
+            complex(s.o.item(k)),
+            float(s.omega.item(k)),
+            complex(s.v.item(k)),
+            float(s.eps.item(k)),
+            complex(s.a.item(k)),
         )
         for lid, s in sweep.links.items()
     }

@@ -321,11 +321,12 @@ class _Search:
         return best, self.margins(best, signs)[k]
 
     def group_turns(self, k: int, signs: Signs) -> bool:
-        g = self.margins(self.grid, signs)[k]
+        # margins(self.grid, signs)[k], read straight from the grid's
+        g = _spread_over(self._grid_margin(tuple(signs[:k])), self.grid.shape)
         if not g.min() >= -self.tol:  # NaN fails as well (the least is NaN)
             return False
         _, m = self._refined_minima(k, signs, g)
-        return bool(np.all(m >= -self.tol))
+        return not m.size or bool(np.all(m >= -self.tol))
 
     # --- the search ----------------------------------------------------------------
     def full_turn(self) -> list[Signs]:
