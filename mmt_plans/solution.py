@@ -240,20 +240,23 @@ def solve(
     `partial_turn=True` opts in. `forces=False` leaves out the force analysis
     (sheet 1 alone)."""
     mech = mechanism if not partial_turn else mechanism.with_partial_turn()
-    handle = kinematics(mech)
-    structure, chain, branches = handle.structure, handle.chain, handle.branches
-    if not branches.whole_turn and (not mech.study.partial_turn or not branches.ranges):
-        # refused; also when opted in, if it assembles at no crank angle at all
-        raise partial_turn_error(mech, branches)
-    # the extreme positions and the displacements follow from the kinematics
-    # alone: searched once per handle (a Mechanism solved again reads them)
-    turn = handle.kept("turn", lambda: _Turn(mech, chain, branches))
-    positions = turn.positions()
-    phi0 = positions[0].phi1_deg
-    # the positions and the trajectories' angles, in one pass of the kernels
-    sw, dense = chain.sweeps(
-        np.array([p.phi1_deg for p in positions]), np.linspace(phi0, phi0 + 360.0, DENSE)
-    )
+    # the kinematics in one quiet context (NaN is the kernels' data; each
+    # kernel's own context is then a counter, not numpy's machinery)
+    with quiet():
+        handle = kinematics(mech)
+        structure, chain, branches = handle.structure, handle.chain, handle.branches
+        if not branches.whole_turn and (not mech.study.partial_turn or not branches.ranges):
+            # refused; also when opted in, if it assembles at no crank angle at all
+            raise partial_turn_error(mech, branches)
+        # the extreme positions and the displacements follow from the kinematics
+        # alone: searched once per handle (a Mechanism solved again reads them)
+        turn = handle.kept("turn", lambda: _Turn(mech, chain, branches))
+        positions = turn.positions()
+        phi0 = positions[0].phi1_deg
+        # the positions and the trajectories' angles, in one pass of the kernels
+        sw, dense = chain.sweeps(
+            np.array([p.phi1_deg for p in positions]), np.linspace(phi0, phi0 + 360.0, DENSE)
+        )
     plan_positions = turn.plan_positions(positions)
     fp = mech.study.force_position
     force_position = plan_positions[0] if fp is None else fp

@@ -54,6 +54,11 @@ class ZhukovskyLever:
         return f"Sum M_p = {terms} + F_bal * pa = 0"
 
 
+def _complex(v: np.ndarray) -> complex:
+    """An [x, y] array as a complex number (through Python floats: no numpy scalars)."""
+    return complex(*v.tolist())
+
+
 @dataclass(frozen=True)
 class _Pending:
     """A force on the lever before its vectors are made arrays (`_Builder.made`)."""
@@ -136,24 +141,24 @@ def zhukovsky_lever(loads: Loads, *, turn_deg: float | None = None) -> Zhukovsky
     shifted: list[_Pending] = []
     couples: list[_Pending] = []
     for lid, ll in loads.links.items():
-        S = complex(*ll.centre_of_mass)
+        S = _complex(ll.centre_of_mass)
         sname = ll.cm_name
         b.image(lid, sname, S)
-        G = complex(*ll.weight)
-        F_in = complex(*ll.inertia_force)
+        G = _complex(ll.weight)
+        F_in = _complex(ll.inertia_force)
         if G:
             if ll.weight_point is None:
                 g = b.force(f"G{lid}", lid, sname, S, G)
             else:  # a mistake recomputed: G at another point of the link
                 assert ll.weight_at is not None
-                g = b.force(f"G{lid}", lid, ll.weight_at, complex(*ll.weight_point), G)
+                g = b.force(f"G{lid}", lid, ll.weight_at, _complex(ll.weight_point), G)
             shifted.append(g)
             couples.append(g)
         if F_in:
             couples.append(b.force(f"F_in{lid}", lid, sname, S, F_in))
         sh = ll.shifted_inertia_force
         if sh is not None:
-            shifted.append(b.force(f"F_in{lid}", lid, f"K{lid}", complex(*sh.point), F_in))
+            shifted.append(b.force(f"F_in{lid}", lid, f"K{lid}", _complex(sh.point), F_in))
         else:  # nothing to shift: F_IN (if any) at S and the couple
             if F_in:
                 shifted.append(couples[-1])
@@ -163,7 +168,7 @@ def zhukovsky_lever(loads: Loads, *, turn_deg: float | None = None) -> Zhukovsky
             couples += b.couple(lid, ll.inertia_moment)
     for f in loads.production_resistance:
         if f.acting:
-            lf = b.force(f.name, f.link, f.at, complex(*f.point), complex(*f.force))
+            lf = b.force(f.name, f.link, f.at, _complex(f.point), _complex(f.force))
             shifted.append(lf)
             couples.append(lf)
     d = mech.drive.link

@@ -41,7 +41,7 @@ class ReactionComponent:
 
     @property
     def vector(self) -> np.ndarray:
-        return xy(complex(*self.direction) * self.value)
+        return xy(_c(self.direction) * self.value)
 
 
 @dataclass(frozen=True)
@@ -316,7 +316,7 @@ def head_to_tail(sides: list[tuple[str, complex, bool]]) -> tuple[PolygonVector,
 
 
 def _c(v: np.ndarray) -> complex:
-    return complex(v[0], v[1])
+    return complex(*v.tolist())  # through Python floats (no numpy scalars): the same values
 
 
 def _swap_label(label: str, by: int, on: int) -> str:
