@@ -143,6 +143,25 @@ def _state(mo: Motion, n: int) -> LinkState:
     )
 
 
+def _state_part(mo: Motion, part: slice, n: int) -> LinkState:
+    """`_state` of the link's motion at the angles `part` of a pass (its arrays
+    cut, its plain numbers spread out), without a Motion in between."""
+
+    def cut(x):
+        return x[part] if x.__class__ is np.ndarray and x.ndim else x
+
+    return LinkState(
+        _full(cut(mo.e), n, _C),
+        _full(cut(mo.o), n, _C),
+        _full(cut(mo.w), n, _F),
+        _full(cut(mo.v), n, _C),
+        _full(cut(mo.eps), n, _F),
+        _full(cut(mo.a), n, _C),
+        _full(cut(mo.spin), n, _C),
+        _full(cut(mo.spin_acc), n, _C),
+    )
+
+
 def motion_part(mo: Motion, part: slice) -> Motion:
     """The motion of a link at the angles `part` of a pass: its arrays cut
     (views), its plain numbers (the frame's, a constant ω) as they are."""
@@ -512,10 +531,15 @@ class Sweep:
 
     @property
     def ok(self) -> np.ndarray:
-        bad = np.zeros(len(self.phi1_deg), dtype=bool)
-        for mask in list(self.failed.values()) + list(self.singular.values()):
-            bad |= mask
-        return ~bad
+        """Where every group assembles and its plan is regular (read-only; worked
+        out once and kept in the instance's dictionary, as `_fields`)."""
+        found = self.__dict__.get("_ok")
+        if found is None:
+            bad = np.zeros(len(self.phi1_deg), dtype=bool)
+            for mask in list(self.failed.values()) + list(self.singular.values()):
+                bad |= mask
+            found = self.__dict__["_ok"] = _ro(~bad)
+        return found  # type: ignore[no-any-return]
 
     def problem(self, i: int) -> AssemblyError | SingularPlanError | None:
         """What went wrong at angle i, as the error a user reads (or None)."""
@@ -680,7 +704,7 @@ class Chain:
             part = slice(start, start + n)
             start += n
             states = {
-                lid: _state(motion_part(mo, part), n) if lid != FRAME else _frame_state(n)
+                lid: _state_part(mo, part, n) if lid != FRAME else _frame_state(n)
                 for lid, mo in m.items()
             }
             out.append(
