@@ -309,8 +309,11 @@ def _mechanism_scale(mech: Mechanism, dense: Sweep) -> float:
     """Scale of the mechanism drawing: the standard value that draws the span
     of every point's trajectory (the dense sweep's, over one turn) in
     150–300 mm (μ_l = l_OA / OA, (2))."""
-    ok = dense.ok  # where the chain is solved (worked out once, not at every point)
-    pts = np.concatenate([dense.position_of(n)[ok] for n in mech.point_owners])
+    ok = dense.ok  # where the chain is solved
+    if ok.all():  # everywhere: every position as it is (no copy through the mask)
+        pts = np.concatenate([dense.position_of(n) for n in mech.point_owners])
+    else:
+        pts = np.concatenate([dense.position_of(n)[ok] for n in mech.point_owners])
     span = max(np.ptp(pts.real), np.ptp(pts.imag), mech.crank_length)
     return scale_for(
         float(span), DrawnLength("mechanism", 150.0, 300.0, 220.0), LENGTH_MANTISSA_TEXT
