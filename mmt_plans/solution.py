@@ -62,6 +62,9 @@ GRID = 1440
 # so that every grid n·k of the 5 % check's series (k = 1 … 12) is among them
 BASE_STEPS = 24
 DENSE = 181  # crank angles of the trajectories drawn on sheet 1 (position 0 twice)
+# the extreme search's grid over a whole turn (deg), the same for every mechanism
+_WHOLE_TURN = np.linspace(0.0, 360.0, GRID, endpoint=False)
+_WHOLE_TURN.setflags(write=False)
 
 
 @dataclass(frozen=True)
@@ -490,7 +493,7 @@ class _Turn:
         changes sign). In a partial turn only zeros inside the range count (the
         limits of assembly are not extreme positions); None when there are none."""
         if self.limits is None:
-            grid = np.linspace(0.0, 360.0, GRID, endpoint=False)
+            grid = _WHOLE_TURN
         else:
             grid = self.limits[0] + self.sense * self.span_deg * (np.arange(1, GRID) / GRID)
         solved, s, v, a = self.output(grid)
