@@ -182,32 +182,49 @@ def diagram_scales(
     h_s, h_v, h_a = ref.heights_mm
     mu_t = ref.mu_t
     textbook = (POLE_DISTANCE_RANGE_MM[0], POLE_DISTANCE_RANGE_MM[1])
+    # each pole with whether it lies in 30 … 50 mm; the height allowed; the
+    # reference scales read once
+    poles = [(H, int(textbook[0] <= H <= textbook[1])) for H in ROUND_POLE_DISTANCES_MM]
+    tallest = max_height * (1 + 1e-9)
+    ref_mu_V, ref_mu_a = ref.mu_V, ref.mu_a
     relaxed: DiagramScales | None = None
     for steps, mu_S in enumerate(series(mu_l * (1 - 1e-9), mu_l * 1e4, LENGTH_MANTISSA_TEXT)):
         if h_s * mu_l / mu_S > max_height * (1 + 1e-9):
             continue
-        best: tuple[tuple[float, ...], DiagramScales] | None = None
-        for H1 in ROUND_POLE_DISTANCES_MM:
-            mu_V = derived_scale(mu_S, mu_t, H1)
-            tall_v = h_v * ref.mu_V / mu_V
-            if tall_v > max_height * (1 + 1e-9):
+        # every pair of poles that draws both diagrams within the height, with
+        # its key after `standard`: both poles in 30 … 50 mm, then the tallest
+        # (derived_scale written out: μ/(μ_t·OH), the same operations)
+        pairs: list[tuple[tuple[int, float, float], float, float, float, float]] = []
+        for H1, in_1 in poles:
+            mu_V = mu_S / (mu_t * H1)
+            tall_v = h_v * ref_mu_V / mu_V
+            if tall_v > tallest:
                 continue
-            standard_v = is_standard(mu_V)
-            for H2 in ROUND_POLE_DISTANCES_MM:
-                mu_a = derived_scale(mu_V, mu_t, H2)
-                tall_a = h_a * ref.mu_a / mu_a
-                if tall_a > max_height * (1 + 1e-9):
+            for H2, in_2 in poles:
+                mu_a = mu_V / (mu_t * H2)
+                tall_a = h_a * ref_mu_a / mu_a
+                if tall_a > tallest:
                     continue
-                standard = standard_v and is_standard(mu_a)
-                inside = sum(textbook[0] <= H <= textbook[1] for H in (H1, H2))
-                key = (float(standard), float(inside), min(tall_v, tall_a), tall_v + tall_a)
-                found = DiagramScales(mu_S, H1, H2, steps, standard)
-                if best is None or key > best[0]:
-                    best = (key, found)
-        if best is not None and best[1].standard:
-            return best[1]
+                low = tall_a if tall_a < tall_v else tall_v  # min(tall_v, tall_a)
+                pairs.append(((in_1 + in_2, low, tall_v + tall_a), H1, H2, mu_V, mu_a))
+        # the first pair of the highest key (standard first): the pairs from
+        # the highest key after `standard` down (a stable sort keeps the first
+        # of equal keys first), the first standard one, else the first of all
+        best: DiagramScales | None = None
+        standard_v: dict[float, bool] = {}  # by H1
+        for _, H1, H2, mu_V, mu_a in sorted(pairs, key=lambda pair: pair[0], reverse=True):
+            if H1 not in standard_v:
+                standard_v[H1] = is_standard(mu_V)
+            if standard_v[H1] and is_standard(mu_a):
+                best = DiagramScales(mu_S, H1, H2, steps, True)
+                break
+        if best is None and pairs:
+            _, H1, H2, _, _ = max(pairs, key=lambda pair: pair[0])
+            best = DiagramScales(mu_S, H1, H2, steps, False)
+        if best is not None and best.standard:
+            return best
         if best is not None and relaxed is None:
-            relaxed = best[1]
+            relaxed = best
         if steps >= 6 and relaxed is not None:
             return relaxed
     if relaxed is not None:
@@ -410,31 +427,51 @@ def _differentiate(
     x, y = points[:, 0], points[:, 1]
     n = x.size - 1
     slope = np.diff(y) / np.diff(x)
-    k = np.column_stack([np.zeros(n), H * slope])
-    x_mid = 0.5 * (x[:-1] + x[1:])
-    mid = np.column_stack([x_mid, k[:, 1]])
+    # the records filled in place (each array made here once, then frozen)
+    k = np.zeros((n, 2))
+    k[:, 1] = H * slope
+    mid = np.empty((n, 2))
+    mid[:, 0] = 0.5 * (x[:-1] + x[1:])
+    mid[:, 1] = k[:, 1]
     pole = np.array([-H, 0.0])
+    chords = np.empty((n, 2, 2))
+    chords[:, 0], chords[:, 1] = points[:-1], points[1:]
+    rays = np.empty((n, 2, 2))
+    rays[:, 0], rays[:, 1] = pole, k
 
     h = float(x[1] - x[0])
     M = _periodic_spline_moments(mid[:, 1], h)
     L = float(x[-1])
-    xs = np.linspace(0.0, L, n * samples_per_interval + 1)
-    curve = np.column_stack([xs, _spline_on_grid(mid[:, 1], M, h, samples_per_interval)])
+    curve = np.empty((n * samples_per_interval + 1, 2))
+    curve[:, 0] = _linspace(L, n * samples_per_interval + 1)
+    curve[:, 1] = _spline_on_grid(mid[:, 1], M, h, samples_per_interval)
     ordinates = _spline_at_nodes(mid[:, 1], M, h)
 
     return GraphicalDerivative(
         pole_distance=float(H),
-        pole=_frozen(pole),
+        pole=_made_here(pole),
         source_points=_frozen(points),
-        chords=_frozen(np.stack([points[:-1], points[1:]], axis=1)),
-        rays=_frozen(np.stack([np.broadcast_to(pole, k.shape), k], axis=1)),
-        k_points=_frozen(k),
-        mid_points=_frozen(mid),
-        curve=_frozen(curve),
-        ordinates=_frozen(ordinates),
+        chords=_made_here(chords),
+        rays=_made_here(rays),
+        k_points=_made_here(k),
+        mid_points=_made_here(mid),
+        curve=_made_here(curve),
+        ordinates=_made_here(ordinates),
         scale=float(scale),
-        values=_frozen(ordinates * scale),
+        values=_made_here(ordinates * scale),
     )
+
+
+def _made_here(arr: Array) -> Array:
+    """An array its maker alone holds, frozen as it is (`_frozen` without the copy)."""
+    arr.setflags(write=False)
+    return arr
+
+
+@lru_cache(maxsize=64)
+def _linspace(stop: float, num: int) -> Array:
+    """np.linspace(0, stop, num), made once for each time axis and grid."""
+    return _made_here(np.linspace(0.0, stop, num))
 
 
 def _check_samples(s: ArrayLike, name: str = "s") -> Array:
@@ -564,15 +601,20 @@ def central_difference_derivatives(
         raise ValueError(f"order {order} needs at least {2 * m + 1} positions, got {s_arr.size}")
     _omega(n1)
     dt = 60.0 / (n1 * s_arr.size)
-    v = np.zeros_like(s_arr)
-    a = np.zeros_like(s_arr)
     n = s_arr.size
     wrapped = np.concatenate((s_arr[n - m :], s_arr, s_arr[:m]))  # m either side, over the turn
-    for offset, c1, c2 in zip(range(-m, m + 1), _central_weights(1, m), _central_weights(2, m)):
-        shifted = wrapped[m + offset : m + offset + n]  # s_{i+offset}
-        v += c1 * shifted
-        a += c2 * shifted
+    # row j: s_{i+j-m} for every i; the weighted rows summed down the rows in
+    # order (a reduction along the first axis adds row after row, as a loop would)
+    shifted = wrapped[_window(n, m)]
+    v = np.add.reduce(_central_weights(1, m)[:, None] * shifted, axis=0)
+    a = np.add.reduce(_central_weights(2, m)[:, None] * shifted, axis=0)
     return _frozen(v / dt), _frozen(a / dt**2)
+
+
+@lru_cache(maxsize=32)
+def _window(n: int, half_width: int) -> Array:
+    """Indices of `wrapped` (half_width either side): row j holds i + j for i = 0 … n−1."""
+    return np.arange(n)[None, :] + np.arange(2 * half_width + 1)[:, None]
 
 
 def textbook_derivatives(s: ArrayLike, *, n1: float) -> tuple[Array, Array]:
@@ -637,13 +679,10 @@ class PlanComparison:
 def _relative_error(plan: Array, diagram: Array) -> list[float | None]:
     """Formula (12)/(13): (plan − diagram)/plan · 100 %, None where the plan is zero."""
     big = float(np.max(np.abs(plan))) if plan.size else 0.0
-    out: list[float | None] = []
-    for p, d in zip(plan, diagram):
-        if big == 0.0 or abs(p) <= _ZERO_PLAN * big:
-            out.append(None)
-        else:
-            out.append(float((p - d) / p * 100.0))
-    return out
+    with np.errstate(divide="ignore", invalid="ignore"):
+        errors = ((plan - diagram) / plan * 100.0).tolist()
+    zero = (np.abs(plan) <= _ZERO_PLAN * big).tolist() if big != 0.0 else [True] * plan.size
+    return [None if z else e for z, e in zip(zero, errors)]
 
 
 def _sign_changes_next_to(plan: Array, i: int) -> bool:
@@ -771,9 +810,8 @@ def compare_with_plans(
     for name, arr in (("a_diagram", ad), ("v_plan", vp), ("a_plan", ap)):
         if arr.shape != (n,):
             raise ValueError(f"{name} has shape {arr.shape}, v_diagram {vd.shape}")
-    for arr in (vd, ad, vp, ap):
-        if not np.all(np.isfinite(arr)):
-            raise ValueError("diagram and plan values must be finite")
+    if not np.isfinite(np.concatenate((vd, ad, vp, ap))).all():
+        raise ValueError("diagram and plan values must be finite")
     s_arr = None if s is None else _check_samples(s)
 
     ev, ea = _relative_error(vp, vd), _relative_error(ap, ad)

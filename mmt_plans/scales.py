@@ -25,6 +25,7 @@ import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 from decimal import Decimal
+from functools import lru_cache
 from typing import Literal, get_args
 
 from .i18n import Language, catalogue, check_language
@@ -105,7 +106,10 @@ def _decade(value: float) -> int:
     return k
 
 
+@lru_cache(maxsize=512)
 def _value(text: str, k: int) -> float:
+    # a mantissa of the series times a power of ten: a few dozen pairs in all,
+    # each worked out once (decimal arithmetic is slow, and read at every solve)
     return float(Decimal(text).scaleb(k))
 
 

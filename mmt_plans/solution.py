@@ -17,8 +17,10 @@ assemble, diagrams of a partial turn) is kept as its problem, never as NaN.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Literal, cast
 
 import numpy as np
@@ -43,6 +45,7 @@ from .forces.reduction import Reduction, reduce_sweep
 from .forces.state import PositionState, from_sweep
 from .kinematics.branches import Branches
 from .kinematics.chain import Chain, Sweep
+from .kinematics.geometry import quiet
 from .kinematics.handle import Kinematics, kinematics
 from .kinematics.plans import PlanView, plan_view
 from .model import Mechanism, Stroke
@@ -59,6 +62,9 @@ GRID = 1440
 # so that every grid n·k of the 5 % check's series (k = 1 … 12) is among them
 BASE_STEPS = 24
 DENSE = 181  # crank angles of the trajectories drawn on sheet 1 (position 0 twice)
+# the extreme search's grid over a whole turn (deg), the same for every mechanism
+_WHOLE_TURN = np.linspace(0.0, 360.0, GRID, endpoint=False)
+_WHOLE_TURN.setflags(write=False)
 
 
 @dataclass(frozen=True)
@@ -237,21 +243,26 @@ def solve(
     `partial_turn=True` opts in. `forces=False` leaves out the force analysis
     (sheet 1 alone)."""
     mech = mechanism if not partial_turn else mechanism.with_partial_turn()
-    handle = kinematics(mech)
-    structure, chain, branches = handle.structure, handle.chain, handle.branches
-    if not branches.whole_turn and (not mech.study.partial_turn or not branches.ranges):
-        # refused; also when opted in, if it assembles at no crank angle at all
-        raise partial_turn_error(mech, branches)
-    # the extreme positions and the displacements follow from the kinematics
-    # alone: searched once per handle (a Mechanism solved again reads them)
-    turn = handle.kept("turn", lambda: _Turn(mech, chain, branches))
-    positions = turn.positions()
-    sw = chain.sweep(np.array([p.phi1_deg for p in positions]))
+    # the kinematics in one quiet context (NaN is the kernels' data; each
+    # kernel's own context is then a counter, not numpy's machinery)
+    with quiet():
+        handle = kinematics(mech)
+        structure, chain, branches = handle.structure, handle.chain, handle.branches
+        if not branches.whole_turn and (not mech.study.partial_turn or not branches.ranges):
+            # refused; also when opted in, if it assembles at no crank angle at all
+            raise partial_turn_error(mech, branches)
+        # the extreme positions and the displacements follow from the kinematics
+        # alone: searched once per handle (a Mechanism solved again reads them)
+        turn = handle.kept("turn", lambda: _Turn(mech, chain, branches))
+        positions = turn.positions()
+        phi0 = positions[0].phi1_deg
+        # the positions and the trajectories' angles, in one pass of the kernels
+        sw, dense = chain.sweeps(
+            np.array([p.phi1_deg for p in positions]), np.linspace(phi0, phi0 + 360.0, DENSE)
+        )
     plan_positions = turn.plan_positions(positions)
     fp = mech.study.force_position
     force_position = plan_positions[0] if fp is None else fp
-    phi0 = positions[0].phi1_deg
-    dense = chain.sweep(np.linspace(phi0, phi0 + 360.0, DENSE))
     mu_l = _mechanism_scale(mech, dense)
     diagrams, diagrams_problem, s_dense = None, None, None
     try:
@@ -301,11 +312,22 @@ def _mechanism_scale(mech: Mechanism, dense: Sweep) -> float:
     """Scale of the mechanism drawing: the standard value that draws the span
     of every point's trajectory (the dense sweep's, over one turn) in
     150–300 mm (μ_l = l_OA / OA, (2))."""
-    pts = np.concatenate([dense.position_of(n)[dense.ok] for n in mech.point_owners])
+    ok = dense.ok  # where the chain is solved
+    if ok.all():  # everywhere: every position as it is (no copy through the mask)
+        pts = np.concatenate([dense.position_of(n) for n in mech.point_owners])
+    else:
+        pts = np.concatenate([dense.position_of(n)[ok] for n in mech.point_owners])
     span = max(np.ptp(pts.real), np.ptp(pts.imag), mech.crank_length)
     return scale_for(
         float(span), DrawnLength("mechanism", 150.0, 300.0, 220.0), LENGTH_MANTISSA_TEXT
     )
+
+
+@lru_cache(maxsize=64)
+def _time_axis(T: float) -> float:
+    """L, mm: one turn of T s drawn at the standard μ_t that makes it 150 … 240
+    mm (the same for every mechanism at that speed)."""
+    return T / scale_for(T, TIME_AXIS)
 
 
 def _diagrams(
@@ -327,15 +349,17 @@ def _diagrams(
             "(partial_turn), and the diagrams of 1.7 cover one turn"
         )
     n = mech.study.positions
-    k = [next(j for j, p in enumerate(positions) if p.index == i) for i in range(n)]
-    if not sw.ok[k].all():
-        bad = next(i for i in range(n) if not sw.ok[k[i]])
+    entry = {p.index: j for j, p in reversed(list(enumerate(positions)))}  # the first of each
+    k = [entry[i] for i in range(n)]
+    ok = sw.ok
+    if not ok[k].all():
+        bad = next(i for i in range(n) if not ok[k[i]])
         raise sw.problem(k[bad]) or MmtError("diagrams need every position")
     _, v, a = (x[k] for x in output_along(mech, sw))
     n1 = mech.drive.n1_rpm
     # the time axis: the standard μ_t that draws one turn in 150 … 240 mm
     T = 60.0 / n1
-    L = T / scale_for(T, TIME_AXIS)
+    L = _time_axis(T)
     # the largest magnitudes over the turn: the fine grid of the extreme search
     # and the positions themselves
     largest = (
@@ -395,6 +419,11 @@ def _diagrams(
     return Diagrams(construction, check, v, a, sheet_check, refinement, scales)
 
 
+def _sign(x: float) -> float:
+    """np.sign of a float: -1, 0 or 1, NaN for NaN."""
+    return float((x > 0) - (x < 0)) if x == x else math.nan
+
+
 def _stroke_of(
     mech: Mechanism, chain: Chain, limits, extremes, working_span_deg, phi1_deg: float
 ) -> Stroke:
@@ -446,19 +475,25 @@ class _Turn:
         return ok, (P * wd).real, (V * wd).real, (A * wd).real
 
     def along(self, phi1_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """s, ds/dφ and d²s/dφ² of the output along the working direction (ε1 = 0)."""
+        """s, ds/dφ and d²s/dφ² of the output along the working direction (ε1 = 0)
+        (the kernel of `output`, without where the chain is solved)."""
         w = self.mech.drive.signed_omega
-        _, s, v, a = self.output(phi1_deg)
-        return s, v / w, a / (w * w)
+        P, V, A = self.chain.point_motion_only(phi1_deg, self.mech.study.output)
+        wd = np.conj(complex(*self.mech.study.working_direction))
+        return (P * wd).real, (V * wd).real / w, (A * wd).real / (w * w)
 
     def _extremes(self) -> tuple[float, float] | None:
+        with quiet():  # NaN is the kernels' data here (one context for every step)
+            return self._extremes_quietly()
+
+    def _extremes_quietly(self) -> tuple[float, float] | None:
         """Crank angles (deg) of the output's least and greatest position along
         the working direction: zeros of ds/dφ to machine precision (Newton with
         the exact d²s/dφ² of the acceleration plan, kept in a bracket where ds/dφ
         changes sign). In a partial turn only zeros inside the range count (the
         limits of assembly are not extreme positions); None when there are none."""
         if self.limits is None:
-            grid = np.linspace(0.0, 360.0, GRID, endpoint=False)
+            grid = _WHOLE_TURN
         else:
             grid = self.limits[0] + self.sense * self.span_deg * (np.arange(1, GRID) / GRID)
         solved, s, v, a = self.output(grid)
@@ -469,8 +504,11 @@ class _Turn:
             raise self.chain.sweep(grid[:1]).problem(0) or StructureError(
                 "the mechanism assembles at no crank angle"
             )
-        self.largest = (float(np.max(np.abs(v[ok]))), float(np.max(np.abs(a[ok]))))
-        if np.ptp(s[ok]) < 1e-12 * max(1.0, float(np.max(np.abs(s[ok])))):
+        everywhere = bool(ok.all())
+        # (indexing by `ok` where it holds everywhere would copy the same values)
+        v_ok, a_ok, s_ok = (v, a, s) if everywhere else (v[ok], a[ok], s[ok])
+        self.largest = (float(np.max(np.abs(v_ok))), float(np.max(np.abs(a_ok))))
+        if np.ptp(s_ok) < 1e-12 * max(1.0, float(np.max(np.abs(s_ok)))):
             raise StructureError(
                 f"{shown(self.mech.path)}: output {self.mech.study.output} does not move along the "
                 "working direction: set study.working_direction or study.zero"
@@ -479,7 +517,15 @@ class _Turn:
         nxt = np.concatenate((np.arange(1, grid.size), [0]))  # np.roll(arange, -1)
         if self.limits is not None:
             nxt[-1] = grid.size - 1
-        change = ok & ok[nxt] & (np.sign(ds) != np.sign(ds[nxt])) & (nxt != np.arange(grid.size))
+            change = (
+                ok & ok[nxt] & (np.sign(ds) != np.sign(ds[nxt])) & (nxt != np.arange(grid.size))
+            )
+        else:
+            # the whole turn: the next of the last is the first (never itself)
+            sign = np.sign(ds)
+            change = sign != np.concatenate((sign[1:], sign[:1]))
+            if not everywhere:
+                change &= ok & np.concatenate((ok[1:], ok[:1]))
         idx = np.flatnonzero(change)
         if not idx.size:
             return None
@@ -515,32 +561,43 @@ class _Turn:
         a, b = a.astype(float).copy(), b.astype(float).copy()
         # the chord's zero: a grid step's worth of curvature from the root, so
         # Newton's quadratic steps reach machine precision in two or three
-        with np.errstate(divide="ignore", invalid="ignore"):
-            chord = a - fa * (b - a) / (fb - fa)
+        # (no warnings: `_extremes` runs quietly)
+        chord = a - fa * (b - a) / (fb - fa)
         phi = np.where(np.isfinite(chord) & (chord > a) & (chord < b), chord, 0.5 * (a + b))
-        done = np.zeros(phi.shape, dtype=bool)
-        s_at = np.zeros(phi.shape)
+        # The brackets' bookkeeping is a few numbers each (one or two
+        # brackets): plain floats, by the same IEEE operations the arrays
+        # would do (math.degrees multiplies by numpy's 180/π); each step's
+        # kernel is one pass over every bracket.
+        A, B, FA = a.tolist(), b.tolist(), fa.tolist()
+        PHI = phi.tolist()
+        DONE = [False] * len(PHI)
+        S_AT = [0.0] * len(PHI)
+        eps4 = float(4 * np.finfo(float).eps)
         for _ in range(200):
-            s, f, df = self.along(phi)
-            s_at = np.where(done, s_at, s)
-            same = np.sign(f) == np.sign(fa)  # keep the sign-change bracket
-            a = np.where(same, phi, a)
-            fa = np.where(same, f, fa)
-            b = np.where(same, b, phi)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                newton = phi - np.degrees(f / df)
-            # a Newton step onto an end of the bracket is still inside it: near
-            # the root rounding puts it there, and bisection would crawl from afar
-            inside = np.isfinite(newton) & (newton >= a) & (newton <= b)
-            new = np.where(inside, newton, 0.5 * (a + b))
-            tol = 4 * np.finfo(float).eps * np.maximum(1.0, np.abs(phi))
-            converged = (f == 0) | (np.abs(new - phi) <= tol) | (b - a <= tol)
-            # a bracket once converged stays where it converged
-            phi = np.where(done | (f == 0), phi, new)
-            done |= converged
-            if done.all():
+            s_, f_, df_ = self.along(np.array(PHI))
+            S, F, DF = s_.tolist(), f_.tolist(), df_.tolist()
+            for j, (s, f, df) in enumerate(zip(S, F, DF)):
+                if not DONE[j]:
+                    S_AT[j] = s
+                x = PHI[j]
+                if _sign(f) == _sign(FA[j]):  # keep the sign-change bracket
+                    A[j], FA[j] = x, f
+                else:
+                    B[j] = x
+                # a Newton step onto an end of the bracket is still inside it: near
+                # the root rounding puts it there, and bisection would crawl from afar
+                newton = x - math.degrees(f / df) if df != 0 else math.nan
+                inside = math.isfinite(newton) and A[j] <= newton <= B[j]
+                new = newton if inside else 0.5 * (A[j] + B[j])
+                tol = eps4 * max(1.0, abs(x))
+                converged = f == 0 or abs(new - x) <= tol or B[j] - A[j] <= tol
+                # a bracket once converged stays where it converged
+                if not (DONE[j] or f == 0):
+                    PHI[j] = new
+                DONE[j] = DONE[j] or converged
+            if all(DONE):
                 break
-        return phi, s_at
+        return np.array(PHI), np.array(S_AT)
 
     def _phi0(self) -> float:
         if self.limits is not None:  # half a step in from the first limit of assembly

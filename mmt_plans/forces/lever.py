@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .loads import Loads
-from .state import PositionState, cross, xy
+from .state import PositionState, cross, xy_rows
 
 
 @dataclass(frozen=True)
@@ -54,6 +54,24 @@ class ZhukovskyLever:
         return f"Sum M_p = {terms} + F_bal * pa = 0"
 
 
+def _complex(v: np.ndarray) -> complex:
+    """An [x, y] array as a complex number (through Python floats: no numpy scalars)."""
+    return complex(*v.tolist())
+
+
+@dataclass(frozen=True)
+class _Pending:
+    """A force on the lever before its vectors are made arrays (`_Builder.made`)."""
+
+    label: str
+    link: int
+    point: str
+    image: complex
+    force: complex
+    moment: float
+    arm: float
+
+
 class _Builder:
     def __init__(self, state: PositionState, turn: complex | None = None) -> None:
         self.state = state
@@ -62,19 +80,32 @@ class _Builder:
         # 90° against the crank's rotation (another turn: a mistake recomputed)
         self.turn = -1j * self.s if turn is None else turn
         self.images: dict[str, complex] = {}
+        self.pending: list[_Pending] = []  # the forces, made into LeverForce at once (`made`)
 
     def image(self, link: int, name: str, P: complex) -> complex:
         img = self.turn * self.state.links[link].vel(P)
         self.images.setdefault(name, img)
         return img
 
-    def force(self, label: str, link: int, name: str, P: complex, F: complex) -> LeverForce:
+    def force(self, label: str, link: int, name: str, P: complex, F: complex) -> _Pending:
         img = self.image(link, name, P)
         M = cross(img, F)
         size = abs(F)
-        return LeverForce(label, link, name, xy(img), xy(F), M, M / size if size else 0.0)
+        found = _Pending(label, link, name, img, F, M, M / size if size else 0.0)
+        self.pending.append(found)
+        return found
 
-    def couple(self, link: int, M: float) -> list[LeverForce]:
+    def made(self) -> dict[int, LeverForce]:
+        """Every force as a LeverForce (by the id of its pending record), the
+        images and the forces as [x, y] rows of one array."""
+        rows = xy_rows([p.image for p in self.pending] + [p.force for p in self.pending])
+        n = len(self.pending)
+        return {
+            id(p): LeverForce(p.label, p.link, p.point, rows[i], rows[n + i], p.moment, p.arm)
+            for i, p in enumerate(self.pending)
+        }
+
+    def couple(self, link: int, M: float) -> list[_Pending]:
         """M as two forces ±M/l at two points of the link, perpendicular to the
         line joining them (seed 000 fig. 1.29: F'_2 = M_2 / l_AB)."""
         state = self.state
@@ -107,27 +138,27 @@ def zhukovsky_lever(loads: Loads, *, turn_deg: float | None = None) -> Zhukovsky
     for lid in mech.links:  # every point's image, for the drawing
         for name in mech.links[lid].points:
             b.image(lid, name, state.point(lid, name))
-    shifted: list[LeverForce] = []
-    couples: list[LeverForce] = []
+    shifted: list[_Pending] = []
+    couples: list[_Pending] = []
     for lid, ll in loads.links.items():
-        S = complex(*ll.centre_of_mass)
+        S = _complex(ll.centre_of_mass)
         sname = ll.cm_name
         b.image(lid, sname, S)
-        G = complex(*ll.weight)
-        F_in = complex(*ll.inertia_force)
+        G = _complex(ll.weight)
+        F_in = _complex(ll.inertia_force)
         if G:
             if ll.weight_point is None:
                 g = b.force(f"G{lid}", lid, sname, S, G)
             else:  # a mistake recomputed: G at another point of the link
                 assert ll.weight_at is not None
-                g = b.force(f"G{lid}", lid, ll.weight_at, complex(*ll.weight_point), G)
+                g = b.force(f"G{lid}", lid, ll.weight_at, _complex(ll.weight_point), G)
             shifted.append(g)
             couples.append(g)
         if F_in:
             couples.append(b.force(f"F_in{lid}", lid, sname, S, F_in))
         sh = ll.shifted_inertia_force
         if sh is not None:
-            shifted.append(b.force(f"F_in{lid}", lid, f"K{lid}", complex(*sh.point), F_in))
+            shifted.append(b.force(f"F_in{lid}", lid, f"K{lid}", _complex(sh.point), F_in))
         else:  # nothing to shift: F_IN (if any) at S and the couple
             if F_in:
                 shifted.append(couples[-1])
@@ -137,7 +168,7 @@ def zhukovsky_lever(loads: Loads, *, turn_deg: float | None = None) -> Zhukovsky
             couples += b.couple(lid, ll.inertia_moment)
     for f in loads.production_resistance:
         if f.acting:
-            lf = b.force(f.name, f.link, f.at, complex(*f.point), complex(*f.force))
+            lf = b.force(f.name, f.link, f.at, _complex(f.point), _complex(f.force))
             shifted.append(lf)
             couples.append(lf)
     d = mech.drive.link
@@ -149,18 +180,19 @@ def zhukovsky_lever(loads: Loads, *, turn_deg: float | None = None) -> Zhukovsky
         t = b.s * 1j * pa_img / abs(pa_img)
     lever_arm = cross(pa_img, t)  # = s·|pa|
 
-    def balance(forces: list[LeverForce]) -> float:
+    def balance(forces: list[_Pending]) -> float:
         return -sum(f.moment for f in forces) / lever_arm
 
     F_bal = balance(shifted)
     bal = b.force("F_bal", d, mech.crank_pin, A, F_bal * t)
+    made = b.made()
     return ZhukovskyLever(
         -90.0 * b.s if turn_deg is None else turn_deg,
-        {k: xy(v) for k, v in b.images.items()},
-        tuple(shifted),
-        bal,
+        dict(zip(b.images, xy_rows(list(b.images.values())))),
+        tuple(made[id(f)] for f in shifted),
+        made[id(bal)],
         F_bal,
         abs(pa_img),
-        tuple(couples),
+        tuple(made[id(f)] for f in couples),
         balance(couples),
     )

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..model import FRAME, Mechanism, Prismatic, Stroke, frozen_array
+from ..model import FRAME, Mechanism, Prismatic, Stroke
 from ..structure import AssurGroup
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -24,8 +24,19 @@ def cross(a: complex, b: complex) -> float:
 
 
 def xy(z: complex) -> np.ndarray:
-    """A complex plane vector as a read-only [x, y] array."""
-    return frozen_array((z.real, z.imag))
+    """A complex plane vector as a read-only [x, y] array (`frozen_array`'s
+    float array: the parts of a complex number are floats already)."""
+    arr = np.array((z.real, z.imag))
+    arr.setflags(write=False)
+    return arr
+
+
+def xy_rows(zs: list[complex]) -> list[np.ndarray]:
+    """`xy` of each of several vectors: the rows of one read-only array (made
+    at once, the same numbers)."""
+    arr = np.array([(z.real, z.imag) for z in zs], dtype=float).reshape(-1, 2)
+    arr.setflags(write=False)
+    return list(arr)
 
 
 @dataclass(frozen=True)
@@ -92,14 +103,15 @@ def from_sweep(
     problem = sweep.problem(k)
     if problem is not None:
         raise problem
+    # .item(k): entry k as a Python number (the same value, without a numpy scalar)
     links = {
         lid: LinkPose(
-            complex(s.e[k]),
-            complex(s.o[k]),
-            float(s.omega[k]),
-            complex(s.v[k]),
-            float(s.eps[k]),
-            complex(s.a[k]),
+            complex(s.e.item(k)),
+            complex(s.o.item(k)),
+            float(s.omega.item(k)),
+            complex(s.v.item(k)),
+            float(s.eps.item(k)),
+            complex(s.a.item(k)),
         )
         for lid, s in sweep.links.items()
     }

@@ -38,7 +38,7 @@ import numpy as np
 
 from ..model import FRAME, Mechanism
 from ..structure import Structure
-from .chain import Chain
+from .chain import Chain, motion_part
 from .geometry import quiet
 
 GRID = 720
@@ -46,6 +46,10 @@ GRID = 720
 # at a toggle, not a failure to assemble
 TOLERANCE = 1e-11
 EDGE_DEG = 1e-10  # crank angles of the ends of an assembly range, to this
+
+# the search's crank angles (rad), the same for every mechanism (read-only)
+_GRID = np.linspace(0.0, 2 * np.pi, GRID, endpoint=False)
+_GRID.setflags(write=False)
 
 Rule = Literal["sketch", "as drawn", "branch order", "only one", "no branches"]
 Signs = tuple[int, ...]
@@ -109,6 +113,13 @@ class Branches:
 
 def choose(chain: Chain) -> Branches:
     """Search the combinations of branches and choose one (module docstring)."""
+    # NaN is the search's data (a group that fails): one quiet context for
+    # all of it (its kernels' own are then a counter, not numpy's machinery)
+    with quiet():
+        return _choose(chain)
+
+
+def _choose(chain: Chain) -> Branches:
     search = _Search(chain)
     names = [s.group.name for s in chain.solvers]
     branchy = [s.group.name for s in chain.solvers if s.has_branches]
@@ -152,15 +163,45 @@ class _Search:
         self.chain = chain
         self.solvers = chain.solvers
         self.names = [s.group.name for s in chain.solvers]
-        self.grid = np.linspace(0.0, 2 * np.pi, GRID, endpoint=False)
+        self.grid = _GRID
         mech = chain.mech
-        sizes = [float(np.hypot(*p)) for link in mech.links.values() for p in link.points.values()]
-        sizes += [float(np.hypot(*p)) for p in mech.frame.values()]
+        # the distance of every point from the origin, in one pass
+        points = [p for link in mech.links.values() for p in link.points.values()]
+        points += list(mech.frame.values())
+        xy = np.array(points, dtype=float).reshape(-1, 2)
+        sizes = np.hypot(xy[:, 0], xy[:, 1]).tolist()
         self.tol = TOLERANCE * max(sizes + [1e-3])
         # the links placed on the grid and the groups' margins there, by the
         # branches of the first groups: a trial of group k starts from the
-        # placing of the groups before it (the same for both its branches)
+        # placing of the groups before it (the same for both its branches),
+        # and a group is placed only when a group after it is tried
         self._on_grid: dict[Signs, tuple[dict, list]] = {}
+        self._grid_margins: dict[Signs, np.ndarray] = {}
+        # the links placed at one crank angle (the sketch's, the drawing's), by
+        # the angle and the branches of the first groups
+        self._at_angle: dict[tuple[float, Signs], dict] = {}
+        # The sketch's and the drawing's crank angle ride along with the grid:
+        # every placing on the grid places the links there too (the kernels
+        # work angle by angle), and a trial of the choice reads them off it.
+        extra = [a for a in (self._sketch_angle(), self._drawing_angle()) if a is not None]
+        self._ext = np.concatenate((_GRID, extra)) if extra else _GRID
+        self._extra_at = {a: GRID + i for i, a in enumerate(extra)}
+
+    def _sketch_angle(self) -> float | None:
+        """The crank angle (rad) of the sketch (None without a sketch of the crank pin)."""
+        mech = self.chain.mech
+        if mech.crank_pin not in mech.sketch:
+            return None
+        A = complex(*mech.sketch[mech.crank_pin])
+        O = self.chain.O
+        return math.atan2((A - O).imag, (A - O).real)
+
+    def _drawing_angle(self) -> float:
+        """The crank angle (rad) at which the links' coordinates draw the crank."""
+        mech = self.chain.mech
+        crank = mech.links[mech.drive.link]
+        d = crank.points[mech.crank_pin] - crank.points[mech.crank_pivot]
+        return math.atan2(d[1], d[0])
 
     def _grid_placed(self, signs: Signs) -> tuple[dict, list]:
         """The links' motion after the first len(signs) groups are placed on
@@ -170,17 +211,52 @@ class _Search:
         if found is None:
             chain = self.chain
             if not signs:
-                m = {FRAME: chain.frame(), chain.mech.drive.link: chain.crank(self.grid)}
+                m = {FRAME: chain.frame(), chain.mech.drive.link: chain.crank(self._ext)}
                 found = (m, [])
             else:
                 before, margins = self._grid_placed(signs[:-1])
+                margin = self._grid_margin(signs[:-1])
                 m = dict(before)  # a group adds its own links, changing none before it
-                solver = self.solvers[len(signs) - 1]
                 with quiet():
-                    margin = solver.margin(m)
-                    solver.positions(m, signs[-1])
+                    self.solvers[len(signs) - 1].positions(m, signs[-1])
                 found = (m, [*margins, margin])
             self._on_grid[signs] = found
+        return found
+
+    def _grid_margin(self, before: Signs) -> np.ndarray:
+        """The margin on the grid of group len(before), the groups before it
+        placed with the branches `before` (the same for both its own)."""
+        found = self._grid_margins.get(before)
+        if found is None:
+            m, _ = self._grid_placed(before)
+            with quiet():
+                found = self.solvers[len(before)].margin(m)
+            if found.__class__ is np.ndarray and found.ndim and self._ext is not _GRID:
+                found = found[:GRID]  # the grid's, without the angles riding along
+            self._grid_margins[before] = found
+        return found
+
+    def _placed_at(self, phi: np.ndarray, signs: Signs) -> dict:
+        """The links' motion at the one crank angle `phi` (rad, an array of one)
+        after the first len(signs) groups are placed with `signs` (what
+        `Chain.place` gives, by the same operations), kept by the branches of
+        the first groups: a trial of group k places that group alone."""
+        key = (float(phi[0]), signs)
+        found = self._at_angle.get(key)
+        if found is None:
+            at = self._extra_at.get(key[0])
+            if at is not None and signs in self._on_grid:
+                # placed on the grid already, this angle with it
+                part = slice(at, at + 1)
+                found = {lid: motion_part(mo, part) for lid, mo in self._on_grid[signs][0].items()}
+            elif not signs:
+                chain = self.chain
+                found = {FRAME: chain.frame(), chain.mech.drive.link: chain.crank(phi)}
+            else:
+                found = dict(self._placed_at(phi, signs[:-1]))
+                with quiet():
+                    self.solvers[len(signs) - 1].positions(found, signs[-1])
+            self._at_angle[key] = found
         return found
 
     # --- margins -------------------------------------------------------------------
@@ -188,11 +264,19 @@ class _Search:
         """Each group's margin at the angles `phi` (rad) with the branches `signs`
         (the first len(signs) groups), NaN where an earlier group failed."""
         margins: list[np.ndarray] = []
+        signs = tuple(signs)
+        if not signs:
+            return margins
         if phi is self.grid:
-            margins = self._grid_placed(tuple(signs))[1]
+            margins = [*self._grid_placed(signs[:-1])[1], self._grid_margin(signs[:-1])]
         else:
-            self.chain.place(phi, dict(zip(self.names, signs)), upto=len(signs), margins=margins)
-        return [np.broadcast_to(np.asarray(g, dtype=float), phi.shape) for g in margins]
+            # the groups before the last placed, then the last one's margin (its
+            # own placing is not read)
+            k = len(signs) - 1
+            m = self.chain.place(phi, dict(zip(self.names, signs)), upto=k, margins=margins)
+            with quiet():
+                margins.append(self.solvers[k].margin(m))
+        return [_spread_over(g, phi.shape) for g in margins]
 
     def _refined_minima(
         self, k: int, signs: Signs, grid_margin: np.ndarray
@@ -200,7 +284,10 @@ class _Search:
         """The angles (rad) and margins of group k's local minima between grid
         angles, found by golden-section search on each bracket [φ_i−1, φ_i+1]."""
         g = grid_margin
-        if not np.all(np.isfinite(g)) or float(np.ptp(g)) <= self.tol:
+        # finite everywhere (NaN and ±inf carry into the least or the greatest)
+        # and not flat
+        lowest, highest = float(g.min()), float(g.max())
+        if not (math.isfinite(lowest) and math.isfinite(highest)) or highest - lowest <= self.tol:
             return np.empty(0), np.empty(0)
         # the neighbours round the turn (np.roll's values, without its overhead)
         prev, nxt = np.concatenate((g[-1:], g[:-1])), np.concatenate((g[1:], g[:1]))
@@ -208,6 +295,10 @@ class _Search:
         # of its second difference there: only minima that could reach zero
         # are refined.
         dip = np.abs(prev - 2 * g + nxt)
+        if lowest > 2.0 * float(dip.max()) + self.tol:
+            # no grid angle is within twice its dip of zero (g >= lowest there):
+            # the test below would pick none
+            return np.empty(0), np.empty(0)
         idx = np.flatnonzero(
             (g <= prev) & (g <= nxt) & ((g < prev) | (g < nxt)) & (g <= 2.0 * dip + self.tol)
         )
@@ -230,11 +321,12 @@ class _Search:
         return best, self.margins(best, signs)[k]
 
     def group_turns(self, k: int, signs: Signs) -> bool:
-        g = self.margins(self.grid, signs)[k]
-        if not np.all(g >= -self.tol):  # NaN fails as well
+        # margins(self.grid, signs)[k], read straight from the grid's
+        g = _spread_over(self._grid_margin(tuple(signs[:k])), self.grid.shape)
+        if not g.min() >= -self.tol:  # NaN fails as well (the least is NaN)
             return False
         _, m = self._refined_minima(k, signs, g)
-        return bool(np.all(m >= -self.tol))
+        return not m.size or bool(np.all(m >= -self.tol))
 
     # --- the search ----------------------------------------------------------------
     def full_turn(self) -> list[Signs]:
@@ -278,11 +370,10 @@ class _Search:
         """Group by group, the branch nearest to the sketch at its crank angle
         (None without a sketch of the crank pin)."""
         mech = self.chain.mech
-        if mech.crank_pin not in mech.sketch:
+        angle = self._sketch_angle()
+        if angle is None:
             return None
-        A = complex(*mech.sketch[mech.crank_pin])
-        O = self.chain.O
-        phi = np.array([math.atan2((A - O).imag, (A - O).real)])
+        phi = np.array([angle])
         signs: Signs = ()
         for solver in self.solvers:
             names = [
@@ -305,13 +396,15 @@ class _Search:
     def _distance(
         self, phi: np.ndarray, signs: Signs, names: list[str], target: Mapping[str, np.ndarray]
     ) -> float:
-        m = self.chain.place(phi, dict(zip(self.names, signs)), upto=len(signs))
+        m = self._placed_at(phi, signs)
         err = 0.0
         for p in names:
             lid, local = self.chain.locate[p]
             if lid not in m:
                 continue
-            err += abs(complex(np.ravel(m[lid].at(local))[0]) - complex(*target[p])) ** 2
+            at = m[lid].at(local)
+            at = at[0] if at.__class__ is np.ndarray and at.shape == (1,) else np.ravel(at)[0]
+            err += abs(complex(at) - complex(*target[p])) ** 2
         return err
 
     def drawn_in_place(self) -> bool:
@@ -335,9 +428,7 @@ class _Search:
         """The combination whose points, at the crank angle of the drawing, lie
         nearest (least squares) to the links' own coordinates."""
         mech = self.chain.mech
-        crank = mech.links[mech.drive.link]
-        d = crank.points[mech.crank_pin] - crank.points[mech.crank_pivot]
-        phi = np.array([math.atan2(d[1], d[0])])
+        phi = np.array([self._drawing_angle()])
         drawn = {
             p: xy
             for link in mech.links.values()
@@ -427,6 +518,14 @@ class _Search:
                     "change the lengths of the group's links",
                 )
         return "", "", ""
+
+
+def _spread_over(g, shape: tuple[int, ...]) -> np.ndarray:
+    """A margin as a float array over the angles: as it is when it already is
+    one (not written to), a number (a group fixed to the frame) spread out."""
+    if g.__class__ is np.ndarray and g.shape == shape and g.dtype == np.float64:
+        return g
+    return np.broadcast_to(np.asarray(g, dtype=float), shape)
 
 
 def build_chain(mech: Mechanism, structure: Structure | None = None) -> Chain:

@@ -143,6 +143,35 @@ def _state(mo: Motion, n: int) -> LinkState:
     )
 
 
+def _state_part(mo: Motion, part: slice, n: int) -> LinkState:
+    """`_state` of the link's motion at the angles `part` of a pass (its arrays
+    cut, its plain numbers spread out), without a Motion in between."""
+
+    def cut(x):
+        return x[part] if x.__class__ is np.ndarray and x.ndim else x
+
+    return LinkState(
+        _full(cut(mo.e), n, _C),
+        _full(cut(mo.o), n, _C),
+        _full(cut(mo.w), n, _F),
+        _full(cut(mo.v), n, _C),
+        _full(cut(mo.eps), n, _F),
+        _full(cut(mo.a), n, _C),
+        _full(cut(mo.spin), n, _C),
+        _full(cut(mo.spin_acc), n, _C),
+    )
+
+
+def motion_part(mo: Motion, part: slice) -> Motion:
+    """The motion of a link at the angles `part` of a pass: its arrays cut
+    (views), its plain numbers (the frame's, a constant ω) as they are."""
+    out = Motion.__new__(Motion)
+    for name in Motion.__slots__:
+        x = getattr(mo, name)
+        setattr(out, name, x[part] if isinstance(x, np.ndarray) and x.ndim else x)
+    return out
+
+
 @lru_cache(maxsize=64)
 def _frame_state(n: int) -> LinkState:
     """The frame's state over n angles: plain numbers spread out, the same for
@@ -502,10 +531,15 @@ class Sweep:
 
     @property
     def ok(self) -> np.ndarray:
-        bad = np.zeros(len(self.phi1_deg), dtype=bool)
-        for mask in list(self.failed.values()) + list(self.singular.values()):
-            bad |= mask
-        return ~bad
+        """Where every group assembles and its plan is regular (read-only; worked
+        out once and kept in the instance's dictionary, as `_fields`)."""
+        found = self.__dict__.get("_ok")
+        if found is None:
+            bad = np.zeros(len(self.phi1_deg), dtype=bool)
+            for mask in list(self.failed.values()) + list(self.singular.values()):
+                bad |= mask
+            found = self.__dict__["_ok"] = _ro(~bad)
+        return found  # type: ignore[no-any-return]
 
     def problem(self, i: int) -> AssemblyError | SingularPlanError | None:
         """What went wrong at angle i, as the error a user reads (or None)."""
@@ -653,6 +687,37 @@ class Chain:
         assert arena is not None
         return arena.sweep(phi1_deg)
 
+    def sweeps(self, *phi1_deg: np.ndarray) -> tuple[Sweep, ...]:
+        """`sweep` at each of several sets of crank angles (deg, 1-d arrays),
+        solved in one pass over all of them (the kernels work angle by angle,
+        so each sweep holds the numbers its own `sweep` would) and handed out
+        as a Sweep each: one pass's fixed cost instead of one for every set."""
+        parts = [np.asarray(p, dtype=np.float64) for p in phi1_deg]
+        sizes = [p.size for p in parts]
+        total = sum(sizes)
+        if total > CHUNK or any(p.ndim != 1 for p in parts):
+            return tuple(self.sweep(p) for p in parts)
+        m, failed, singular = self._solve(np.radians(np.concatenate(parts)))
+        out = []
+        start = 0
+        for phi, n in zip(parts, sizes):
+            part = slice(start, start + n)
+            start += n
+            states = {
+                lid: _state_part(mo, part, n) if lid != FRAME else _frame_state(n)
+                for lid, mo in m.items()
+            }
+            out.append(
+                Sweep(
+                    self,
+                    _ro(phi.copy()),
+                    states,
+                    {g: _ro(x[part]) for g, x in failed.items()},
+                    {g: _ro(x[part]) for g, x in singular.items()},
+                )
+            )
+        return tuple(out)
+
     def point_motion(
         self, phi1_deg: np.ndarray, name: str
     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -670,6 +735,23 @@ class Chain:
         mo = m[lid]
         shape = phi1_deg.shape
         return ~bad, _over(mo.at(p), shape), _over(mo.vel_at(p), shape), _over(mo.acc_at(p), shape)
+
+    def point_motion_only(
+        self, phi1_deg: np.ndarray, name: str
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """`point_motion` without where the chain is solved: the position,
+        velocity and acceleration of one point (NaN where it is not solved),
+        by the same kernels, for a search that already knows its angles are
+        solved (the Newton steps of the extreme positions)."""
+        phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+        with quiet():
+            m = self.place_all(np.radians(phi1_deg), self.branches)
+            for solver in self.solvers:
+                solver.motion(m, SINGULAR_SIN)
+        lid, p = self.locate[name]
+        mo = m[lid]
+        shape = phi1_deg.shape
+        return _over(mo.at(p), shape), _over(mo.vel_at(p), shape), _over(mo.acc_at(p), shape)
 
     def point_position(self, phi1_deg: np.ndarray, name: str) -> np.ndarray:
         """The position of one point (complex) over the angles, from the

@@ -313,3 +313,49 @@ def test_random_extended_four_bars_turn_fully_or_are_refused(text):
                 want = float(np.hypot(*(link.points[names[i]] - link.points[names[j]])))
                 got = np.hypot(*(pts[names[i]] - pts[names[j]]).T)
                 assert np.all(np.abs(got - want) <= 1e-12 * max(1.0, want) + 1e-12)
+
+
+# --- no sketch, links drawn in place: the branch of the drawing ----------------------
+
+_DRAWN = """
+title = "Four-bar drawn in place"
+[drive]
+link = 1
+rpm = 120
+[study]
+positions = 12
+output = "B"
+working_direction = [1, 0]
+[frame]
+O = [0, 0]
+C = [300, 0]
+[[link]]
+id = 1
+points = {{ O = [0, 0], A = [50, 86.6025] }}
+[[link]]
+id = 2
+points = {{ A = [50, 86.6025], B = [250, {y}] }}
+[[link]]
+id = 3
+points = {{ C = [300, 0], B = [250, {y}] }}
+"""
+
+
+@pytest.mark.parametrize("y", [200, -200])
+def test_links_drawn_in_place_choose_the_drawn_branch(y):
+    """Both branches of this crank-rocker turn fully and there is no sketch:
+    the links' own coordinates (every point written where it stands at a
+    crank angle of 60°) decide. B drawn above the line A→C is to its left
+    (+1 by the RRR convention), below it to its right (-1); checked here by
+    the side of B itself, and by where the solved B stands at the drawing's
+    crank angle."""
+    mech = mmt_plans.loads(_DRAWN.format(y=y), "drawn.toml")
+    k = mmt_plans.kinematics(mech)
+    assert k.branches.rule == "as drawn"
+    assert len(k.branches.full_turn) == 2
+    A, B, C = complex(50, 86.6025), complex(250, y), complex(300, 0)
+    side = 1 if cross(C - A, B - A) > 0 else -1
+    assert k.branches.signs["2-3"] == side
+    at = k.at(60.0)
+    solved = complex(*at.points["B"][0])
+    assert abs(solved - B / 1000.0) < 1e-7  # the drawing's B (mm -> m); A is drawn to 1e-4 mm

@@ -46,6 +46,7 @@ from .base import (
     ReactionComponent,
     _c,
     fmt,
+    head_to_tail,
     reaction_name,
 )
 from .prp import PRP
@@ -138,11 +139,9 @@ def _driving_link(
         if not (f.force[0] == 0.0 and f.force[1] == 0.0 and f.couple)
     ]
     sides += [("F_bal", F_bal * t, True), (name, R01, False)]
-    vectors, start = [], 0j
-    for label, vec, known in sides:
-        vectors.append(PolygonVector(label, xy(vec), xy(start), known))
-        start += vec
-    polygon = ForcePolygon(f"link {d}", " + ".join(s_[0] for s_ in sides) + " = 0", tuple(vectors))
+    polygon = ForcePolygon(
+        f"link {d}", " + ".join(s_[0] for s_ in sides) + " = 0", head_to_tail(sides)
+    )
     free = body + (AppliedForce("F_bal", xy(F_bal * t), xy(A)), reaction.applied())
     return DrivingLinkForces(
         d, o, a, F_bal, xy(F_bal * t), F_bal * OA, reaction, polygon, free, tuple(steps)

@@ -15,7 +15,7 @@ from ...model import Prismatic, Revolute
 from ...structure import AssurGroup, other_link
 from ..errors import ForceError
 from ..loads import AppliedForce
-from ..state import PositionState, cross, xy
+from ..state import PositionState, cross, xy, xy_rows
 
 PairKind = Literal["R", "P"]
 
@@ -41,7 +41,7 @@ class ReactionComponent:
 
     @property
     def vector(self) -> np.ndarray:
-        return xy(complex(*self.direction) * self.value)
+        return xy(_c(self.direction) * self.value)
 
 
 @dataclass(frozen=True)
@@ -265,12 +265,7 @@ class GroupSolver:
         )
 
     def polygon(self, title: str, sides: list[tuple[str, complex, bool]]) -> ForcePolygon:
-        vectors, start = [], 0j
-        for label, vec, known in sides:
-            vectors.append(PolygonVector(label, xy(vec), xy(start), known))
-            start += vec
-        eq = " + ".join(label for label, _, _ in sides) + " = 0"
-        return ForcePolygon(title, eq, tuple(vectors))
+        return ForcePolygon(title, " + ".join(s[0] for s in sides) + " = 0", head_to_tail(sides))
 
     def load_sides(self, link: int) -> list[tuple[str, complex, bool]]:
         """The known forces of a link's free body, in the order they were applied."""
@@ -305,8 +300,23 @@ class GroupSolver:
 # --- helpers ----------------------------------------------------------------------------
 
 
+def head_to_tail(sides: list[tuple[str, complex, bool]]) -> tuple[PolygonVector, ...]:
+    """The sides of a force polygon head to tail from the origin (each vector
+    and where it starts as [x, y], made together)."""
+    starts, start = [], 0j
+    for _, vec, _ in sides:
+        starts.append(start)
+        start += vec
+    rows = xy_rows([vec for _, vec, _ in sides] + starts)
+    n = len(sides)
+    return tuple(
+        PolygonVector(label, rows[i], rows[n + i], known)
+        for i, (label, _, known) in enumerate(sides)
+    )
+
+
 def _c(v: np.ndarray) -> complex:
-    return complex(v[0], v[1])
+    return complex(*v.tolist())  # through Python floats (no numpy scalars): the same values
 
 
 def _swap_label(label: str, by: int, on: int) -> str:
