@@ -50,3 +50,21 @@ def test_first_free_is_the_first_free_candidate_in_order() -> None:
     assert first_free(region, boxes, 70.0, 30.0, 5.0, "top-left") is None
     # no box: the corner
     assert first_free(region, np.zeros((0, 4)), 20.0, 10.0, 0.0, "top-right") == (80.0, 40.0)
+
+
+@pytest.mark.parametrize("name", ["six_link_press", "shaper", "five_dyads"])
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_unlettered_mechanism_is_never_larger_than_the_drawing(name: str, lang: str) -> None:
+    # sheet 1 rejects a μ_l by the mechanism's lines and captions alone (no
+    # lettering) only if the lettered drawing would be at least as large
+    from mmt_plans.sheets.sheet1 import _unlettered_mechanism, sketch_mechanism
+
+    sol = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / f"{name}.toml"))
+    look = RecordingBackend(1, 1).look
+    for mu_l in (float(sol.mu_l), 2.0 * float(sol.mu_l)):
+        stand_in = _unlettered_mechanism(sol, mu_l, look, lang).extent()  # type: ignore[arg-type]
+        drawn = sketch_mechanism(sol, mu_l, look, lang).extent()  # type: ignore[arg-type]
+        # its lettering only adds to the drawing: strictly larger somewhere
+        assert stand_in.width <= drawn.width + 1e-9
+        assert stand_in.height <= drawn.height + 1e-9
+        assert stand_in.width * stand_in.height < drawn.width * drawn.height
