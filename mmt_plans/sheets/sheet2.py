@@ -1152,6 +1152,9 @@ class _Composer:
             self.drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
         self.drawings += ["driving-link", f"force-polygon-{dl.link}"]
         self.last: Exception | None = None
+        # where pack put each drawing after the same ones before it (arrange's
+        # trials share the start of their orders)
+        self.packed: dict[Any, tuple[float, float] | None] = {}
         # the pins each drawing of links draws, in m: its extent at μ_l holds
         # their box / μ_l (each pin a circle round its point) and PAD round it
         mech = fa.loads.state.mech
@@ -1338,7 +1341,7 @@ class _Composer:
             for head in ([first, *tables], [*tables, first]):
                 placed = self.memo(("head", gap, *head), lambda: pack(self.page, head, gap))
                 if placed is not None:
-                    placed = pack(self.page, rest, gap, placed)
+                    placed = pack(self.page, rest, gap, placed, known=self.packed)
                 if placed is not None:
                     break
             if placed is None:
@@ -1357,21 +1360,33 @@ class _Composer:
         key = ("fits", tuple(sorted(steps.items())))
         if key not in self.cache:
             scales = self.scales(steps)
-            field = self.page.frame.inset(5.0)
-            least = self.least_area(scales)
-            if least > field.width * field.height:
-                # arrange would find the drawings larger still: no need to sketch them
-                self.last = LayoutError(
-                    f"the drawings take at least {least / 1e4:.0f} dm², more than the "
-                    f"{field.width * field.height / 1e4:.0f} dm² of the sheet's field"
-                )
-                self.cache[key] = False
-                self.cache[("bounded", key)] = least / (field.width * field.height)
-                return False
-            self.cache[key] = self._staged(scales) and (
-                self.arrange(self.sketches(scales)[0]) is not None
-            )
+            # steps that give the same scales (a polygon's μF held at its
+            # limit) fit as those did: the same answer, reason and bound
+            same = ("fits at", tuple(sorted(scales.items())))
+            if same not in self.cache:
+                ok, over = self._fits(scales)
+                self.cache[same] = (ok, self.last, over)
+            ok, last, over = self.cache[same]
+            self.cache[key] = ok
+            if not ok:
+                self.last = last
+            if over is not None:
+                self.cache[("bounded", key)] = over
         return bool(self.cache[key])
+
+    def _fits(self, scales: dict[str, float]) -> tuple[bool, float | None]:
+        """Whether the drawings at `scales` fit the sheet; with how many times
+        the field's area they take at least where that alone says no."""
+        field = self.page.frame.inset(5.0)
+        least = self.least_area(scales)
+        if least > field.width * field.height:
+            # arrange would find the drawings larger still: no need to sketch them
+            self.last = LayoutError(
+                f"the drawings take at least {least / 1e4:.0f} dm², more than the "
+                f"{field.width * field.height / 1e4:.0f} dm² of the sheet's field"
+            )
+            return False, least / (field.width * field.height)
+        return self._staged(scales) and self.arrange(self.sketches(scales)[0]) is not None, None
 
     def _staged(self, scales: dict[str, float]) -> bool:
         """False where the drawings at `scales`, sketched one at a time, take

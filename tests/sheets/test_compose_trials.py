@@ -68,3 +68,55 @@ def test_unlettered_mechanism_is_never_larger_than_the_drawing(name: str, lang: 
         assert stand_in.width <= drawn.width + 1e-9
         assert stand_in.height <= drawn.height + 1e-9
         assert stand_in.width * stand_in.height < drawn.width * drawn.height
+
+
+def _first_free_by_shapely(
+    region: Rect, boxes: np.ndarray, w: float, h: float, gap: float, corner: str
+) -> tuple[float, float] | None:
+    """first_free's rule asked one candidate at a time of shapely (an independent route)."""
+    import shapely
+
+    from mmt_plans.drawing.layout import _EPS, _candidates
+
+    for x, y in _candidates(region, boxes, w, h, gap, corner):
+        me = shapely.box(x, y, x + w, y + h)
+        if gap > 0:
+            hit = any(me.distance(shapely.box(*b)) < gap - _EPS for b in boxes)
+        else:
+            hit = any(me.intersection(shapely.box(*b)).area > 0 for b in boxes)
+        if not hit:
+            return float(x), float(y)
+    return None
+
+
+def test_first_free_agrees_with_shapely_on_random_sheets() -> None:
+    rng = np.random.default_rng(7)
+    region = Rect(10.0, 10.0, 400.0, 250.0)
+    for trial in range(150):
+        n = int(rng.integers(0, 12))
+        lo = rng.uniform([10.0, 10.0], [380.0, 240.0], size=(n, 2))
+        size = rng.uniform(5.0, 120.0, size=(n, 2))
+        boxes = np.c_[lo, lo + size].reshape(-1, 4)
+        w, h = rng.uniform(5.0, 150.0, size=2)
+        gap = [0.0, 3.0, 8.0][trial % 3]
+        corner = ["top-left", "top-right", "bottom-left", "bottom-right"][trial % 4]
+        want = _first_free_by_shapely(region, boxes, w, h, gap, corner)
+        assert first_free(region, boxes, w, h, gap, corner) == want
+
+
+def test_pack_remembering_places_each_item_as_without() -> None:
+    from mmt_plans.drawing.layout import pack
+
+    page = Page.of("A1")
+    rng = np.random.default_rng(3)
+    known: dict = {}
+    for _ in range(30):
+        items = [
+            (f"d{i}", *map(float, rng.uniform(40.0, 220.0, size=2)), "top-left")
+            for i in range(int(rng.integers(1, 9)))
+        ]
+        head = pack(page, items[:1], 5.0)
+        assert head is not None
+        for order in (items[1:], items[1:][::-1], items[1:]):
+            assert pack(page, order, 5.0, head, known=known) == pack(page, order, 5.0, head)
+    assert known  # it remembered
