@@ -120,3 +120,44 @@ def test_pack_remembering_places_each_item_as_without() -> None:
         for order in (items[1:], items[1:][::-1], items[1:]):
             assert pack(page, order, 5.0, head, known=known) == pack(page, order, 5.0, head)
     assert known  # it remembered
+
+
+def test_obstacle_index_pairs_agree_with_shapely_for_solids() -> None:
+    # boxes_near and lines_near skip shapely for a solid whose box is already
+    # past its clearance: the pairs must be those shapely finds one by one
+    import shapely
+
+    from mmt_plans.drawing.labels import _ObstacleIndex
+
+    rng = np.random.default_rng(11)
+    solids = []
+    for _ in range(40):
+        x, y = rng.uniform(0.0, 100.0, size=2)
+        if rng.random() < 0.5:  # an arrowhead
+            p = rng.uniform(-4.0, 4.0, size=(3, 2)) + (x, y)
+            solids.append(shapely.Polygon(p))
+        else:  # a filled disc
+            solids.append(shapely.Point(x, y).buffer(float(rng.uniform(0.5, 3.0)), 16))
+    clearance = rng.uniform(0.2, 2.5, size=len(solids))
+    index = _ObstacleIndex(solids, clearance)
+    x0, y0 = rng.uniform(0.0, 100.0, size=(2, 300))
+    x1, y1 = x0 + rng.uniform(1.0, 8.0, size=300), y0 + rng.uniform(1.0, 4.0, size=300)
+    got = set(zip(*index.boxes_near(x0, y0, x1, y1)))
+    boxes = shapely.box(x0, y0, x1, y1)
+    want = {
+        (i, j)
+        for i in range(300)
+        for j in range(len(solids))
+        if shapely.distance(boxes[i], solids[j]) < clearance[j]
+    }
+    assert got == want and want
+    ends = rng.uniform(0.0, 100.0, size=(200, 4))
+    lines = np.array([shapely.LineString([(a, b), (c, d)]) for a, b, c, d in ends])
+    got = set(zip(*index.lines_near(lines)))
+    want = {
+        (i, j)
+        for i in range(200)
+        for j in range(len(solids))
+        if shapely.distance(lines[i], solids[j]) < clearance[j]
+    }
+    assert got == want and want
