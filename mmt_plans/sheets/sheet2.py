@@ -584,8 +584,11 @@ def _caption_place(
     xs, ys = np.meshgrid(np.arange(lo[0], hi[0], 1.0), np.arange(lo[1], hi[1], 1.0))
     q = np.c_[xs.ravel(), ys.ravel()]
     x0, y0, x1, y1 = q[:, 0] - w / 2, q[:, 1] - h / 2, q[:, 0] + w / 2, q[:, 1] + h / 2
-    on = shapely.distance(shapely.box(x0, y0, x1, y1), region) <= 3.0
-    taken = np.array([b.bounds for b in labels.boxes]).reshape(-1, 4)
+    # a box whose centre is inside the polygon meets it; the others are measured
+    on = shapely.contains_xy(region, q[:, 0], q[:, 1])
+    ask = np.flatnonzero(~on)
+    on[ask] = shapely.distance(shapely.box(x0[ask], y0[ask], x1[ask], y1[ask]), region) <= 3.0
+    taken = shapely.bounds(labels.boxes).reshape(-1, 4)
     gap = labels.spacing
     clash = (
         (taken[None, :, 0] - gap < x1[:, None])
