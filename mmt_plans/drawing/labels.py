@@ -661,7 +661,7 @@ class Labels:
         each other as if they were one."""
         if not self.boxes:
             return np.zeros(x0.size)
-        b = np.array([g.bounds for g in self.boxes])
+        b = shapely.bounds(self.boxes)  # every box's bounds in one call
         sp = self.spacing
         dx = np.minimum(x1[:, None], b[:, 2] + sp) - np.maximum(x0[:, None], b[:, 0] - sp)
         dy = np.minimum(y1[:, None], b[:, 3]) - np.maximum(y0[:, None], b[:, 1])
@@ -1197,11 +1197,28 @@ class _ObstacleIndex:
             other = ~seg & ~upright
             if other.any():
                 rest = near[:, other]
-                gap[other] = shapely.distance(
-                    shapely.box(x0[rest[0]], y0[rest[0]], x1[rest[0]], y1[rest[0]]),
-                    self.whole[rest[1] - self.n_segs],
+                gap[other] = self._far_or(
+                    rest,
+                    _box_box(b[other], self.whole_bounds[rest[1] - self.n_segs]),
+                    lambda ask: shapely.box(x0[ask], y0[ask], x1[ask], y1[ask]),
                 )
         return self._pairs(near, gap)
+
+    def _far_or(
+        self, pairs: np.ndarray, lower: np.ndarray, shapes: Callable[[np.ndarray], Any]
+    ) -> np.ndarray:
+        """The distances of (query, solid) `pairs` as `_pairs` reads them:
+        `lower` (each query's distance to its solid's box, no more than to
+        the solid) where that is past the solid's clearance by more than
+        rounding, else the exact distance of the query's shape (`shapes` of
+        the queries' indices) from the solid, asked of shapely."""
+        ask = lower < self.reach[self.owner[pairs[1]]] + 1e-9
+        out = lower.copy()
+        if ask.any():
+            out[ask] = shapely.distance(
+                shapes(pairs[0][ask]), self.whole[pairs[1][ask] - self.n_segs]
+            )
+        return out
 
     def boxes_clear(
         self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
@@ -1254,7 +1271,8 @@ class _ObstacleIndex:
         gap[seg] = _segment_segment(self.segs[near[1][seg]], xy[near[0][seg]])
         if (~seg).any():
             rest = near[:, ~seg]
-            gap[~seg] = shapely.distance(lines[rest[0]], self.whole[rest[1] - self.n_segs])
+            lower = _segment_box(xy[rest[0]], self.whole_bounds[rest[1] - self.n_segs])
+            gap[~seg] = self._far_or(rest, lower, lambda ask: lines[ask])
         return self._pairs(near, gap)
 
 

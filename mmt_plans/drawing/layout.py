@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Literal, Union
+from typing import Any, Literal, Union
 
 import numpy as np
 import shapely
@@ -122,41 +122,37 @@ def _axes(
     """The columns (x) and rows (y) a width × height rectangle's lower-left
     corner may take: in line with the region's edges and, `gap` away, with
     the boxes' edges (x0, y0, x1, y1 rows); each nearest `corner` first."""
-    xs = _places(region.left, region.right, width, boxes[:, 0], boxes[:, 2], gap)
-    ys = _places(region.bottom, region.top, height, boxes[:, 1], boxes[:, 3], gap)
+    xs, ys = _axis_lists(region, boxes.tolist(), width, height, gap, corner)
+    return np.array(xs, dtype=float), np.array(ys, dtype=float)
+
+
+def _axis_lists(
+    region: Rect, boxes: list[list[float]], width: float, height: float, gap: float, corner: str
+) -> tuple[list[float], list[float]]:
+    """_axes as lists (a few dozen values: Python's own floats are quicker than numpy's)."""
+    xs = _places(
+        region.left, region.right, width, [b[0] for b in boxes], [b[2] for b in boxes], gap
+    )
+    ys = _places(
+        region.bottom, region.top, height, [b[1] for b in boxes], [b[3] for b in boxes], gap
+    )
     if corner.startswith("top"):
-        ys = ys[::-1]
+        ys.reverse()
     if not corner.endswith("left"):
-        xs = xs[::-1]
+        xs.reverse()
     return xs, ys
 
 
 def _places(
-    lo: float, hi: float, size: float, box_lo: np.ndarray, box_hi: np.ndarray, gap: float
-) -> np.ndarray:
+    lo: float, hi: float, size: float, box_lo: list[float], box_hi: list[float], gap: float
+) -> list[float]:
     """Where a side `size` long may start along one axis of [lo, hi]: at
     either end, or `gap` beyond a box's side; ascending, each once."""
-    return _sorted_unique(
-        (lo, hi - size), box_hi + gap, box_lo - gap - size, lo - _EPS, hi - size + _EPS
-    )
-
-
-def _sorted_unique(
-    edges: tuple[float, float], after: np.ndarray, before: np.ndarray, lo: float, hi: float
-) -> np.ndarray:
-    """np.unique of the values `edges`, `after`, `before` within [lo, hi]."""
-    n = len(after)
-    v = np.empty(2 + 2 * n)
-    v[:2] = edges
-    v[2 : 2 + n] = after
-    v[2 + n :] = before
-    v = np.sort(v[(v >= lo) & (v <= hi)])
-    if v.size < 2:
-        return v
-    keep = np.empty(v.size, dtype=bool)
-    keep[0] = True
-    np.not_equal(v[1:], v[:-1], out=keep[1:])
-    return v[keep]
+    first, last = lo - _EPS, hi - size + _EPS
+    values = {lo, hi - size}
+    values.update(v + gap for v in box_hi)
+    values.update(v - gap - size for v in box_lo)
+    return sorted(v for v in values if first <= v <= last)
 
 
 def first_free(
@@ -166,25 +162,41 @@ def first_free(
     (_candidates) for a width × height rectangle in `region` that keeps `gap`
     mm from every box (x0, y0, x1, y1 rows; with gap 0, interiors do not
     meet), on arrays; None when there is no room. The candidates are the
-    grid of _axes' columns × rows, tested as one (rows, columns, boxes) array
-    in the order _candidates gives them (nearest `corner` first, rows first)."""
-    xs, ys = _axes(region, boxes, width, height, gap, corner)
-    if not xs.size or not ys.size:
+    grid of _axes' columns × rows, tested as (rows, columns, boxes) arrays in
+    the order _candidates gives them (nearest `corner` first, rows first): a
+    few rows first, then four times as many, the first free one ending it."""
+    xs, ys = _axis_lists(region, boxes.tolist(), width, height, gap, corner)
+    if not xs or not ys:
         return None
     if not len(boxes):
         return float(xs[0]), float(ys[0])
+    X, Y = np.array(xs), np.array(ys)
     # the gap between each column/row and each box (negative where they overlap)
-    dx = np.maximum(boxes[None, :, 0] - (xs[:, None] + width), xs[:, None] - boxes[None, :, 2])
-    dy = np.maximum(boxes[None, :, 1] - (ys[:, None] + height), ys[:, None] - boxes[None, :, 3])
+    dx = np.maximum(boxes[None, :, 0] - (X[:, None] + width), X[:, None] - boxes[None, :, 2])
+    dy = np.maximum(boxes[None, :, 1] - (Y[:, None] + height), Y[:, None] - boxes[None, :, 3])
+    g = gap - _EPS  # within `gap` of a box: the squared distance, no square roots
+    if g > 0:
+        # within it exactly where ex² + ey² < g² (which holds only where the
+        # gaps dx, dy are both under g as well)
+        ex, ey = np.maximum(dx, 0.0), np.maximum(dy, 0.0)
+        ex2, ey2 = ex * ex, ey * ey
+        start, size = 0, 4
+        while start < len(ys):
+            clash = ((ey2[start : start + size, None, :] + ex2[None, :, :]) < g * g).any(axis=2)
+            ok = np.flatnonzero(~clash)  # row-major: rows first, then columns
+            if ok.size:
+                row, col = divmod(int(ok[0]), len(xs))
+                return float(xs[col]), float(ys[start + row])
+            start, size = start + size, 4 * size
+        return None
     DX, DY = dx[None, :, :], dy[:, None, :]  # (rows, columns, boxes)
     if gap > 0:
-        g = gap - _EPS  # within `gap` of a box: the squared distance, no square roots
         ex, ey = np.maximum(dx, 0.0), np.maximum(dy, 0.0)
         near = (ex * ex)[None, :, :] + (ey * ey)[:, None, :] < g * g
         clash = ((DX < g) & (DY < g) & near).any(axis=2)
     else:
         clash = ((DX < 0) & (DY < 0)).any(axis=2)
-    ok = np.flatnonzero(~clash)  # row-major: rows first, then columns
+    ok = np.flatnonzero(~clash)
     if not ok.size:
         return None
     row, col = divmod(int(ok[0]), len(xs))
@@ -304,20 +316,30 @@ def pack(
     gap: float,
     placed: Mapping[str, Rect] | None = None,
     frame_clearance: float = 5.0,
+    known: dict[Any, tuple[float, float] | None] | None = None,
 ) -> dict[str, Rect] | None:
     """Rectangles for (name, width, height, corner) in turn, as
     SheetLayout.place finds them (first_free: inside the frame less
     `frame_clearance`, `gap` mm from the title block, from those `placed`
     before and from each other, the candidate nearest the corner, rows
     first), without registering footprints: None when one finds no room. The
-    packer of both sheets' trial layouts."""
+    packer of both sheets' trial layouts. `known` (a dict kept for one page)
+    remembers where each item went after the same items before it, so that
+    trials sharing the start of their order place that start once."""
     region = page.frame.inset(frame_clearance)
     tb = page.title_block.rect
     boxes = [(tb.left, tb.bottom, tb.right, tb.top)]
     boxes += [(r.left, r.bottom, r.right, r.top) for r in (placed or {}).values()]
     out: dict[str, Rect] = dict(placed or {})
-    for name, w, h, corner in items:
-        at = first_free(region, np.array(boxes), w, h, gap, corner)
+    start = (gap, frame_clearance, tuple((n, r.x, r.y, r.width, r.height) for n, r in out.items()))
+    for i, (name, w, h, corner) in enumerate(items):
+        key = (start, tuple(items[: i + 1])) if known is not None else None
+        if known is not None and key in known:
+            at = known[key]
+        else:
+            at = first_free(region, np.array(boxes), w, h, gap, corner)
+            if known is not None:
+                known[key] = at
         if at is None:
             return None
         out[name] = Rect(at[0], at[1], w, h)

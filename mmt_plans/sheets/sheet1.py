@@ -631,29 +631,59 @@ def _sliders(
     )
 
 
+def _mechanism_lines(sk: Sketch, solution: Solution, mu_l: float) -> None:
+    """The mechanism's line work, no lettering: the trajectories, every
+    position's links, thin but for the planned ones; those drawn whole:
+    sliders on their guides (a frame's guide hatched once under the stroke, a
+    slot drawn from the block along its link), the joints, and at position 0
+    the frame's pivots."""
+    pts = solution.sweep.points
+    n = len(solution.positions)
+    main = {0, *(solution.entry(i) for i in solution.plan_positions)}
+
+    def at(name: str, k: int) -> np.ndarray:
+        return np.asarray(pts[name][k], dtype=float) / mu_l
+
+    _trajectories(sk, solution, mu_l)
+    poses = [_position(solution, k, mu_l, main) for k in range(n)]
+    guides, blocks = _sliders(solution, mu_l, main, at)
+    for k in sorted(main):
+        own = (*(guides[None] if k == 0 else ()), *guides[k])
+        poses[k] = dataclasses.replace(poses[k], guides=own, blocks=blocks[k])
+    draw_poses(sk, poses)
+
+
+def _mechanism_captions(sk: Sketch, mu_l: float, lang: Language) -> None:
+    """The scale under the drawn mechanism, its title over it."""
+    ext = sk.extent()
+    label = scale_label(mu_l, "length", lang)
+    sk.rich_text((ext.x + _PAD, ext.bottom - 6.0), label.markup(), _TEXT)
+    sk.text((ext.x + _PAD, ext.top + 3.0), _words(lang)["mechanism"], _TITLE)
+
+
+def _unlettered_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language) -> Sketch:
+    """A stand-in for the mechanism's drawing no larger than it in width and in
+    height: its lines and its captions without the lettering (the drawing
+    adds names, arcs and numbers round the same lines and puts the same
+    captions round all of it)."""
+    sk = Sketch(look)
+    _mechanism_lines(sk, solution, mu_l)
+    _mechanism_captions(sk, mu_l, lang)
+    return sk
+
+
 def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language) -> Sketch:
     mech = solution.mechanism
     pts = solution.sweep.points
     owners = {p: (0 if 0 in o else o[0], o) for p, o in mech.point_owners.items()}
     n = len(solution.positions)
-    main = {0, *(solution.entry(i) for i in solution.plan_positions)}
     sk = Sketch(look)
 
     def at(name: str, k: int) -> np.ndarray:
         return np.asarray(pts[name][k], dtype=float) / mu_l
 
     with sk.group("mechanism", "mechanism"):
-        _trajectories(sk, solution, mu_l)
-        # Every position's links, thin but for the planned ones; those drawn
-        # whole: sliders on their guides (a frame's guide hatched once under
-        # the stroke, a slot drawn from the block along its link), the joints,
-        # and at position 0 the frame's pivots.
-        poses = [_position(solution, k, mu_l, main) for k in range(n)]
-        guides, blocks = _sliders(solution, mu_l, main, at)
-        for k in sorted(main):
-            own = (*(guides[None] if k == 0 else ()), *guides[k])
-            poses[k] = dataclasses.replace(poses[k], guides=own, blocks=blocks[k])
-        draw_poses(sk, poses)
+        _mechanism_lines(sk, solution, mu_l)
         # Lettering goes where it covers no line, no arc and no other letter:
         # the joints' names first (the arcs are then drawn clear of them), then
         # ω and ε once every arc is drawn, then the positions' numbers.
@@ -753,10 +783,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             p = at(mech.crank_pin, k)
             labels.place(p, str(index), towards=unit_vector(p - pivot), distance=3.0)
         labels.size = _TEXT
-        ext = sk.extent()
-        label = scale_label(mu_l, "length", lang)
-        sk.rich_text((ext.x + _PAD, ext.bottom - 6.0), label.markup(), _TEXT)
-        sk.text((ext.x + _PAD, ext.top + 3.0), _words(lang)["mechanism"], _TITLE)
+        _mechanism_captions(sk, mu_l, lang)
     return sk
 
 
@@ -1629,6 +1656,28 @@ def _may_fit(
     return False, in_field
 
 
+def _past_field(
+    page: Page,
+    sketches: Mapping[str, Sketch],
+    order: Sequence[str],
+    arrangements: Sequence[tuple[float | None, str]],
+    extents: _Extents | None = None,
+) -> bool:
+    """Whether the stand-in mechanism is larger than its field in every
+    arrangement _try_layout would try. What is placed before the mechanism is
+    the same for the stand-in and the drawing, so is its field: where the
+    stand-in is larger than the field, the drawing (no smaller) is too, and
+    _try_layout fails at the mechanism for both."""
+    for gap, (tables_width, corner) in itertools.product((8.0, 5.0), arrangements):
+        try:
+            _try_layout(page, sketches, order, gap, True, tables_width, corner, extents)
+        except LayoutError as err:
+            if str(err).startswith("mechanism") and "larger than its field" in str(err):
+                continue
+        return False
+    return True
+
+
 # --- the diagrams take the room that is left ------------------------------------------
 
 _STACK_GAP = 6.0  # _stack's gap between the S, V and a diagrams
@@ -1831,6 +1880,11 @@ def compose_sheet1(
             cache[("mechanism", mu_l)] = sketch_mechanism(solution, mu_l, look, lang)
         return cast(Sketch, cache[("mechanism", mu_l)])
 
+    def unlettered(mu_l: float) -> Sketch:
+        if ("unlettered", mu_l) not in cache:
+            cache[("unlettered", mu_l)] = _unlettered_mechanism(solution, mu_l, look, lang)
+        return cast(Sketch, cache[("unlettered", mu_l)])
+
     last: Exception | None = None
     fitted = 0  # candidates whose mechanism fitted its field but whose sheet did not
     for mu_l in candidates:
@@ -1855,6 +1909,11 @@ def compose_sheet1(
                 if not in_field:
                     break  # its field is set before the plans are placed: no shrink helps
                 continue
+            # the lines and captions alone larger than the mechanism's field in
+            # every arrangement: so is the lettered drawing (no need to letter it)
+            sketches["mechanism"] = unlettered(mu_l)
+            if _past_field(page, sketches, order, arrangements, extents):
+                break
             sketches["mechanism"] = mechanism(mu_l)
             in_field = False
             for gap, (tables_width, corner) in itertools.product((8.0, 5.0), arrangements):

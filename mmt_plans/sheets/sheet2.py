@@ -584,8 +584,11 @@ def _caption_place(
     xs, ys = np.meshgrid(np.arange(lo[0], hi[0], 1.0), np.arange(lo[1], hi[1], 1.0))
     q = np.c_[xs.ravel(), ys.ravel()]
     x0, y0, x1, y1 = q[:, 0] - w / 2, q[:, 1] - h / 2, q[:, 0] + w / 2, q[:, 1] + h / 2
-    on = shapely.distance(shapely.box(x0, y0, x1, y1), region) <= 3.0
-    taken = np.array([b.bounds for b in labels.boxes]).reshape(-1, 4)
+    # a box whose centre is inside the polygon meets it; the others are measured
+    on = shapely.contains_xy(region, q[:, 0], q[:, 1])
+    ask = np.flatnonzero(~on)
+    on[ask] = shapely.distance(shapely.box(x0[ask], y0[ask], x1[ask], y1[ask]), region) <= 3.0
+    taken = shapely.bounds(labels.boxes).reshape(-1, 4)
     gap = labels.spacing
     clash = (
         (taken[None, :, 0] - gap < x1[:, None])
@@ -1152,6 +1155,9 @@ class _Composer:
             self.drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
         self.drawings += ["driving-link", f"force-polygon-{dl.link}"]
         self.last: Exception | None = None
+        # where pack put each drawing after the same ones before it (arrange's
+        # trials share the start of their orders)
+        self.packed: dict[Any, tuple[float, float] | None] = {}
         # the pins each drawing of links draws, in m: its extent at μ_l holds
         # their box / μ_l (each pin a circle round its point) and PAD round it
         mech = fa.loads.state.mech
@@ -1338,7 +1344,7 @@ class _Composer:
             for head in ([first, *tables], [*tables, first]):
                 placed = self.memo(("head", gap, *head), lambda: pack(self.page, head, gap))
                 if placed is not None:
-                    placed = pack(self.page, rest, gap, placed)
+                    placed = pack(self.page, rest, gap, placed, known=self.packed)
                 if placed is not None:
                     break
             if placed is None:
@@ -1357,21 +1363,33 @@ class _Composer:
         key = ("fits", tuple(sorted(steps.items())))
         if key not in self.cache:
             scales = self.scales(steps)
-            field = self.page.frame.inset(5.0)
-            least = self.least_area(scales)
-            if least > field.width * field.height:
-                # arrange would find the drawings larger still: no need to sketch them
-                self.last = LayoutError(
-                    f"the drawings take at least {least / 1e4:.0f} dm², more than the "
-                    f"{field.width * field.height / 1e4:.0f} dm² of the sheet's field"
-                )
-                self.cache[key] = False
-                self.cache[("bounded", key)] = least / (field.width * field.height)
-                return False
-            self.cache[key] = self._staged(scales) and (
-                self.arrange(self.sketches(scales)[0]) is not None
-            )
+            # steps that give the same scales (a polygon's μF held at its
+            # limit) fit as those did: the same answer, reason and bound
+            same = ("fits at", tuple(sorted(scales.items())))
+            if same not in self.cache:
+                ok, over = self._fits(scales)
+                self.cache[same] = (ok, self.last, over)
+            ok, last, over = self.cache[same]
+            self.cache[key] = ok
+            if not ok:
+                self.last = last
+            if over is not None:
+                self.cache[("bounded", key)] = over
         return bool(self.cache[key])
+
+    def _fits(self, scales: dict[str, float]) -> tuple[bool, float | None]:
+        """Whether the drawings at `scales` fit the sheet; with how many times
+        the field's area they take at least where that alone says no."""
+        field = self.page.frame.inset(5.0)
+        least = self.least_area(scales)
+        if least > field.width * field.height:
+            # arrange would find the drawings larger still: no need to sketch them
+            self.last = LayoutError(
+                f"the drawings take at least {least / 1e4:.0f} dm², more than the "
+                f"{field.width * field.height / 1e4:.0f} dm² of the sheet's field"
+            )
+            return False, least / (field.width * field.height)
+        return self._staged(scales) and self.arrange(self.sketches(scales)[0]) is not None, None
 
     def _staged(self, scales: dict[str, float]) -> bool:
         """False where the drawings at `scales`, sketched one at a time, take

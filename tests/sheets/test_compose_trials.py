@@ -50,3 +50,114 @@ def test_first_free_is_the_first_free_candidate_in_order() -> None:
     assert first_free(region, boxes, 70.0, 30.0, 5.0, "top-left") is None
     # no box: the corner
     assert first_free(region, np.zeros((0, 4)), 20.0, 10.0, 0.0, "top-right") == (80.0, 40.0)
+
+
+@pytest.mark.parametrize("name", ["six_link_press", "shaper", "five_dyads"])
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_unlettered_mechanism_is_never_larger_than_the_drawing(name: str, lang: str) -> None:
+    # sheet 1 rejects a μ_l by the mechanism's lines and captions alone (no
+    # lettering) only if the lettered drawing would be at least as large
+    from mmt_plans.sheets.sheet1 import _unlettered_mechanism, sketch_mechanism
+
+    sol = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / f"{name}.toml"))
+    look = RecordingBackend(1, 1).look
+    for mu_l in (float(sol.mu_l), 2.0 * float(sol.mu_l)):
+        stand_in = _unlettered_mechanism(sol, mu_l, look, lang).extent()  # type: ignore[arg-type]
+        drawn = sketch_mechanism(sol, mu_l, look, lang).extent()  # type: ignore[arg-type]
+        # its lettering only adds to the drawing: strictly larger somewhere
+        assert stand_in.width <= drawn.width + 1e-9
+        assert stand_in.height <= drawn.height + 1e-9
+        assert stand_in.width * stand_in.height < drawn.width * drawn.height
+
+
+def _first_free_by_shapely(
+    region: Rect, boxes: np.ndarray, w: float, h: float, gap: float, corner: str
+) -> tuple[float, float] | None:
+    """first_free's rule asked one candidate at a time of shapely (an independent route)."""
+    import shapely
+
+    from mmt_plans.drawing.layout import _EPS, _candidates
+
+    for x, y in _candidates(region, boxes, w, h, gap, corner):
+        me = shapely.box(x, y, x + w, y + h)
+        if gap > 0:
+            hit = any(me.distance(shapely.box(*b)) < gap - _EPS for b in boxes)
+        else:
+            hit = any(me.intersection(shapely.box(*b)).area > 0 for b in boxes)
+        if not hit:
+            return float(x), float(y)
+    return None
+
+
+def test_first_free_agrees_with_shapely_on_random_sheets() -> None:
+    rng = np.random.default_rng(7)
+    region = Rect(10.0, 10.0, 400.0, 250.0)
+    for trial in range(150):
+        n = int(rng.integers(0, 12))
+        lo = rng.uniform([10.0, 10.0], [380.0, 240.0], size=(n, 2))
+        size = rng.uniform(5.0, 120.0, size=(n, 2))
+        boxes = np.c_[lo, lo + size].reshape(-1, 4)
+        w, h = rng.uniform(5.0, 150.0, size=2)
+        gap = [0.0, 3.0, 8.0][trial % 3]
+        corner = ["top-left", "top-right", "bottom-left", "bottom-right"][trial % 4]
+        want = _first_free_by_shapely(region, boxes, w, h, gap, corner)
+        assert first_free(region, boxes, w, h, gap, corner) == want
+
+
+def test_pack_remembering_places_each_item_as_without() -> None:
+    from mmt_plans.drawing.layout import pack
+
+    page = Page.of("A1")
+    rng = np.random.default_rng(3)
+    known: dict = {}
+    for _ in range(30):
+        items = [
+            (f"d{i}", *map(float, rng.uniform(40.0, 220.0, size=2)), "top-left")
+            for i in range(int(rng.integers(1, 9)))
+        ]
+        head = pack(page, items[:1], 5.0)
+        assert head is not None
+        for order in (items[1:], items[1:][::-1], items[1:]):
+            assert pack(page, order, 5.0, head, known=known) == pack(page, order, 5.0, head)
+    assert known  # it remembered
+
+
+def test_obstacle_index_pairs_agree_with_shapely_for_solids() -> None:
+    # boxes_near and lines_near skip shapely for a solid whose box is already
+    # past its clearance: the pairs must be those shapely finds one by one
+    import shapely
+
+    from mmt_plans.drawing.labels import _ObstacleIndex
+
+    rng = np.random.default_rng(11)
+    solids = []
+    for _ in range(40):
+        x, y = rng.uniform(0.0, 100.0, size=2)
+        if rng.random() < 0.5:  # an arrowhead
+            p = rng.uniform(-4.0, 4.0, size=(3, 2)) + (x, y)
+            solids.append(shapely.Polygon(p))
+        else:  # a filled disc
+            solids.append(shapely.Point(x, y).buffer(float(rng.uniform(0.5, 3.0)), 16))
+    clearance = rng.uniform(0.2, 2.5, size=len(solids))
+    index = _ObstacleIndex(solids, clearance)
+    x0, y0 = rng.uniform(0.0, 100.0, size=(2, 300))
+    x1, y1 = x0 + rng.uniform(1.0, 8.0, size=300), y0 + rng.uniform(1.0, 4.0, size=300)
+    got = set(zip(*index.boxes_near(x0, y0, x1, y1)))
+    boxes = shapely.box(x0, y0, x1, y1)
+    want = {
+        (i, j)
+        for i in range(300)
+        for j in range(len(solids))
+        if shapely.distance(boxes[i], solids[j]) < clearance[j]
+    }
+    assert got == want and want
+    ends = rng.uniform(0.0, 100.0, size=(200, 4))
+    lines = np.array([shapely.LineString([(a, b), (c, d)]) for a, b, c, d in ends])
+    got = set(zip(*index.lines_near(lines)))
+    want = {
+        (i, j)
+        for i in range(200)
+        for j in range(len(solids))
+        if shapely.distance(lines[i], solids[j]) < clearance[j]
+    }
+    assert got == want and want
