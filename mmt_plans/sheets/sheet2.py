@@ -301,11 +301,11 @@ class _Drawing:
             if name is not None:
                 rooms = self.labels.rooms(centre, name[0], towards=name[1], keep_off=arc)
                 lost += 2 * int(not len(rooms))
+            if not lost:  # room for both: the first such start
+                return start
             score = (lost, round(self.labels.covered(arc.buffer(0.3)), 1))
             if best is None or score < best[0]:
                 best = (score, start)
-            if not lost:
-                break
         assert best is not None
         return best[1]
 
