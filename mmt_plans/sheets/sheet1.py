@@ -1551,8 +1551,10 @@ def _try_layout(
     tables_width: float | None = None,
     diagrams: str = "bottom-left",
     extents: _Extents | None = None,
+    reserved: Mapping[str, tuple[float, float]] | None = None,
 ) -> tuple[SheetLayout, dict[str, Rect], Rect | None]:
-    """Place every sketch in `order`; the mechanism inside its field when
+    """Place every sketch in `order` (a `reserved` one in a box of that width
+    and height, its sketch at the box's bottom left); the mechanism inside its field when
     `with_field` (LayoutError if it does not fit there); the tables within
     `tables_width` mm of the right edge when given (a block, not a row); the
     diagrams from the `diagrams` corner (bottom left, under the mechanism, as
@@ -1565,6 +1567,8 @@ def _try_layout(
     field: Rect | None = None
     for name in order:
         ext = extent(sketches[name])
+        if reserved is not None and name in reserved:
+            ext = Rect(ext.x, ext.y, *reserved[name])
         corner = diagrams if name.startswith("diagram") else _PLACEMENT.get(name, "top-left")
         kind = "table" if name.startswith("table") else "drawing"
         within = None
@@ -1903,15 +1907,21 @@ def compose_sheet1(
                     continue
                 done, done_drawn, done_scales = sketches, drawn, {**scales, "mu_l": mu_l}
                 for again in (False, True):
-                    if again:  # the sheet laid out again round the grown diagrams
+                    if again:
+                        # the sheet laid out again round the grown diagrams, their
+                        # column kept as high as it was: the plans then stay out
+                        # of the room above it, which they may grow into
+                        column, wide = extents(sketches["diagrams"]), extents(done["diagrams"])
+                        keep = {"diagrams": (wide.width, max(wide.height, column.height))}
                         try:
                             layout, placed, field = _try_layout(
-                                page, done, order, gap, True, tables_width, corner, extents
+                                page, done, order, gap, True, tables_width, corner, extents, keep
                             )
                         except LayoutError:
                             break
+                    # grown from the calculation's column (every time axis tried again)
                     grown = _grown_diagrams(
-                        solution, look, lang, layout, done, placed, done_drawn, mu_l, gap, extents
+                        solution, look, lang, layout, sketches, placed, drawn, mu_l, gap, extents
                     )
                     if grown is not None:  # the diagrams take the room that is left
                         done, done_drawn = {**done, "diagrams": grown[0]}, grown[2]
