@@ -56,9 +56,8 @@ from ..scales import (
     series,
 )
 from ..solution import Solution
-from .common import length_scale_step, title_fields
+from .common import EMPTY_MAX, length_scale_step, title_fields
 from .common import next_scale as _next_scale
-from .lint import EMPTY_MAX
 from .scales_record import Sheet1Scales
 
 __all__ = ["Sheet1", "compose_sheet1", "GROUPS"]

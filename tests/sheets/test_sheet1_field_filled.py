@@ -4,9 +4,10 @@ block), the first whose field the linter's own rule finds filled, the
 diagrams grown into the room left (the sheet laid out again round them where
 that fills more); else the one that fills most.
 
-Both cases failed the rule before it, with the first arrangement that fit:
-offset_slider_crank variant 1 (54 % of the field empty) and seed-002 task 4
-v09 (53 %)."""
+The cases failed the rule before it, with the first arrangement that fit:
+offset_slider_crank variant 1 (54 % of the field empty), seed-002 task 4
+v09 (53 %: another arrangement fills it) and task 3 v04 (53 %: only the
+sheet laid out again round the grown diagrams fills it)."""
 
 from __future__ import annotations
 
@@ -34,7 +35,7 @@ def _solve(name: str):
     return mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "tasks" / "seed002" / f"{name}.toml"))
 
 
-@pytest.fixture(scope="module", params=["offset_slider_crank_v01", "task4_v09"])
+@pytest.fixture(scope="module", params=["offset_slider_crank_v01", "task4_v09", "task3_v04"])
 def drawn(request):
     solution = _solve(request.param)
     out = {}
@@ -97,3 +98,17 @@ def test_the_empty_share_measured_independently(drawn):
             )
     empty = 1.0 - (used & in_field).sum() / in_field.sum()
     assert empty <= EMPTY_MAX + 0.005, (name, empty)
+
+
+def test_the_line_under_s_names_the_calculations_scale_only_where_it_is(drawn):
+    """S grown at another μ_S than the calculation's says why, not that it is
+    the calculation's scale; at the calculation's μ_S it may say so."""
+    _, solution, out = drawn
+    backend, sheet = out["en"]
+    calculated = solution.require_diagrams().construction.mu_S
+    words = [c.content for c in backend.calls if c.name == "text"]
+    says = any("scale of S in the calculation" in w for w in words)
+    if abs(sheet.scales["mu_S"] / calculated - 1.0) > 1e-9:
+        assert not says
+    if abs(sheet.scales["mu_S"] / sheet.scales["mu_l"] - 1.0) <= 1e-9:
+        assert not says and not any("fit the sheet" in w for w in words)
