@@ -1848,8 +1848,13 @@ def compose_sheet1(
     guide's size (_plan_scales: each one's longest vector from the pole 100 …
     200 mm), up to two series steps coarser where the sheet needs it, a plan
     then drawn under 100 mm saying so; the diagrams at the Solution's μ_S (the
-    line under S says why where μ_S ≠ μ_l) and the tables. Where nothing
-    fits, _fallback draws the mechanism and the plans smaller still.
+    line under S says why where μ_S ≠ μ_l), grown into the room left
+    (_grown_diagrams), and the tables. Of the arrangements that fit, the
+    first whose field the linter's field-filled rule finds filled
+    (_empty_share ≤ EMPTY_MAX), where need be with the sheet laid out again
+    round the grown diagrams (their column kept as high as it was); else the
+    one leaving least empty. Where nothing fits, _fallback draws the
+    mechanism and the plans smaller still.
     """
     page = page if page is not None else Page.of("A1")
     check_language(lang)
