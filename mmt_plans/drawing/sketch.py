@@ -46,6 +46,19 @@ class Sketch(RecordingBackend):
         y1 = max(b[3] for b in found)
         return Rect.from_bounds(x0 - PAD, y0 - PAD, x1 + PAD, y1 + PAD)
 
+    def group_extents(self) -> list[tuple[float, float, float, float]]:
+        """The bounds of each group's calls (no PAD): what the sheet linter
+        measures of the drawing (lint.field_filled)."""
+        out: dict[str, list[float]] = {}
+        for c in self.calls:
+            b = self._call_bounds(c) if c.groups else None
+            if b is None:
+                continue
+            for g in c.groups:
+                o = out.setdefault(g, list(b))
+                o[:] = [min(o[0], b[0]), min(o[1], b[1]), max(o[2], b[2]), max(o[3], b[3])]
+        return [(o[0], o[1], o[2], o[3]) for o in out.values()]
+
     def add_to_last_group(self, other: Sketch, group_id: str) -> None:
         """Splice `other`'s calls into this sketch's last group `group_id`, before its end."""
         end = max(i for i, c in enumerate(self.calls) if c.name == "end_group")

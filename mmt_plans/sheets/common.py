@@ -13,6 +13,7 @@ from ..solution import Solution
 from ..titles import sheet_title
 
 __all__ = [
+    "EMPTY_MAX",
     "designation_base",
     "drawing_scale",
     "length_scale_step",
@@ -20,6 +21,11 @@ __all__ = [
     "scale_step",
     "title_fields",
 ]
+
+# The largest share of a sheet's field left empty (the linter's field-filled
+# rule, sheets/lint.py; the composers fill to it): here, where the composers
+# read it without loading the linter.
+EMPTY_MAX = 0.5
 
 
 def next_scale(mu: float, steps: int) -> float:

@@ -63,6 +63,7 @@ from shapely.geometry.base import BaseGeometry
 from ..drawing.labels import LOOKALIKE, LOOKALIKE_MM, NEAR_MM, drawn_shapes, enclosing
 from ..render.look import load_look
 from ..render.recording import Arrow, BeginGroup, Call, Line, Naming, RecordingBackend, Text
+from .common import EMPTY_MAX
 
 __all__ = [
     "EMPTY_MAX",
@@ -85,7 +86,6 @@ ARROW_NAME_MM = 8.0
 MIN_LETTER = 2.5
 PLAN_MM = (100.0, 200.0)
 POLYGON_MM = (150.0, 300.0)
-EMPTY_MAX = 0.5
 _NOT_DRAWINGS = ("table", "title-block", "frame")
 
 

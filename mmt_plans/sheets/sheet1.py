@@ -56,7 +56,7 @@ from ..scales import (
     series,
 )
 from ..solution import Solution
-from .common import length_scale_step, title_fields
+from .common import EMPTY_MAX, length_scale_step, title_fields
 from .common import next_scale as _next_scale
 from .scales_record import Sheet1Scales
 
@@ -1458,16 +1458,19 @@ def _diagram_sketch(
     mu_l: float,
 ) -> Sketch:
     """The diagram `which` ("s", "v", "a") of `construction`; S beside a
-    mechanism drawn at μ_l `mu_l`."""
+    mechanism drawn at μ_l `mu_l`, its μ_S chosen from the calculation's μ_l
+    where it is the calculation's μ_S, else from `mu_l`."""
+    calculated = solution.require_diagrams()
+    same = abs(construction.mu_S / calculated.construction.mu_S - 1.0) <= 1e-9
     return sketch_diagram(
         construction,
         which,
         look,
         lang,
         solution.s_dense,
-        solution.require_diagrams().refinement,
+        calculated.refinement,
         mu_l=mu_l if which == "s" else None,
-        mu_l_solution=float(solution.mu_l),
+        mu_l_solution=float(solution.mu_l) if same else mu_l,
     )
 
 
@@ -1574,8 +1577,10 @@ def _try_layout(
     tables_width: float | None = None,
     diagrams: str = "bottom-left",
     extents: _Extents | None = None,
+    reserved: Mapping[str, tuple[float, float]] | None = None,
 ) -> tuple[SheetLayout, dict[str, Rect], Rect | None]:
-    """Place every sketch in `order`; the mechanism inside its field when
+    """Place every sketch in `order` (a `reserved` one in a box of that width
+    and height, its sketch at the box's bottom left); the mechanism inside its field when
     `with_field` (LayoutError if it does not fit there); the tables within
     `tables_width` mm of the right edge when given (a block, not a row); the
     diagrams from the `diagrams` corner (bottom left, under the mechanism, as
@@ -1588,6 +1593,8 @@ def _try_layout(
     field: Rect | None = None
     for name in order:
         ext = extent(sketches[name])
+        if reserved is not None and name in reserved:
+            ext = Rect(ext.x, ext.y, *reserved[name])
         corner = diagrams if name.startswith("diagram") else _PLACEMENT.get(name, "top-left")
         kind = "table" if name.startswith("table") else "drawing"
         within = None
@@ -1776,22 +1783,21 @@ def _grown_diagrams(
     pole and the lettering) fits the room's width; each diagram at most a
     third of the room's height (less the lettering), at series μ_S, μ_V, μ_a
     (_grown_scales); of the rooms, the one the column then covers most of.
-    μ_S stays the Solution's where the sheet draws the mechanism at another
-    μ_l than the calculation's (the line under S names it the calculation's
-    scale), else it is μ_l or the series step above that S needs. The
+    μ_S is the sheet's μ_l (seed 003 §1.7: S read off the drawing of the
+    mechanism) or the series step above that S needs (the line under S then
+    says why, or names it the calculation's scale where it is that). The
     construction is the Solution's on the same grid (its V and a in SI do not
     depend on the scales: the 5 % check stands)."""
     if "diagrams" not in placed:
         return None
     rect = placed["diagrams"]
     base = extents(sketches["diagrams"])
-    least = 1.15 * base.width * base.height  # worth redrawing: 15 % more paper covered
+    least = 1.15 * _drawn_area(sketches["diagrams"])  # worth redrawing: 15 % more covered
     s = np.asarray(drawn.s, dtype=float)
     T = 60.0 / drawn.n1
     over_w = base.width - drawn.L - max(drawn.H1, drawn.H2)
     over_h = base.height - sum(drawn.heights_mm)
-    own = abs(mu_l / float(solution.mu_l) - 1.0) <= 1e-9
-    mu_S_range = (float(solution.mu_l), float(solution.mu_l) * 1e4) if own else (drawn.mu_S,) * 2
+    mu_S_range = (mu_l, mu_l * 1e4)
     best: tuple[float, Sketch, Rect, KinematicDiagrams] | None = None
     drawn_parts: dict[tuple[Any, ...], Sketch] = {}
     for room in _diagram_rooms(layout, rect, gap)[:3]:
@@ -1826,7 +1832,7 @@ def _grown_diagrams(
                     parts.append(drawn_parts[key])
                 grown = _stack(parts, look, _STACK_GAP)
                 ext = extents(grown)
-                covered = ext.width * ext.height
+                covered = _drawn_area(grown)
                 if ext.width > room.width + 1e-6:
                     break  # too wide: a shorter axis
                 if ext.height > room.height + 1e-6:
@@ -1839,6 +1845,14 @@ def _grown_diagrams(
     return None if best is None else best[1:]
 
 
+def _drawn_area(sketch: Sketch) -> float:
+    """The paper a drawing covers as the sheet linter counts it (field-filled):
+    the union of its groups' boxes, so a flat curve on a long axis covers
+    little, however long the column it stands in."""
+    boxes = [shapely.box(*b) for b in sketch.group_extents()]
+    return float(shapely.union_all(boxes).area) if boxes else 0.0
+
+
 def _with_diagrams(layout: SheetLayout, page: Page, gap: float, rect: Rect) -> SheetLayout:
     """`layout` with the diagrams' footprint at `rect`."""
     out = SheetLayout(page, gap=gap)
@@ -1847,6 +1861,28 @@ def _with_diagrams(layout: SheetLayout, page: Page, gap: float, rect: Rect) -> S
             continue
         out.register(e.name, rect if e.name == "diagrams" else e.footprint, e.kind)
     return out
+
+
+def _empty_share(
+    page: Page, sketches: Mapping[str, Sketch], placed: Mapping[str, Rect], extents: _Extents
+) -> float:
+    """The share of the field left empty, as the sheet linter's field-filled
+    rule measures it: the frame less the title block's band, less the box of
+    every drawing's and table's groups where the layout puts them."""
+    frame, block = page.frame, page.title_block.rect
+    field_ = shapely.box(*frame.bounds).difference(
+        shapely.box(block.left, frame.bottom, frame.right, block.top)
+    )
+    parts = []
+    for name, rect in placed.items():
+        ext = extents(sketches[name])
+        dx, dy = rect.x - ext.x, rect.y - ext.y
+        parts += [
+            shapely.box(x0 + dx, y0 + dy, x1 + dx, y1 + dy)
+            for x0, y0, x1, y1 in sketches[name].group_extents()
+        ]
+    used = shapely.union_all(parts).intersection(field_).area if parts else 0.0
+    return 1.0 - float(used) / float(field_.area)
 
 
 def compose_sheet1(
@@ -1861,8 +1897,13 @@ def compose_sheet1(
     guide's size (_plan_scales: each one's longest vector from the pole 100 …
     200 mm), up to two series steps coarser where the sheet needs it, a plan
     then drawn under 100 mm saying so; the diagrams at the Solution's μ_S (the
-    line under S says why where μ_S ≠ μ_l) and the tables. Where nothing
-    fits, _fallback draws the mechanism and the plans smaller still.
+    line under S says why where μ_S ≠ μ_l), grown into the room left
+    (_grown_diagrams), and the tables. Of the arrangements that fit, the
+    first whose field the linter's field-filled rule finds filled
+    (_empty_share ≤ EMPTY_MAX), where need be with the sheet laid out again
+    round the grown diagrams (their column kept as high as it was); else the
+    one leaving least empty. Where nothing fits, _fallback draws the
+    mechanism and the plans smaller still.
     """
     page = page if page is not None else Page.of("A1")
     check_language(lang)
@@ -1916,6 +1957,7 @@ def compose_sheet1(
                 break
             sketches["mechanism"] = mechanism(mu_l)
             in_field = False
+            best: tuple[float, dict[str, Sketch], dict[str, Rect], Sheet1] | None = None
             for gap, (tables_width, corner) in itertools.product((8.0, 5.0), arrangements):
                 try:
                     layout, placed, field = _try_layout(
@@ -1926,19 +1968,44 @@ def compose_sheet1(
                     in_field = in_field or not str(err).startswith("mechanism")
                     placed_field = placed_field or in_field
                     continue
-                grown = _grown_diagrams(
-                    solution, look, lang, layout, sketches, placed, drawn, mu_l, gap, extents
-                )
-                if grown is not None:  # the diagrams take the room that is left
-                    sketches, drawn = {**sketches, "diagrams": grown[0]}, grown[2]
-                    placed = {**placed, "diagrams": grown[1]}
-                    layout = _with_diagrams(layout, page, gap, grown[1])
-                    scales = {**scales, **_diagram_scales(drawn)}
-                scales["mu_l"] = mu_l
-                result = Sheet1(layout, scales, shrink=shrink, field=field, diagrams=drawn)
-                return _draw(
-                    solution, backend, page, lang, sketches, order, placed, result, extents
-                )
+                done, done_drawn, done_scales = sketches, drawn, {**scales, "mu_l": mu_l}
+                for again in (False, True):
+                    if again:
+                        # the sheet laid out again round the grown diagrams, their
+                        # column kept as high as it was: the plans then stay out
+                        # of the room above it, which they may grow into
+                        column, wide = extents(sketches["diagrams"]), extents(done["diagrams"])
+                        keep = {"diagrams": (wide.width, max(wide.height, column.height))}
+                        try:
+                            layout, placed, field = _try_layout(
+                                page, done, order, gap, True, tables_width, corner, extents, keep
+                            )
+                        except LayoutError:
+                            break
+                    # grown from the calculation's column (every time axis tried again)
+                    grown = _grown_diagrams(
+                        solution, look, lang, layout, sketches, placed, drawn, mu_l, gap, extents
+                    )
+                    if grown is not None:  # the diagrams take the room that is left
+                        done, done_drawn = {**done, "diagrams": grown[0]}, grown[2]
+                        placed = {**placed, "diagrams": grown[1]}
+                        layout = _with_diagrams(layout, page, gap, grown[1])
+                        done_scales = {**done_scales, **_diagram_scales(done_drawn)}
+                    empty = _empty_share(page, done, placed, extents)
+                    if best is None or empty < best[0] - 1e-9:
+                        result = Sheet1(
+                            layout, done_scales, shrink=shrink, field=field, diagrams=done_drawn
+                        )
+                        best = (empty, done, placed, result)
+                    if empty <= EMPTY_MAX or grown is None:
+                        break
+                if best is not None and best[0] <= EMPTY_MAX:
+                    break  # the first arrangement that fills the field
+            if best is not None:
+                # of the arrangements that fit, the first to fill the field
+                # (the linter's field-filled rule), else the one filling most
+                _, done, placed, result = best
+                return _draw(solution, backend, page, lang, done, order, placed, result, extents)
             if not in_field:
                 # the mechanism larger than its field in every arrangement: the
                 # field is set by the diagrams and the tables, placed before it
