@@ -322,6 +322,35 @@ class Labels:
         if first is not None:
             cx = np.concatenate([[float(first[0])], cx])
             cy = np.concatenate([[float(first[1])], cy])
+        return self._rooms((x, y), cx, cy, markup, keep_off)
+
+    def is_room(
+        self,
+        anchor: PointLike,
+        markup: str,
+        centre: PointLike,
+        *,
+        keep_off: BaseGeometry | None = None,
+    ) -> bool:
+        """Whether the box of `markup` centred at `centre` is one of `rooms`
+        (near `anchor`, free): asked of that one box alone."""
+        self._sync()
+        cx, cy = np.array([float(centre[0])]), np.array([float(centre[1])])
+        return bool(
+            len(self._rooms((float(anchor[0]), float(anchor[1])), cx, cy, markup, keep_off))
+        )
+
+    def _rooms(
+        self,
+        anchor: tuple[float, float],
+        cx: np.ndarray,
+        cy: np.ndarray,
+        markup: str,
+        keep_off: BaseGeometry | None,
+    ) -> np.ndarray:
+        """Those of the boxes of `markup` centred at cx, cy that are `rooms`."""
+        x, y = anchor
+        w, h, drop = self._extent(markup)
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         near = _gap(("point", (x, y), None), x0, y0, x1, y1) <= _NEAR_KEPT
         idx = np.flatnonzero(near)

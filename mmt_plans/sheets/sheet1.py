@@ -11,7 +11,7 @@ import dataclasses
 import itertools
 import math
 import re
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, cast
 
@@ -152,7 +152,10 @@ _MAX_SEGMENTS = 6  # a link of many points: its arcs are tried beside its longes
 _NO_ROOM = 20.0
 # how much larger (mm) the ω and ε arcs of a link are tried, in turn, where a
 # label finds no room near its arrowhead at the usual radii
-_WIDER = (3.0, 6.0)
+_WIDER = (4.0,)
+# how many of a link's candidate arcs, best scored first, are asked whether
+# their labels find room (a long link of many positions has up to 84)
+_ROOM_TRIES = 16
 # the box an ω/ε label keeps free round its centre, mm: left/right, down, up (the
 # placer's box of "ω_{10}" at _TEXT, its index hanging below, and its 0.4 mm clearance)
 _ROOM_X, _ROOM_DOWN, _ROOM_UP = 3.7, 3.45, 2.4
@@ -356,7 +359,7 @@ class _ArcPlacer:
         markups: Sequence[str] = (),
     ) -> tuple[np.ndarray, float, list[np.ndarray | None], float]:
         """`_beside` at the usual radii; with `labels`, where a label finds
-        no room near its arrowhead there, at radii _WIDER mm larger in turn
+        no room near its arrowhead there, at radii _WIDER mm larger
         (an arrowhead out of a bundle of lines): the arcs whose labels find
         room, crossing least. The centre, start angle, the labels' places and
         how much larger the radii are, mm."""
@@ -511,7 +514,10 @@ class _ArcPlacer:
             for k in chosen_all[best]
         ]
         cost = float(score[best])
-        if labels is not None:
+        # where each label's box at the best touches nothing drawn, it is taken
+        # as it is; else the candidates are asked of the placer that writes them
+        bare = all(covered[best, k // 10_000, k % 10_000] == 0 for k in chosen_all[best])
+        if labels is not None and not bare:
             kept = [
                 [boxes_xy[c, k // 10_000, k % 10_000] for k in ks]
                 for c, ks in enumerate(chosen_all)
@@ -537,10 +543,10 @@ class _ArcPlacer:
         its arrowhead (`Labels.rooms`, the link's arcs kept clear; the place
         `kept` for it by `_beside` first, where free), out of the
         rooms kept for other labels and apart from each other; a label without
-        room costs _NO_ROOM. The candidate, its labels' places (None: no
-        room near) and its cost."""
+        room costs _NO_ROOM; the best _ROOM_TRIES are asked. The candidate, its
+        labels' places (None: no room near) and its cost."""
         options: list[tuple[float, int, list[np.ndarray | None]]] = []
-        for c in np.argsort(score, kind="stable"):
+        for c in np.argsort(score, kind="stable")[:_ROOM_TRIES]:
             if options and score[c] >= min(o[0] for o in options):
                 break
             arcs = []
@@ -554,10 +560,18 @@ class _ArcPlacer:
                 tip_deg = math.radians(st[c] + _SPAN - inset if sense > 0 else st[c] + inset)
                 u = np.array([math.cos(tip_deg), math.sin(tip_deg)])
                 tip = cs[c] + radius * u
-                # away from the arc's centre first
-                free = labels.rooms(tip, markup, towards=u, keep_off=own, first=mine)
+
+                # the place kept by `_beside` asked alone first (mostly it
+                # will do), then every place near, away from the arc's centre first
+                def free(
+                    tip: np.ndarray = tip, markup: str = markup, mine: np.ndarray = mine
+                ) -> Iterator[np.ndarray]:
+                    if labels.is_room(tip, markup, mine, keep_off=own):
+                        yield mine
+                    yield from labels.rooms(tip, markup, towards=u, keep_off=own)
+
                 room = None
-                for xy in free:
+                for xy in free():
                     taken = any(
                         abs(xy[0] - r[0]) <= 2 * _ROOM_X
                         and abs(xy[1] - r[1]) <= _ROOM_DOWN + _ROOM_UP
