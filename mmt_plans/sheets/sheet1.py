@@ -152,7 +152,7 @@ _MAX_SEGMENTS = 6  # a link of many points: its arcs are tried beside its longes
 _NO_ROOM = 20.0
 # how much larger (mm) the ω and ε arcs of a link are tried, in turn, where a
 # label finds no room near its arrowhead at the usual radii
-_WIDER = (4.0,)
+_WIDER = (3.0, 6.0)
 # how many of a link's candidate arcs, best scored first, are asked whether
 # their labels find room (a long link of many positions has up to 84)
 _ROOM_TRIES = 16
@@ -359,7 +359,7 @@ class _ArcPlacer:
         markups: Sequence[str] = (),
     ) -> tuple[np.ndarray, float, list[np.ndarray | None], float]:
         """`_beside` at the usual radii; with `labels`, where a label finds
-        no room near its arrowhead there, at radii _WIDER mm larger
+        no room near its arrowhead there, at radii _WIDER mm larger in turn
         (an arrowhead out of a bundle of lines): the arcs whose labels find
         room, crossing least. The centre, start angle, the labels' places and
         how much larger the radii are, mm."""
