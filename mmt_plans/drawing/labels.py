@@ -926,7 +926,11 @@ class Labels:
             (w / 2) / np.maximum(np.abs(dirs.real), 1e-9),
             (h / 2 + drop / 2) / np.maximum(np.abs(dirs.imag), 1e-9),
         )
-        rings = np.concatenate([self.leader_rings, _WIDE_RINGS]) if wide else self.leader_rings
+        rings = self.leader_rings
+        if wide:  # (led from the anchor alone, the rings already tried are not asked again)
+            rings = (
+                np.concatenate([rings, _WIDE_RINGS]) if len(starts) > 1 else np.array(_WIDE_RINGS)
+            )
         ring = (distance + rings)[:, None]
         st = np.asarray(starts, dtype=float)
         # nearest ring first, then each start in turn, then the direction
