@@ -125,6 +125,14 @@ _ALONG = (0.5, 0.35, 0.65, 0.2, 0.8)  # where along a segment a label is tried, 
 _FINE_STEP = 0.5
 _FINE_OFF = 0.5
 _FINE_MOST = 40_000
+# where no place near is free and no leader reaches one: the fine grid once
+# more, a box this much (mm) smaller each side, so that lettering stands
+# 0.25 mm off a line instead of 0.6 mm (still clear of it)
+_TIGHT = 0.35
+# and then a leader further out than the rings (mm), from any of these
+# fractions along a named segment (the ends and every tenth)
+_WIDE_RINGS = (42.0, 50.0, 60.0)
+_WIDE_ALONG = tuple(np.round(np.linspace(0.0, 1.0, 11), 2))
 # how many of the grid's boxes are asked about the obstacles first (then 4 times as many)
 _FINE_BLOCK = 64
 # how many times `write_later(retry=True)` writes the labels again, those that
@@ -310,16 +318,49 @@ class Labels:
         towards: PointLike | None = None,
         distance: float = 1.5,
         keep_off: BaseGeometry | None = None,
+        first: PointLike | None = None,
     ) -> np.ndarray:
-        """The centres (n × 2, in the order `place` tries them) of the places
-        near `anchor` (within NEAR_MM) where `markup` would stand free of
-        everything drawn and written, and of `keep_off` (a shape still to be
-        drawn: the arc the label names) by the clearance. Asking writes
-        nothing: a drawing chooses where its symbol goes by where its label
-        finds room."""
+        """The centres (n × 2, in the order `place` tries them, `first` before
+        all where given) of the places near `anchor` (within NEAR_MM) where
+        `markup` would stand free of everything drawn and written, and of
+        `keep_off` (a shape still to be drawn: the arc the label names) by the
+        clearance. Asking writes nothing: a drawing chooses where its symbol
+        goes by where its label finds room."""
         self._sync()
         x, y = float(anchor[0]), float(anchor[1])
         cx, cy, w, h, drop = self._around(np.array([x, y]), markup, towards, distance)
+        if first is not None:
+            cx = np.concatenate([[float(first[0])], cx])
+            cy = np.concatenate([[float(first[1])], cy])
+        return self._rooms((x, y), cx, cy, markup, keep_off)
+
+    def is_room(
+        self,
+        anchor: PointLike,
+        markup: str,
+        centre: PointLike,
+        *,
+        keep_off: BaseGeometry | None = None,
+    ) -> bool:
+        """Whether the box of `markup` centred at `centre` is one of `rooms`
+        (near `anchor`, free): asked of that one box alone."""
+        self._sync()
+        cx, cy = np.array([float(centre[0])]), np.array([float(centre[1])])
+        return bool(
+            len(self._rooms((float(anchor[0]), float(anchor[1])), cx, cy, markup, keep_off))
+        )
+
+    def _rooms(
+        self,
+        anchor: tuple[float, float],
+        cx: np.ndarray,
+        cy: np.ndarray,
+        markup: str,
+        keep_off: BaseGeometry | None,
+    ) -> np.ndarray:
+        """Those of the boxes of `markup` centred at cx, cy that are `rooms`."""
+        x, y = anchor
+        w, h, drop = self._extent(markup)
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         near = _gap(("point", (x, y), None), x0, y0, x1, y1) <= _NEAR_KEPT
         idx = np.flatnonzero(near)
@@ -327,12 +368,14 @@ class Labels:
             return np.zeros((0, 2))
         x0, x1, y0, y1 = x0[idx], x1[idx], y0[idx], y1[idx]
         cost = self._label_cost(x0, y0, x1, y1) + self._lookalike_cost(markup, x0, y0, x1, y1)
-        cost += self._obstacle_cost(x0, y0, x1, y1)
         if keep_off is not None:
             gap = shapely.distance(shapely.box(x0, y0, x1, y1), keep_off)
             # (its arrowhead stands 0.5 mm either side of it)
             cost += np.asarray(gap, dtype=float) < self.clearance + 0.6
-        k = idx[cost <= 1e-9]
+        # the obstacles asked only about the boxes still free, and only whether any is met
+        ok = np.flatnonzero(cost <= 1e-9)
+        ok = ok[self._clear(x0[ok], y0[ok], x1[ok], y1[ok])]
+        k = idx[ok]
         return np.c_[cx[k], cy[k]]
 
     def width(self, markup: str) -> float:
@@ -787,6 +830,24 @@ class Labels:
                 cx, cy = np.array([lx]), np.array([ly])
                 x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
                 k = 0
+        if k < 0 and names is not None and self.fine:
+            # the last resort before a place far off: the fine grid again, the
+            # box kept _TIGHT mm nearer the lines (still clear of them)
+            found_near = self._fine_near(
+                names, outline, w - 2 * _TIGHT, h - 2 * _TIGHT, drop, markup
+            )
+            if found_near is not None:
+                cx, cy = np.array([found_near[0]]), np.array([found_near[1]])
+                x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+                k = 0
+        if k < 0 and leader is not None and names is not None and self.fine:
+            # and before that: a leader further out, from anywhere along what it names
+            found = self._leader_place(leader, w, h, drop, names, outline, markup, wide=True)
+            if found is not None:
+                (lx, ly), line = found
+                cx, cy = np.array([lx]), np.array([ly])
+                x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+                k = 0
         if k < 0 and not settle:
             return None
         if k < 0:
@@ -875,6 +936,7 @@ class Labels:
         names: tuple[NamingKind, PointLike, PointLike | None] | None = None,
         outline: BaseGeometry | None = None,
         markup: str = "",
+        wide: bool = False,
     ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
         """The centre of the first free box further out round the anchor that a
         straight leader from the anchor reaches without touching anything but
@@ -882,7 +944,9 @@ class Labels:
         that crosses a few thin lines); with the leader (its start, its end).
         A segment's or an arrow's label may be led from along it too; a point's
         inside a block (`outline`), from the block's corners and edges. None if
-        no place is free."""
+        no place is free. With `wide` (the last resort before a place far
+        off), the rings go on to _WIDE_RINGS and a segment's leader may start
+        anywhere along it (_WIDE_ALONG)."""
         (ax0, ay0), towards, distance = (float(leader[0][0]), float(leader[0][1])), *leader[1:]
         starts = [(ax0, ay0)]
         if outline is not None:
@@ -892,7 +956,7 @@ class Labels:
         if names is not None and names[2] is not None:
             p, q = np.asarray(names[1], dtype=float), np.asarray(names[2], dtype=float)
             if float(np.hypot(*(q - p))) > 2.0 * _LEADER_START:
-                starts += [tuple(p + t * (q - p)) for t in _ALONG]
+                starts += [tuple(p + t * (q - p)) for t in (_WIDE_ALONG if wide else _ALONG)]
         dirs = self._leader_dirs
         if towards is not None and math.hypot(*towards) > 1e-12:
             t = complex(towards[0], towards[1]) / math.hypot(*towards)
@@ -902,12 +966,17 @@ class Labels:
             (w / 2) / np.maximum(np.abs(dirs.real), 1e-9),
             (h / 2 + drop / 2) / np.maximum(np.abs(dirs.imag), 1e-9),
         )
-        ring = (distance + self.leader_rings)[:, None]
+        rings = self.leader_rings
+        if wide:  # (led from the anchor alone, the rings already tried are not asked again)
+            rings = (
+                np.concatenate([rings, _WIDE_RINGS]) if len(starts) > 1 else np.array(_WIDE_RINGS)
+            )
+        ring = (distance + rings)[:, None]
         st = np.asarray(starts, dtype=float)
         # nearest ring first, then each start in turn, then the direction
         ox = (dirs.real * (ring + half)).ravel()
         oy = (dirs.imag * (ring + half) + drop / 2).ravel()
-        n_rings = len(self.leader_rings)
+        n_rings = len(rings)
         shape = (n_rings, len(st), len(dirs))
         ax = np.broadcast_to(st[None, :, 0, None], shape).ravel()
         ay = np.broadcast_to(st[None, :, 1, None], shape).ravel()

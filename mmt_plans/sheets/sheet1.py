@@ -11,7 +11,7 @@ import dataclasses
 import itertools
 import math
 import re
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, cast
 
@@ -147,6 +147,15 @@ _SPAN = 150.0
 _ARC_LABEL_RINGS = (0.0, 1.5, 3.0)
 _NEAR_RINGS = 2  # the rings of a label's boxes tried first, for all candidates at once
 _MAX_SEGMENTS = 6  # a link of many points: its arcs are tried beside its longest segments
+# what an arc whose label finds no free place near its arrowhead costs (as
+# much as crossing 20 main lines: its label would stand far or on a line)
+_NO_ROOM = 20.0
+# how much larger (mm) the ω and ε arcs of a link are tried, in turn, where a
+# label finds no room near its arrowhead at the usual radii
+_WIDER = (3.0, 6.0)
+# how many of a link's candidate arcs, best scored first, are asked whether
+# their labels find room (a long link of many positions has up to 84)
+_ROOM_TRIES = 16
 # the box an ω/ε label keeps free round its centre, mm: left/right, down, up (the
 # placer's box of "ω_{10}" at _TEXT, its index hanging below, and its 0.4 mm clearance)
 _ROOM_X, _ROOM_DOWN, _ROOM_UP = 3.7, 3.45, 2.4
@@ -170,10 +179,10 @@ _TICK_RINGS = (
 _ALONG_LINK = tuple(sorted(np.arange(0.2, 0.81, 0.1), key=lambda t: abs(t - 0.5)))
 
 
-def _inset(radius: float) -> float:
-    """Degrees the outer (ε) arc stops short of the inner (ω) one at each end, so
-    that the inner arc's arrowhead and label stand clear of it."""
-    return 0.0 if radius <= _OMEGA_R else 25.0
+def _inset(radius: float, inner: float = _OMEGA_R) -> float:
+    """Degrees the outer (ε) arc stops short of the inner (ω, radius `inner`)
+    one at each end, so that the inner arc's arrowhead and label stand clear of it."""
+    return 0.0 if radius <= inner else 25.0
 
 
 def _between_spokes(
@@ -346,16 +355,49 @@ class _ArcPlacer:
         self,
         segments: Sequence[tuple[np.ndarray, np.ndarray]],
         spins: Sequence[tuple[float, float]],
-    ) -> tuple[np.ndarray, float, list[np.ndarray]]:
+        labels: Labels | None = None,
+        markups: Sequence[str] = (),
+    ) -> tuple[np.ndarray, float, list[np.ndarray | None], float]:
+        """`_beside` at the usual radii; with `labels`, where a label finds
+        no room near its arrowhead there, at radii _WIDER mm larger in turn
+        (an arrowhead out of a bundle of lines): the arcs whose labels find
+        room, crossing least. The centre, start angle, the labels' places and
+        how much larger the radii are, mm."""
+        best: tuple[float, np.ndarray, float, list[np.ndarray | None], float] | None = None
+        for wider in (0.0, *_WIDER) if labels is not None else (0.0,):
+            wide = [(radius + wider, sense) for radius, sense in spins]
+            centre, start, picked, cost = self._beside(segments, wide, labels, markups, wider)
+            if best is None or cost < best[0]:
+                best = (cost, centre, start, picked, wider)
+            if all(p is not None for p in picked):
+                break
+        assert best is not None
+        _, centre, start, picked, wider = best
+        self.reserve([_room_box(*p) for p in picked if p is not None])
+        return centre, start, picked, wider
+
+    def _beside(
+        self,
+        segments: Sequence[tuple[np.ndarray, np.ndarray]],
+        spins: Sequence[tuple[float, float]],
+        labels: Labels | None,
+        markups: Sequence[str],
+        wider: float,
+    ) -> tuple[np.ndarray, float, list[np.ndarray | None], float]:
         """Centre and start angle (deg) of the arcs (radius, sense) of a link
         beside one of its segments, spanning _SPAN degrees on one side of it,
-        and the free place of each one's label (its box's centre).
+        and the free place of each one's label (its box's centre; None: asked
+        of `labels`, none is free near its arrowhead).
 
         Every candidate (a point along a segment, a side) is scored at once:
         the arcs' crossings in one vectorised query, the label boxes' cover in
         another; for each label the nearest box clear of the drawing and of the
         link's other label, else the least covered (10 for each thing a box
-        touches, and how far out it is, mm)."""
+        touches, and how far out it is, mm). With `labels` (the placer that
+        writes them) and the labels' `markups`, the candidates are then asked
+        in that order whether each label finds a free place near its
+        arrowhead (`_label_rooms`): the first where all do wins, unless one
+        scored better by more than a label without room costs."""
         centres: list[np.ndarray] = []
         starts: list[float] = []
         # the cost bounded for a link of many points: its longest segments only
@@ -379,7 +421,7 @@ class _ArcPlacer:
         own: list[np.ndarray] = []  # points of each candidate's own arcs, 0.5 mm apart or less
         # the arcs: the same polylines as arc_line draws
         for radius, _ in spins:
-            inset = _inset(radius)
+            inset = _inset(radius, _OMEGA_R + wider)
             span = (_SPAN - 2.0 * inset) % 360.0 or 360.0
             t = np.radians((st + inset)[:, None] + np.linspace(0.0, span, 24)[None, :])
             xy = np.stack([cs[:, :1] + radius * np.cos(t), cs[:, 1:] + radius * np.sin(t)], -1)
@@ -397,7 +439,7 @@ class _ArcPlacer:
         dirs = 45.0 * np.arange(8)
         boxes_xy = np.empty((m, n_spins, len(rings) * 8, 2))
         for s, (radius, sense) in enumerate(spins):
-            inset = _inset(radius)
+            inset = _inset(radius, _OMEGA_R + wider)
             tip_deg = st + _SPAN - inset if sense > 0 else st + inset
             tr = np.radians(tip_deg)
             tip = cs + radius * np.stack([np.cos(tr), np.sin(tr)], -1)
@@ -467,9 +509,83 @@ class _ArcPlacer:
                 chosen.append(s * 10_000 + k)
             chosen_all.append(chosen)
         best = int(np.argmin(score))
-        picked = [boxes_xy[best, k // 10_000, k % 10_000] for k in chosen_all[best]]
-        self.reserve([_room_box(x, y) for x, y in picked])
-        return cs[best], float(st[best]), [np.asarray(p, dtype=float) for p in picked]
+        picked: list[np.ndarray | None] = [
+            np.asarray(boxes_xy[best, k // 10_000, k % 10_000], dtype=float)
+            for k in chosen_all[best]
+        ]
+        cost = float(score[best])
+        # where each label's box at the best touches nothing drawn, it is taken
+        # as it is; else the candidates are asked of the placer that writes them
+        bare = all(covered[best, k // 10_000, k % 10_000] == 0 for k in chosen_all[best])
+        if labels is not None and not bare:
+            kept = [
+                [boxes_xy[c, k // 10_000, k % 10_000] for k in ks]
+                for c, ks in enumerate(chosen_all)
+            ]
+            best, picked, cost = self._label_rooms(
+                cs, st, spins, markups, labels, score, wider, kept
+            )
+        return cs[best], float(st[best]), picked, cost
+
+    def _label_rooms(
+        self,
+        cs: np.ndarray,
+        st: np.ndarray,
+        spins: Sequence[tuple[float, float]],
+        markups: Sequence[str],
+        labels: Labels,
+        score: np.ndarray,
+        wider: float,
+        kept: Sequence[Sequence[np.ndarray]],
+    ) -> tuple[int, list[np.ndarray | None], float]:
+        """Of the arcs centred at `cs` starting at `st` (deg), asked best
+        `score` first: the first whose every label finds a free place near
+        its arrowhead (`Labels.rooms`, the link's arcs kept clear; the place
+        `kept` for it by `_beside` first, where free), out of the
+        rooms kept for other labels and apart from each other; a label without
+        room costs _NO_ROOM; the best _ROOM_TRIES are asked. The candidate, its
+        labels' places (None: no room near) and its cost."""
+        options: list[tuple[float, int, list[np.ndarray | None]]] = []
+        for c in np.argsort(score, kind="stable")[:_ROOM_TRIES]:
+            if options and score[c] >= min(o[0] for o in options):
+                break
+            arcs = []
+            for radius, _ in spins:
+                inset = _inset(radius, _OMEGA_R + wider)
+                arcs.append(arc_line(cs[c], radius, st[c] + inset, st[c] + _SPAN - inset))
+            own = shapely.union_all(arcs)
+            rooms: list[np.ndarray | None] = []
+            for (radius, sense), markup, mine in zip(spins, markups, kept[c]):
+                inset = _inset(radius, _OMEGA_R + wider)
+                tip_deg = math.radians(st[c] + _SPAN - inset if sense > 0 else st[c] + inset)
+                u = np.array([math.cos(tip_deg), math.sin(tip_deg)])
+                tip = cs[c] + radius * u
+
+                # the place kept by `_beside` asked alone first (mostly it
+                # will do), then every place near, away from the arc's centre first
+                def free(
+                    tip: np.ndarray = tip, markup: str = markup, mine: np.ndarray = mine
+                ) -> Iterator[np.ndarray]:
+                    if labels.is_room(tip, markup, mine, keep_off=own):
+                        yield mine
+                    yield from labels.rooms(tip, markup, towards=u, keep_off=own)
+
+                room = None
+                for xy in free():
+                    taken = any(
+                        abs(xy[0] - r[0]) <= 2 * _ROOM_X
+                        and abs(xy[1] - r[1]) <= _ROOM_DOWN + _ROOM_UP
+                        for r in rooms
+                        if r is not None
+                    )
+                    if not taken and not self.kept_near(xy):
+                        room = np.asarray(xy, dtype=float)
+                        break
+                rooms.append(room)
+            lacking = sum(r is None for r in rooms)
+            options.append((float(score[c]) + _NO_ROOM * lacking, int(c), rooms))
+        cost, c, rooms = min(options, key=lambda o: o[0])
+        return c, rooms, cost
 
     def round_pivot(self, centre: np.ndarray, radius: float, sense: float) -> float:
         """Start angle (deg) of a 120° arc round a frame pivot crossing least,
@@ -740,19 +856,25 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                 if not spins:
                     continue
                 segments = [(at(a, k), at(b, k)) for a, b in itertools.combinations(names, 2)]
-                centre, start_deg, rooms = arcs.beside(segments, [(r, v) for v, r, _, _ in spins])
+                centre, start_deg, rooms, wider = arcs.beside(
+                    segments,
+                    [(r, v) for v, r, _, _ in spins],
+                    labels,
+                    [f"{sym}_{{{lid}}}" for _, _, sym, _ in spins],
+                )
                 for (value, radius, sym, line), room in zip(spins, rooms):
-                    inset = _inset(radius)
+                    inset = _inset(radius + wider, _OMEGA_R + wider)
                     tip = sense_arc(
                         sk,
                         centre,
-                        radius,
+                        radius + wider,
                         value,
                         start_deg + inset,
                         start_deg + _SPAN - inset,
                         line,
                     )
-                    queued.append((tip, f"{sym}_{{{lid}}}", room - tip, room))
+                    towards = tip - centre if room is None else room - tip
+                    queued.append((tip, f"{sym}_{{{lid}}}", towards, room))
         centre = pivot
         sense = float(mech.drive.signed_omega)
         crank = [at(mech.crank_pin, k) - centre for k in range(n)]
@@ -769,7 +891,9 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             # ω1 names its arc's arrowhead, written towards the gap between the spokes
             anchor = _between_spokes(centre, tip, crank, 7.0)
             queued.append((tip, "ω_{1}", anchor - tip, None))
-        for tip, markup, towards, kept in queued:
+        # those with a room kept first: one with none (no free place near its
+        # arrowhead) would take another's
+        for tip, markup, towards, kept in sorted(queued, key=lambda q: q[3] is None):
             labels.later(tip, markup, towards, first=kept)
         labels.write_later()
         # Numbered positions of the crank pin, in smaller figures and out beyond

@@ -3,9 +3,14 @@ generated mechanisms whose sheet 1 broke label-near before ω1's arc was put
 where its label finds room beside the arrowhead (seeds 13, 24: "ω1" 14-15 mm
 from its arc), before a label found the places between the compass's (the
 fine grid) and before a plan's crowded images were named first (seed 23:
-"a33" 9.6 mm off; "ω1" on a line)."""
+"a33" 9.6 mm off; "ω1" on a line); and mechanisms whose sheet 1 broke it
+before a link's ω/ε arcs were put where their labels find room and before the
+placer's last resorts (a tighter fine grid, a leader from further out) came
+ahead of a place far off."""
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import pytest
 
@@ -27,3 +32,29 @@ def test_every_label_of_sheet1_near_what_it_names(seed):
     compose_sheet1(solution, backend, "en")
     found = lint(SheetView.of(backend, "en", g.name), RULES)
     assert [str(f) for f in found] == []
+
+
+TASKS = Path(__file__).resolve().parents[2] / "samples" / "tasks"
+
+
+@pytest.mark.parametrize(
+    "task",
+    [
+        "seed003/task01_v5",  # "ω3" 8.5 mm from its arc
+        "seed003/task08_v2",  # "C" 7.2 mm from its joint
+        "seed002/task1_v05",  # "ω4" 14.6 mm from its arc
+        "seed002/task5_v07",  # "ε4" 9.4 mm from its arc
+    ],
+)
+def test_seed_tasks_sheet1_labels_near_what_they_name(task):
+    path = TASKS / f"{task}.toml"
+    solution = solve(loads(path.read_text(encoding="utf-8"), str(path)))
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet1(solution, backend, "en")
+    found = lint(SheetView.of(backend, "en", task), RULES)
+    assert [str(f) for f in found] == []
+
+
+@pytest.mark.parametrize("seed", [16, 21])  # "s5" 9.8 mm off its image; three far
+def test_generated_sheet1_labels_near_what_they_name(seed):
+    test_every_label_of_sheet1_near_what_it_names(seed)
