@@ -157,21 +157,25 @@ def check_poles(solution, backend, sheet, lang):
     s_texts = " ".join(c["content"] for c in _texts(backend, "diagram-s"))
     if abs(sheet.scales["mu_S"] / sheet.scales["mu_l"] - 1.0) > 1e-9:
         k = sheet.scales["mu_S"] / sheet.scales["mu_l"]
-        # the diagrams' height when the sheet draws the calculation's μ_l (the
-        # one μ_S was chosen from), else the mechanism's field
-        same = math.isclose(sheet.scales["mu_l"], solution.mu_l, rel_tol=1e-9)
-        key = "mu_S_reason" if same else "mu_S_reason_field"
+        # the calculation's μ_S is said to be that where the sheet draws the
+        # mechanism at another μ_l; any other μ_S (the calculation's beside its
+        # own μ_l, or one grown into the sheet's room) was chosen so that the
+        # diagrams fit the sheet
+        calculated = solution.require_diagrams().construction.mu_S
+        other_mu_l = not math.isclose(sheet.scales["mu_l"], solution.mu_l, rel_tol=1e-9)
+        its_mu_S = math.isclose(sheet.scales["mu_S"], calculated, rel_tol=1e-9)
+        key = "mu_S_reason_field" if other_mu_l and its_mu_S else "mu_S_reason"
         reason = catalogue(lang).words("sheet1")[key]
         said = catalogue(lang).plain_number(float(f"{k:.6g}")) + "·μ"
         assert said in s_texts and reason.split()[-1] in s_texts, s_texts
-        if same:
+        if key == "mu_S_reason":
             # a step above μ_l for the diagrams' height: the Solution's (70 mm
-            # each), or the sheet's where it redrew them lower and wider into
-            # the room left (#21: the diagrams take the room that is left)
-            redrawn = not math.isclose(sheet.scales["mu_t"], solution.diagrams.construction.mu_t, rel_tol=1e-9)
+            # each), or the sheet's where it redrew them into the room left
+            # (#21: the diagrams take the room that is left)
+            redrawn = not its_mu_S or not math.isclose(
+                sheet.scales["mu_t"], solution.diagrams.construction.mu_t, rel_tol=1e-9
+            )
             assert solution.diagrams.scales.mu_S_steps > 0 or redrawn
-        else:  # the line names it the calculation's scale of S: it is
-            assert math.isclose(sheet.scales["mu_S"], solution.diagrams.construction.mu_S, rel_tol=1e-9)
     else:
         assert "·μ" not in s_texts
 
