@@ -228,9 +228,6 @@ class _Drawing:
         self.state = state
         self.mu_l = mu_l
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
-        # couples' arcs turned to leave their names room (`moment`); a compact
-        # sheet's loaded mechanism keeps them at the first start
-        self.turn_arcs = True
 
     def mm(self, P: Any) -> np.ndarray:
         return _xy(_c(P)) / self.mu_l
@@ -280,11 +277,7 @@ class _Drawing:
             return
         # the arc is avoided as drawn (the labels follow the sketch), not as a
         # disc: the points inside it (the pivot it turns round) are named there
-        start = (
-            self._arc_start(centre, M, force_markup(label), radius, name)
-            if self.turn_arcs
-            else _ARC_STARTS[0]
-        )
+        start = self._arc_start(centre, M, force_markup(label), radius, name)
         tip = sense_arc(self.sk, centre, radius, M, start, start + _ARC_SPAN)
         self.later(tip, force_markup(label), unit_vector(tip - centre))
 
@@ -469,17 +462,10 @@ def _largest_load(
 # --- the drawings -----------------------------------------------------------------------
 
 
-def sketch_loaded_mechanism(
-    fa: ForceAnalysis, mu_l: float, look: Any, lang: Language, compact: bool = False
-) -> Sketch:
-    """The mechanism with every load, F_bal and ω1 at `mu_l`; on a compact sheet
-    (`_Composer`, many groups: every drawing near its coarsest scale) its
-    couples' arcs at their first start, not turned to leave their names room
-    (a turned arc's name may stand where such a sheet has no room left)."""
+def sketch_loaded_mechanism(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
     state = fa.loads.state
     mech = state.mech
     d = _Drawing(look, state, mu_l, lang)
-    d.turn_arcs = not compact
     with d.sk.group("force-mechanism", "mechanism"):
         d.links(mech.links, frame=True)
         largest = _largest_load(fa, mech.links, [fa.driving_link.balancing_vector])
@@ -1370,7 +1356,7 @@ class _Composer:
         mechanism, loads = self.memo(
             ("force-mechanism", mu_l),
             lambda: (
-                sketch_loaded_mechanism(fa, mu_l, look, lang, self.compact),
+                sketch_loaded_mechanism(fa, mu_l, look, lang),
                 sketch_loads_table(fa, mu_l, look, lang, self.compact),
             ),
         )
