@@ -1393,7 +1393,10 @@ def arc_line(centre: PointLike, radius: float, start_deg: float, end_deg: float)
 def enclosing(point: PointLike, outlines: Iterable[BaseGeometry]) -> BaseGeometry | None:
     """The smallest of the filled `outlines` no wider or taller than BLOCK_MM
     that holds `point` (a slider's block round its pin or mass centre), or
-    None: a point drawn there is named beside the outline."""
+    None: a point drawn there is named beside the outline. Of two blocks as
+    large (a link's two sliders over its mass centre), the one whose middle
+    is nearest the point: the placer and the sheet linter, which see the
+    outlines in different orders, take the same one."""
     p = Point(float(point[0]), float(point[1]))
     held = [
         g
@@ -1402,7 +1405,7 @@ def enclosing(point: PointLike, outlines: Iterable[BaseGeometry]) -> BaseGeometr
         and max(g.bounds[2] - g.bounds[0], g.bounds[3] - g.bounds[1]) <= BLOCK_MM
         and g.contains(p)
     ]
-    return min(held, key=lambda g: g.area) if held else None
+    return min(held, key=lambda g: (round(g.area, 6), g.centroid.distance(p))) if held else None
 
 
 def _gap(

@@ -99,3 +99,19 @@ def test_four_bar_coupler_names_its_point_b_near_or_led():
     path = ROOT / "samples" / "four_bar_coupler.toml"
     found = _sheet1(path.read_text(encoding="utf-8"), str(path), ["label-near"])
     assert [f for f in found if "'B'" in f] == []
+
+
+def test_a_point_in_two_blocks_as_large_is_named_by_the_one_centred_nearest():
+    """A link's two sliders drawn over its mass centre: of two blocks of one
+    size holding the point, `enclosing` takes the one whose middle is nearest,
+    whatever their order (the placer and the sheet linter see the outlines in
+    different orders: seed 5's S6 was led from the other block on main 062c449,
+    and the linter found "its leader does not reach it")."""
+    from shapely.geometry import box
+
+    from mmt_plans.drawing.labels import enclosing
+
+    own, other = box(0.0, 0.0, 12.0, 7.0), box(-10.0, -5.0, 2.0, 2.0)
+    assert own.area == other.area
+    for outlines in ([own, other], [other, own]):
+        assert enclosing((1.5, 1.5), outlines) is own
