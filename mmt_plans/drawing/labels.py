@@ -25,7 +25,7 @@ drawing has to list its lines by hand.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Collection, Iterable, Sequence
 from contextlib import nullcontext
 from typing import Any, cast
 
@@ -158,6 +158,8 @@ class Labels:
         leader_group: int | None = None,
         words: Callable[[str], str] | None = None,
         fine: bool = True,
+        fine_far: bool = False,
+        wide_leaders: bool = False,
     ) -> None:
         self.sketch = sketch
         self.size = size
@@ -175,6 +177,14 @@ class Labels:
         # with `fine`, a label none of the compass's places holds is tried on
         # a fine grid of places near its anchor before a leader (_fine_near)
         self.fine = fine
+        # with `fine_far` (where `fine` is off), the fine grid only for the
+        # labels `write_later(retry=True)` found no place near at first: the
+        # crowded ones, written first with it, the easy ones as before
+        self.fine_far = fine_far
+        # with `wide_leaders`, a label no leader of `leader_rings` reaches a
+        # place from is led once more, on the finer rings (FINE_LEADER_RINGS,
+        # FINE_LEADER_DIRS directions), before it stands far with no leader
+        self.wide_leaders = wide_leaders
         # how far out a leader's box may go (mm past `distance`, in turn), in how many directions
         self.leader_rings = np.array(leader_rings, dtype=float)
         self._leader_dirs = np.exp(1j * np.radians(360.0 / leader_dirs * np.arange(leader_dirs)))
@@ -398,10 +408,13 @@ class Labels:
             ("along", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), along)
         )
 
-    def later_arrow(self, start: PointLike, end: PointLike, markup: str) -> None:
-        """A label to write at the head of the arrow start–end (`place_arrow`) with `write_later`."""
+    def later_arrow(
+        self, start: PointLike, end: PointLike, markup: str, along: Sequence[float] | None = None
+    ) -> None:
+        """A label to write at the head of the arrow start–end (`place_arrow`,
+        beside its shaft at the fractions `along` of it where given) with `write_later`."""
         self._later.append(
-            ("arrow", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), None)
+            ("arrow", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), along)
         )
 
     def write_later(self, *, retry: bool = False) -> None:
@@ -409,9 +422,10 @@ class Labels:
 
         With `retry`, where some of them found no place near what they name
         (nor a leader to one), all are written again with those first: a
-        draughtsman letters the crowded places before the easy ones. The
-        order kept is the one that leaves fewest written on something, then
-        fewest far (the first, on a tie)."""
+        draughtsman letters the crowded places before the easy ones (with
+        `fine_far`, those on the fine grid of places too). The order kept is
+        the one that leaves fewest written on something, then fewest far (the
+        first, on a tie)."""
         todo = list(self._later)
         self._later.clear()
         if not retry:
@@ -429,11 +443,12 @@ class Labels:
         for _ in range(_RETRIES):
             # those that went far, first (already first: the same order writes the same)
             again = [*(order[i] for i in far), *(j for k, j in enumerate(order) if k not in far)]
-            if again == order:
+            fine = set(range(len(far))) if self.fine_far else set()
+            if again == order and not fine:
                 break
             order = again
             self._restore(saved)
-            far = self._write_all([todo[j] for j in order])
+            far = self._write_all([todo[j] for j in order], fine)
             if (self.unsettled - saved[-2], len(far)) < best[0]:
                 best = ((self.unsettled - saved[-2], len(far)), order)
                 written = self._written(saved)
@@ -442,23 +457,30 @@ class Labels:
             self._put_back(written)
 
     def _write_all(
-        self, todo: Sequence[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]]
+        self,
+        todo: Sequence[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]],
+        fine: Collection[int] = (),
     ) -> list[int]:
-        """Write `todo` in order; which of them (their places in it) went far."""
+        """Write `todo` in order (those at the places `fine` in it with the
+        fine grid); which of them (their places in it) went far."""
         far: list[int] = []
+        plain = self.fine
         for k, (kind, anchor, markup, other, first) in enumerate(todo):
             before = self.far
+            self.fine = plain or k in fine
             if kind == "along":  # `first` holds the fractions along it, if any
                 assert other is not None
                 along = None if first is None else [float(t) for t in first]
                 self.place_along(anchor, other, markup, around=True, along=along)
-            elif kind == "arrow":
+            elif kind == "arrow":  # `first` holds the fractions along its shaft, if any
                 assert other is not None
-                self.place_arrow(anchor, other, markup)
+                along = None if first is None else [float(t) for t in first]
+                self.place_arrow(anchor, other, markup, along=along)
             else:
                 self.place(anchor, markup, towards=other, first=first)
             if self.far > before:
                 far.append(k)
+        self.fine = plain
         return far
 
     def _state(self) -> tuple[Any, ...]:
@@ -535,30 +557,46 @@ class Labels:
     ) -> BaseGeometry:
         """Write `markup` beside `anchor`, first trying the side `towards` points to
         (centred at `first` before all, where given: a room kept for it);
-        inside a group `group` (class "label") if one is named."""
+        inside a group `group` (class "label") if one is named. The names of
+        things at one point ("d, s_{5}") go one under another where in one
+        line they find no room near it."""
         x, y = float(anchor[0]), float(anchor[1])
-        cx, cy, w, h, drop = self._around(np.array([x, y]), markup, towards, distance)
-        if first is not None:
-            cx = np.concatenate([[float(first[0])], cx])
-            cy = np.concatenate([[float(first[1])], cy])
-        return self._write(
-            cx,
-            cy,
-            w,
-            h,
-            drop,
-            markup,
-            group,
-            leader=((x, y), towards, distance),
-            names=("point", (x, y), None),
-        )
+        tries = [markup, "\n".join(f"{m}," for m in markup.split(", "))[:-1]]
+        tries = tries[:1] if ", " not in markup else tries
+        for k, text in enumerate(tries):
+            cx, cy, w, h, drop = self._around(np.array([x, y]), text, towards, distance)
+            if first is not None and not k:
+                cx = np.concatenate([[float(first[0])], cx])
+                cy = np.concatenate([[float(first[1])], cy])
+            footprint = self._write_first_free(
+                cx,
+                cy,
+                w,
+                h,
+                drop,
+                text,
+                group,
+                leader=((x, y), towards, distance),
+                settle=k == len(tries) - 1,
+                names=("point", (x, y), None),
+            )
+            if footprint is not None:
+                return footprint
+        raise AssertionError("the last try always writes")
 
     def place_arrow(
-        self, start: PointLike, end: PointLike, markup: str, *, group: str | None = None
+        self,
+        start: PointLike,
+        end: PointLike,
+        markup: str,
+        *,
+        group: str | None = None,
+        along: Sequence[float] | None = None,
     ) -> BaseGeometry:
         """Write a force's name by the head of its arrow start–end, on the side
-        it points to; where that is taken, beside its shaft; else further out
-        from the head with a leader."""
+        it points to; where that is taken, beside its shaft (at the fractions
+        `along` of it, by default 0.5, 0.35 and 0.65 of it);
+        else further out from the head with a leader."""
         a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
         u = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
         # the names of forces that share the arrow one under another where in one line they find no room
@@ -566,7 +604,7 @@ class Labels:
         tries = tries[:1] if ", " not in markup else tries
         for k, text in enumerate(tries):
             cx, cy, w, h, drop = self._around(b, text, u, 1.5)
-            sx, sy = self._beside(a, b, text, 1.0, _ALONG[:3])
+            sx, sy = self._beside(a, b, text, 1.0, _ALONG[:3] if along is None else along)
             footprint = self._write_first_free(
                 np.concatenate([cx, sx]),
                 np.concatenate([cy, sy]),
@@ -785,6 +823,8 @@ class Labels:
             # nothing near is free: further out, tied to it by a leader that
             # crosses nothing, else only thin lines
             found = self._leader_place(leader, w, h, drop, names, outline, markup)
+            if found is None and self.wide_leaders:
+                found = self._wide_leader_place(leader, w, h, drop, names, outline, markup)
             if found is not None:
                 (lx, ly), line = found
                 cx, cy = np.array([lx]), np.array([ly])
@@ -949,6 +989,19 @@ class Labels:
             if found is not None:
                 return found
         return None
+
+    def _wide_leader_place(self, *args: Any) -> Any:
+        """`_leader_place` on the fine rings, every FINE_LEADER_DIRS directions."""
+        kept = self.leader_rings, self._leader_dirs, self.leader_group
+        self.leader_rings = np.array(FINE_LEADER_RINGS, dtype=float)
+        self._leader_dirs = np.exp(
+            1j * np.radians(360.0 / FINE_LEADER_DIRS * np.arange(FINE_LEADER_DIRS))
+        )
+        self.leader_group = FINE_LEADER_GROUP
+        try:
+            return self._leader_place(*args)
+        finally:
+            self.leader_rings, self._leader_dirs, self.leader_group = kept
 
     def _leader_among(
         self,

@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 import shapely
 
-from ..drawing.labels import Labels
+from ..drawing.labels import Labels, arc_line
 from ..drawing.layout import LayoutError, SheetLayout, pack
 from ..drawing.markup import equation_markup as _equation_markup
 from ..drawing.markup import force_markup, image_markup, point_markup
@@ -65,6 +65,23 @@ _FAR_MM = 40.0  # a reaction applied farther than this from its group's points m
 # where along an arm h its name is tried, in turn: the middle first, then out to
 # both ends (the arms of a lever all leave the pole, where their names crowd)
 _ARM_ALONG = (0.5, 0.65, 0.35, 0.8, 0.2, 0.9, 0.1, 0.75, 0.25, 0.95, 0.05, 0.55, 0.45)
+# how every drawing of sheet 2 letters: a word space between labels, leaders;
+# the fine grid of places only for the labels that found no place near at first
+# (all of them on it wrote five_dyads' 'Fin4' and task09_v5's 's1, k1' on a
+# line), the fine rings of leaders before a label stands far
+_LABELLING: dict[str, Any] = dict(
+    spacing=None, leaders=True, fine=False, fine_far=True, wide_leaders=True
+)
+# where along a force's arrow its name is tried beside the shaft (after round
+# its head), in turn: out to near both ends, where other arrows leave room
+_SHAFT_ALONG = (0.5, 0.35, 0.65, 0.2, 0.8, 0.1)
+# the side a joint's name and a mass centre's are tried on first
+_PIN_SIDE = np.array([-0.6, 0.8])
+_S_SIDE = np.array([-0.8, -0.6])
+# a couple's arc: 230° of a circle, started at the first of these angles that
+# leaves room for its label and for the name of the point it turns round
+_ARC_SPAN = 230.0
+_ARC_STARTS = tuple(20.0 + 45.0 * k for k in range(8))
 
 GROUPS = (
     "force-mechanism",
@@ -207,12 +224,13 @@ class _Drawing:
 
     def __init__(self, look: Any, state: PositionState, mu_l: float, lang: Language = "en") -> None:
         self.sk = Sketch(look)
-        self.labels = Labels(
-            self.sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang), fine=False
-        )
+        self.labels = Labels(self.sk, _TEXT, **_LABELLING, words=_index_words(lang))
         self.state = state
         self.mu_l = mu_l
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
+        # couples' arcs turned to leave their names room (`moment`); a compact
+        # sheet's loaded mechanism keeps them at the first start
+        self.turn_arcs = True
 
     def mm(self, P: Any) -> np.ndarray:
         return _xy(_c(P)) / self.mu_l
@@ -223,9 +241,6 @@ class _Drawing:
     def later(self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None) -> None:
         """A label written after every line, so that it can avoid them all."""
         self.labels.later(anchor, markup, towards)
-
-    def later_arrow(self, start: np.ndarray, end: np.ndarray, markup: str) -> None:
-        self.labels.later_arrow(start, end, markup)
 
     def later_along(
         self, start: np.ndarray, end: np.ndarray, markup: str, along: Sequence[float] | None = None
@@ -247,16 +262,59 @@ class _Drawing:
             at, end = at + 2.5 * np.array([-u[1], u[0]]), end + 2.5 * np.array([-u[1], u[0]])
         self._arrows.append((at, end))
         self.sk.arrow(at, end, line, **_ARROW)  # type: ignore[arg-type]
-        self.later_arrow(at, end, force_markup(label))
+        self.labels.later_arrow(at, end, force_markup(label), _SHAFT_ALONG)
 
-    def moment(self, centre: np.ndarray, M: float, label: str, radius: float = 6.0) -> None:
-        """A couple as an arc with its arrowhead in the sense of M (ccw positive)."""
+    def moment(
+        self,
+        centre: np.ndarray,
+        M: float,
+        label: str,
+        radius: float = 6.0,
+        name: tuple[str, np.ndarray] | None = None,
+    ) -> None:
+        """A couple as an arc with its arrowhead in the sense of M (ccw
+        positive), turned where it leaves room for its label by the arrowhead
+        and for `name` (the name of the point at `centre`, the side it is
+        written first), and crosses least."""
         if M == 0.0:
             return
         # the arc is avoided as drawn (the labels follow the sketch), not as a
         # disc: the points inside it (the pivot it turns round) are named there
-        tip = sense_arc(self.sk, centre, radius, M)
+        start = (
+            self._arc_start(centre, M, force_markup(label), radius, name)
+            if self.turn_arcs
+            else _ARC_STARTS[0]
+        )
+        tip = sense_arc(self.sk, centre, radius, M, start, start + _ARC_SPAN)
         self.later(tip, force_markup(label), unit_vector(tip - centre))
+
+    def _arc_start(
+        self,
+        centre: np.ndarray,
+        M: float,
+        markup: str,
+        radius: float,
+        name: tuple[str, np.ndarray] | None,
+    ) -> float:
+        """Where a couple's arc starts, degrees: the first of _ARC_STARTS that
+        leaves room near `centre` for `name` and by the arrowhead for `markup`,
+        else the one that leaves most of that room and covers least."""
+        best: tuple[tuple[int, float], float] | None = None
+        for start in _ARC_STARTS:
+            arc = arc_line(centre, radius, start, start + _ARC_SPAN)
+            t = math.radians(start + _ARC_SPAN if M > 0 else start)
+            tip = centre + radius * np.array([math.cos(t), math.sin(t)])
+            lost = int(not len(self.labels.rooms(tip, markup, towards=tip - centre, keep_off=arc)))
+            if name is not None:
+                rooms = self.labels.rooms(centre, name[0], towards=name[1], keep_off=arc)
+                lost += 2 * int(not len(rooms))
+            if not lost:  # room for both: the first such start
+                return start
+            score = (lost, round(self.labels.covered(arc.buffer(0.3)), 1))
+            if best is None or score < best[0]:
+                best = (score, start)
+        assert best is not None
+        return best[1]
 
     def arm(self, pivot: np.ndarray, at: np.ndarray, F: np.ndarray, label: str) -> float:
         """The perpendicular from `pivot` to the force's line of action; its length, mm."""
@@ -338,7 +396,7 @@ class _Drawing:
             P = self.mm(state.point(moving[0], pin.point))
             if pin.point not in written:
                 written.add(pin.point)
-                self.later(P, point_markup(pin.point), np.array([-0.6, 0.8]))
+                self.later(P, point_markup(pin.point), _PIN_SIDE)
         for pair in mech.sliders:
             if pair.slider in lids and pair.slider_point not in written:
                 written.add(pair.slider_point)
@@ -363,7 +421,7 @@ class _Drawing:
             if ll.mass:
                 self.sk.circle(S, 0.8, "main", "black")
                 self.labels.avoid_circle(S, 1.2)
-                self.later(S, f"S_{{{lid}}}", np.array([-0.8, -0.6]))
+                self.later(S, f"S_{{{lid}}}", _S_SIDE)
                 self.force(S, ll.weight, f"G{lid}", largest)
             sh = ll.shifted_inertia_force
             if sh is not None and ll.mass:
@@ -374,7 +432,7 @@ class _Drawing:
                 self.force(K, ll.inertia_force, f"F_in{lid}", largest)
             elif ll.mass:
                 self.force(S, ll.inertia_force, f"F_in{lid}", largest)
-                self.moment(S, ll.inertia_moment, f"M_in{lid}")
+                self.moment(S, ll.inertia_moment, f"M_in{lid}", name=(f"S_{{{lid}}}", _S_SIDE))
         for f in fa.loads.production_resistance:
             if f.link in lids and f.acting:
                 self.force(self.mm(f.point), f.force, f.name, largest)
@@ -411,10 +469,17 @@ def _largest_load(
 # --- the drawings -----------------------------------------------------------------------
 
 
-def sketch_loaded_mechanism(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
+def sketch_loaded_mechanism(
+    fa: ForceAnalysis, mu_l: float, look: Any, lang: Language, compact: bool = False
+) -> Sketch:
+    """The mechanism with every load, F_bal and ω1 at `mu_l`; on a compact sheet
+    (`_Composer`, many groups: every drawing near its coarsest scale) its
+    couples' arcs at their first start, not turned to leave their names room
+    (a turned arc's name may stand where such a sheet has no room left)."""
     state = fa.loads.state
     mech = state.mech
     d = _Drawing(look, state, mu_l, lang)
+    d.turn_arcs = not compact
     with d.sk.group("force-mechanism", "mechanism"):
         d.links(mech.links, frame=True)
         largest = _largest_load(fa, mech.links, [fa.driving_link.balancing_vector])
@@ -422,7 +487,8 @@ def sketch_loaded_mechanism(fa: ForceAnalysis, mu_l: float, look: Any, lang: Lan
         A = d.mm(state.point(mech.drive.link, mech.crank_pin))
         d.force(A, fa.driving_link.balancing_vector, "F_bal", largest)
         O = d.mm(state.point(mech.drive.link, mech.crank_pivot))
-        d.moment(O, state.omega1, "ω_{1}", radius=9.0)
+        name = (point_markup(mech.crank_pivot), _PIN_SIDE)
+        d.moment(O, state.omega1, "ω_{1}", radius=9.0, name=name)
         label = scale_label(mu_l, "length", lang).markup()
         sk = d.finish(
             _words(lang)["mechanism"].format(i=fa.index), [label, _words(lang)["not_to_scale"]]
@@ -620,7 +686,7 @@ def sketch_force_polygons(
     the textbook closes R54 inside the polygon of group 4-5; one that shares
     nothing is drawn beside it."""
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang), fine=False)
+    labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
     drawn: dict[tuple[str, int, int], bool] = {}
     short: list[str] = []
     offset = np.zeros(2)
@@ -732,7 +798,7 @@ def sketch_lever(
     lever = fa.lever
     mech = fa.loads.state.mech
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT, spacing=None, leaders=True, words=_index_words(lang), fine=False)
+    labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
     img = {n: np.asarray(v, float) / mu_V for n, v in lever.images.items()}
     dotted: set[str] = set()  # images of S_i and K_i marked with a dot
     with sk.group("zhukovsky-lever", "lever"):
@@ -797,7 +863,8 @@ def sketch_lever(
             labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
         for start, end, names in drawn:
             sk.arrow(start, end, "main", **_ARROW)  # type: ignore[arg-type]
-            labels.later_arrow(start, end, ", ".join(force_markup(n) for n in names))
+            markup = ", ".join(force_markup(n) for n in names)
+            labels.later_arrow(start, end, markup, _SHAFT_ALONG)
         for foot, numbers in feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
         labels.write_later(retry=True)
@@ -1303,7 +1370,7 @@ class _Composer:
         mechanism, loads = self.memo(
             ("force-mechanism", mu_l),
             lambda: (
-                sketch_loaded_mechanism(fa, mu_l, look, lang),
+                sketch_loaded_mechanism(fa, mu_l, look, lang, self.compact),
                 sketch_loads_table(fa, mu_l, look, lang, self.compact),
             ),
         )

@@ -132,3 +132,59 @@ def test_the_levers_crowded_names_are_lettered_first(name, lang):
     10.7 mm off; shaper's s4 9.6 mm up the line of F_in5) is written again
     first, and every name then stands near (write_later(retry=True))."""
     assert _findings_in(_view(name, lang), "lever") == []
+
+
+# seed 13: the crank's pivot O2 stood 10.0 mm off, walled in by ω1's arc (the
+# 230° arc began at 20° whatever was drawn) and link 3's line, and no leader
+# could cross the arc (a main line); seed 23: the pole's image 'o' 9.7 mm and
+# 'h3' 9.8 mm; seed 24: 'p' 6.5 mm and 'S1' 9.9 mm (main 062c449)
+@pytest.mark.parametrize("seed", [13, 23, 24])
+def test_regression_seeds_whose_names_stood_far_on_sheet_2(seed):
+    assert lint(_view(f"seed {seed}", "en"), NEAR_RULES) == []
+
+
+def test_a_sense_arc_is_turned_where_the_pivot_and_its_own_name_find_room():
+    """ω1's arc round a pivot with a line running out of it to the lower right
+    and one to the upper left: the arc is turned so that the pivot's name and
+    ω1 both stand near what they name."""
+    import numpy as np
+
+    from mmt_plans.render.look import load_look
+    from mmt_plans.sheets.sheet2 import _Drawing
+
+    d = _Drawing(load_look(), None, 1.0)  # type: ignore[arg-type]
+    with d.sk.group("force-mechanism", "mechanism"):
+        d.sk.line((-30.0, 20.0), (30.0, -20.0), "main")
+        d.sk.line((0.0, 0.0), (-4.0, 25.0), "main")
+        d.sk.circle((0.0, 0.0), 1.2, "main", "white")
+        d.moment(np.zeros(2), 1.0, "ω_{1}", radius=9.0, name=("O_{2}", np.array([-0.6, 0.8])))
+        d.later(np.zeros(2), "O_{2}", np.array([-0.6, 0.8]))
+        sk = d.finish("test")
+    v = SheetView(list(sk.calls), 841.0, 594.0, "en")
+    assert {lab.text for lab in v.labels} >= {"O2", "ω1"}
+    assert lint(v, NEAR_RULES) == []
+
+
+def test_names_at_one_point_go_one_under_another_where_one_line_finds_no_room():
+    """Labels.place: "s_{1}, k_{1}" in a slot 9 mm wide, where one line of it
+    (about 13 mm wide) finds no place near the point, is written as two lines
+    (each name under the one before), near the point and on nothing (the near
+    places alone: no leaders)."""
+    from mmt_plans.drawing.labels import Labels
+    from mmt_plans.drawing.sketch import Sketch
+    from mmt_plans.render.look import load_look
+
+    sk = Sketch(load_look())
+    with sk.group("zhukovsky-lever", "lever"):
+        for x in (-4.5, 4.5):
+            sk.line((x, -40.0), (x, 40.0), "main")
+        for y in range(-16, 17, 2):  # hatching either side of the slot
+            sk.line((-20.0, y), (-4.5, y), "thin")
+            sk.line((4.5, y), (20.0, y), "thin")
+        sk.circle((0.0, 0.0), 0.6, "thin", "black")
+        labels = Labels(sk, 3.5, spacing=None, leaders=False, fine=False)
+        labels.place((0.0, 0.0), "s_{1}, k_{1}", towards=(-1.0, -1.0))
+    v = SheetView(list(sk.calls), 841.0, 594.0, "en")
+    (lab,) = v.labels
+    assert lab.box.bounds[2] - lab.box.bounds[0] < 9.0  # two lines, not one
+    assert lint(v, NEAR_RULES) == []
