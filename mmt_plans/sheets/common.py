@@ -4,7 +4,11 @@ from __future__ import annotations
 
 import re
 import zlib
+from collections.abc import Sequence
 from pathlib import Path
+
+import shapely
+from shapely.geometry.base import BaseGeometry
 
 from ..drawing.page import FIELDS
 from ..i18n import Language, catalogue
@@ -14,6 +18,7 @@ from ..titles import sheet_title
 
 __all__ = [
     "EMPTY_MAX",
+    "empty_share",
     "designation_base",
     "drawing_scale",
     "length_scale_step",
@@ -26,6 +31,13 @@ __all__ = [
 # rule, sheets/lint.py; the composers fill to it): here, where the composers
 # read it without loading the linter.
 EMPTY_MAX = 0.5
+
+
+def empty_share(field_: BaseGeometry, boxes: Sequence[BaseGeometry]) -> float:
+    """The share of `field_` outside every one of `boxes` (the field-filled
+    rule: the linter on a recorded sheet, sheet 1 on its trial layouts)."""
+    used = shapely.union_all(boxes).intersection(field_).area if boxes else 0.0
+    return 1.0 - float(used) / float(field_.area)
 
 
 def next_scale(mu: float, steps: int) -> float:

@@ -55,7 +55,6 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 import numpy as np
-import shapely
 from shapely import STRtree
 from shapely.geometry import LineString, Point, box
 from shapely.geometry.base import BaseGeometry
@@ -63,7 +62,7 @@ from shapely.geometry.base import BaseGeometry
 from ..drawing.labels import LOOKALIKE, LOOKALIKE_MM, NEAR_MM, drawn_shapes, enclosing
 from ..render.look import load_look
 from ..render.recording import Arrow, BeginGroup, Call, Line, Naming, RecordingBackend, Text
-from .common import EMPTY_MAX
+from .common import EMPTY_MAX, empty_share
 
 __all__ = [
     "EMPTY_MAX",
@@ -649,8 +648,7 @@ def field_filled(v: SheetView) -> Iterator[Finding]:
         if bbs:
             a = np.array(bbs)
             parts.append(box(a[:, 0].min(), a[:, 1].min(), a[:, 2].max(), a[:, 3].max()))
-    used = shapely.unary_union(parts).intersection(field_).area if parts else 0.0
-    empty = 1.0 - used / field_.area
+    empty = empty_share(field_, parts)
     if empty > EMPTY_MAX:
         yield Finding(
             "field-filled",

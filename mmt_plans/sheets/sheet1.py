@@ -56,7 +56,7 @@ from ..scales import (
     series,
 )
 from ..solution import Solution
-from .common import EMPTY_MAX, length_scale_step, title_fields
+from .common import EMPTY_MAX, empty_share, length_scale_step, title_fields
 from .common import next_scale as _next_scale
 from .scales_record import Sheet1Scales
 
@@ -2005,8 +2005,7 @@ def _empty_share(
             shapely.box(x0 + dx, y0 + dy, x1 + dx, y1 + dy)
             for x0, y0, x1, y1 in sketches[name].group_extents()
         ]
-    used = shapely.union_all(parts).intersection(field_).area if parts else 0.0
-    return 1.0 - float(used) / float(field_.area)
+    return empty_share(field_, parts)
 
 
 def compose_sheet1(
