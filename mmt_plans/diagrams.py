@@ -109,6 +109,59 @@ def _frozen(values: ArrayLike) -> Array:
     return arr
 
 
+def _diff(y: Array) -> Array:
+    """np.diff of a 1-d array: the same subtraction, y[1:] - y[:-1], without
+    its wrapper (a solve differentiates a dozen short arrays)."""
+    return np.subtract(y[1:], y[:-1])
+
+
+def _closed(y: Array) -> Array:
+    """y with its first value again at the end (np.append(y, y[0]): one turn
+    closed), by one concatenation."""
+    return np.concatenate((y, y[:1]))
+
+
+def _columns(x: Array, y: Array) -> Array:
+    """np.column_stack([x, y]) of two 1-d float arrays, filled in place."""
+    out = np.empty((x.size, 2))
+    out[:, 0], out[:, 1] = x, y
+    return out
+
+
+try:  # the FFTs np.fft.rfft and np.fft.irfft run, called without their wrappers
+    from numpy.fft import _pocketfft_umath as _pfu  # type: ignore[attr-defined]
+
+    _RFFT_EVEN, _RFFT_ODD, _IRFFT = _pfu.rfft_n_even, _pfu.rfft_n_odd, _pfu.irfft
+except (ImportError, AttributeError):  # pragma: no cover - another numpy: its own functions
+    _pfu = None
+
+
+def _rfft(y: Array) -> Array:
+    """np.fft.rfft(y) of a 1-d float array: numpy's own transform (the same
+    ufunc, factor 1 and output), called as `np.fft.rfft` calls it."""
+    if _pfu is None:  # pragma: no cover
+        return np.fft.rfft(y)
+    n = y.size
+    out = np.empty(n // 2 + 1, dtype=np.complex128)
+    return (_RFFT_EVEN if n % 2 == 0 else _RFFT_ODD)(y, 1, axes=_FFT_AXES, out=out)  # type: ignore[no-any-return]
+
+
+def _irfft(c: Array, n: int) -> Array:
+    """np.fft.irfft(c, n) of a 1-d complex array (factor 1/n, as it scales)."""
+    if _pfu is None:  # pragma: no cover
+        return np.fft.irfft(c, n)
+    return _IRFFT(c, _inverse(n), axes=_FFT_AXES, out=np.empty(n))  # type: ignore[no-any-return]
+
+
+_FFT_AXES = [(0,), (), (0,)]
+
+
+@lru_cache(maxsize=64)
+def _inverse(n: int) -> np.float64:
+    """np.fft's factor of an inverse transform of n points: 1/n as it computes it."""
+    return np.reciprocal(n, dtype=np.float64)  # type: ignore[no-any-return]
+
+
 # --------------------------------------------------------------------------- scales
 
 
@@ -255,20 +308,20 @@ def _drawn_heights(
     mu_a = derived_scale(mu_V, mu_t, H2)
     x = np.arange(n + 1) * (L / n)
     h = float(x[1] - x[0])
-    dx = np.diff(x)
+    dx = _diff(x)
 
     def extent(y: Array) -> float:
         return float(max(0.0, y.max()) - min(0.0, y.min()))
 
     def derivative(y: Array, H: float) -> tuple[Array, Array, Array]:
-        mid = H * (np.diff(y) / dx)
+        mid = H * (_diff(y) / dx)
         M = _periodic_spline_moments(mid, h)
         return _spline_on_grid(mid, M, h, samples_per_interval), mid, M
 
-    y_s = np.append(s, s[0]) / mu_S
+    y_s = _closed(s) / mu_S
     curve_v, mid_v, M_v = derivative(y_s, H1)
     ordinates = _spline_at_nodes(mid_v, M_v, h)
-    curve_a, _, _ = derivative(np.append(ordinates, ordinates[0]), H2)
+    curve_a, _, _ = derivative(_closed(ordinates), H2)
     return _Heights(mu_t, mu_V, mu_a, (extent(y_s), extent(curve_v), extent(curve_a)))
 
 
@@ -282,7 +335,7 @@ def _periodic_spline_moments(y: Array, h: float) -> Array:
     the discrete Fourier transform diagonalises it; 4 + 2 cos θ ≥ 2 never vanishes.
     """
     n = y.size
-    return np.fft.irfft(np.fft.rfft(y) * (_spline_factor(n) / (h * h)), n)
+    return _irfft(_rfft(y) * (_spline_factor(n) / (h * h)), n)
 
 
 @lru_cache(maxsize=64)
@@ -426,7 +479,7 @@ def _differentiate(
 ) -> GraphicalDerivative:
     x, y = points[:, 0], points[:, 1]
     n = x.size - 1
-    slope = np.diff(y) / np.diff(x)
+    slope = _diff(y) / _diff(x)
     # the records filled in place (each array made here once, then frozen)
     k = np.zeros((n, 2))
     k[:, 1] = H * slope
@@ -518,10 +571,10 @@ def graphical_differentiation(
 
     # Position n is position 0 one turn later: the chords close the cycle.
     x = np.arange(n + 1) * (L / n)
-    s_points = np.column_stack([x, np.append(s_arr, s_arr[0]) / mu_S])
+    s_points = _columns(x, _closed(s_arr) / mu_S)
     velocity = _differentiate(s_points, H1, mu_V, samples_per_interval)
     # The V diagram is differentiated where it is read: at the positions.
-    v_points = np.column_stack([x, np.append(velocity.ordinates, velocity.ordinates[0])])
+    v_points = _columns(x, _closed(velocity.ordinates))
     acceleration = _differentiate(v_points, H2, mu_a, samples_per_interval)
 
     return KinematicDiagrams(
@@ -565,12 +618,12 @@ def spectral_derivatives(s: ArrayLike, *, n1: float) -> tuple[Array, Array]:
     n = s_arr.size
     w = _omega(n1)
     k = np.arange(n // 2 + 1, dtype=np.float64)
-    c = np.fft.rfft(s_arr)
+    c = _rfft(s_arr)
     d1 = 1j * k * w
     if n % 2 == 0:
         d1[-1] = 0.0
-    v = np.fft.irfft(c * d1, n)
-    a = np.fft.irfft(c * -((k * w) ** 2), n)
+    v = _irfft(c * d1, n)
+    a = _irfft(c * -((k * w) ** 2), n)
     return _frozen(v), _frozen(a)
 
 

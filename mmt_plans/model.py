@@ -77,7 +77,7 @@ class Link:
     def point_names(self) -> tuple[str, ...]:
         return tuple(self.points)
 
-    @property
+    @cached_property
     def length(self) -> float:
         """Distance of the first two points: the textbook's l of J = k·m·l²."""
         names = self.point_names

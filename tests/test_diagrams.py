@@ -578,3 +578,31 @@ def test_a_zero_plan_value_is_judged_by_its_absolute_error_on_the_first_grid_pas
     assert val.absolute_error == pytest.approx(1e-3)
     # without the exemption (12)/(13) fails it, whatever the share
     assert not judge(0, "v", 0.01, 0.02, largest[0]).passed
+
+
+# --- the short cuts a solve takes (#25 speed): numpy's own numbers, bit for bit ---------------
+
+
+@pytest.mark.parametrize("n", [4, 5, 12, 36, 37, 288])
+def test_fft_short_cuts_are_numpys_own(n: int) -> None:
+    """_rfft / _irfft call the transforms np.fft.rfft / irfft call, with their
+    factors: the same bits (strided input too, as the spline's middles are)."""
+    from mmt_plans.diagrams import _irfft, _rfft
+
+    rng = np.random.default_rng(n)
+    y = rng.normal(size=(n, 2))[:, 1]  # a strided column
+    c = np.fft.rfft(y)
+    assert np.array_equal(_rfft(y), c)
+    assert np.array_equal(_irfft(c * 1.7j, n), np.fft.irfft(c * 1.7j, n))
+    assert np.array_equal(_irfft(c, n), np.fft.irfft(c, n))
+
+
+def test_array_short_cuts_are_numpys_own() -> None:
+    from mmt_plans.diagrams import _closed, _columns, _diff
+
+    rng = np.random.default_rng(7)
+    y = rng.normal(size=(13, 2))[:, 0]
+    x = np.arange(13) * 0.37
+    assert np.array_equal(_diff(y), np.diff(y))
+    assert np.array_equal(_closed(y), np.append(y, y[0]))
+    assert np.array_equal(_columns(x, y), np.column_stack([x, y]))

@@ -21,7 +21,7 @@ import numpy as np
 
 from ..model import Force, Stroke
 from .errors import ForceError
-from .state import PositionState, xy
+from .state import PositionState, xy, xy_rows
 
 ForceRule = Literal["working", "always", "fixed"]
 
@@ -170,7 +170,9 @@ def link_loads(
     g = mech.g
     d = mech.drive.link
     a_A = abs(state.links[d].acc(state.point(d, mech.crank_pin)))
-    links = {}
+    # every link's vectors first, then their [x, y] rows made at once (the same numbers)
+    found = []
+    vectors: list[complex] = []
     for lid, link in mech.links.items():
         pose = state.links[lid]
         S = state.centre_of_mass(lid)
@@ -192,19 +194,32 @@ def link_loads(
                     f"name one of its points: {', '.join(link.points)}",
                 )
             G_point = xy(state.point(lid, G_at))
+        shift = _shift(S, F_in, M_in, NOISE * link.mass * a_A)
+        found.append((lid, link, pose, M_in, G_at, G_point, shift))
+        vectors += (S, a_S, complex(0.0, -link.mass * g if gravity else 0.0), F_in)
+        if shift is not None:
+            vectors.append(shift[0])
+    rows = iter(xy_rows(vectors))
+    links = {}
+    for lid, link, pose, M_in, G_at, G_point, shift in found:
+        S_xy, a_S_xy, G_xy, F_in_xy = next(rows), next(rows), next(rows), next(rows)
+        shifted = None
+        if shift is not None:
+            h = shift[1]
+            shifted = ShiftedInertiaForce(
+                lid, F_in_xy, next(rows), h, None if mu_l is None else h / mu_l
+            )
         links[lid] = LinkLoads(
             link=lid,
             mass=link.mass,
             J=link.J,
-            centre_of_mass=xy(S),
-            acceleration_cm=xy(a_S),
+            centre_of_mass=S_xy,
+            acceleration_cm=a_S_xy,
             eps=pose.eps,
-            weight=xy(complex(0.0, -link.mass * g if gravity else 0.0)),
-            inertia_force=xy(F_in),
+            weight=G_xy,
+            inertia_force=F_in_xy,
             inertia_moment=M_in + 0.0,
-            shifted_inertia_force=shifted_inertia_force(
-                lid, S, F_in, M_in, mu_l, NOISE * link.mass * a_A
-            ),
+            shifted_inertia_force=shifted,
             weight_at=G_at,
             weight_point=G_point,
         )
@@ -217,12 +232,20 @@ def shifted_inertia_force(
 ) -> ShiftedInertiaForce | None:
     """Seed 003 (18), (19): K = S + r with r ⊥ F_IN and r × F_IN = M_IN.
     None when |F_IN| <= zero (no force to shift: the couple stays)."""
+    shift = _shift(S, F_in, M_in, zero)
+    if shift is None:
+        return None
+    K, h = shift
+    return ShiftedInertiaForce(link, xy(F_in), xy(K), h, None if mu_l is None else h / mu_l)
+
+
+def _shift(S: complex, F_in: complex, M_in: float, zero: float) -> tuple[complex, float] | None:
+    """K_i and the arm h of `shifted_inertia_force` (None: nothing to shift)."""
     F2 = F_in.real * F_in.real + F_in.imag * F_in.imag
     if F2 == 0.0 or math.sqrt(F2) <= zero:
         return None
     r = -1j * F_in * M_in / F2
-    h = abs(M_in) / math.sqrt(F2)
-    return ShiftedInertiaForce(link, xy(F_in), xy(S + r), h, None if mu_l is None else h / mu_l)
+    return S + r, abs(M_in) / math.sqrt(F2)
 
 
 def external_force(f: Force, state: PositionState) -> ExternalForce:

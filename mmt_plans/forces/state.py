@@ -23,6 +23,12 @@ def cross(a: complex, b: complex) -> float:
     return a.real * b.imag - a.imag * b.real
 
 
+def _complex(p) -> complex:
+    """A point [x, y] as a complex number, an array's through Python floats
+    (no numpy scalars): the same values."""
+    return complex(*p.tolist()) if p.__class__ is np.ndarray else complex(p[0], p[1])
+
+
 def xy(z: complex) -> np.ndarray:
     """A complex plane vector as a read-only [x, y] array (`frozen_array`'s
     float array: the parts of a complex number are floats already)."""
@@ -73,16 +79,14 @@ class PositionState:
 
     def local(self, link: int, name: str) -> complex:
         pts = self.mech.frame if link == FRAME else self.mech.links[link].points
-        p = pts[name]
-        return complex(p[0], p[1])
+        return _complex(pts[name])
 
     def point(self, link: int, name: str) -> complex:
         """Global position of point `name` of `link` (m)."""
         return self.links[link].at(self.local(link, name))
 
     def centre_of_mass(self, link: int) -> complex:
-        cm = self.mech.links[link].cm
-        return self.links[link].at(complex(cm[0], cm[1]))
+        return self.links[link].at(_complex(self.mech.links[link].cm))
 
     def guide(self, pair: Prismatic) -> tuple[complex, complex]:
         """The sliding line of a prismatic pair: its unit direction u (global) and

@@ -38,7 +38,8 @@ import numpy as np
 
 from ..model import FRAME, Mechanism
 from ..structure import Structure
-from .chain import Chain, motion_part
+from .chain import Chain
+from .dyads import Motion
 from .geometry import quiet
 
 GRID = 720
@@ -180,6 +181,8 @@ class _Search:
         # the links placed at one crank angle (the sketch's, the drawing's), by
         # the angle and the branches of the first groups
         self._at_angle: dict[tuple[float, Signs], dict] = {}
+        # whether group len(before) turns fully after the groups `before` (`group_turns`)
+        self._turns: dict[Signs, bool] = {}
         # The sketch's and the drawing's crank angle ride along with the grid:
         # every placing on the grid places the links there too (the kernels
         # work angle by angle), and a trial of the choice reads them off it.
@@ -246,9 +249,11 @@ class _Search:
         if found is None:
             at = self._extra_at.get(key[0])
             if at is not None and signs in self._on_grid:
-                # placed on the grid already, this angle with it
+                # placed on the grid already, this angle with it: where each
+                # link is (a group's positions and a point's place read its
+                # pose alone, e and o)
                 part = slice(at, at + 1)
-                found = {lid: motion_part(mo, part) for lid, mo in self._on_grid[signs][0].items()}
+                found = {lid: _pose_part(mo, part) for lid, mo in self._on_grid[signs][0].items()}
             elif not signs:
                 chain = self.chain
                 found = {FRAME: chain.frame(), chain.mech.drive.link: chain.crank(phi)}
@@ -321,6 +326,15 @@ class _Search:
         return best, self.margins(best, signs)[k]
 
     def group_turns(self, k: int, signs: Signs) -> bool:
+        # Group k's margin is the groups' before it placed (its own branch
+        # is not read): both its branches have one answer, worked out once.
+        before = tuple(signs[:k])
+        found = self._turns.get(before)
+        if found is None:
+            found = self._turns[before] = self._group_turns(k, signs)
+        return found
+
+    def _group_turns(self, k: int, signs: Signs) -> bool:
         # margins(self.grid, signs)[k], read straight from the grid's
         g = _spread_over(self._grid_margin(tuple(signs[:k])), self.grid.shape)
         if not g.min() >= -self.tol:  # NaN fails as well (the least is NaN)
@@ -518,6 +532,16 @@ class _Search:
                     "change the lengths of the group's links",
                 )
         return "", "", ""
+
+
+def _pose_part(mo: Motion, part: slice) -> Motion:
+    """Where a link is at the angles `part` of a pass (its e and o cut,
+    plain numbers as they are), placed: what `motion_part` gives of its pose."""
+    e, o = mo.e, mo.o
+    return Motion(
+        e[part] if e.__class__ is np.ndarray and e.ndim else e,
+        o[part] if o.__class__ is np.ndarray and o.ndim else o,
+    )
 
 
 def _spread_over(g, shape: tuple[int, ...]) -> np.ndarray:

@@ -747,7 +747,7 @@ class Chain:
         with quiet():
             m = self.place_all(np.radians(phi1_deg), self.branches)
             for solver in self.solvers:
-                solver.motion(m, SINGULAR_SIN)
+                solver.motion(m, None)  # the links' motion alone (not where it is regular)
         lid, p = self.locate[name]
         mo = m[lid]
         shape = phi1_deg.shape

@@ -45,6 +45,7 @@ from .base import (
     Reaction,
     ReactionComponent,
     _c,
+    _load_sides,
     fmt,
     head_to_tail,
     reaction_name,
@@ -133,11 +134,7 @@ def _driving_link(
     reaction = Reaction(FRAME, d, pair.name, "R", xy(R01), xy(O))
     name = reaction.name
     steps.append(f"link {d} polygon: {name} = {fmt(abs(R01))} N")
-    sides: list[tuple[str, complex, bool]] = [
-        (f.label, _c(f.force), True)
-        for f in body
-        if not (f.force[0] == 0.0 and f.force[1] == 0.0 and f.couple)
-    ]
+    sides = _load_sides(body)
     sides += [("F_bal", F_bal * t, True), (name, R01, False)]
     polygon = ForcePolygon(
         f"link {d}", " + ".join(s_[0] for s_ in sides) + " = 0", head_to_tail(sides)

@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any, Literal
 
 import numpy as np
@@ -24,6 +25,7 @@ PairKind = Literal["R", "P"]
 SINGULAR_SIN = 1e-12
 
 
+@lru_cache(maxsize=256)
 def reaction_name(by: int, on: int) -> str:
     """R_ij, the force link i exerts on link j; `Ri_j` when a number has two digits."""
     return f"R{by}{on}" if by < 10 and on < 10 else f"R{by}_{on}"
@@ -269,11 +271,7 @@ class GroupSolver:
 
     def load_sides(self, link: int) -> list[tuple[str, complex, bool]]:
         """The known forces of a link's free body, in the order they were applied."""
-        return [
-            (f.label, _c(f.force), True)
-            for f in self.bodies[link]
-            if not (f.force[0] == 0.0 and f.force[1] == 0.0 and f.couple)
-        ]
+        return _load_sides(self.bodies[link])
 
     def result(
         self, reactions: tuple[Reaction, Reaction, Reaction], polygons: tuple[ForcePolygon, ...]
@@ -313,6 +311,17 @@ def head_to_tail(sides: list[tuple[str, complex, bool]]) -> tuple[PolygonVector,
         PolygonVector(label, rows[i], rows[n + i], known)
         for i, (label, _, known) in enumerate(sides)
     )
+
+
+def _load_sides(body: tuple[AppliedForce, ...]) -> list[tuple[str, complex, bool]]:
+    """The known forces of a free body as polygon sides, but a pure couple's
+    (a zero force, both parts 0.0: its complex number is 0)."""
+    sides = []
+    for f in body:
+        F = _c(f.force)
+        if not (F == 0 and f.couple):
+            sides.append((f.label, F, True))
+    return sides
 
 
 def _c(v: np.ndarray) -> complex:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..state import xy
+from ..state import xy_rows
 from .base import GroupForces, GroupSolver, Reaction, ReactionComponent, fmt, reaction_name
 
 
@@ -29,22 +29,24 @@ class RRP(GroupSolver):
         R2 = self.prismatic_reaction(
             self.outer2, K2, L2, N2, B, -self.M(L2, B), f"Sum M_{b}(link {L2}) = 0"
         )
+        # the reactions' vectors as [x, y] rows of one array (the same numbers)
+        R1_, A_, n1_, t1_, Ri_, B_ = xy_rows([R1, A, n1, t1, R_inner, B])
         reactions = (
             Reaction(
                 K1,
                 L1,
                 self.outer1.name,
                 "R",
-                xy(R1),
-                xy(A),
+                R1_,
+                A_,
                 0.0,
                 (
-                    ReactionComponent(f"{r1}^n", xy(n1), Rn1),
-                    ReactionComponent(f"{r1}^t", xy(t1), Rt1),
+                    ReactionComponent(f"{r1}^n", n1_, Rn1),
+                    ReactionComponent(f"{r1}^t", t1_, Rt1),
                 ),
             ),
             R2,
-            Reaction(L2, L1, self.inner.name, "R", xy(R_inner), xy(B)),
+            Reaction(L2, L1, self.inner.name, "R", Ri_, B_),
         )
         group = self.polygon(
             f"group {self.group.name}",

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..state import xy
+from ..state import xy_rows
 from .base import GroupForces, GroupSolver, Reaction, ReactionComponent, fmt, reaction_name
 
 
@@ -23,18 +23,22 @@ class RRR(GroupSolver):
         R_inner = -(R1 + F1)  # link L1's polygon
         ri = reaction_name(L2, L1)
         self.steps.append(f"link {L1} polygon: {ri} = {fmt(abs(R_inner))} N")
+        # the reactions' vectors as [x, y] rows of one array (the same numbers)
+        R1_, A_, n1_, t1_, R2_, C_, n2_, t2_, Ri_, B_ = xy_rows(
+            [R1, A, n1, t1, R2, C, n2, t2, R_inner, B]
+        )
         reactions = (
             Reaction(
                 K1,
                 L1,
                 self.outer1.name,
                 "R",
-                xy(R1),
-                xy(A),
+                R1_,
+                A_,
                 0.0,
                 (
-                    ReactionComponent(f"{r1}^n", xy(n1), Rn1),
-                    ReactionComponent(f"{r1}^t", xy(t1), Rt1),
+                    ReactionComponent(f"{r1}^n", n1_, Rn1),
+                    ReactionComponent(f"{r1}^t", t1_, Rt1),
                 ),
             ),
             Reaction(
@@ -42,15 +46,15 @@ class RRR(GroupSolver):
                 L2,
                 self.outer2.name,
                 "R",
-                xy(R2),
-                xy(C),
+                R2_,
+                C_,
                 0.0,
                 (
-                    ReactionComponent(f"{r2}^n", xy(n2), Rn2),
-                    ReactionComponent(f"{r2}^t", xy(t2), Rt2),
+                    ReactionComponent(f"{r2}^n", n2_, Rn2),
+                    ReactionComponent(f"{r2}^t", t2_, Rt2),
                 ),
             ),
-            Reaction(L2, L1, self.inner.name, "R", xy(R_inner), xy(B)),
+            Reaction(L2, L1, self.inner.name, "R", Ri_, B_),
         )
         group = self.polygon(
             f"group {self.group.name}",

@@ -347,14 +347,15 @@ class DyadSolver:
             self.place(m, plan)
         return plan
 
-    def motion(self, m: dict, least_sin: float) -> Any:
+    def motion(self, m: dict, least_sin: float | None) -> Any:
         """Give the group's links their ω, ε and the motion of their origins
         (what `plan` solves and `place` hands on) and say where the plan is
         regular (`GroupPlan.regular`), without keeping the plan's records: a
         sweep needs the links' motion; the plans are solved again from it when
         asked for (`chain.Sweep.plans`). A kind may solve it in fewer passes
         (RRR and RRP do, in closed form)."""
-        return self.plan(m).regular(least_sin)
+        plan = self.plan(m)
+        return None if least_sin is None else plan.regular(least_sin)
 
     def known_motion(self, m: dict, K: int, name: str) -> tuple[Any, Any]:
         """Velocity and acceleration of the point `name` of the known link K."""

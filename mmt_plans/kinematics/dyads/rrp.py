@@ -78,6 +78,8 @@ class RRP(DyadSolver):
             K2.eps,
         )
         # |d1·d2| = |r|·|u|, the link's length times the guide's
+        if least_sin is None:  # where it is regular is not asked for
+            return None
         return np.abs(det) > least_sin * (abs(B1 - A1) * abs(u))
 
     def place(self, m, plan):

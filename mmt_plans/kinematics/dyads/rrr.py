@@ -66,6 +66,8 @@ class RRR(DyadSolver):
         L1.move_with(A1, VA, aA, w1, eps1)
         L2.move_with(C2, VC, aC, w2, eps2)
         # |d1·d2| = |r1|·|r2|, the links' lengths
+        if least_sin is None:  # where it is regular is not asked for
+            return None
         return np.abs(det) > least_sin * (abs(B1 - A1) * abs(B2 - C2))
 
     def place(self, m, plan):
