@@ -531,7 +531,7 @@ def _check_samples(s: ArrayLike, name: str = "s") -> Array:
     arr = np.asarray(s, dtype=np.float64)
     if arr.ndim != 1 or arr.size < 4:
         raise ValueError(f"{name} must be a 1-d array of at least 4 positions, got {arr.shape}")
-    if not np.all(np.isfinite(arr)):
+    if not np.isfinite(arr).all():
         raise ValueError(f"{name} must be finite at every position")
     return arr
 
@@ -731,7 +731,7 @@ class PlanComparison:
 
 def _relative_error(plan: Array, diagram: Array) -> list[float | None]:
     """Formula (12)/(13): (plan − diagram)/plan · 100 %, None where the plan is zero."""
-    big = float(np.max(np.abs(plan))) if plan.size else 0.0
+    big = float(np.abs(plan).max()) if plan.size else 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
         errors = ((plan - diagram) / plan * 100.0).tolist()
     zero = (np.abs(plan) <= _ZERO_PLAN * big).tolist() if big != 0.0 else [True] * plan.size
@@ -741,7 +741,7 @@ def _relative_error(plan: Array, diagram: Array) -> list[float | None]:
 def _sign_changes_next_to(plan: Array, i: int) -> bool:
     n = plan.size
     # Round-off leaves a zero of the plan (an extreme position) with either sign.
-    sign = np.where(np.abs(plan) <= _ZERO_PLAN * float(np.max(np.abs(plan))), 0.0, np.sign(plan))
+    sign = np.where(np.abs(plan) <= _ZERO_PLAN * float(np.abs(plan).max()), 0.0, np.sign(plan))
     return bool(sign[i] * sign[(i - 1) % n] <= 0.0 or sign[i] * sign[(i + 1) % n] <= 0.0)
 
 
@@ -792,7 +792,7 @@ def _explain(
     if ref is not None and ref_err is not None:
         miss = abs(p - float(ref[i]))
         if miss > max(limit / 100.0 * abs(p), 3.0 * float(ref_err[i])) and miss > 1e-9 * float(
-            np.max(np.abs(plan))
+            np.abs(plan).max()
         ):
             return "plan_mismatch", (
                 f"an accurate derivative of the same displacements gives"
@@ -800,7 +800,7 @@ def _explain(
                 f" not the plan's {p:.6g} {unit}: the plan (or the displacement) is wrong here,"
                 " not the construction"
             )
-    big = float(np.max(np.abs(plan)))
+    big = float(np.abs(plan).max())
     if _sign_changes_next_to(plan, i):
         where = (
             "an extreme position of the output, where V changes sign"
@@ -878,7 +878,7 @@ def compare_with_plans(
         for i, err in enumerate(errs):
             if err is not None and abs(err) <= limit_percent:
                 continue
-            q = cast(Literal["v", "a"], quantity)
+            q = cast("Literal['v', 'a']", quantity)
             kind, reason = _explain(q, i, err, plan, diagram, r, re, limit_percent, n)
             flags.append(ErrorFlag(q, i, err, float(plan[i]), float(diagram[i]), kind, reason))
 

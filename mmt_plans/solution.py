@@ -317,7 +317,8 @@ def _mechanism_scale(mech: Mechanism, dense: Sweep) -> float:
         pts = np.concatenate([dense.position_of(n) for n in mech.point_owners])
     else:
         pts = np.concatenate([dense.position_of(n)[ok] for n in mech.point_owners])
-    span = max(np.ptp(pts.real), np.ptp(pts.imag), mech.crank_length)
+    x, y = pts.real, pts.imag  # np.ptp's max - min, without its wrapper
+    span = max(x.max() - x.min(), y.max() - y.min(), mech.crank_length)
     return scale_for(
         float(span), DrawnLength("mechanism", 150.0, 300.0, 220.0), LENGTH_MANTISSA_TEXT
     )
@@ -363,8 +364,8 @@ def _diagrams(
     # the largest magnitudes over the turn: the fine grid of the extreme search
     # and the positions themselves
     largest = (
-        max(turn.largest[0], float(np.max(np.abs(v)))),
-        max(turn.largest[1], float(np.max(np.abs(a)))),
+        max(turn.largest[0], float(np.abs(v).max())),
+        max(turn.largest[1], float(np.abs(a).max())),
     )
     # seed 003 §1.8 on the grids of the series n·k: the first on which every
     # investigated position passes by (12)/(13) as written
@@ -391,7 +392,7 @@ def _diagrams(
             ("v", v, construction.v, largest[0]),
             ("a", a, construction.a, largest[1]),
         ):
-            quantity = cast(Literal["v", "a"], q)
+            quantity = cast("Literal['v', 'a']", q)
             values.append(
                 judge(
                     i,
@@ -507,8 +508,8 @@ class _Turn:
         everywhere = bool(ok.all())
         # (indexing by `ok` where it holds everywhere would copy the same values)
         v_ok, a_ok, s_ok = (v, a, s) if everywhere else (v[ok], a[ok], s[ok])
-        self.largest = (float(np.max(np.abs(v_ok))), float(np.max(np.abs(a_ok))))
-        if np.ptp(s_ok) < 1e-12 * max(1.0, float(np.max(np.abs(s_ok)))):
+        self.largest = (float(np.abs(v_ok).max()), float(np.abs(a_ok).max()))
+        if s_ok.max() - s_ok.min() < 1e-12 * max(1.0, float(np.abs(s_ok).max())):
             raise StructureError(
                 f"{shown(self.mech.path)}: output {self.mech.study.output} does not move along the "
                 "working direction: set study.working_direction or study.zero"
@@ -540,7 +541,7 @@ class _Turn:
         # Two extremes of equal s (the output passing its farthest place twice a
         # turn) are a tie, not a choice for rounding to make: of the tied ones,
         # the pair that makes the working stroke longest.
-        tol = EXTREME_TIE * max(float(np.ptp(s_roots)), np.finfo(float).tiny)
+        tol = EXTREME_TIE * max(float(s_roots.max() - s_roots.min()), np.finfo(float).tiny)
         lows = roots[s_roots <= s_roots.min() + tol] % 360.0
         highs = roots[s_roots >= s_roots.max() - tol] % 360.0
         lo, hi = max(

@@ -159,10 +159,12 @@ def _farthest_group(
     present = remaining | {driver, FRAME}
     live = [p for p in pairs if set(p.links) <= present]
     live_higher = [h for h in higher if set(h) <= present]
+    # each pair's links as a set, made once for every combination tried
+    live_sets = [(p, frozenset(p.links)) for p in live]
     for size in (2, 4, 6):
         found = []
         for links in combinations(sorted(remaining), size):
-            group = _as_group(set(links), live, live_higher)
+            group = _as_group(set(links), live_sets, live_higher)
             if group is not None:
                 far = max(distance.get(lid, 10**6) for lid in links)
                 found.append((far, max(links), group))
@@ -172,14 +174,19 @@ def _farthest_group(
 
 
 def _as_group(
-    links: set[int], live: list[Pair], live_higher: list[tuple[int, int]]
+    links: set[int],
+    live_sets: list[tuple[Pair, frozenset[int]]],
+    live_higher: list[tuple[int, int]],
 ) -> AssurGroup | None:
-    touching = [p for p in live if set(p.links) & links]
+    """The Assur group of `links`, if they make one with the pairs left
+    (`live_sets`: each pair with its links as a set) and the higher pairs."""
+    touching_sets = [(p, ps) for p, ps in live_sets if ps & links]
+    touching = [p for p, _ in touching_sets]
     touching_higher = [h for h in live_higher if set(h) & links]
     if 3 * len(links) - 2 * len(touching) - len(touching_higher) != 0:
         return None
-    inner = [p for p in touching if set(p.links) <= links]
-    outer = [p for p in touching if not set(p.links) <= links]
+    inner = [p for p, ps in touching_sets if ps <= links]
+    outer = [p for p, ps in touching_sets if not ps <= links]
     if not outer:
         return None
     # every link of a group keeps at least two pairs, and the group is connected

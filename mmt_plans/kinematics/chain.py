@@ -147,19 +147,28 @@ def _state_part(mo: Motion, part: slice, n: int) -> LinkState:
     """`_state` of the link's motion at the angles `part` of a pass (its arrays
     cut, its plain numbers spread out), without a Motion in between."""
 
-    def cut(x):
-        return x[part] if x.__class__ is np.ndarray and x.ndim else x
-
     return LinkState(
-        _full(cut(mo.e), n, _C),
-        _full(cut(mo.o), n, _C),
-        _full(cut(mo.w), n, _F),
-        _full(cut(mo.v), n, _C),
-        _full(cut(mo.eps), n, _F),
-        _full(cut(mo.a), n, _C),
-        _full(cut(mo.spin), n, _C),
-        _full(cut(mo.spin_acc), n, _C),
+        _cut(mo.e, part, n, _C),
+        _cut(mo.o, part, n, _C),
+        _cut(mo.w, part, n, _F),
+        _cut(mo.v, part, n, _C),
+        _cut(mo.eps, part, n, _F),
+        _cut(mo.a, part, n, _C),
+        _cut(mo.spin, part, n, _C),
+        _cut(mo.spin_acc, part, n, _C),
     )
+
+
+def _cut(x, part: slice, n: int, dtype) -> np.ndarray:
+    """`_full` of an array's angles `part` (a view, read-only), or of a
+    number spread out: what `_full(x[part], ...)` gives, in one call."""
+    if x.__class__ is np.ndarray and x.ndim:
+        x = x[part]
+        if x.dtype != dtype:
+            x = x.astype(dtype)
+        x.setflags(write=False)
+        return x
+    return _full(x, n, dtype)
 
 
 def motion_part(mo: Motion, part: slice) -> Motion:
