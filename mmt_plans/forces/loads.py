@@ -103,6 +103,10 @@ class ExternalForce:
     at_rest: bool = False  # "always" at an instant where its point is at rest: zero there
 
 
+# the force of a pure couple (read-only: one array for every couple)
+_NO_FORCE = xy(0j)
+
+
 @dataclass(frozen=True)
 class Loads:
     """Every load of every link at one position."""
@@ -128,7 +132,7 @@ class Loads:
                 out.append(AppliedForce(f"G{link}", ll.weight, G_at))
                 out.append(AppliedForce(f"F_in{link}", ll.inertia_force, S))
             if ll.inertia_moment:
-                out.append(AppliedForce(f"M_in{link}", xy(0j), S, ll.inertia_moment))
+                out.append(AppliedForce(f"M_in{link}", _NO_FORCE, S, ll.inertia_moment))
         for f in self.production_resistance:
             if f.link == link and f.acting:
                 out.append(AppliedForce(f.name, f.force, f.point))

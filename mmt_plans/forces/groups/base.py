@@ -278,9 +278,10 @@ class GroupSolver:
     ) -> GroupForces:
         bodies = {lid: self.bodies[lid] for lid in (self.L1, self.L2)}
         for r in reactions:
-            for lid, rr in ((r.on, r), (r.by, r.reversed())):
-                if lid in bodies:
-                    bodies[lid] = bodies[lid] + (rr.applied(),)
+            if r.on in bodies:
+                bodies[r.on] = bodies[r.on] + (r.applied(),)
+            if r.by in bodies:  # R_ji on the other link (made only where it is one of the group's)
+                bodies[r.by] = bodies[r.by] + (r.reversed().applied(),)
         return GroupForces(
             self.group.name,
             self.group.kind or "",

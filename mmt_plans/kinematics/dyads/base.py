@@ -93,14 +93,24 @@ class Motion:
         else:
             self.spin_acc = self.e * _complex(-(w * w), eps) if _given(w) or _given(eps) else 0j
 
+    # `_plus` written out (read at every point of every pass)
     def at(self, p_local: complex):
-        return _plus(self.o, self.e * p_local) if p_local else self.o
+        if not p_local:
+            return self.o
+        o, x = self.o, self.e * p_local
+        return x if o.__class__ is complex and not o else o + x
 
     def vel_at(self, p_local: complex):
-        return _plus(self.v, self.spin * p_local) if p_local else self.v
+        if not p_local:
+            return self.v
+        v, x = self.v, self.spin * p_local
+        return x if v.__class__ is complex and not v else v + x
 
     def acc_at(self, p_local: complex):
-        return _plus(self.a, self.spin_acc * p_local) if p_local else self.a
+        if not p_local:
+            return self.a
+        a, x = self.a, self.spin_acc * p_local
+        return x if a.__class__ is complex and not a else a + x
 
     def vel(self, P):
         """Velocity of the link's point that is at P now."""

@@ -3,6 +3,8 @@ the circle |AB| = l1 meets the guide line."""
 
 from __future__ import annotations
 
+from functools import cached_property
+
 import numpy as np
 
 from ..geometry import circle_line, cross, turn_between
@@ -12,11 +14,20 @@ from .base import DyadSolver, Motion, conj, cramer, entry, origin, parallel_some
 class RRP(DyadSolver):
     has_branches = True
 
-    def positions(self, m, sign):
+    @cached_property
+    def _locals(self) -> tuple[complex, complex, complex, complex]:
+        """A in K1, A and B in L1, B in L2 (local coordinates), read at every pass."""
         a, b = self.outer1.point, self.inner.point
-        A = m[self.K1].at(self.loc(self.K1, a))
-        A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
-        B2 = self.loc(self.L2, b)
+        return (
+            self.loc(self.K1, a),
+            self.loc(self.L1, a),
+            self.loc(self.L1, b),
+            self.loc(self.L2, b),
+        )
+
+    def positions(self, m, sign):
+        Ak, A1, B1, B2 = self._locals
+        A = m[self.K1].at(Ak)
         e2 = m[self.K2].e  # the slider keeps the guide's angle (a number on the frame)
         P0, u = self.prism_line(self.outer2, m, self.L2, B2, e2)
         B = circle_line(A, abs(B1 - A1), P0, u, sign)
@@ -46,10 +57,10 @@ class RRP(DyadSolver):
         and V_rel = -Re(conj(r)·R) / Re(conj(u)·r) with R = V_B∈K2 - V_A; the
         accelerations likewise, with R = a_B∈K2 + the Coriolis component
         - a_A + ω1²·r. The same plan as `plan`, in fewer passes."""
-        a, b = self.outer1.point, self.inner.point
-        A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
+        Ak, A1, B1, B2 = self._locals
         L1, L2, K2 = m[self.L1], m[self.L2], m[self.K2]
-        VA, aA = self.known_motion(m, self.K1, a)
+        K1 = m[self.K1]
+        VA, aA = K1.vel_at(Ak), K1.acc_at(Ak)  # known_motion's
         u = L2.e * complex(*self.outer2.direction)
         r = L1.e * (B1 - A1)
         cu = conj(u)
@@ -71,7 +82,7 @@ class RRP(DyadSolver):
         L1.move_with(A1, VA, aA, w1, eps1)
         # B moves with link 1's point B (to V_A + iω1·r, a_A + (iε1 - ω1²)·r)
         L2.move_with(
-            self.loc(self.L2, b),
+            B2,
             VA + L1.spin * (B1 - A1),
             aA + L1.spin_acc * (B1 - A1),
             K2.w,

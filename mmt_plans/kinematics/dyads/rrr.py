@@ -3,6 +3,8 @@ B from the intersection of two circles (|AB| = l1, |CB| = l2)."""
 
 from __future__ import annotations
 
+from functools import cached_property
+
 import numpy as np
 
 from ..geometry import circle_circle, turn_between
@@ -12,12 +14,24 @@ from .base import DyadSolver, Motion, conj, cramer, entry, origin, parallel_some
 class RRR(DyadSolver):
     has_branches = True
 
-    def positions(self, m, sign):
+    @cached_property
+    def _locals(self) -> tuple[complex, complex, complex, complex, complex, complex]:
+        """A in K1 and C in K2, A and B in L1, C and B in L2 (local coordinates),
+        read at every pass."""
         a, b, c = self.outer1.point, self.inner.point, self.outer2.point
-        A = m[self.K1].at(self.loc(self.K1, a))
-        C = m[self.K2].at(self.loc(self.K2, c))
-        A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
-        C2, B2 = self.loc(self.L2, c), self.loc(self.L2, b)
+        return (
+            self.loc(self.K1, a),
+            self.loc(self.K2, c),
+            self.loc(self.L1, a),
+            self.loc(self.L1, b),
+            self.loc(self.L2, c),
+            self.loc(self.L2, b),
+        )
+
+    def positions(self, m, sign):
+        Ak, Ck, A1, B1, C2, B2 = self._locals
+        A = m[self.K1].at(Ak)
+        C = m[self.K2].at(Ck)
         B = circle_circle(A, abs(B1 - A1), C, abs(B2 - C2), sign)
         e1 = turn_between(A1, B1, A, B)
         e2 = turn_between(C2, B2, C, B)
@@ -47,12 +61,11 @@ class RRR(DyadSolver):
         with R = V_C - V_A; the accelerations likewise, with
         R = a_C - a_A + ω1²·r1 - ω2²·r2 (the normal components carried over).
         The same plan as `plan`, in fewer passes."""
-        a, b, c = self.outer1.point, self.inner.point, self.outer2.point
-        A1, B1 = self.loc(self.L1, a), self.loc(self.L1, b)
-        C2, B2 = self.loc(self.L2, c), self.loc(self.L2, b)
+        Ak, Ck, A1, B1, C2, B2 = self._locals
         L1, L2 = m[self.L1], m[self.L2]
-        VA, aA = self.known_motion(m, self.K1, a)
-        VC, aC = self.known_motion(m, self.K2, c)
+        K1, K2 = m[self.K1], m[self.K2]
+        VA, aA = K1.vel_at(Ak), K1.acc_at(Ak)  # known_motion's
+        VC, aC = K2.vel_at(Ck), K2.acc_at(Ck)
         r1, r2 = L1.e * (B1 - A1), L2.e * (B2 - C2)
         c1, c2 = conj(r1), conj(r2)
         det = (c1 * r2).imag
