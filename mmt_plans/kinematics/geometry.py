@@ -18,6 +18,15 @@ import numpy as np
 ROUNDING = 8 * np.finfo(float).eps
 
 
+class _Depth(threading.local):
+    """How many `quiet` contexts a thread is in (0 until it enters one)."""
+
+    depth = 0
+
+
+_DEPTH = _Depth()
+
+
 class quiet:
     """`np.errstate(all="ignore")` for a whole computation over the angles (NaN
     and ±inf are its data, checked where it ends): the outermost use in a
@@ -25,18 +34,18 @@ class quiet:
     The counter is per thread (the web page checks in several threads)."""
 
     __slots__ = ("_outer",)
-    _local = threading.local()
 
     def __enter__(self) -> None:
-        depth = getattr(quiet._local, "depth", 0)
+        depth = _DEPTH.depth
         if depth == 0:
             self._outer = np.errstate(all="ignore")
             self._outer.__enter__()
-        quiet._local.depth = depth + 1
+        _DEPTH.depth = depth + 1
 
     def __exit__(self, *exc: Any) -> None:
-        quiet._local.depth -= 1
-        if quiet._local.depth == 0:
+        depth = _DEPTH.depth - 1
+        _DEPTH.depth = depth
+        if depth == 0:
             self._outer.__exit__(*exc)
 
 

@@ -85,3 +85,40 @@ def test_the_turn_is_searched_once_per_mechanism():
     other = mech.with_changes(title="copy")
     mmt_plans.solve(other)
     assert mmt_plans.kinematics(other).kept("turn", lambda: None) is not turn
+
+
+@pytest.mark.parametrize("path", SAMPLES, ids=lambda p: p.stem)
+def test_point_motion_only_is_point_motions(path):
+    """The Newton steps' kernel (the plans' regular mask left out) moves the
+    point as the full pass does, to the bit."""
+    mech = mmt_plans.load(path)
+    chain = mmt_plans.kinematics(mech).chain
+    phi = np.linspace(-30.0, 400.0, 37)
+    for name in mech.point_owners:
+        _, P, V, A = chain.point_motion(phi, name)
+        P2, V2, A2 = chain.point_motion_only(phi, name)
+        for x, y in ((P, P2), (V, V2), (A, A2)):
+            assert np.array_equal(x, y, equal_nan=True)
+
+
+def test_quiet_nests_and_is_per_thread():
+    import threading
+
+    before = np.geterr()
+    seen = {}
+    with quiet():
+        with quiet():
+            assert np.geterr()["invalid"] == "ignore"
+        assert np.geterr()["invalid"] == "ignore"  # the inner exit keeps the outer's
+
+        def other() -> None:
+            seen["outside"] = np.geterr()["invalid"]  # numpy's state is per thread
+            with quiet():
+                seen["inside"] = np.geterr()["invalid"]
+            seen["after"] = np.geterr()["invalid"]
+
+        t = threading.Thread(target=other)
+        t.start()
+        t.join()
+    assert np.geterr() == before
+    assert seen == {"outside": before["invalid"], "inside": "ignore", "after": before["invalid"]}
