@@ -133,6 +133,12 @@ class Motion:
         return (P - self.o) * np.conj(self.e)
 
 
+def _plain(v) -> complex:
+    """An [x, y] as a complex number, an array's through Python floats (no
+    numpy scalars): the same values as complex(*v)."""
+    return complex(*v.tolist()) if v.__class__ is np.ndarray else complex(*v)
+
+
 def plain_zero(x) -> bool:
     """Whether x is zero as a plain number (the crank's pivot at the origin,
     a pivot's velocity and acceleration, the frame's)."""
@@ -266,6 +272,9 @@ class DyadSolver:
         self.group = group
         self.name = group.name  # the group's name, read at every sweep
         self._locs: dict[tuple[int, str], complex] = {}  # local coordinates, read once
+        # a prismatic pair's direction and point as complex numbers, by the pair's id
+        # (the pairs are the Mechanism's, alive as long as it is)
+        self._guides: dict[int, tuple[complex, complex]] = {}
         self.L1, self.L2 = group.links
         # the kind fixes which pairs are revolute and which prismatic
         self.outer1: Any
@@ -285,10 +294,22 @@ class DyadSolver:
             found = self._locs[link, name] = complex(p[0], p[1])
         return found
 
+    def direction_of(self, pair: Prismatic) -> complex:
+        """The guide's unit direction (guide-link coordinates) as a complex
+        number, read once (through Python floats: the same values)."""
+        found = self._guides.get(id(pair))
+        if found is None:
+            found = self._guides[id(pair)] = (_plain(pair.direction), _plain(pair.through))
+        return found[0]
+
+    def through_of(self, pair: Prismatic) -> complex:
+        """A point of the guide line (guide-link coordinates), read once."""
+        self.direction_of(pair)
+        return self._guides[id(pair)][1]
+
     def prism_line(self, pair: Prismatic, m: dict, unknown: int, Q_local: complex, e):
         """The line (P0, u) on which the point Q of the unknown link lies, its angle e known."""
-        direction = complex(*pair.direction)
-        through = complex(*pair.through)
+        direction, through = self.direction_of(pair), self.through_of(pair)
         S_local = self.loc(pair.slider, pair.slider_point)
         u = e * direction
         if unknown == pair.slider:

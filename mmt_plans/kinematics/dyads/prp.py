@@ -25,8 +25,8 @@ class PRP(DyadSolver):
         b = self.inner.point
         K1, K2 = m[self.K1], m[self.K2]
         B = m[self.L1].at(self.loc(self.L1, b))
-        u1 = m[self.L1].e * complex(*self.outer1.direction)
-        u2 = m[self.L2].e * complex(*self.outer2.direction)
+        u1 = m[self.L1].e * self.direction_of(self.outer1)
+        u2 = m[self.L2].e * self.direction_of(self.outer2)
         return (
             b,
             B,
@@ -43,8 +43,8 @@ class PRP(DyadSolver):
         return f"the guides of links {self.L1} and {self.L2} are parallel"
 
     def margin(self, m):
-        u1 = m[self.K1].e * complex(*self.outer1.direction)
-        u2 = m[self.K2].e * complex(*self.outer2.direction)
+        u1 = m[self.K1].e * self.direction_of(self.outer1)
+        u2 = m[self.K2].e * self.direction_of(self.outer2)
         # parallel guides never meet: the sine of their angle must stay above zero
         return np.abs(cross(u1, u2)) - PARALLEL
 

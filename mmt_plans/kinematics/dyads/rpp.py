@@ -26,8 +26,8 @@ class RPP(DyadSolver):
         L1 = m[self.L1]
         p = self.loc(self.K1, a)
         L1.move_with(self.loc(self.L1, a), K1.vel_at(p), K1.acc_at(p), K2.w, K2.eps)
-        u1 = m[self.inner.guide].e * complex(*self.inner.direction)
-        u2 = m[self.L2].e * complex(*self.outer2.direction)
+        u1 = m[self.inner.guide].e * self.direction_of(self.inner)
+        u2 = m[self.L2].e * self.direction_of(self.outer2)
         return (
             f"{a}{self.L2}",
             A,
@@ -44,7 +44,7 @@ class RPP(DyadSolver):
 
     def margin(self, m):
         e = m[self.K2].e
-        u_in, u_out = e * complex(*self.inner.direction), e * complex(*self.outer2.direction)
+        u_in, u_out = e * self.direction_of(self.inner), e * self.direction_of(self.outer2)
         # parallel guides never meet: the sine of their angle must stay above zero
         return np.abs(cross(u_in, u_out)) - PARALLEL
 

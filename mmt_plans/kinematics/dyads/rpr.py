@@ -23,8 +23,8 @@ class RPR(DyadSolver):
         Ps = m[Ks].at(self.loc(Ks, ps_name))
         Pg = m[Kg].at(self.loc(Kg, pg_name))
         ps, pg = self.loc(s, ps_name), self.loc(g, pg_name)
-        d = complex(*pair.direction)
-        offset = cross((self.loc(s, pair.slider_point) - ps) - (complex(*pair.through) - pg), d)
+        d = self.direction_of(pair)
+        offset = cross((self.loc(s, pair.slider_point) - ps) - (self.through_of(pair) - pg), d)
         return s, g, Ps, Pg, ps, pg, d, offset
 
     def positions(self, m, sign):
@@ -43,7 +43,7 @@ class RPR(DyadSolver):
         a, c = self.outer1.point, self.outer2.point
         K1, p = m[self.K1], self.loc(self.K1, a)
         A = K1.at(p)
-        u = m[self.inner.guide].e * complex(*self.inner.direction)
+        u = m[self.inner.guide].e * self.direction_of(self.inner)
         # X is the point of L2 that coincides with A (the textbook's A3)
         slide = Leg(
             "slide", a.lower(), f"V{a}{self.L2}{a}{self.L1}", u, K1.vel_at(p), K1.acc_at(p), self.L1

@@ -42,7 +42,7 @@ class RRP(DyadSolver):
         a, b = self.outer1.point, self.inner.point
         K2 = m[self.K2]
         B = m[self.L1].at(self.loc(self.L1, b))
-        u = m[self.L2].e * complex(*self.outer2.direction)
+        u = m[self.L2].e * self.direction_of(self.outer2)
         return (
             b,
             B,
@@ -61,7 +61,7 @@ class RRP(DyadSolver):
         L1, L2, K2 = m[self.L1], m[self.L2], m[self.K2]
         K1 = m[self.K1]
         VA, aA = K1.vel_at(Ak), K1.acc_at(Ak)  # known_motion's
-        u = L2.e * complex(*self.outer2.direction)
+        u = L2.e * self.direction_of(self.outer2)
         r = L1.e * (B1 - A1)
         cu = conj(u)
         det = (cu * r).real
