@@ -40,7 +40,10 @@ def xy(z: complex) -> np.ndarray:
 def xy_rows(zs: list[complex]) -> list[np.ndarray]:
     """`xy` of each of several vectors: the rows of one read-only array (made
     at once, the same numbers)."""
-    arr = np.array([(z.real, z.imag) for z in zs], dtype=float).reshape(-1, 2)
+    flat: list[float] = []
+    for z in zs:  # one flat list of floats: numpy reads it faster than pairs
+        flat += (z.real, z.imag)
+    arr = np.array(flat, dtype=float).reshape(-1, 2)
     arr.setflags(write=False)
     return list(arr)
 

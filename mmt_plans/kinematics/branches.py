@@ -169,7 +169,7 @@ class _Search:
         # the distance of every point from the origin, in one pass
         points = [p for link in mech.links.values() for p in link.points.values()]
         points += list(mech.frame.values())
-        xy = np.array(points, dtype=float).reshape(-1, 2)
+        xy = np.concatenate(points).astype(float, copy=False).reshape(-1, 2)
         sizes = np.hypot(xy[:, 0], xy[:, 1]).tolist()
         self.tol = TOLERANCE * max(sizes + [1e-3])
         # the links placed on the grid and the groups' margins there, by the
@@ -203,8 +203,9 @@ class _Search:
         """The crank angle (rad) at which the links' coordinates draw the crank."""
         mech = self.chain.mech
         crank = mech.links[mech.drive.link]
-        d = crank.points[mech.crank_pin] - crank.points[mech.crank_pivot]
-        return math.atan2(d[1], d[0])
+        # through Python floats: the same subtractions as the arrays'
+        (ax, ay), (ox, oy) = (crank.points[p].tolist() for p in (mech.crank_pin, mech.crank_pivot))
+        return math.atan2(ay - oy, ax - ox)
 
     def _grid_placed(self, signs: Signs) -> tuple[dict, list]:
         """The links' motion after the first len(signs) groups are placed on

@@ -3,8 +3,6 @@ the circle |AB| = l1 meets the guide line."""
 
 from __future__ import annotations
 
-from functools import cached_property
-
 import numpy as np
 
 from ..geometry import circle_line, cross, turn_between
@@ -14,8 +12,7 @@ from .base import DyadSolver, Motion, conj, cramer, entry, origin, parallel_some
 class RRP(DyadSolver):
     has_branches = True
 
-    @cached_property
-    def _locals(self) -> tuple[complex, complex, complex, complex]:
+    def _make_locals(self) -> tuple[complex, complex, complex, complex]:
         """A in K1, A and B in L1, B in L2 (local coordinates), read at every pass."""
         a, b = self.outer1.point, self.inner.point
         return (
@@ -24,6 +21,13 @@ class RRP(DyadSolver):
             self.loc(self.L1, b),
             self.loc(self.L2, b),
         )
+
+    @property
+    def _locals(self):  # kept in the instance's dictionary (cached_property's lock costs more)
+        found = self.__dict__.get("_kept_locals")
+        if found is None:
+            found = self.__dict__["_kept_locals"] = self._make_locals()
+        return found
 
     def positions(self, m, sign):
         Ak, A1, B1, B2 = self._locals

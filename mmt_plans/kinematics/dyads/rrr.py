@@ -3,8 +3,6 @@ B from the intersection of two circles (|AB| = l1, |CB| = l2)."""
 
 from __future__ import annotations
 
-from functools import cached_property
-
 import numpy as np
 
 from ..geometry import circle_circle, turn_between
@@ -14,8 +12,7 @@ from .base import DyadSolver, Motion, conj, cramer, entry, origin, parallel_some
 class RRR(DyadSolver):
     has_branches = True
 
-    @cached_property
-    def _locals(self) -> tuple[complex, complex, complex, complex, complex, complex]:
+    def _make_locals(self) -> tuple[complex, complex, complex, complex, complex, complex]:
         """A in K1 and C in K2, A and B in L1, C and B in L2 (local coordinates),
         read at every pass."""
         a, b, c = self.outer1.point, self.inner.point, self.outer2.point
@@ -27,6 +24,13 @@ class RRR(DyadSolver):
             self.loc(self.L2, c),
             self.loc(self.L2, b),
         )
+
+    @property
+    def _locals(self):  # kept in the instance's dictionary (cached_property's lock costs more)
+        found = self.__dict__.get("_kept_locals")
+        if found is None:
+            found = self.__dict__["_kept_locals"] = self._make_locals()
+        return found
 
     def positions(self, m, sign):
         Ak, Ck, A1, B1, C2, B2 = self._locals
