@@ -414,6 +414,14 @@ def _not_finite(values: tuple) -> Any:
     return ~np.isfinite(total)
 
 
+def _angles(phi1_deg) -> np.ndarray:
+    """np.atleast_1d(np.asarray(phi1_deg, dtype=float)): a 1-d float array
+    as it is (what those give back), anything else through them."""
+    if phi1_deg.__class__ is np.ndarray and phi1_deg.ndim == 1 and phi1_deg.dtype == np.float64:
+        return phi1_deg
+    return np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+
+
 def _over(x, shape: tuple[int, ...]) -> np.ndarray:
     """x over the angles: an array of that shape as it is (no call into numpy's
     broadcasting machinery), a number or a smaller array spread out (a copy)."""
@@ -641,7 +649,8 @@ class Chain:
         return Motion(e, self.O + r, w, 1j * w * r, 0.0, -w * w * r)
 
     def frame(self) -> Motion:
-        return Motion(1 + 0j, 0j, 0.0, 0j, 0.0, 0j)
+        # placed and still: ω = ε = 0, V = a = 0 (the same values as given one by one)
+        return Motion(1 + 0j, 0j)
 
     def place_all(self, phi_rad: np.ndarray, branches: dict[str, int]) -> dict[int, Motion]:
         return self.place(phi_rad, branches)
@@ -735,7 +744,7 @@ class Chain:
         the angles: the same kernels as `sweep`, without its records, for the
         searches over many angles that read one point (the extreme positions,
         the diagrams' grids). NaN where `ok` is False."""
-        phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+        phi1_deg = _angles(phi1_deg)
         m, failed, singular = self._solve(np.radians(phi1_deg))
         bad = np.zeros(phi1_deg.shape, dtype=bool)
         for mask in (*failed.values(), *singular.values()):
@@ -752,7 +761,7 @@ class Chain:
         velocity and acceleration of one point (NaN where it is not solved),
         by the same kernels, for a search that already knows its angles are
         solved (the Newton steps of the extreme positions)."""
-        phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+        phi1_deg = _angles(phi1_deg)
         with quiet():
             m = self.place_all(np.radians(phi1_deg), self.branches)
             for solver in self.solvers:
@@ -767,7 +776,7 @@ class Chain:
         groups' positions alone (no plans): the same numbers as
         `point_motion`'s, for the searches that read where a point is, not how
         it moves (the displacements). NaN where a group cannot assemble."""
-        phi1_deg = np.atleast_1d(np.asarray(phi1_deg, dtype=float))
+        phi1_deg = _angles(phi1_deg)
         m = self.place_all(np.radians(phi1_deg), self.branches)
         lid, p = self.locate[name]
         return _over(m[lid].at(p), phi1_deg.shape)
