@@ -1039,7 +1039,9 @@ def sketch_plan(
         named = [names for names in labels.values() if float(np.hypot(*images[names[0]])) >= 0.5]
         for names in _crowded_first(placer, [images[names[0]] for names in named], named):
             v = images[names[0]]
-            placer.place(v, ", ".join(image_markup(n) for n in names), towards=unit_vector(v))
+            everyone = tuple(solution.mechanism.point_owners)
+            text = ", ".join(image_markup(n, everyone) for n in names)
+            placer.place(v, text, towards=unit_vector(v))
         placer.size = _SMALL
         placer.write_later()
         ext = sk.extent()

@@ -821,7 +821,7 @@ def sketch_lever(
         mark("p", np.zeros(2))  # the pole: no image is written p (image_markup)
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
-                mark(image_markup(n), img[n])
+                mark(image_markup(n, tuple(mech.point_owners)), img[n])
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         labels.avoid_circle((0.0, 0.0), 1.2)
         forces = [*lever.forces, lever.balancing]
@@ -848,7 +848,7 @@ def sketch_lever(
             if re.fullmatch(r"[SK]\d+", f.point) and f.point not in dotted:
                 dotted.add(f.point)
                 sk.circle(at, 0.6, "thin", "black")
-                mark(image_markup(f.point), at)
+                mark(image_markup(f.point, tuple(mech.point_owners)), at)
             h = abs(f.arm) / mu_V
             arms.append((f.label, h))
             if h >= 1.0:
@@ -861,7 +861,12 @@ def sketch_lever(
         for at, names in marks.values():
             pole = float(np.hypot(*at)) < 0.5
             labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
+        # forces along one line in opposite senses: side by side, as in the polygons
+        placed: list[tuple[np.ndarray, np.ndarray]] = []
         for start, end, names in drawn:
+            shift = _beside(start, end, placed)
+            start, end = start + shift, end + shift
+            placed.append((start, end))
             sk.arrow(start, end, "main", **_ARROW)  # type: ignore[arg-type]
             markup = ", ".join(force_markup(n) for n in names)
             labels.later_arrow(start, end, markup, _SHAFT_ALONG)

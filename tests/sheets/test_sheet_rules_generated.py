@@ -1,0 +1,37 @@
+"""Generated mechanisms on which the full lint run found a broken rule other
+than the labels' (#21): each sheet now clean on that rule, en and uk."""
+
+from __future__ import annotations
+
+import pytest
+
+from mmt_plans.generate import generate_one
+from mmt_plans.render.recording import RecordingBackend
+from mmt_plans.sheets.lint import SheetView, lint
+from mmt_plans.sheets.sheet1 import compose_sheet1
+from mmt_plans.sheets.sheet2 import compose_sheet2
+from mmt_plans.solution import solve
+from mmt_plans.spec import loads
+
+
+def findings(seed: int, sheet: int, lang: str, rule: str) -> list[str]:
+    g = generate_one(seed)
+    solution = solve(loads(g.toml, f"{g.name}.toml"))
+    backend = RecordingBackend(841.0, 594.0)
+    (compose_sheet1 if sheet == 1 else compose_sheet2)(solution, backend, lang)
+    return [str(f) for f in lint(SheetView.of(backend, lang, g.name), [rule])]
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+@pytest.mark.parametrize(
+    ("seed", "sheet"),
+    [(83, 1), (83, 2), (192, 1)],  # points O and o; links about O and about o
+)
+def test_no_name_for_two_things(seed, sheet, lang):
+    assert findings(seed, sheet, lang, "names-unique") == []
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_the_levers_forces_along_one_line_stand_side_by_side(lang):
+    # gen 122: two forces of the lever on one line in opposite senses
+    assert findings(122, 2, lang, "vectors-apart") == []
