@@ -35,3 +35,12 @@ def test_no_name_for_two_things(seed, sheet, lang):
 def test_the_levers_forces_along_one_line_stand_side_by_side(lang):
     # gen 122: two forces of the lever on one line in opposite senses
     assert findings(122, 2, lang, "vectors-apart") == []
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+@pytest.mark.parametrize("seed", [99, 123])
+def test_a_short_stroke_drawn_larger_fills_sheet_1(seed, lang):
+    # the output's stroke short beside the mechanism: S at μ_l is a flat line
+    # and the field stayed over half empty in every arrangement
+    assert findings(seed, 1, lang, "field-filled") == []
+
