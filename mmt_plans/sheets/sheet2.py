@@ -1184,6 +1184,10 @@ def _with_note(sketch: Sketch, note: str) -> Sketch:
 
 COMPACT_EQUATION_MM = 90.0  # a compact sheet's equations under the polygons, at most
 _LEVER_MAX = 250.0  # mm: the longest pa the lever is enlarged to
+# the lever's textbook scale draws pa 100–200 mm (the velocity plan's); where
+# its longest image would then run past this (a point far faster than the
+# crank's, a 10:1 link), the scale that draws that image 100–200 mm
+_LEVER_REACH_MM = 400.0
 _ORDERS = 16  # orders of the drawings tried beyond the textbook's and by size
 _PARTS_FINER = 1  # series steps a group may be drawn larger or smaller than the loaded mechanism
 _COARSEST = 5  # series steps coarser than its textbook scale a drawing may go
@@ -1193,6 +1197,13 @@ _COARSEST_CHECK = 0  # first_fit asks whether the coarsest scales fit once this 
 # tried take this many times the field by their least area
 _HOPELESS = 1.5
 _FILL_PASSES = 2 * (12 - _FINEST)  # a bound on fill's passes (each a step of some kind)
+
+
+def _lever_scale(lever: Any) -> float:
+    """The lever's μV at its textbook scale (_LEVER_REACH_MM)."""
+    mu = scale_for(lever.pa, VELOCITY_PLAN)
+    reach = max((float(np.hypot(*v)) for v in lever.images.values()), default=0.0)
+    return scale_for(reach, VELOCITY_PLAN) if reach / mu > _LEVER_REACH_MM else mu
 
 
 class _Composer:
@@ -1214,6 +1225,7 @@ class _Composer:
         # tables numbered and continued in parts (GOST 2.105)
         self.compact = compact
         self.mu0 = float(solution.mu_l)
+        self.lever_mu = _lever_scale(fa.lever)
         self.cache: dict[tuple[Any, ...], Any] = {}
         self._extents: dict[int, Rect] = {}
         dl = fa.driving_link
@@ -1313,7 +1325,7 @@ class _Composer:
         out[f"mu_l {self.fa.driving_link.link}"] = length_scale_step(self.mu0, steps["driving"])
         for name, polygons, _ in self.polygon_sets:
             out[f"mu_F {name}"] = _force_scale(polygons, steps[f"poly {name}"])
-        out["mu_V"] = scale_step(scale_for(self.fa.lever.pa, VELOCITY_PLAN), steps["lever"])
+        out["mu_V"] = scale_step(self.lever_mu, steps["lever"])
         out["mu_l"] = length_scale_step(self.mu0, steps["mech"])
         return out
 
@@ -1613,7 +1625,7 @@ class _Composer:
             mu_F = _force_scale(polygons, steps[f"poly {name}"])
             if steps[f"poly {name}"] < 0 and guide_side(polygons) / mu_F > FORCE_PLAN.high:
                 return False
-        mu_V = scale_step(scale_for(self.fa.lever.pa, VELOCITY_PLAN), steps["lever"])
+        mu_V = scale_step(self.lever_mu, steps["lever"])
         return steps["lever"] >= 0 or self.fa.lever.pa / mu_V <= _LEVER_MAX
 
 

@@ -44,3 +44,20 @@ def test_a_short_stroke_drawn_larger_fills_sheet_1(seed, lang):
     # and the field stayed over half empty in every arrangement
     assert findings(seed, 1, lang, "field-filled") == []
 
+
+@pytest.mark.parametrize(("seed", "lang"), [(72, "en"), (72, "uk"), (63, "en")])
+def test_a_lever_of_far_faster_points_is_drawn_to_its_longest_image(seed, lang):
+    # 10:1 links: a point's velocity 40-70 times the crank's; at the scale
+    # that draws pa 100-200 mm the lever took 53-170 dm², more than the sheet
+    from mmt_plans.sheets.sheet2 import _lever_scale
+
+    g = generate_one(seed)
+    solution = solve(loads(g.toml, f"{g.name}.toml"))
+    lever = solution.require_forces().lever
+    mu = _lever_scale(lever)
+    longest = max(float((v[0] ** 2 + v[1] ** 2) ** 0.5) for v in lever.images.values())
+    assert 100.0 <= longest / mu <= 200.0
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet2(solution, backend, lang)  # composes: no LayoutError
+    view = SheetView.of(backend, lang, g.name)
+    assert [str(f) for f in lint(view, ["vectors-apart", "names-unique", "arrows-named"])] == []
