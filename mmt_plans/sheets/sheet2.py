@@ -50,7 +50,7 @@ from ..render.backend import Backend
 from ..render.look import LineType
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
-from .common import length_scale_step, scale_step, title_fields
+from .common import EMPTY_MAX, empty_share, length_scale_step, scale_step, title_fields
 from .scales_record import Sheet2Scales
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
@@ -1605,7 +1605,52 @@ class _Composer:
                     kinds.remove(kind)
         return steps
 
-    def _allowed(self, steps: dict[str, int]) -> bool:
+    def filled(self, steps: dict[str, int]) -> dict[str, int]:
+        """The empty-field rule, after `fill`: where the field is left more
+        than EMPTY_MAX empty (common.empty_share, the linter's field-filled
+        measure), the drawings one series step larger at a time, in fill's
+        order, the lever past _LEVER_MAX too (no guide bounds its size): each
+        step kept where it fits and leaves less empty, until the field is
+        filled or no step does."""
+        empty = self.empty(steps)
+        polys = [f"poly {name}" for name, _, _ in self.polygon_sets]
+        groups = [f"group {g.name}" for g in self.fa.groups]
+        kinds = [["mech", *groups, "driving"], [*groups, "driving"], ["lever"], ["mech"]]
+        kinds += [*([k] for k in groups), ["driving"], polys, *([k] for k in polys)]
+        while empty > EMPTY_MAX:
+            for kind in kinds:
+                trial = {k: v - (k in kind) for k, v in steps.items()}
+                if self._allowed(trial, lever_max=False) and self.fits(trial):
+                    trial_empty = self.empty(trial)
+                    if trial_empty < empty - 1e-9:
+                        steps, empty = trial, trial_empty
+                        break
+            else:
+                break
+        return steps
+
+    def empty(self, steps: dict[str, int]) -> float:
+        """The share of the field the drawings and tables at `steps` leave
+        empty, as the linter's field-filled rule measures it."""
+        sketches, _ = self.sketches(self.scales(steps))
+        arranged = self.arrange(sketches)
+        if arranged is None:
+            return 1.0
+        frame, block = self.page.frame, self.page.title_block.rect
+        field_ = shapely.box(*frame.bounds).difference(
+            shapely.box(block.left, frame.bottom, frame.right, block.top)
+        )
+        parts = []
+        for name, rect in arranged[1].items():
+            ext = self.extent(sketches[name])
+            dx, dy = rect.x - ext.x, rect.y - ext.y
+            parts += [
+                shapely.box(x0 + dx, y0 + dy, x1 + dx, y1 + dy)
+                for x0, y0, x1, y1 in sketches[name].group_extents()
+            ]
+        return empty_share(field_, parts)
+
+    def _allowed(self, steps: dict[str, int], *, lever_max: bool = True) -> bool:
         if min(v for k, v in steps.items() if not k.startswith(("poly", "lever"))) < _FINEST:
             return False
         if min(steps.values()) < 2 * _FINEST:
@@ -1626,7 +1671,7 @@ class _Composer:
             if steps[f"poly {name}"] < 0 and guide_side(polygons) / mu_F > FORCE_PLAN.high:
                 return False
         mu_V = scale_step(self.lever_mu, steps["lever"])
-        return steps["lever"] >= 0 or self.fa.lever.pa / mu_V <= _LEVER_MAX
+        return steps["lever"] >= 0 or not lever_max or self.fa.lever.pa / mu_V <= _LEVER_MAX
 
 
 def compose_sheet2(
@@ -1663,7 +1708,7 @@ def compose_sheet2(
             "  fix: draw sheet 1 alone (--sheet 1), or study a mechanism of fewer "
             "groups (the force analysis of every group goes on one sheet)"
         )
-    steps = composer.fill(steps)
+    steps = composer.filled(composer.fill(steps))
     scales = composer.scales(steps)
     sketches, arms = composer.sketches(scales)
     arranged = composer.arrange(sketches)

@@ -61,3 +61,18 @@ def test_a_lever_of_far_faster_points_is_drawn_to_its_longest_image(seed, lang):
     compose_sheet2(solution, backend, lang)  # composes: no LayoutError
     view = SheetView.of(backend, lang, g.name)
     assert [str(f) for f in lint(view, ["vectors-apart", "names-unique", "arrows-named"])] == []
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_sheet_2_left_half_empty_grows_its_drawings(lang):
+    # a variant of forces_scotch_yoke: every drawing grown to its guide, a
+    # flat polygon covering little, 51 % of the field was empty; the lever
+    # (no guide bounds it) now goes a step larger
+    from pathlib import Path
+
+    path = Path(__file__).parents[1] / "data" / "lint" / "forces_scotch_yoke_v03.toml"
+    solution = solve(loads(path.read_text(encoding="utf-8"), str(path)))
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet2(solution, backend, lang)
+    view = SheetView.of(backend, lang, path.stem)
+    assert [str(f) for f in lint(view, ["field-filled", "guide-sizes"])] == []
