@@ -1185,8 +1185,9 @@ def _with_note(sketch: Sketch, note: str) -> Sketch:
 COMPACT_EQUATION_MM = 90.0  # a compact sheet's equations under the polygons, at most
 _LEVER_MAX = 250.0  # mm: the longest pa the lever is enlarged to
 # the lever's textbook scale draws pa 100–200 mm (the velocity plan's); where
-# its longest image would then run past this (a point far faster than the
-# crank's, a 10:1 link), the scale that draws that image 100–200 mm
+# its longest image would run past this even _COARSEST steps coarser (a point
+# far faster than the crank's, a 10:1 link), the scale that draws that image
+# 100–200 mm
 _LEVER_REACH_MM = 400.0
 _ORDERS = 16  # orders of the drawings tried beyond the textbook's and by size
 _PARTS_FINER = 1  # series steps a group may be drawn larger or smaller than the loaded mechanism
@@ -1203,7 +1204,9 @@ def _lever_scale(lever: Any) -> float:
     """The lever's μV at its textbook scale (_LEVER_REACH_MM)."""
     mu = scale_for(lever.pa, VELOCITY_PLAN)
     reach = max((float(np.hypot(*v)) for v in lever.images.values()), default=0.0)
-    return scale_for(reach, VELOCITY_PLAN) if reach / mu > _LEVER_REACH_MM else mu
+    if reach / scale_step(mu, _COARSEST) > _LEVER_REACH_MM:
+        return scale_for(reach, VELOCITY_PLAN)
+    return mu
 
 
 class _Composer:
