@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 
 __all__ = [
     "image_markup",
@@ -25,14 +26,23 @@ def _sup(tag: str) -> str:
 _POLES = ("p", "π")
 
 
-def image_markup(name: str) -> str:
-    """ "S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters; the
-    image of a point named like a pole (P, π) takes a prime, "p'", so that it
-    is never read as the pole."""
+def image_markup(name: str, names: Iterable[str] = ()) -> str:
+    """ "S2" → "s_{2}", "B" → "b": images on a plan are lower-case letters.
+    Two images never read alike: the image of a point named like a pole (P,
+    π) takes a prime, "p'", so that it is never read as the pole; of the
+    mechanism's `names` that differ only in case (O and o) the upper-case one
+    is written first and plain, each next one with one prime more ("o", "o'")."""
     m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
+    base = name.lower()
     if m:
-        return f"{m.group(1).lower()}_{{{m.group(2)}}}"
-    return f"{name.lower()}'" if name.lower() in _POLES else name.lower()
+        base = f"{m.group(1).lower()}_{{{m.group(2)}}}"
+    alike = sorted({n for n in (*names, name) if n.lower() == name.lower()}, key=_upper_first)
+    primes = alike.index(name) + (name.lower() in _POLES)
+    return base + "'" * primes
+
+
+def _upper_first(name: str) -> tuple[int, str]:
+    return (sum(ch.islower() for ch in name), name)
 
 
 def point_markup(name: str) -> str:

@@ -79,7 +79,7 @@ def plan_view(sweep: Sweep, k: int, index: int | None = None) -> PlanView:
             a0, n, y = complex(_entry(leg.a0, k)), complex(_entry(leg.n, k)), float(leg.y[k])
             rel = plan.X_name
             if leg.kind == "rotation":
-                centre = leg.start.upper()
+                centre = leg.centre
                 vel.append(Component(f"V_{rel}{centre}", "relative", _v(V0), _v(d * x)))
                 acc.append(Component(f"a^n_{rel}{centre}", "normal", _v(a0), _v(n)))
                 acc.append(Component(f"a^t_{rel}{centre}", "tangential", _v(a0 + n), _v(d * y)))

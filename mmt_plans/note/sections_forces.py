@@ -663,7 +663,7 @@ def lever(wr: Writer, fa: ForceAnalysis, step: str) -> None:
         rows.append(
             (
                 force_markup(f.label),
-                image_markup(f.point),
+                image_markup(f.point, wr.mech.point_owners),
                 wr.v(F, f"hyp({LF}.force)"),
                 wr.v(f.arm / mu_v, f"lever_arm({LF})/{MV}"),
                 wr.v(f.moment / mu_v, f"lever_moment({LF})/{MV}"),

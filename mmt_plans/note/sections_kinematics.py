@@ -295,7 +295,7 @@ class _Similarity:
         pole = "p" if q == "v" else "π"
 
         def img(P: str) -> str:
-            return pole if _fixed(wr, P) else image_markup(P)
+            return pole if _fixed(wr, P) else image_markup(P, wr.mech.point_owners)
 
         l1p, s1p = distance(wr, i, Q1, name)
         l12, s12 = distance(wr, i, Q1, Q2)
@@ -396,7 +396,7 @@ def _velocity_plan(wr: Writer, i: int, view: PlanView, mu_v: float, mv: str) -> 
         number = wr.eq("; ".join(lines))
         for line in legend:
             wr.text(line)
-        wr.text(w["intersection_v"].format(x=image_markup(X), eq=number))
+        wr.text(w["intersection_v"].format(x=image_markup(X, wr.mech.point_owners), eq=number))
         for ci, c in enumerate(g.velocity):
             base, rel, guide = legs[ci]
             seg = _segment(wr, X, base, guide)
@@ -411,7 +411,7 @@ def _velocity_plan(wr: Writer, i: int, view: PlanView, mu_v: float, mv: str) -> 
         v = float(np.hypot(*view.velocity_images[name]))
         S = f"hyp({src.point(a, i, name, 'v')})"
         wr.eq(
-            f"V_{sub(name)} = p{image_markup(name)}·μ_V = {wr.v(v / mu_v, f'{S}/{mv}')}·"
+            f"V_{sub(name)} = p{image_markup(name, wr.mech.point_owners)}·μ_V = {wr.v(v / mu_v, f'{S}/{mv}')}·"
             f"{wr.v(mu_v, mv)} = {wr.v(v, S)} {u['m/s']}"
         )
 
@@ -420,10 +420,10 @@ def _segment(wr: Writer, X: str, base: str, guide: str | None) -> str:
     """The segment of a relative velocity on the plan: V_BA → ab; V_E/0 → e_(0)e;
     a velocity from the pole (a fixed base) starts at p."""
     if guide is not None:
-        start = "p" if guide == "0" else f"{image_markup(X)}_{{({guide})}}"
-        return f"{start}{image_markup(X)}"
+        start = "p" if guide == "0" else f"{image_markup(X, wr.mech.point_owners)}_{{({guide})}}"
+        return f"{start}{image_markup(X, wr.mech.point_owners)}"
     fixed = 0 in wr.mech.point_owners.get(base, ())
-    return f"{'p' if fixed else image_markup(base)}{image_markup(X)}"
+    return f"{'p' if fixed else image_markup(base, wr.mech.point_owners)}{image_markup(X, wr.mech.point_owners)}"
 
 
 # --- 1.4 / 1.6 -------------------------------------------------------------------------------
@@ -589,7 +589,7 @@ def _acceleration_plan(wr: Writer, i: int, view: PlanView, mu_a: float, ma: str)
                     f"{wr.v(vr, VS)} = {wr.v(val, f'hyp({C})')} {u['m/s2']}; "
                     f"|a^k_{sub(rel)}| = {wr.v(val / mu_a, f'hyp({C})/{ma}')} {u['mm']}"
                 )
-        wr.text(w["intersection_a"].format(x=image_markup(X), eq=number))
+        wr.text(w["intersection_a"].format(x=image_markup(X, wr.mech.point_owners), eq=number))
         for ci, c in enumerate(comps):
             if c.kind not in ("tangential", "slide"):
                 continue
@@ -607,7 +607,7 @@ def _acceleration_plan(wr: Writer, i: int, view: PlanView, mu_a: float, ma: str)
         acc = float(np.hypot(*view.acceleration_images[name]))
         S = f"hyp({src.point(a, i, name, 'a')})"
         wr.eq(
-            f"a_{sub(name)} = π{image_markup(name)}·μ_a = {wr.v(acc / mu_a, f'{S}/{ma}')}·"
+            f"a_{sub(name)} = π{image_markup(name, wr.mech.point_owners)}·μ_a = {wr.v(acc / mu_a, f'{S}/{ma}')}·"
             f"{wr.v(mu_a, ma)} = {wr.v(acc, S)} {u['m/s2']}"
         )
 

@@ -1039,7 +1039,9 @@ def sketch_plan(
         named = [names for names in labels.values() if float(np.hypot(*images[names[0]])) >= 0.5]
         for names in _crowded_first(placer, [images[names[0]] for names in named], named):
             v = images[names[0]]
-            placer.place(v, ", ".join(image_markup(n) for n in names), towards=unit_vector(v))
+            everyone = tuple(solution.mechanism.point_owners)
+            text = ", ".join(image_markup(n, everyone) for n in names)
+            placer.place(v, text, towards=unit_vector(v))
         placer.size = _SMALL
         placer.write_later()
         ext = sk.extent()
@@ -1221,7 +1223,9 @@ def sketch_diagram(
             k = cat.plain_number(float(f"{c.mu_S / mu_l:.6g}"))
             same = mu_l_solution is None or abs(mu_l / mu_l_solution - 1.0) <= 1e-9
             reason = (
-                _words(lang)["mu_S_reason"].format(k=k)
+                _words(lang)["mu_S_reason_finer"].format(k=k)
+                if c.mu_S < mu_l
+                else _words(lang)["mu_S_reason"].format(k=k)
                 if same
                 else _words(lang)["mu_S_reason_field"].format(
                     k=k,
@@ -1812,6 +1816,9 @@ def _past_field(
 # --- the diagrams take the room that is left ------------------------------------------
 
 _STACK_GAP = 6.0  # _stack's gap between the S, V and a diagrams
+# where the field is left too empty, S may be drawn up to this many times
+# larger than the mechanism (μ_S = μ_l/FINER_S): a short stroke then reads
+FINER_S = 10.0
 
 
 def _diagram_rooms(layout: SheetLayout, rect: Rect, gap: float) -> list[Rect]:
@@ -1900,6 +1907,7 @@ def _grown_diagrams(
     mu_l: float,
     gap: float,
     extents: _Extents,
+    finer: bool = False,
 ) -> tuple[Sketch, Rect, KinematicDiagrams] | None:
     """The diagrams' column redrawn into the room left beside and above it
     (_diagram_rooms), or None where it cannot grow. The rule: one turn of
@@ -1911,7 +1919,10 @@ def _grown_diagrams(
     mechanism) or the series step above that S needs (the line under S then
     says why, or names it the calculation's scale where it is that). The
     construction is the Solution's on the same grid (its V and a in SI do not
-    depend on the scales: the 5 % check stands)."""
+    depend on the scales: the 5 % check stands). With `finer` (a field the
+    rule above leaves more than EMPTY_MAX empty), μ_S may also be finer than
+    μ_l, down to μ_l/FINER_S: S drawn larger than the mechanism, so that a
+    short stroke reads (the line under S says so)."""
     if "diagrams" not in placed:
         return None
     rect = placed["diagrams"]
@@ -1921,7 +1932,7 @@ def _grown_diagrams(
     T = 60.0 / drawn.n1
     over_w = base.width - drawn.L - max(drawn.H1, drawn.H2)
     over_h = base.height - sum(drawn.heights_mm)
-    mu_S_range = (mu_l, mu_l * 1e4)
+    mu_S_range = (mu_l / FINER_S if finer else mu_l, mu_l * 1e4)
     best: tuple[float, Sketch, Rect, KinematicDiagrams] | None = None
     drawn_parts: dict[tuple[Any, ...], Sketch] = {}
     for room in _diagram_rooms(layout, rect, gap)[:3]:
@@ -2081,7 +2092,10 @@ def compose_sheet1(
             sketches["mechanism"] = mechanism(mu_l)
             in_field = False
             best: tuple[float, dict[str, Sketch], dict[str, Rect], Sheet1] | None = None
-            for gap, (tables_width, corner) in itertools.product((8.0, 5.0), arrangements):
+            # every arrangement with μ_S from μ_l; then, where none fills the
+            # field, again with S drawn finer than μ_l (_grown_diagrams)
+            trials = itertools.product((False, True), (8.0, 5.0), arrangements)
+            for finer, gap, (tables_width, corner) in trials:
                 try:
                     layout, placed, field = _try_layout(
                         page, sketches, order, gap, True, tables_width, corner, extents
@@ -2107,7 +2121,17 @@ def compose_sheet1(
                             break
                     # grown from the calculation's column (every time axis tried again)
                     grown = _grown_diagrams(
-                        solution, look, lang, layout, sketches, placed, drawn, mu_l, gap, extents
+                        solution,
+                        look,
+                        lang,
+                        layout,
+                        sketches,
+                        placed,
+                        drawn,
+                        mu_l,
+                        gap,
+                        extents,
+                        finer,
                     )
                     if grown is not None:  # the diagrams take the room that is left
                         done, done_drawn = {**done, "diagrams": grown[0]}, grown[2]

@@ -50,7 +50,7 @@ from ..render.backend import Backend
 from ..render.look import LineType
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
-from .common import length_scale_step, scale_step, title_fields
+from .common import EMPTY_MAX, empty_share, length_scale_step, scale_step, title_fields
 from .scales_record import Sheet2Scales
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
@@ -821,7 +821,7 @@ def sketch_lever(
         mark("p", np.zeros(2))  # the pole: no image is written p (image_markup)
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
-                mark(image_markup(n), img[n])
+                mark(image_markup(n, tuple(mech.point_owners)), img[n])
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         labels.avoid_circle((0.0, 0.0), 1.2)
         forces = [*lever.forces, lever.balancing]
@@ -848,7 +848,7 @@ def sketch_lever(
             if re.fullmatch(r"[SK]\d+", f.point) and f.point not in dotted:
                 dotted.add(f.point)
                 sk.circle(at, 0.6, "thin", "black")
-                mark(image_markup(f.point), at)
+                mark(image_markup(f.point, tuple(mech.point_owners)), at)
             h = abs(f.arm) / mu_V
             arms.append((f.label, h))
             if h >= 1.0:
@@ -861,7 +861,12 @@ def sketch_lever(
         for at, names in marks.values():
             pole = float(np.hypot(*at)) < 0.5
             labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
+        # forces along one line in opposite senses: side by side, as in the polygons
+        placed: list[tuple[np.ndarray, np.ndarray]] = []
         for start, end, names in drawn:
+            shift = _beside(start, end, placed)
+            start, end = start + shift, end + shift
+            placed.append((start, end))
             sk.arrow(start, end, "main", **_ARROW)  # type: ignore[arg-type]
             markup = ", ".join(force_markup(n) for n in names)
             labels.later_arrow(start, end, markup, _SHAFT_ALONG)
@@ -1179,6 +1184,11 @@ def _with_note(sketch: Sketch, note: str) -> Sketch:
 
 COMPACT_EQUATION_MM = 90.0  # a compact sheet's equations under the polygons, at most
 _LEVER_MAX = 250.0  # mm: the longest pa the lever is enlarged to
+# the lever's textbook scale draws pa 100–200 mm (the velocity plan's); where
+# its longest image would run past this even _COARSEST steps coarser (a point
+# far faster than the crank's, a 10:1 link), the scale that draws that image
+# 100–200 mm
+_LEVER_REACH_MM = 400.0
 _ORDERS = 16  # orders of the drawings tried beyond the textbook's and by size
 _PARTS_FINER = 1  # series steps a group may be drawn larger or smaller than the loaded mechanism
 _COARSEST = 5  # series steps coarser than its textbook scale a drawing may go
@@ -1188,6 +1198,15 @@ _COARSEST_CHECK = 0  # first_fit asks whether the coarsest scales fit once this 
 # tried take this many times the field by their least area
 _HOPELESS = 1.5
 _FILL_PASSES = 2 * (12 - _FINEST)  # a bound on fill's passes (each a step of some kind)
+
+
+def _lever_scale(lever: Any) -> float:
+    """The lever's μV at its textbook scale (_LEVER_REACH_MM)."""
+    mu = scale_for(lever.pa, VELOCITY_PLAN)
+    reach = max((float(np.hypot(*v)) for v in lever.images.values()), default=0.0)
+    if reach / scale_step(mu, _COARSEST) > _LEVER_REACH_MM:
+        return scale_for(reach, VELOCITY_PLAN)
+    return mu
 
 
 class _Composer:
@@ -1209,6 +1228,7 @@ class _Composer:
         # tables numbered and continued in parts (GOST 2.105)
         self.compact = compact
         self.mu0 = float(solution.mu_l)
+        self.lever_mu = _lever_scale(fa.lever)
         self.cache: dict[tuple[Any, ...], Any] = {}
         self._extents: dict[int, Rect] = {}
         dl = fa.driving_link
@@ -1308,7 +1328,7 @@ class _Composer:
         out[f"mu_l {self.fa.driving_link.link}"] = length_scale_step(self.mu0, steps["driving"])
         for name, polygons, _ in self.polygon_sets:
             out[f"mu_F {name}"] = _force_scale(polygons, steps[f"poly {name}"])
-        out["mu_V"] = scale_step(scale_for(self.fa.lever.pa, VELOCITY_PLAN), steps["lever"])
+        out["mu_V"] = scale_step(self.lever_mu, steps["lever"])
         out["mu_l"] = length_scale_step(self.mu0, steps["mech"])
         return out
 
@@ -1588,7 +1608,52 @@ class _Composer:
                     kinds.remove(kind)
         return steps
 
-    def _allowed(self, steps: dict[str, int]) -> bool:
+    def filled(self, steps: dict[str, int]) -> dict[str, int]:
+        """The empty-field rule, after `fill`: where the field is left more
+        than EMPTY_MAX empty (common.empty_share, the linter's field-filled
+        measure), the drawings one series step larger at a time, in fill's
+        order, the lever past _LEVER_MAX too (no guide bounds its size): each
+        step kept where it fits and leaves less empty, until the field is
+        filled or no step does."""
+        empty = self.empty(steps)
+        polys = [f"poly {name}" for name, _, _ in self.polygon_sets]
+        groups = [f"group {g.name}" for g in self.fa.groups]
+        kinds = [["mech", *groups, "driving"], [*groups, "driving"], ["lever"], ["mech"]]
+        kinds += [*([k] for k in groups), ["driving"], polys, *([k] for k in polys)]
+        while empty > EMPTY_MAX:
+            for kind in kinds:
+                trial = {k: v - (k in kind) for k, v in steps.items()}
+                if self._allowed(trial, lever_max=False) and self.fits(trial):
+                    trial_empty = self.empty(trial)
+                    if trial_empty < empty - 1e-9:
+                        steps, empty = trial, trial_empty
+                        break
+            else:
+                break
+        return steps
+
+    def empty(self, steps: dict[str, int]) -> float:
+        """The share of the field the drawings and tables at `steps` leave
+        empty, as the linter's field-filled rule measures it."""
+        sketches, _ = self.sketches(self.scales(steps))
+        arranged = self.arrange(sketches)
+        if arranged is None:
+            return 1.0
+        frame, block = self.page.frame, self.page.title_block.rect
+        field_ = shapely.box(*frame.bounds).difference(
+            shapely.box(block.left, frame.bottom, frame.right, block.top)
+        )
+        parts = []
+        for name, rect in arranged[1].items():
+            ext = self.extent(sketches[name])
+            dx, dy = rect.x - ext.x, rect.y - ext.y
+            parts += [
+                shapely.box(x0 + dx, y0 + dy, x1 + dx, y1 + dy)
+                for x0, y0, x1, y1 in sketches[name].group_extents()
+            ]
+        return empty_share(field_, parts)
+
+    def _allowed(self, steps: dict[str, int], *, lever_max: bool = True) -> bool:
         if min(v for k, v in steps.items() if not k.startswith(("poly", "lever"))) < _FINEST:
             return False
         if min(steps.values()) < 2 * _FINEST:
@@ -1608,8 +1673,8 @@ class _Composer:
             mu_F = _force_scale(polygons, steps[f"poly {name}"])
             if steps[f"poly {name}"] < 0 and guide_side(polygons) / mu_F > FORCE_PLAN.high:
                 return False
-        mu_V = scale_step(scale_for(self.fa.lever.pa, VELOCITY_PLAN), steps["lever"])
-        return steps["lever"] >= 0 or self.fa.lever.pa / mu_V <= _LEVER_MAX
+        mu_V = scale_step(self.lever_mu, steps["lever"])
+        return steps["lever"] >= 0 or not lever_max or self.fa.lever.pa / mu_V <= _LEVER_MAX
 
 
 def compose_sheet2(
@@ -1646,7 +1711,7 @@ def compose_sheet2(
             "  fix: draw sheet 1 alone (--sheet 1), or study a mechanism of fewer "
             "groups (the force analysis of every group goes on one sheet)"
         )
-    steps = composer.fill(steps)
+    steps = composer.filled(composer.fill(steps))
     scales = composer.scales(steps)
     sketches, arms = composer.sketches(scales)
     arranged = composer.arrange(sketches)

@@ -333,3 +333,27 @@ def test_the_image_of_a_point_named_like_a_pole_is_not_the_pole():
 
     assert image_markup("P") == "p'" and image_markup("π") == "π'"
     assert image_markup("B") == "b" and image_markup("S2") == "s_{2}"
+
+
+def test_images_of_points_named_alike_but_for_case_read_apart():
+    from mmt_plans.drawing.markup import image_markup
+
+    names = ("p", "O", "o", "B")
+    # O's image is o as the textbook writes it; o's takes a prime
+    assert image_markup("O", names) == "o" and image_markup("o", names) == "o'"
+    assert image_markup("B", names) == "b"
+    # a point p beside P: both primed, neither the pole p
+    assert image_markup("P", ("P", "p")) == "p'" and image_markup("p", ("P", "p")) == "p''"
+
+
+def test_a_plan_component_keeps_the_case_of_its_centre():
+    # gen 192: links 2 (O-O1) and 3 (o-O1) turn about O and about o; their
+    # normal components were both written a^n_{O1O}
+    from mmt_plans.generate import generate_one
+    from mmt_plans.solution import solve
+    from mmt_plans.spec import loads
+
+    g = generate_one(192)
+    view = solve(loads(g.toml, "g.toml")).plan(0)
+    labels = {c.label for grp in view.groups for c in grp.acceleration}
+    assert {"a^n_O1O", "a^n_O1o"} <= labels

@@ -182,6 +182,7 @@ class Leg:
     x: Any = None  # the plan's unknowns, solved later: x of the velocity plan
     n: Any = None  # normal (rotation) or Coriolis (slide) component
     y: Any = None  # and y of the acceleration plan
+    centre: str = ""  # a rotation's centre as the mechanism names it ("O", "o")
 
     def normal(self, m: dict) -> Any:
         """-ω²·(X - P) of a rotation (d = i·(X - P)), 2·ω_K·x·i·u of a slide."""
@@ -407,6 +408,7 @@ class DyadSolver:
             m[K].acc_at(p),
             link,
             P=P,
+            centre=P_name,
         )
 
     def slide(self, link: int, on: int, X, u, K: Motion, start: str) -> Leg:
