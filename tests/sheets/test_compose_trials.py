@@ -161,3 +161,39 @@ def test_obstacle_index_pairs_agree_with_shapely_for_solids() -> None:
         if shapely.distance(lines[i], solids[j]) < clearance[j]
     }
     assert got == want and want
+
+
+def test_boxes_clear_is_no_pair_of_boxes_near() -> None:
+    # boxes_clear finds the pieces a box meets from the grown boxes' columns
+    # (one box as one row) and asks the upright solids first: a box is clear
+    # exactly where boxes_near gives it no pair, one box at a time or many,
+    # with few pieces (compared in numpy) or many (asked of the tree)
+    import shapely
+
+    from mmt_plans.drawing.labels import _ObstacleIndex
+
+    rng = np.random.default_rng(5)
+    shapes, clearance = [], []
+    for _ in range(120):
+        x, y = rng.uniform(0.0, 100.0, size=2)
+        kind = rng.integers(5)
+        if kind == 0:  # a line of a few segments
+            shapes.append(shapely.LineString(rng.uniform(-6.0, 6.0, size=(4, 2)) + (x, y)))
+        elif kind == 1:  # a text box (an upright solid)
+            shapes.append(shapely.box(x, y, x + rng.uniform(1.0, 6.0), y + 2.5))
+        elif kind == 2:  # an arrowhead
+            shapes.append(shapely.Polygon(rng.uniform(-3.0, 3.0, size=(3, 2)) + (x, y)))
+        elif kind == 3:  # a point
+            shapes.append(shapely.Point(x, y))
+        else:  # a ring
+            shapes.append(shapely.Point(x, y).buffer(float(rng.uniform(0.5, 3.0)), 16).exterior)
+        clearance.append(float(rng.uniform(0.0, 2.0)))
+    index = _ObstacleIndex(shapes, clearance)
+    for n in (1, 1, 1, 16, 300):
+        x0, y0 = rng.uniform(0.0, 100.0, size=(2, n))
+        x1, y1 = x0 + rng.uniform(0.5, 8.0, size=n), y0 + rng.uniform(0.5, 4.0, size=n)
+        met = np.zeros(n, dtype=bool)
+        met[index.boxes_near(x0, y0, x1, y1)[0]] = True
+        assert np.array_equal(index.boxes_clear(x0, y0, x1, y1), ~met)
+    assert n * len(index.grown) > 20_000  # the last batch asked the tree
+
