@@ -197,3 +197,35 @@ def test_boxes_clear_is_no_pair_of_boxes_near() -> None:
         assert np.array_equal(index.boxes_clear(x0, y0, x1, y1), ~met)
     assert n * len(index.grown) > 20_000  # the last batch asked the tree
 
+
+def test_free_spots_are_the_first_free_spot_each() -> None:
+    # sheet 1's diagrams ask for every tick number's spots in one query: the
+    # answer of each is the first spot Labels.free finds free, one by one
+    from mmt_plans.drawing.labels import Labels
+    from mmt_plans.drawing.sketch import Sketch
+    from mmt_plans.sheets.sheet1 import _free_spots
+
+    look = RecordingBackend(1, 1).look
+    sk = Sketch(look)
+    rng = np.random.default_rng(3)
+    for _ in range(60):
+        sk.line(tuple(rng.uniform(0.0, 60.0, size=2)), tuple(rng.uniform(0.0, 60.0, size=2)))
+    free = Labels(sk, 2.5)
+    asked = []
+    for k in range(40):
+        x, y = (float(v) for v in rng.uniform(0.0, 60.0, size=2))
+        spots = [((x + d, y + e), "center", "top") for d in (-1.5, 0.0, 1.5) for e in (-1.2, 1.2)]
+        asked.append((str(k), spots))
+    got = _free_spots(sk, free, 2.5, asked)
+    want = []
+    for text, spots in asked:
+        found = None
+        for pos, anchor, valign in spots:
+            probe = RecordingBackend(look=look)
+            probe.text(pos, text, 2.5, anchor=anchor, valign=valign)  # type: ignore[arg-type]
+            if free.free(probe.text_box(probe.calls[-1])):
+                found = (pos, anchor, valign)
+                break
+        want.append(found)
+    assert got == want
+    assert any(w is None for w in want) and any(w is not None for w in want)
