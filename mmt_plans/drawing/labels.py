@@ -49,6 +49,7 @@ __all__ = [
     "Labels",
     "arc_line",
     "drawn_shapes",
+    "drawn_shapes_of",
     "enclosing",
 ]
 
@@ -261,9 +262,10 @@ class Labels:
         if not self.follow:
             return
         calls = self.sketch.calls
-        for c in calls[self._seen :]:
+        new = calls[self._seen :]
+        for c, shapes in zip(new, drawn_shapes_of(new, self.sketch)):
             heavy = getattr(c, "line", None) == "main"
-            for shape in drawn_shapes(c, self.sketch):
+            for shape in shapes:
                 self.avoid(shape, self.clearance, heavy=heavy)
                 if c.name == "polygon" and shape.geom_type == "Polygon":
                     self._outlines.append(shape)
@@ -1459,6 +1461,30 @@ def drawn_shapes(call: Call, backend: RecordingBackend) -> list[BaseGeometry]:
     if name == "text" and a["rotation"] % 360.0 == 0.0:
         return [box(*backend.text_box(call))]
     return []
+
+
+def drawn_shapes_of(calls: Sequence[Call], backend: RecordingBackend) -> list[list[BaseGeometry]]:
+    """`drawn_shapes` of each of `calls`, their lines and polylines made in one
+    shapely call (the same geometries: a sketch's lines are most of its calls)."""
+    out: list[list[BaseGeometry]] = []
+    flat: list[Any] = []
+    index: list[int] = []
+    slots: list[int] = []
+    for c in calls:
+        if c.name in ("line", "polyline"):
+            pts = c.points()
+            if len(pts) >= 2 and any(math.dist(pts[0], q) > 1e-9 for q in pts[1:]):
+                index += [len(slots)] * len(pts)
+                flat += pts
+                slots.append(len(out))
+                out.append([])
+                continue
+        out.append(drawn_shapes(c, backend))
+    if slots:
+        made = shapely.linestrings(np.array(flat, dtype=float), indices=np.array(index))
+        for k, line in zip(slots, made):
+            out[k] = [line]
+    return out
 
 
 def arc_line(centre: PointLike, radius: float, start_deg: float, end_deg: float) -> LineString:

@@ -229,3 +229,30 @@ def test_free_spots_are_the_first_free_spot_each() -> None:
         want.append(found)
     assert got == want
     assert any(w is None for w in want) and any(w is not None for w in want)
+
+
+def test_drawn_shapes_of_are_drawn_shapes_each() -> None:
+    # the placer takes in a sketch's lines in one shapely call: the same
+    # geometries, in the same order, as drawn_shapes one call at a time
+    import shapely
+
+    from mmt_plans.drawing.labels import drawn_shapes, drawn_shapes_of
+    from mmt_plans.render.recording import Line
+
+    sol = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "six_link_press.toml"))
+    from mmt_plans.sheets.compose import compose
+
+    composed = compose(sol, "en", (1, 2))
+    for n in (1, 2):
+        rec = composed.sheet(n).recording()
+        calls = list(rec.calls) + [Line((1.0, 1.0), (1.0, 1.0), "thin")]  # a point
+        got = drawn_shapes_of(calls, rec)
+        want = [drawn_shapes(c, rec) for c in calls]
+        assert len(got) == len(want)
+        for g, w in zip(got, want):
+            assert len(g) == len(w)
+            for a, b in zip(g, w):
+                assert a.geom_type == b.geom_type
+                assert shapely.equals_exact(a, b, tolerance=0.0)
+                assert np.array_equal(shapely.get_coordinates(a), shapely.get_coordinates(b))
+
