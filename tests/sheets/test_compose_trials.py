@@ -256,3 +256,52 @@ def test_drawn_shapes_of_are_drawn_shapes_each() -> None:
                 assert shapely.equals_exact(a, b, tolerance=0.0)
                 assert np.array_equal(shapely.get_coordinates(a), shapely.get_coordinates(b))
 
+
+def test_caption_place_is_where_every_box_measured_puts_it() -> None:
+    # _caption_place measures a box's distance to the link's polygon only
+    # where its centre's distance leaves the answer open: the place must be
+    # the one measuring every box gives
+    import shapely
+
+    from mmt_plans.drawing.labels import Labels
+    from mmt_plans.drawing.sketch import Sketch
+    from mmt_plans.sheets.sheet2 import _caption_place
+
+    def every_box(labels: Labels, corners: np.ndarray, caption: str):  # the rule, plainly
+        centre = corners.mean(axis=0)
+        w, h = labels.width(caption) + 0.4, labels.size + 0.4
+        region = shapely.convex_hull(shapely.multipoints(corners))
+        lo, hi = corners.min(axis=0) - (w / 2 + 3.0), corners.max(axis=0) + (w / 2 + 3.0)
+        xs, ys = np.meshgrid(np.arange(lo[0], hi[0], 1.0), np.arange(lo[1], hi[1], 1.0))
+        q = np.c_[xs.ravel(), ys.ravel()]
+        x0, y0, x1, y1 = q[:, 0] - w / 2, q[:, 1] - h / 2, q[:, 0] + w / 2, q[:, 1] + h / 2
+        on = shapely.distance(shapely.box(x0, y0, x1, y1), region) <= 3.0
+        taken = shapely.bounds(labels.boxes).reshape(-1, 4)
+        gap = labels.spacing
+        clash = (
+            (taken[None, :, 0] - gap < x1[:, None])
+            & (taken[None, :, 2] + gap > x0[:, None])
+            & (taken[None, :, 1] < y1[:, None])
+            & (taken[None, :, 3] > y0[:, None])
+        ).any(axis=1)
+        ok = np.flatnonzero(on & ~clash)
+        tried = ok[np.argsort(np.hypot(*(q[ok] - centre).T), kind="stable")][:3000]
+        first = labels.first_free(np.c_[x0[tried], y0[tried], x1[tried], y1[tried]])
+        if first is not None:
+            return q[tried[first]] - np.array([1.5 + w / 2, 0.0]), np.array([1.0, 0.0])
+        return centre, None
+
+    look = RecordingBackend(1, 1).look
+    rng = np.random.default_rng(8)
+    for trial in range(12):
+        sk = Sketch(look)
+        corners = rng.uniform(0.0, 40.0, size=(int(rng.integers(2, 6)), 2))
+        for a, b in zip(corners, np.roll(corners, -1, axis=0)):
+            sk.line(tuple(a), tuple(b))
+        for _ in range(int(rng.integers(0, 40))):
+            sk.line(tuple(rng.uniform(-5.0, 45.0, size=2)), tuple(rng.uniform(-5.0, 45.0, size=2)))
+        labels = Labels(sk, 3.5)
+        caption = ["link 4", "ланка 12", "3"][trial % 3]
+        got, want = _caption_place(labels, corners, caption), every_box(labels, corners, caption)
+        assert np.array_equal(got[0], want[0])
+        assert (got[1] is None) == (want[1] is None)
