@@ -499,6 +499,14 @@ def _die_with_parent(parent: int, *, pdeathsig: bool = True) -> None:
     threading.Thread(target=watch, name="mmt-parent-watch", daemon=True).start()
 
 
+def _file_size(path: str) -> int:
+    """The size of `path` in bytes (0 where it cannot be read): how long its item takes, roughly."""
+    try:
+        return os.path.getsize(path)
+    except OSError:
+        return 0
+
+
 def _worker_start(parent: int) -> None:
     # Ctrl-C is the parent's to handle: workers print no traceback of their own.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
@@ -561,7 +569,10 @@ def run_batch(
             initargs=(os.getpid(),),
         )
         try:
-            futures = {pool.submit(_run, task): i for i, task in zip(index, tasks)}
+            # the largest files (the most links: the longest items) first, so
+            # that no long item is left to run alone at the end
+            jobs_in = sorted(zip(index, tasks), key=lambda it: -_file_size(it[1][0]))
+            futures = {pool.submit(_run, task): i for i, task in jobs_in}
             for fut in as_completed(futures):
                 i = futures[fut]
                 try:

@@ -20,7 +20,7 @@ import itertools
 import math
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
-from typing import Any, ClassVar, Literal
+from typing import Any, ClassVar, Literal, cast
 
 from .backend import (
     Backend,
@@ -436,6 +436,20 @@ class Text(Call):
 Record = Call
 
 
+_RECORDING_METHODS: tuple[str, ...] = (
+    *("line", "polygon", "polyline", "circle", "arc", "arrow", "text", "rich_text"),
+    *("begin_group", "end_group", "_begin_group", "_end_group"),
+)
+
+
+def _plain_recording(backend: Any) -> bool:
+    """Whether `backend` is a recording whose drawing methods are RecordingBackend's own."""
+    kind = type(backend)
+    return issubclass(kind, RecordingBackend) and all(
+        getattr(kind, m) is getattr(RecordingBackend, m) for m in _RECORDING_METHODS
+    )
+
+
 def _made(cls: type[Any], values: dict[str, Any]) -> Any:
     """A record of `cls` from the values of all its fields, checked by the
     caller (RecordingBackend's methods): what `Call.__init__` makes, without
@@ -704,6 +718,9 @@ class RecordingBackend(Backend):
         def t(p: Sequence[float]) -> tuple[float, float]:
             return (p[0] + dx, p[1] + dy)
 
+        if _plain_recording(backend):
+            self._replay_recorded(cast(RecordingBackend, backend), dx, dy)
+            return
         into = isinstance(backend, RecordingBackend)  # a recording keeps what labels name
         target: Any = backend
         naming = target._naming if into else None
@@ -789,3 +806,68 @@ class RecordingBackend(Backend):
                 raise ValueError(f"cannot replay {c.name!r}")
             if into:
                 target._naming = naming
+
+    def _replay_recorded(self, target: RecordingBackend, dx: float, dy: float) -> None:
+        """`replay` onto a plain recording (no method of its own): each record
+        made again as the target's drawing methods make it (shifted, in the
+        target's open groups, a label's naming renumbered as `replay` does),
+        without their checks and argument matching, already passed once."""
+        naming = target._naming
+        renumbered: dict[int, Naming] = {}
+        out, ids = target.calls, target._label_ids
+        width = target.look.lettering.width
+        groups = tuple(target._open_groups)
+
+        def t(p: Sequence[float]) -> tuple[float, float]:
+            x, y = float(p[0] + dx), float(p[1] + dy)
+            if x - x == 0.0 and y - y == 0.0:
+                return (x, y)
+            return as_point((x, y))  # raises as the drawing methods do
+
+        records: list[Any] = self.calls  # each read by its own type below
+        for c in records:
+            made = type(c)
+            if made is BeginGroup:
+                target.begin_group(c.id, c.cls)
+                groups = tuple(target._open_groups)
+                continue
+            if made is EndGroup:
+                target.end_group()
+                groups = tuple(target._open_groups)
+                continue
+            named = naming
+            if c.naming is not None:
+                if c.naming.label not in renumbered:
+                    label = c.naming.label
+                    if label in target._label_ids:
+                        label = next(_LABEL_IDS)
+                    renumbered[c.naming.label] = dataclasses.replace(
+                        c.naming.shifted(dx, dy), label=label
+                    )
+                named = renumbered[c.naming.label]
+            values = dict(c.__dict__)
+            values["groups"] = groups
+            if made is Line:
+                values["start"], values["end"] = t(c.start), t(c.end)
+                values["naming"] = named
+            elif made is Text:
+                values["pos"] = t(c.pos)
+                values["naming"] = named
+                values["width"] = width(c.content, c.size, c.max_width)
+            elif made is Polygon or made is Polyline:
+                values["vertices"] = tuple(t(p) for p in c.vertices)
+                values["naming"] = None
+                named = None
+            elif made is Circle or made is Arc:
+                values["center"] = t(c.center)
+                values["naming"] = None
+                named = None
+            elif made is Arrow:
+                values["start"], values["end"] = t(c.start), t(c.end)
+                values["naming"] = None
+                named = None
+            else:  # pragma: no cover - a new primitive must be added here
+                raise ValueError(f"cannot replay {c.name!r}")
+            out.append(_made(made, values))
+            if named is not None:
+                ids.add(named.label)

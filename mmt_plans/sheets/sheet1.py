@@ -1076,13 +1076,33 @@ def _crowded_first(
 def _free_spot(
     sk: Sketch, free: Labels, text: str, size: float, spots: Sequence[tuple[Any, str, str]]
 ) -> tuple[Any, str, str] | None:
-    """The first of `spots` (position, anchor, valign) where `text` covers no line."""
-    for pos, anchor, valign in spots:
-        probe = RecordingBackend(look=sk.look)
-        probe.text(pos, text, size, anchor=anchor, valign=valign)  # type: ignore[arg-type]
-        if free.free(probe.text_box(probe.calls[-1])):
-            return pos, anchor, valign
-    return None
+    """The first of `spots` (position, anchor, valign) where `text` covers no line
+    (every spot's box asked of the placer in one query, Labels.first_free)."""
+    return _free_spots(sk, free, size, [(text, spots)])[0]
+
+
+def _free_spots(
+    sk: Sketch,
+    free: Labels,
+    size: float,
+    asked: Sequence[tuple[str, Sequence[tuple[Any, str, str]]]],
+) -> list[tuple[Any, str, str] | None]:
+    """_free_spot of each (text, spots) of `asked`, every box in one query
+    (whether a box is free depends on it alone: the same answers)."""
+    probe = RecordingBackend(look=sk.look)
+    for text, spots in asked:
+        for pos, anchor, valign in spots:
+            probe.text(pos, text, size, anchor=anchor, valign=valign)  # type: ignore[arg-type]
+    if not probe.calls:
+        return [None for _ in asked]
+    ok = free.free_boxes(np.array([probe.text_box(c) for c in probe.calls], dtype=float))
+    out: list[tuple[Any, str, str] | None] = []
+    start = 0
+    for _, spots in asked:
+        hits = np.flatnonzero(ok[start : start + len(spots)])
+        out.append(spots[int(hits[0])] if hits.size else None)
+        start += len(spots)
+    return out
 
 
 def _axes(sk: Sketch, x0: float, x1: float, y0: float, y1: float, ylabel: str, xlabel: str) -> None:
@@ -1194,7 +1214,7 @@ def sketch_diagram(
         # the numbers at the time axis, under it or over it where a line is in
         # the way; where no place by the axis is free for one of them, all in a
         # row under the whole diagram (one rule for the diagram)
-        spots = []
+        asked = []
         for j, (x, number) in enumerate(ticks):
             if j == 0:  # the first "0" left of the ordinate axis
                 near = [((x - 1.2, -1.2), "right", "top"), ((x - 1.2, 1.2), "right", "baseline")]
@@ -1202,7 +1222,8 @@ def sketch_diagram(
                 near = [((x, -1.2), "center", "top"), ((x, 1.2), "center", "baseline")]
                 near += [((x + d, -1.2), "center", "top") for d in (-1.5, 1.5)]
                 near += [((x + d, 1.2), "center", "baseline") for d in (-1.5, 1.5)]
-            spots.append(_free_spot(sk, free, number, _SMALL, near))
+            asked.append((number, near))
+        spots = _free_spots(sk, free, _SMALL, asked)
         for (x, number), spot in zip(ticks, spots):
             if any(sp is None for sp in spots):
                 spot = ((x, ymin - 5.0), "center", "top")

@@ -653,7 +653,15 @@ def _caption_place(
     # a box whose centre is inside the polygon meets it; the others are measured
     on = shapely.contains_xy(region, q[:, 0], q[:, 1])
     ask = np.flatnonzero(~on)
-    on[ask] = shapely.distance(shapely.box(x0[ask], y0[ask], x1[ask], y1[ask]), region) <= 3.0
+    # the box holds the disc of radius min(w, h) / 2 round its centre and lies
+    # within hypot(w, h) / 2 of it: where the centre's distance d says which
+    # side of 3 mm the box is, by more than rounding, the box is not measured
+    d = shapely.distance(shapely.points(q[ask]), region)
+    near = d <= 3.0 + min(w, h) / 2 - 1e-6
+    unsure = ~near & (d - math.hypot(w, h) / 2 <= 3.0 + 1e-6)
+    b = ask[unsure]
+    near[unsure] = shapely.distance(shapely.box(x0[b], y0[b], x1[b], y1[b]), region) <= 3.0
+    on[ask] = near
     taken = shapely.bounds(labels.boxes).reshape(-1, 4)
     gap = labels.spacing
     clash = (

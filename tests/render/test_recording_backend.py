@@ -112,3 +112,48 @@ def test_squeezed_width_never_below_min_squeeze():
     assert let.width("Розроблено", 3.5, natural / 2) == pytest.approx(natural * let.min_squeeze)
     assert let.width("Розроблено", 3.5, natural * 0.9) == pytest.approx(natural * 0.9)
     assert let.width("Розроблено", 3.5, natural * 2) == pytest.approx(natural)
+
+
+def test_replay_onto_a_plain_recording_makes_the_records_the_methods_make():
+    # replay onto a plain recording makes each record itself (no drawing
+    # method called): the records must be those the drawing methods make, a
+    # label's naming renumbered where the target has its number already
+    from mmt_plans.render.recording import Text
+
+    class Calling(RecordingBackend):  # a method of its own: replay calls the methods
+        def line(self, start, end, line="main"):
+            super().line(start, end, line)
+
+    src = RecordingBackend()
+    with src.group("outer", "drawing"):
+        with src.naming("B", "point", (5.0, 6.0)):
+            src.rich_text((5.0, 6.0), "V_{B}", 3.5)
+            src.line((0.0, 0.0), (5.0, 6.0), "thin")
+        src.polygon([(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)], "main", "black")
+        src.polyline([(0.0, 0.0), (2.0, 1.0), (3.0, 0.0)], "thin")
+        src.circle((1.0, 1.0), 0.75, None, "white")
+        src.arc((1.0, 1.0), 4.0, 10.0, 80.0, "thin")
+        src.arrow((0.0, 0.0), (9.0, 3.0), "main", head_length=3.0, head_width=1.0)
+        src.text((2.0, 2.0), "x", 5.0, anchor="right", valign="top", max_width=1.0)
+    label = next(c.naming.label for c in src.calls if c.naming is not None)
+    fast, slow = RecordingBackend(), Calling()
+    for target in (fast, slow):
+        target._label_ids.add(label)  # the label's number taken: renumbered
+        with target.group("sheet"):
+            src.replay(target, 10.0, np.float64(-2.5))
+            src.replay(target, 0.0, 0.0)
+    assert len(fast.calls) == len(slow.calls) == 2 * len(src.calls) + 2
+    numbers: dict[int, int] = {}
+    for a, b in zip(fast.calls, slow.calls):
+        assert type(a) is type(b)
+        got, want = dict(a.__dict__), dict(b.__dict__)
+        if want["naming"] is not None:  # fresh numbers come from one counter
+            assert numbers.setdefault(want["naming"].label, got["naming"].label) == (
+                got["naming"].label
+            )
+            assert got["naming"].label != label
+            got["naming"] = want["naming"] = None
+        assert list(got.items()) == list(want.items())
+        assert all(type(x) is float and type(y) is float for x, y in a.points())
+    texts = [c for c in fast.calls if isinstance(c, Text)]
+    assert texts[0].groups == ("sheet", "outer") and texts[0].pos[1] == 3.5

@@ -161,3 +161,147 @@ def test_obstacle_index_pairs_agree_with_shapely_for_solids() -> None:
         if shapely.distance(lines[i], solids[j]) < clearance[j]
     }
     assert got == want and want
+
+
+def test_boxes_clear_is_no_pair_of_boxes_near() -> None:
+    # boxes_clear finds the pieces a box meets from the grown boxes' columns
+    # (one box as one row) and asks the upright solids first: a box is clear
+    # exactly where boxes_near gives it no pair, one box at a time or many,
+    # with few pieces (compared in numpy) or many (asked of the tree)
+    import shapely
+
+    from mmt_plans.drawing.labels import _ObstacleIndex
+
+    rng = np.random.default_rng(5)
+    shapes, clearance = [], []
+    for _ in range(120):
+        x, y = rng.uniform(0.0, 100.0, size=2)
+        kind = rng.integers(5)
+        if kind == 0:  # a line of a few segments
+            shapes.append(shapely.LineString(rng.uniform(-6.0, 6.0, size=(4, 2)) + (x, y)))
+        elif kind == 1:  # a text box (an upright solid)
+            shapes.append(shapely.box(x, y, x + rng.uniform(1.0, 6.0), y + 2.5))
+        elif kind == 2:  # an arrowhead
+            shapes.append(shapely.Polygon(rng.uniform(-3.0, 3.0, size=(3, 2)) + (x, y)))
+        elif kind == 3:  # a point
+            shapes.append(shapely.Point(x, y))
+        else:  # a ring
+            shapes.append(shapely.Point(x, y).buffer(float(rng.uniform(0.5, 3.0)), 16).exterior)
+        clearance.append(float(rng.uniform(0.0, 2.0)))
+    index = _ObstacleIndex(shapes, clearance)
+    for n in (1, 1, 1, 16, 300):
+        x0, y0 = rng.uniform(0.0, 100.0, size=(2, n))
+        x1, y1 = x0 + rng.uniform(0.5, 8.0, size=n), y0 + rng.uniform(0.5, 4.0, size=n)
+        met = np.zeros(n, dtype=bool)
+        met[index.boxes_near(x0, y0, x1, y1)[0]] = True
+        assert np.array_equal(index.boxes_clear(x0, y0, x1, y1), ~met)
+    assert n * len(index.grown) > 20_000  # the last batch asked the tree
+
+
+def test_free_spots_are_the_first_free_spot_each() -> None:
+    # sheet 1's diagrams ask for every tick number's spots in one query: the
+    # answer of each is the first spot Labels.free finds free, one by one
+    from mmt_plans.drawing.labels import Labels
+    from mmt_plans.drawing.sketch import Sketch
+    from mmt_plans.sheets.sheet1 import _free_spots
+
+    look = RecordingBackend(1, 1).look
+    sk = Sketch(look)
+    rng = np.random.default_rng(3)
+    for _ in range(60):
+        sk.line(tuple(rng.uniform(0.0, 60.0, size=2)), tuple(rng.uniform(0.0, 60.0, size=2)))
+    free = Labels(sk, 2.5)
+    asked = []
+    for k in range(40):
+        x, y = (float(v) for v in rng.uniform(0.0, 60.0, size=2))
+        spots = [((x + d, y + e), "center", "top") for d in (-1.5, 0.0, 1.5) for e in (-1.2, 1.2)]
+        asked.append((str(k), spots))
+    got = _free_spots(sk, free, 2.5, asked)
+    want = []
+    for text, spots in asked:
+        found = None
+        for pos, anchor, valign in spots:
+            probe = RecordingBackend(look=look)
+            probe.text(pos, text, 2.5, anchor=anchor, valign=valign)  # type: ignore[arg-type]
+            if free.free(probe.text_box(probe.calls[-1])):
+                found = (pos, anchor, valign)
+                break
+        want.append(found)
+    assert got == want
+    assert any(w is None for w in want) and any(w is not None for w in want)
+
+
+def test_drawn_shapes_of_are_drawn_shapes_each() -> None:
+    # the placer takes in a sketch's lines in one shapely call: the same
+    # geometries, in the same order, as drawn_shapes one call at a time
+    import shapely
+
+    from mmt_plans.drawing.labels import drawn_shapes, drawn_shapes_of
+    from mmt_plans.render.recording import Line
+
+    sol = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "six_link_press.toml"))
+    from mmt_plans.sheets.compose import compose
+
+    composed = compose(sol, "en", (1, 2))
+    for n in (1, 2):
+        rec = composed.sheet(n).recording()
+        calls = list(rec.calls) + [Line((1.0, 1.0), (1.0, 1.0), "thin")]  # a point
+        got = drawn_shapes_of(calls, rec)
+        want = [drawn_shapes(c, rec) for c in calls]
+        assert len(got) == len(want)
+        for g, w in zip(got, want):
+            assert len(g) == len(w)
+            for a, b in zip(g, w):
+                assert a.geom_type == b.geom_type
+                assert shapely.equals_exact(a, b, tolerance=0.0)
+                assert np.array_equal(shapely.get_coordinates(a), shapely.get_coordinates(b))
+
+
+def test_caption_place_is_where_every_box_measured_puts_it() -> None:
+    # _caption_place measures a box's distance to the link's polygon only
+    # where its centre's distance leaves the answer open: the place must be
+    # the one measuring every box gives
+    import shapely
+
+    from mmt_plans.drawing.labels import Labels
+    from mmt_plans.drawing.sketch import Sketch
+    from mmt_plans.sheets.sheet2 import _caption_place
+
+    def every_box(labels: Labels, corners: np.ndarray, caption: str):  # the rule, plainly
+        centre = corners.mean(axis=0)
+        w, h = labels.width(caption) + 0.4, labels.size + 0.4
+        region = shapely.convex_hull(shapely.multipoints(corners))
+        lo, hi = corners.min(axis=0) - (w / 2 + 3.0), corners.max(axis=0) + (w / 2 + 3.0)
+        xs, ys = np.meshgrid(np.arange(lo[0], hi[0], 1.0), np.arange(lo[1], hi[1], 1.0))
+        q = np.c_[xs.ravel(), ys.ravel()]
+        x0, y0, x1, y1 = q[:, 0] - w / 2, q[:, 1] - h / 2, q[:, 0] + w / 2, q[:, 1] + h / 2
+        on = shapely.distance(shapely.box(x0, y0, x1, y1), region) <= 3.0
+        taken = shapely.bounds(labels.boxes).reshape(-1, 4)
+        gap = labels.spacing
+        clash = (
+            (taken[None, :, 0] - gap < x1[:, None])
+            & (taken[None, :, 2] + gap > x0[:, None])
+            & (taken[None, :, 1] < y1[:, None])
+            & (taken[None, :, 3] > y0[:, None])
+        ).any(axis=1)
+        ok = np.flatnonzero(on & ~clash)
+        tried = ok[np.argsort(np.hypot(*(q[ok] - centre).T), kind="stable")][:3000]
+        first = labels.first_free(np.c_[x0[tried], y0[tried], x1[tried], y1[tried]])
+        if first is not None:
+            return q[tried[first]] - np.array([1.5 + w / 2, 0.0]), np.array([1.0, 0.0])
+        return centre, None
+
+    look = RecordingBackend(1, 1).look
+    rng = np.random.default_rng(8)
+    for trial in range(12):
+        sk = Sketch(look)
+        corners = rng.uniform(0.0, 40.0, size=(int(rng.integers(2, 6)), 2))
+        for a, b in zip(corners, np.roll(corners, -1, axis=0)):
+            sk.line(tuple(a), tuple(b))
+        for _ in range(int(rng.integers(0, 40))):
+            sk.line(tuple(rng.uniform(-5.0, 45.0, size=2)), tuple(rng.uniform(-5.0, 45.0, size=2)))
+        labels = Labels(sk, 3.5)
+        caption = ["link 4", "ланка 12", "3"][trial % 3]
+        got, want = _caption_place(labels, corners, caption), every_box(labels, corners, caption)
+        assert np.array_equal(got[0], want[0])
+        assert (got[1] is None) == (want[1] is None)
