@@ -463,25 +463,39 @@ class Labels:
             self._restore(saved)
             self._put_back(written)
 
-    def write_each(self, writes: Sequence[Callable[[], object]]) -> None:
+    def write_each(
+        self, writes: Sequence[Callable[[], object]], orders: Sequence[Sequence[int]] = ()
+    ) -> None:
         """Call each of `writes` (each writes one label: `place`,
         `place_along`, `place_arrow`, at the letter height it sets) in turn;
         where some of them found no place near what they name (nor a leader
-        to one), all once more with those first (as `write_later` with
-        `retry`), the order that leaves fewest written on something, then
-        fewest far, kept."""
+        to one), all once more in each of the `orders` (their places in
+        `writes`) in turn, then in the best order so far with those that went
+        far in it first (as `write_later` with `retry`), until none goes far;
+        the order that leaves fewest written on something, then fewest far,
+        kept."""
         saved = self._state()
-        far = self._each(writes)
-        if not far:
-            return
-        best = (self.unsettled - saved[-2], len(far))
-        written = self._written(saved)
-        order = [*far, *(k for k in range(len(writes)) if k not in far)]
-        self._restore(saved)
-        far = self._each([writes[k] for k in order])
-        if (self.unsettled - saved[-2], len(far)) >= best:
+        tries: list[list[int] | None] = [list(range(len(writes))), *map(list, orders), None]
+        best: tuple[tuple[int, int], list[int], list[int], tuple[Any, ...]] | None = None
+        last: list[int] = []
+        for order in tries:
+            if order is None:  # the best order's far ones first
+                assert best is not None
+                _, kept, went, _ = best
+                order = [*went, *(k for k in kept if k not in went)]
+            if best is not None:
+                self._restore(saved)
+            far = [order[i] for i in self._each([writes[k] for k in order])]
+            score = (self.unsettled - saved[-2], len(far))
+            last = order
+            if best is None or score < best[0]:
+                best = (score, order, far, self._written(saved))
+            if not far:
+                break
+        assert best is not None
+        if last is not best[1]:  # the last order written is not the best: the best again
             self._restore(saved)
-            self._put_back(written)
+            self._put_back(best[3])
 
     def _each(self, writes: Sequence[Callable[[], object]]) -> list[int]:
         """Call `writes` in turn; which of them (their places in it) went far."""

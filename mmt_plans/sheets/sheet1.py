@@ -1055,18 +1055,26 @@ def sketch_plan(
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         placer.avoid_drawn(sk.calls)
         placer.place((0.0, 0.0), pole, towards=(-1.0, -1.0))
-        # the images, and the components shorter than _SHORT_COMPONENT (amid
-        # the pole's or an image's arrowheads), among most lines first: they
-        # have the fewest places near them; then the other components; where
-        # some find no place near, all once more with those first
+        # the images among most lines first (they have the fewest places near
+        # them), then the components; where some find no place near: the
+        # components shorter than _SHORT_COMPONENT (amid the pole's or an
+        # image's arrowheads) among the images, crowded first, then the rest
         named: list[Any] = [
             names for names in labels.values() if float(np.hypot(*images[names[0]])) >= 0.5
         ]
-        short = [c for c in components if float(np.hypot(*(c[1] - c[0]))) < _SHORT_COMPONENT]
-        named += short
-        anchors = [images[n[0]] if isinstance(n, list) else (n[0] + n[1]) / 2 for n in named]
-        items = _crowded_first(placer, anchors, named)
-        items += [c for c in components if not any(c is x for x in short)]
+        items = [*_crowded_first(placer, [images[n[0]] for n in named], named), *components]
+        short = [
+            k
+            for k, c in enumerate(items)
+            if not isinstance(c, list) and float(np.hypot(*(c[1] - c[0]))) < _SHORT_COMPONENT
+        ]
+        first = [k for k, c in enumerate(items) if isinstance(c, list)] + short
+        anchors = [
+            images[items[k][0]] if isinstance(items[k], list) else (items[k][0] + items[k][1]) / 2
+            for k in first
+        ]
+        crowded = _crowded_first(placer, anchors, first)
+        crowded += [k for k in range(len(items)) if k not in first]
 
         def write(item: Any) -> Callable[[], object]:
             if isinstance(item, list):
@@ -1082,7 +1090,7 @@ def sketch_plan(
                 placer, _SMALL, lambda: placer.place_along(s, e, name, around=True)
             )
 
-        placer.write_each([write(item) for item in items])
+        placer.write_each([write(item) for item in items], [crowded] if short else [])
         ext = sk.extent()
         q: Quantity = "velocity" if kind == "velocity" else "acceleration"
         sk.rich_text(
