@@ -464,7 +464,10 @@ class Labels:
             self._put_back(written)
 
     def write_each(
-        self, writes: Sequence[Callable[[], object]], orders: Sequence[Sequence[int]] = ()
+        self,
+        writes: Sequence[Callable[[], object]],
+        orders: Sequence[Sequence[int]] = (),
+        most: int | None = None,
     ) -> None:
         """Call each of `writes` (each writes one label: `place`,
         `place_along`, `place_arrow`, at the letter height it sets) in turn;
@@ -473,7 +476,8 @@ class Labels:
         `writes`) in turn, then in the best order so far with those that went
         far in it first (as `write_later` with `retry`), until none goes far;
         the order that leaves fewest written on something, then fewest far,
-        kept."""
+        kept; where more than `most` went far in the first, it is kept (too
+        crowded for another order to help)."""
         saved = self._state()
         tries: list[list[int] | None] = [list(range(len(writes))), *map(list, orders), None]
         best: tuple[tuple[int, int], list[int], list[int], tuple[Any, ...]] | None = None
@@ -490,7 +494,7 @@ class Labels:
             last = order
             if best is None or score < best[0]:
                 best = (score, order, far, self._written(saved))
-            if not far:
+            if not far or (most is not None and len(far) > most and order is tries[0]):
                 break
         assert best is not None
         if last is not best[1]:  # the last order written is not the best: the best again

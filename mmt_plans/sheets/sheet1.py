@@ -158,6 +158,15 @@ _WIDER = (3.0, 6.0)
 # bundle of its other positions' lines, nearly parallel to it), tried
 # further along the link too (_ALONG_SHORT), at the usual radii and larger
 _SHORT_SPAN = 120.0
+_SHORT_WIDER = (0.0, 3.0)
+# a mechanism of more links than this (a long chain, every drawing of it
+# crowded) keeps the usual arcs and letter heights: the shorter arcs and the
+# smaller figures are not tried (their cost, a pass more for each link and
+# each label far, is then spent where they seldom help)
+_SHORT_LINKS = 12
+# a plan where more labels than this find no place near in the usual order
+# keeps it (too crowded for another order to help)
+_REORDER_MOST = 4
 # how many of a link's candidate arcs, best scored first, are asked whether
 # their labels find room (a long link of many positions has up to 84)
 _ROOM_TRIES = 16
@@ -363,18 +372,20 @@ class _ArcPlacer:
         spins: Sequence[tuple[float, float]],
         labels: Labels | None = None,
         markups: Sequence[str] = (),
+        short: bool = True,
     ) -> tuple[np.ndarray, float, list[np.ndarray | None], float, float]:
         """`_beside` at the usual radii; with `labels`, where a label finds
         no room near its arrowhead there, at radii _WIDER mm larger in turn
-        (an arrowhead out of a bundle of lines), then the arcs shorter
-        (_SHORT_SPAN, tried further along the link) at each radius: the arcs
+        (an arrowhead out of a bundle of lines), then (with `short`) the arcs
+        shorter (_SHORT_SPAN, tried further along the link, at the usual radii
+        and 3 mm larger): the arcs
         whose labels find room, crossing least. The centre, start angle, the
         labels' places, how much larger the radii are, mm, and the span, deg."""
         best: tuple[float, np.ndarray, float, list[np.ndarray | None], float, float] | None = None
         tries = [(_SPAN, _ALONG_LINK, 0.0)]
         if labels is not None:
             tries += [(_SPAN, _ALONG_LINK, w) for w in _WIDER]
-            tries += [(_SHORT_SPAN, _ALONG_SHORT, w) for w in (0.0, *_WIDER)]
+            tries += [(_SHORT_SPAN, _ALONG_SHORT, w) for w in _SHORT_WIDER if short]
         for span, along, wider in tries:
             wide = [(radius + wider, sense) for radius, sense in spins]
             centre, start, picked, cost = self._beside(
@@ -830,7 +841,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             leader_rings=FINE_LEADER_RINGS,
             leader_dirs=FINE_LEADER_DIRS,
             leader_group=FINE_LEADER_GROUP,
-            smaller=_SMALL,
+            smaller=_SMALL if len(mech.links) <= _SHORT_LINKS else None,
         )
         labels.avoid_drawn(sk.calls)
         # the crank's pivot named on the side away from the pin at position 0,
@@ -881,6 +892,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                     [(r, v) for v, r, _, _ in spins],
                     labels,
                     [f"{sym}_{{{lid}}}" for _, _, sym, _ in spins],
+                    len(mech.links) <= _SHORT_LINKS,  # the shorter arcs tried
                 )
                 for (value, radius, sym, line), room in zip(spins, rooms):
                     inset = _inset(radius + wider, _OMEGA_R + wider)
@@ -997,7 +1009,7 @@ def sketch_plan(
         leader_rings=FINE_LEADER_RINGS,
         leader_dirs=FINE_LEADER_DIRS,
         leader_group=FINE_LEADER_GROUP,
-        smaller=_SMALL,
+        smaller=_SMALL if len(solution.mechanism.links) <= _SHORT_LINKS else None,
     )
     # the acceleration components to name: start, end, name, by the head
     components: list[tuple[np.ndarray, np.ndarray, str, bool]] = []
@@ -1090,7 +1102,13 @@ def sketch_plan(
                 placer, _SMALL, lambda: placer.place_along(s, e, name, around=True)
             )
 
-        placer.write_each([write(item) for item in items], [crowded] if short else [])
+        # (a long chain's plans keep the usual order: see _SHORT_LINKS)
+        chain = len(solution.mechanism.links) > _SHORT_LINKS
+        placer.write_each(
+            [write(item) for item in items],
+            [crowded] if short and not chain else [],
+            most=0 if chain else _REORDER_MOST,
+        )
         ext = sk.extent()
         q: Quantity = "velocity" if kind == "velocity" else "acceleration"
         sk.rich_text(
