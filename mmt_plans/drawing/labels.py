@@ -161,9 +161,16 @@ class Labels:
         fine: bool = True,
         fine_far: bool = False,
         wide_leaders: bool = False,
+        smaller: float | None = None,
     ) -> None:
         self.sketch = sketch
         self.size = size
+        # with `smaller` (a letter height below `size`, GOST's 2.5 mm at
+        # least), a label that finds no free place near what it names and no
+        # leader to one at `size` is tried once more at that height (a name
+        # walled in by lines: the smaller figures of the positions' numbers)
+        # before it stands far
+        self.smaller = smaller
         # the lettering as the sheet's language writes it (F_in4 is F_i4 on a
         # Ukrainian sheet): measured and written so, where it is placed
         self._say = words or (lambda markup: markup)
@@ -463,6 +470,54 @@ class Labels:
             self._restore(saved)
             self._put_back(written)
 
+    def write_each(
+        self,
+        writes: Sequence[Callable[[], object]],
+        orders: Sequence[Sequence[int]] = (),
+        most: int | None = None,
+    ) -> None:
+        """Call each of `writes` (each writes one label: `place`,
+        `place_along`, `place_arrow`, at the letter height it sets) in turn;
+        where some of them found no place near what they name (nor a leader
+        to one), all once more in each of the `orders` (their places in
+        `writes`) in turn, then in the best order so far with those that went
+        far in it first (as `write_later` with `retry`), until none goes far;
+        the order that leaves fewest written on something, then fewest far,
+        kept; where more than `most` went far in the first, it is kept (too
+        crowded for another order to help)."""
+        saved = self._state()
+        tries: list[list[int] | None] = [list(range(len(writes))), *map(list, orders), None]
+        best: tuple[tuple[int, int], list[int], list[int], tuple[Any, ...]] | None = None
+        last: list[int] = []
+        for order in tries:
+            if order is None:  # the best order's far ones first
+                assert best is not None
+                _, kept, went, _ = best
+                order = [*went, *(k for k in kept if k not in went)]
+            if best is not None:
+                self._restore(saved)
+            far = [order[i] for i in self._each([writes[k] for k in order])]
+            score = (self.unsettled - saved[-2], len(far))
+            last = order
+            if best is None or score < best[0]:
+                best = (score, order, far, self._written(saved))
+            if not far or (most is not None and len(far) > most and order is tries[0]):
+                break
+        assert best is not None
+        if last is not best[1]:  # the last order written is not the best: the best again
+            self._restore(saved)
+            self._put_back(best[3])
+
+    def _each(self, writes: Sequence[Callable[[], object]]) -> list[int]:
+        """Call `writes` in turn; which of them (their places in it) went far."""
+        far: list[int] = []
+        for k, write in enumerate(writes):
+            before = self.far
+            write()
+            if self.far > before:
+                far.append(k)
+        return far
+
     def _write_all(
         self,
         todo: Sequence[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]],
@@ -570,26 +625,48 @@ class Labels:
         x, y = float(anchor[0]), float(anchor[1])
         tries = [markup, "\n".join(f"{m}," for m in markup.split(", "))[:-1]]
         tries = tries[:1] if ", " not in markup else tries
-        for k, text in enumerate(tries):
-            cx, cy, w, h, drop = self._around(np.array([x, y]), text, towards, distance)
-            if first is not None and not k:
-                cx = np.concatenate([[float(first[0])], cx])
-                cy = np.concatenate([[float(first[1])], cy])
-            footprint = self._write_first_free(
-                cx,
-                cy,
-                w,
-                h,
-                drop,
-                text,
-                group,
-                leader=((x, y), towards, distance),
-                settle=k == len(tries) - 1,
-                names=("point", (x, y), None),
-            )
-            if footprint is not None:
-                return footprint
-        raise AssertionError("the last try always writes")
+
+        def write(settle: bool) -> BaseGeometry | None:
+            for k, text in enumerate(tries):
+                cx, cy, w, h, drop = self._around(np.array([x, y]), text, towards, distance)
+                if first is not None and not k:
+                    cx = np.concatenate([[float(first[0])], cx])
+                    cy = np.concatenate([[float(first[1])], cy])
+                footprint = self._write_first_free(
+                    cx,
+                    cy,
+                    w,
+                    h,
+                    drop,
+                    text,
+                    group,
+                    leader=((x, y), towards, distance),
+                    settle=settle and k == len(tries) - 1,
+                    names=("point", (x, y), None),
+                )
+                if footprint is not None:
+                    return footprint
+            return None
+
+        return self._at_sizes(write)
+
+    def _at_sizes(self, write: Callable[[bool], BaseGeometry | None]) -> BaseGeometry:
+        """`write(settle)` at the letter height `size`; where that finds no
+        place near and no leader (and `smaller` is set), at `smaller` (with
+        `settle`: where none is found then either, written far)."""
+        if self.smaller is None or self.smaller >= self.size:
+            footprint = write(True)
+        else:
+            footprint = write(False)
+            if footprint is None:
+                kept = self.size
+                self.size = self.smaller
+                try:
+                    footprint = write(True)
+                finally:
+                    self.size = kept
+        assert footprint is not None, "the last try always writes"
+        return footprint
 
     def place_arrow(
         self,
@@ -609,24 +686,28 @@ class Labels:
         # the names of forces that share the arrow one under another where in one line they find no room
         tries = [markup, "\n".join(f"{m}," for m in markup.split(", "))[:-1]]
         tries = tries[:1] if ", " not in markup else tries
-        for k, text in enumerate(tries):
-            cx, cy, w, h, drop = self._around(b, text, u, 1.5)
-            sx, sy = self._beside(a, b, text, 1.0, _ALONG[:3] if along is None else along)
-            footprint = self._write_first_free(
-                np.concatenate([cx, sx]),
-                np.concatenate([cy, sy]),
-                w,
-                h,
-                drop,
-                text,
-                group,
-                leader=((float(b[0]), float(b[1])), (float(u[0]), float(u[1])), 1.5),
-                settle=k == len(tries) - 1,
-                names=("arrow", a, b),
-            )
-            if footprint is not None:
-                return footprint
-        raise AssertionError("the last try always writes")
+
+        def write(settle: bool) -> BaseGeometry | None:
+            for k, text in enumerate(tries):
+                cx, cy, w, h, drop = self._around(b, text, u, 1.5)
+                sx, sy = self._beside(a, b, text, 1.0, _ALONG[:3] if along is None else along)
+                footprint = self._write_first_free(
+                    np.concatenate([cx, sx]),
+                    np.concatenate([cy, sy]),
+                    w,
+                    h,
+                    drop,
+                    text,
+                    group,
+                    leader=((float(b[0]), float(b[1])), (float(u[0]), float(u[1])), 1.5),
+                    settle=settle and k == len(tries) - 1,
+                    names=("arrow", a, b),
+                )
+                if footprint is not None:
+                    return footprint
+            return None
+
+        return self._at_sizes(write)
 
     def _around(
         self, anchor: np.ndarray, markup: str, towards: PointLike | None, distance: float
@@ -677,31 +758,42 @@ class Labels:
         number): at its middle if that is free, else further along (at the
         fractions `along` of it, in turn), either side; with `around`, else
         round the middle further out (an arm h among others)."""
-        w, h, drop = self._extent(markup)
         a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
         d = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
         sides = np.array([complex(-d[1], d[0]), complex(d[1], -d[0])])
-        # how far the box reaches back towards the segment from its centre (an index hangs below)
-        reach = w / 2 * np.abs(sides.real) + np.where(sides.imag > 0, h / 2 + drop, h / 2) * np.abs(
-            sides.imag
-        )
         anchors = a + np.array(_ALONG if along is None else along)[:, None] * (b - a)
-        # nearest ring first, then along the segment, then the side
-        ring = (distance + self.rings)[:, None, None]
-        cx = (anchors[:, 0][:, None] + sides.real * (ring + reach)).ravel()
-        cy = (anchors[:, 1][:, None] + sides.imag * (ring + reach)).ravel()
         mx, my = (a + b) / 2
         leader = ((float(mx), float(my)), (float(sides[0].real), float(sides[0].imag)), distance)
-        names = ("segment", a, b)
-        if not around:
-            return self._write(cx, cy, w, h, drop, markup, group, leader=leader, names=names)
-        # where the segment's sides are taken: round its middle, further out
-        dirs = np.array(_COMPASS)
-        far = distance + np.concatenate([self.rings, self.rings[-1] + np.array([6.0, 12.0])])
-        far = far[:, None]
-        cx = np.concatenate([cx, (mx + dirs.real * (far + w / 2 * np.abs(dirs.real))).ravel()])
-        cy = np.concatenate([cy, (my + dirs.imag * (far + h / 2 * np.abs(dirs.imag))).ravel()])
-        return self._write(cx, cy, w, h, drop, markup, group, leader=leader, names=names)
+        names: tuple[NamingKind, PointLike, PointLike | None] = ("segment", a, b)
+
+        def write(settle: bool) -> BaseGeometry | None:
+            w, h, drop = self._extent(markup)
+            # how far the box reaches back towards the segment from its centre (an index hangs below)
+            reach = w / 2 * np.abs(sides.real) + np.where(
+                sides.imag > 0, h / 2 + drop, h / 2
+            ) * np.abs(sides.imag)
+            # nearest ring first, then along the segment, then the side
+            ring = (distance + self.rings)[:, None, None]
+            cx = (anchors[:, 0][:, None] + sides.real * (ring + reach)).ravel()
+            cy = (anchors[:, 1][:, None] + sides.imag * (ring + reach)).ravel()
+            if around:
+                # where the segment's sides are taken: round its middle, further out
+                dirs = np.array(_COMPASS)
+                far = distance + np.concatenate(
+                    [self.rings, self.rings[-1] + np.array([6.0, 12.0])]
+                )
+                far = far[:, None]
+                cx = np.concatenate(
+                    [cx, (mx + dirs.real * (far + w / 2 * np.abs(dirs.real))).ravel()]
+                )
+                cy = np.concatenate(
+                    [cy, (my + dirs.imag * (far + h / 2 * np.abs(dirs.imag))).ravel()]
+                )
+            return self._write_first_free(
+                cx, cy, w, h, drop, markup, group, leader=leader, settle=settle, names=names
+            )
+
+        return self._at_sizes(write)
 
     def _extent(self, markup: str) -> tuple[float, float, float]:
         """Width and height of the box a label keeps free, and how far its index drops."""

@@ -153,6 +153,20 @@ _NO_ROOM = 20.0
 # how much larger (mm) the ω and ε arcs of a link are tried, in turn, where a
 # label finds no room near its arrowhead at the usual radii
 _WIDER = (3.0, 6.0)
+# and where none of those leaves it room: the arcs shorter, spanning this
+# much (deg), their arrowheads 30° off the link instead of 15° (out of the
+# bundle of its other positions' lines, nearly parallel to it), tried
+# further along the link too (_ALONG_SHORT), at the usual radii and larger
+_SHORT_SPAN = 120.0
+_SHORT_WIDER = (0.0, 3.0)
+# a mechanism of more links than this (a long chain, every drawing of it
+# crowded) keeps the usual arcs and letter heights: the shorter arcs and the
+# smaller figures are not tried (their cost, a pass more for each link and
+# each label far, is then spent where they seldom help)
+_SHORT_LINKS = 12
+# a plan where more labels than this find no place near in the usual order
+# keeps it (too crowded for another order to help)
+_REORDER_MOST = 4
 # how many of a link's candidate arcs, best scored first, are asked whether
 # their labels find room (a long link of many positions has up to 84)
 _ROOM_TRIES = 16
@@ -177,6 +191,7 @@ _TICK_RINGS = (
 )  # an arc beside a link spans this much of the half-plane on its side, deg
 # where along a link its arcs are tried, the middle first
 _ALONG_LINK = tuple(sorted(np.arange(0.2, 0.81, 0.1), key=lambda t: abs(t - 0.5)))
+_ALONG_SHORT = tuple(sorted(np.arange(0.1, 0.91, 0.1), key=lambda t: abs(t - 0.5)))
 
 
 def _inset(radius: float, inner: float = _OMEGA_R) -> float:
@@ -357,24 +372,33 @@ class _ArcPlacer:
         spins: Sequence[tuple[float, float]],
         labels: Labels | None = None,
         markups: Sequence[str] = (),
-    ) -> tuple[np.ndarray, float, list[np.ndarray | None], float]:
+        short: bool = True,
+    ) -> tuple[np.ndarray, float, list[np.ndarray | None], float, float]:
         """`_beside` at the usual radii; with `labels`, where a label finds
         no room near its arrowhead there, at radii _WIDER mm larger in turn
-        (an arrowhead out of a bundle of lines): the arcs whose labels find
-        room, crossing least. The centre, start angle, the labels' places and
-        how much larger the radii are, mm."""
-        best: tuple[float, np.ndarray, float, list[np.ndarray | None], float] | None = None
-        for wider in (0.0, *_WIDER) if labels is not None else (0.0,):
+        (an arrowhead out of a bundle of lines), then (with `short`) the arcs
+        shorter (_SHORT_SPAN, tried further along the link, at the usual radii
+        and 3 mm larger): the arcs
+        whose labels find room, crossing least. The centre, start angle, the
+        labels' places, how much larger the radii are, mm, and the span, deg."""
+        best: tuple[float, np.ndarray, float, list[np.ndarray | None], float, float] | None = None
+        tries = [(_SPAN, _ALONG_LINK, 0.0)]
+        if labels is not None:
+            tries += [(_SPAN, _ALONG_LINK, w) for w in _WIDER]
+            tries += [(_SHORT_SPAN, _ALONG_SHORT, w) for w in _SHORT_WIDER if short]
+        for span, along, wider in tries:
             wide = [(radius + wider, sense) for radius, sense in spins]
-            centre, start, picked, cost = self._beside(segments, wide, labels, markups, wider)
+            centre, start, picked, cost = self._beside(
+                segments, wide, labels, markups, wider, span, along
+            )
             if best is None or cost < best[0]:
-                best = (cost, centre, start, picked, wider)
+                best = (cost, centre, start, picked, wider, span)
             if all(p is not None for p in picked):
                 break
         assert best is not None
-        _, centre, start, picked, wider = best
+        _, centre, start, picked, wider, span = best
         self.reserve([_room_box(*p) for p in picked if p is not None])
-        return centre, start, picked, wider
+        return centre, start, picked, wider, span
 
     def _beside(
         self,
@@ -383,9 +407,12 @@ class _ArcPlacer:
         labels: Labels | None,
         markups: Sequence[str],
         wider: float,
+        span: float = _SPAN,
+        along: Sequence[float] = _ALONG_LINK,
     ) -> tuple[np.ndarray, float, list[np.ndarray | None], float]:
         """Centre and start angle (deg) of the arcs (radius, sense) of a link
-        beside one of its segments, spanning _SPAN degrees on one side of it,
+        beside one of its segments (at the fractions `along` of it), spanning
+        `span` degrees on one side of it,
         and the free place of each one's label (its box's centre; None: asked
         of `labels`, none is free near its arrowhead).
 
@@ -409,10 +436,10 @@ class _ArcPlacer:
             if float(np.hypot(*(b - a))) < 1e-9:
                 continue
             theta = math.degrees(math.atan2(*(b - a)[::-1]))
-            for t in _ALONG_LINK:
+            for t in along:
                 for side in (0.0, 180.0):
                     centres.append(a + t * (b - a))
-                    starts.append(theta + side + (180.0 - _SPAN) / 2)
+                    starts.append(theta + side + (180.0 - span) / 2)
         assert centres, "a link with no segment of length"
         cs = np.asarray(centres, dtype=float)
         st = np.asarray(starts, dtype=float)
@@ -422,14 +449,14 @@ class _ArcPlacer:
         # the arcs: the same polylines as arc_line draws
         for radius, _ in spins:
             inset = _inset(radius, _OMEGA_R + wider)
-            span = (_SPAN - 2.0 * inset) % 360.0 or 360.0
-            t = np.radians((st + inset)[:, None] + np.linspace(0.0, span, 24)[None, :])
-            xy = np.stack([cs[:, :1] + radius * np.cos(t), cs[:, 1:] + radius * np.sin(t)], -1)
+            sweep = (span - 2.0 * inset) % 360.0 or 360.0
+            ang = np.radians((st + inset)[:, None] + np.linspace(0.0, sweep, 24)[None, :])
+            xy = np.stack([cs[:, :1] + radius * np.cos(ang), cs[:, 1:] + radius * np.sin(ang)], -1)
             i, j = self._near_all(shapely.linestrings(xy), 0.6)
             if i.size:
                 score += np.bincount(i, weights=self._w[j], minlength=m)
             fine = np.radians(
-                (st + inset)[:, None] + np.linspace(0.0, span, int(span * radius / 25.0) + 2)
+                (st + inset)[:, None] + np.linspace(0.0, sweep, int(sweep * radius / 25.0) + 2)
             )
             own.append(
                 np.stack([cs[:, :1] + radius * np.cos(fine), cs[:, 1:] + radius * np.sin(fine)], -1)
@@ -440,7 +467,7 @@ class _ArcPlacer:
         boxes_xy = np.empty((m, n_spins, len(rings) * 8, 2))
         for s, (radius, sense) in enumerate(spins):
             inset = _inset(radius, _OMEGA_R + wider)
-            tip_deg = st + _SPAN - inset if sense > 0 else st + inset
+            tip_deg = st + span - inset if sense > 0 else st + inset
             tr = np.radians(tip_deg)
             tip = cs + radius * np.stack([np.cos(tr), np.sin(tr)], -1)
             d = np.radians(tip_deg[:, None] + dirs[None, :])  # (m, 8)
@@ -523,7 +550,7 @@ class _ArcPlacer:
                 for c, ks in enumerate(chosen_all)
             ]
             best, picked, cost = self._label_rooms(
-                cs, st, spins, markups, labels, score, wider, kept
+                cs, st, spins, markups, labels, score, wider, kept, span
             )
         return cs[best], float(st[best]), picked, cost
 
@@ -537,6 +564,7 @@ class _ArcPlacer:
         score: np.ndarray,
         wider: float,
         kept: Sequence[Sequence[np.ndarray]],
+        span: float = _SPAN,
     ) -> tuple[int, list[np.ndarray | None], float]:
         """Of the arcs centred at `cs` starting at `st` (deg), asked best
         `score` first: the first whose every label finds a free place near
@@ -552,12 +580,12 @@ class _ArcPlacer:
             arcs = []
             for radius, _ in spins:
                 inset = _inset(radius, _OMEGA_R + wider)
-                arcs.append(arc_line(cs[c], radius, st[c] + inset, st[c] + _SPAN - inset))
+                arcs.append(arc_line(cs[c], radius, st[c] + inset, st[c] + span - inset))
             own = shapely.union_all(arcs)
             rooms: list[np.ndarray | None] = []
             for (radius, sense), markup, mine in zip(spins, markups, kept[c]):
                 inset = _inset(radius, _OMEGA_R + wider)
-                tip_deg = math.radians(st[c] + _SPAN - inset if sense > 0 else st[c] + inset)
+                tip_deg = math.radians(st[c] + span - inset if sense > 0 else st[c] + inset)
                 u = np.array([math.cos(tip_deg), math.sin(tip_deg)])
                 tip = cs[c] + radius * u
 
@@ -603,6 +631,8 @@ class _ArcPlacer:
         return best[1]
 
 
+# a plan's component shorter than this (mm) is named before the images
+_SHORT_COMPONENT = 6.0
 # the radii tried for ω1's arc round the crank's pivot, mm, the usual first
 _CRANK_RADII = (_CRANK_R, 6.5, 10.0, 12.0, 5.0, 14.0)
 # the positions' numbers stand about this far out of the crank pin's circle,
@@ -811,6 +841,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
             leader_rings=FINE_LEADER_RINGS,
             leader_dirs=FINE_LEADER_DIRS,
             leader_group=FINE_LEADER_GROUP,
+            smaller=_SMALL if len(mech.links) <= _SHORT_LINKS else None,
         )
         labels.avoid_drawn(sk.calls)
         # the crank's pivot named on the side away from the pin at position 0,
@@ -856,11 +887,12 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                 if not spins:
                     continue
                 segments = [(at(a, k), at(b, k)) for a, b in itertools.combinations(names, 2)]
-                centre, start_deg, rooms, wider = arcs.beside(
+                centre, start_deg, rooms, wider, span = arcs.beside(
                     segments,
                     [(r, v) for v, r, _, _ in spins],
                     labels,
                     [f"{sym}_{{{lid}}}" for _, _, sym, _ in spins],
+                    len(mech.links) <= _SHORT_LINKS,  # the shorter arcs tried
                 )
                 for (value, radius, sym, line), room in zip(spins, rooms):
                     inset = _inset(radius + wider, _OMEGA_R + wider)
@@ -870,7 +902,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
                         radius + wider,
                         value,
                         start_deg + inset,
-                        start_deg + _SPAN - inset,
+                        start_deg + span - inset,
                         line,
                     )
                     towards = tip - centre if room is None else room - tip
@@ -977,7 +1009,10 @@ def sketch_plan(
         leader_rings=FINE_LEADER_RINGS,
         leader_dirs=FINE_LEADER_DIRS,
         leader_group=FINE_LEADER_GROUP,
+        smaller=_SMALL if len(solution.mechanism.links) <= _SHORT_LINKS else None,
     )
+    # the acceleration components to name: start, end, name, by the head
+    components: list[tuple[np.ndarray, np.ndarray, str, bool]] = []
     with sk.group(gid, "plan"):
         # Components of the vector equations, dashed.
         for g in view.groups:
@@ -1000,10 +1035,7 @@ def sketch_plan(
                 # relative one), each naming its arrow
                 if kind == "acceleration" and c.kind in tags:
                     name = f"a^{{{tags[c.kind]}}}_{{{c.label.split('_', 1)[-1]}}}"
-                    if c.kind in ("normal", "coriolis"):
-                        placer.later_arrow(s, e, name)
-                    else:
-                        placer.later_along(s, e, name)
+                    components.append((s, e, name, c.kind in ("normal", "coriolis")))
         # The image of each link: its joints' images joined by thin lines (the
         # relative vectors ab, de, and the similarity triangles of three-point links).
         owners = solution.mechanism.point_owners
@@ -1035,15 +1067,50 @@ def sketch_plan(
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         placer.avoid_drawn(sk.calls)
         placer.place((0.0, 0.0), pole, towards=(-1.0, -1.0))
-        # the images among most lines first: they have the fewest places near them
-        named = [names for names in labels.values() if float(np.hypot(*images[names[0]])) >= 0.5]
-        for names in _crowded_first(placer, [images[names[0]] for names in named], named):
-            v = images[names[0]]
-            everyone = tuple(solution.mechanism.point_owners)
-            text = ", ".join(image_markup(n, everyone) for n in names)
-            placer.place(v, text, towards=unit_vector(v))
-        placer.size = _SMALL
-        placer.write_later()
+        # the images among most lines first (they have the fewest places near
+        # them), then the components; where some find no place near: the
+        # components shorter than _SHORT_COMPONENT (amid the pole's or an
+        # image's arrowheads) among the images, crowded first, then the rest
+        named: list[Any] = [
+            names for names in labels.values() if float(np.hypot(*images[names[0]])) >= 0.5
+        ]
+        items = [*_crowded_first(placer, [images[n[0]] for n in named], named), *components]
+        short = [
+            k
+            for k, c in enumerate(items)
+            if not isinstance(c, list) and float(np.hypot(*(c[1] - c[0]))) < _SHORT_COMPONENT
+        ]
+        first = [k for k, c in enumerate(items) if isinstance(c, list)] + short
+        anchors = [
+            images[items[k][0]] if isinstance(items[k], list) else (items[k][0] + items[k][1]) / 2
+            for k in first
+        ]
+        crowded = _crowded_first(placer, anchors, first)
+        crowded += [k for k in range(len(items)) if k not in first]
+
+        everyone = tuple(solution.mechanism.point_owners)
+
+        def write(item: Any) -> Callable[[], object]:
+            if isinstance(item, list):
+                v = images[item[0]]
+                markup = ", ".join(image_markup(n, everyone) for n in item)
+                return lambda: _at_size(
+                    placer, _TEXT, lambda: placer.place(v, markup, towards=unit_vector(v))
+                )
+            s, e, name, by_head = item
+            if by_head:
+                return lambda: _at_size(placer, _SMALL, lambda: placer.place_arrow(s, e, name))
+            return lambda: _at_size(
+                placer, _SMALL, lambda: placer.place_along(s, e, name, around=True)
+            )
+
+        # (a long chain's plans keep the usual order: see _SHORT_LINKS)
+        chain = len(solution.mechanism.links) > _SHORT_LINKS
+        placer.write_each(
+            [write(item) for item in items],
+            [crowded] if short and not chain else [],
+            most=0 if chain else _REORDER_MOST,
+        )
         ext = sk.extent()
         q: Quantity = "velocity" if kind == "velocity" else "acceleration"
         sk.rich_text(
@@ -1057,6 +1124,16 @@ def sketch_plan(
         title = _words(lang)[f"{kind}_plan"].format(i=index)
         sk.text(((ext.left + ext.right) / 2, ext.top + 3.0), title, _TEXT, anchor="center")
     return sk, images
+
+
+def _at_size(placer: Labels, size: float, write: Callable[[], object]) -> object:
+    """`write()` with the placer's letter height `size`."""
+    kept = placer.size
+    placer.size = size
+    try:
+        return write()
+    finally:
+        placer.size = kept
 
 
 def _crowded_first(

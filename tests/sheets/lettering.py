@@ -11,7 +11,9 @@ from shapely.geometry import box
 def label_boxes(backend, group: str | None = None, *, groups: bool = False):
     """(text, box) per label (with `groups`, (text, box, the groups of its first run)). backend.rich_text writes a label as runs (a
     letter, then its index), each run starting where the previous one's
-    advance ends; such runs are one label."""
+    advance ends; such runs are one label (where the recording says what
+    each names, runs of two labels side by side, naming different things,
+    are two)."""
     calls = backend.named("text") if group is None else [
         c for c in backend.in_group(group) if c.name == "text"]
     let = backend.look.lettering
@@ -22,7 +24,8 @@ def label_boxes(backend, group: str | None = None, *, groups: bool = False):
             prev = None
             continue
         b = box(*backend.text_box(c))
-        if prev is not None and prev.groups == c.groups and c["anchor"] == "left":
+        same = prev is None or None in (prev.naming, c.naming) or prev.naming == c.naming
+        if prev is not None and same and prev.groups == c.groups and c["anchor"] == "left":
             end = prev["pos"][0] + let.advance_width(prev["content"], prev["size"])
             gap = c["pos"][0] - end
             if -1e-9 <= gap <= let.advance_width(" ", max(prev["size"], c["size"])) + 1e-9 \

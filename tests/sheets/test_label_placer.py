@@ -196,3 +196,36 @@ def test_a_segments_name_tried_at_the_fractions_given():
     assert footprint.distance(LineString([(0.0, 0.0), (60.0, 0.0)])) <= NEAR_MM
     assert footprint.bounds[0] > 48.0 and labels.far == 0 and _leaders(sk) == []
     assert _findings(sk, ["label-near", "label-clear"]) == []
+
+
+def _walled_in(smaller: float | None) -> tuple[Sketch, Labels]:
+    """A point in a corridor 3.8 mm high between two main lines, closed 5 mm
+    either side of it, in a grid of thin lines: a 3.5 mm label (its box 3.9 mm high, kept 0.4 mm off
+    the lines, 0.35 mm less at the last resort) fits nowhere near it, and no leader crossing only thin lines
+    reaches out; a 2.5 mm one fits beside it."""
+    sk = _sketch()
+    sk.line((-5.0, 1.9), (5.0, 1.9), "main")
+    sk.line((-5.0, -1.9), (5.0, -1.9), "main")
+    sk.line((-5.0, -1.9), (-5.0, 1.9), "main")
+    sk.line((5.0, -1.9), (5.0, 1.9), "main")
+    # round it, thin lines 2 mm apart out to 15 mm: no label fits between them
+    for k in range(-7, 8):
+        if k:
+            sk.line((-15.0, 2.0 * k + 0.05), (15.0, 2.0 * k + 0.05), "thin")
+        sk.line((2.0 * k + 0.05, -15.0), (2.0 * k + 0.05, -1.95), "thin")
+        sk.line((2.0 * k + 0.05, 1.95), (2.0 * k + 0.05, 15.0), "thin")
+    labels = Labels(sk, 3.5, smaller=smaller)
+    labels.place((-3.0, 0.0), "B", towards=(1.0, 0.0))
+    return sk, labels
+
+
+def test_a_name_walled_in_is_written_in_the_smaller_figures_near_it():
+    sk, labels = _walled_in(None)
+    assert labels.far == 1  # without them: far, with no leader
+    assert _findings(sk, ["label-near"]) != []
+    sk, labels = _walled_in(2.5)
+    assert labels.far == 0
+    written = [c for c in sk.calls if isinstance(c, Text)]
+    assert [c.size for c in written] == [2.5]
+    assert labels.size == 3.5  # the next label at the usual height
+    assert _findings(sk, ["label-near", "label-clear", "letter-height"]) == []

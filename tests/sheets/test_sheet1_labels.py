@@ -6,7 +6,10 @@ fine grid) and before a plan's crowded images were named first (seed 23:
 "a33" 9.6 mm off; "ω1" on a line); and mechanisms whose sheet 1 broke it
 before a link's ω/ε arcs were put where their labels find room and before the
 placer's last resorts (a tighter fine grid, a leader from further out) came
-ahead of a place far off."""
+ahead of a place far off; and seed tasks and hard cases, en and uk, whose
+sheet 1 broke it before an ω arc with no room for its name was tried shorter,
+a plan's short components were named among its images (crowded first) and a
+walled-in joint's name was tried in the smaller figures."""
 
 from __future__ import annotations
 
@@ -58,3 +61,31 @@ def test_seed_tasks_sheet1_labels_near_what_they_name(task):
 @pytest.mark.parametrize("seed", [16, 21])  # "s5" 9.8 mm off its image; three far
 def test_generated_sheet1_labels_near_what_they_name(seed):
     test_every_label_of_sheet1_near_what_it_names(seed)
+
+
+HARD = Path(__file__).resolve().parents[1] / "data" / "hard"
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+@pytest.mark.parametrize(
+    "path",
+    [
+        # an ω arc's name with no room beside its arrowhead, the arrowhead in
+        # the bundle of the link's other positions: the arcs shorter (120°)
+        TASKS / "seed003/task04_v1.toml",  # "ω4" 13.7 mm from its arc
+        TASKS / "seed003/task04_v5.toml",  # "ω4" 8.8 mm
+        TASKS / "seed002/task5_v04.toml",  # "ω4" 13.7 mm
+        # a plan's short component amid the pole's arrowheads, named before the images
+        TASKS / "seed003/task11_v4.toml",  # "aτBO2" 8.7 mm
+        # a joint walled in by lines: its name in the positions' smaller figures
+        HARD / "crosshead_mid_chain.toml",  # "B" 11.2 mm
+        HARD / "six_points_10mm_apart.toml",  # "k" 10.4 mm, "l" 10.7 mm
+    ],
+    ids=lambda p: p.stem,
+)
+def test_sheet1_labels_near_what_they_name_en_and_uk(path, lang):
+    solution = solve(loads(path.read_text(encoding="utf-8"), str(path)))
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet1(solution, backend, lang)
+    found = lint(SheetView.of(backend, lang, path.stem), RULES)
+    assert [str(f) for f in found] == []
