@@ -74,6 +74,9 @@ _ARM_ALONG = (0.5, 0.65, 0.35, 0.8, 0.2, 0.9, 0.1, 0.75, 0.25, 0.95, 0.05, 0.55,
 _LABELLING: dict[str, Any] = dict(
     spacing=None, leaders=True, fine=False, fine_far=True, wide_leaders=True
 )
+# how many times a drawing's labels are written again, those that stood far
+# in the last order first (Labels.write_later)
+_RETRY_ORDERS = 6
 # where along a force's arrow its name is tried beside the shaft (after round
 # its head), in turn: out to near both ends, where other arrows leave room
 _SHAFT_ALONG = (0.5, 0.35, 0.65, 0.2, 0.8, 0.1)
@@ -443,7 +446,7 @@ class _Drawing:
                 self.later(self.mm(f.point), f"{force_markup(f.name)} = 0", np.array([0.0, 1.0]))
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
-        self.labels.write_later(retry=True)
+        self.labels.write_later(retry=_RETRY_ORDERS)
         _UNSETTLED[self.sk] = self.labels.unsettled
         _FAR[self.sk] = self.labels.far
         ext = self.sk.extent()
@@ -767,7 +770,7 @@ def sketch_force_polygons(
             labels.avoid_line(offset - 1.0, offset + 1.0)
         for start, markup, end in names.values():
             labels.later_along(start, end, markup)
-        labels.write_later(retry=True)
+        labels.write_later(retry=_RETRY_ORDERS)
         for corners_of, caption in captions:
             anchor, towards = _caption_place(labels, corners_of, caption)
             labels.place(anchor, caption, towards=towards)
@@ -871,7 +874,7 @@ def sketch_lever(
             labels.later_arrow(start, end, markup, _SHAFT_ALONG)
         for foot, numbers in feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
-        labels.write_later(retry=True)
+        labels.write_later(retry=_RETRY_ORDERS)
         _UNSETTLED[sk] = labels.unsettled
         _FAR[sk] = labels.far
         ext = sk.extent()
