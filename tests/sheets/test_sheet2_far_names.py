@@ -26,8 +26,7 @@ NEAR_RULES = {"label-near", "label-clear"}
 
 # seed tasks whose sheet 2 had names standing 6.3-15.5 mm from what they
 # name (s4, G2, Fin4, G5, k4 on the lever and the groups, 'h3,4,5' on the
-# lever, F_i5 on a group) before; the first four cleared by the composer's
-# choice of scales, the last three by the labels written again (walled-in first)
+# lever, F_i5 on a group) before, cleared by the composer's choice of scales
 @pytest.mark.parametrize("lang", ["en", "uk"])
 @pytest.mark.parametrize(
     "task",
@@ -36,9 +35,6 @@ NEAR_RULES = {"label-near", "label-clear"}
         "seed003/task05_v4",
         "seed003/task06_v3",
         "seed002/task3_v05",
-        "seed003/task06_v4",
-        "seed003/task09_v2",
-        "seed002/task3_v00",
     ],
 )
 def test_regression_seed_tasks_whose_sheet_2_names_stood_far(task, lang):
