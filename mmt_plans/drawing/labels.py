@@ -139,6 +139,9 @@ _FINE_BLOCK = 64
 # how many times `write_later(retry=True)` writes the labels again, those that
 # found no place first
 _RETRIES = 1
+# past _RETRIES, `write_later` writes the labels again only while at most
+# this many of them stand far (a few walled in, not a crowded drawing)
+_FEW_FAR = 2
 
 
 class Labels:
@@ -431,7 +434,7 @@ class Labels:
             ("arrow", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), along)
         )
 
-    def write_later(self, *, retry: bool = False) -> None:
+    def write_later(self, *, retry: bool | int = False) -> None:
         """Write the labels kept by `later`, `later_along` and `later_arrow`, in the order they came.
 
         With `retry`, where some of them found no place near what they name
@@ -439,7 +442,12 @@ class Labels:
         draughtsman letters the crowded places before the easy ones (with
         `fine_far`, those on the fine grid of places too). The order kept is
         the one that leaves fewest written on something, then fewest far (the
-        first, on a tie)."""
+        first, on a tie). With `retry` a number, written again up to that many
+        times (else _RETRIES), those that went far in the last order first
+        each time, past _RETRIES only while at most _FEW_FAR stand far: a
+        name walled in by one written before it then goes before that one,
+        and so on down a crowded cluster."""
+        retries = _RETRIES if retry is True else int(retry)
         todo = list(self._later)
         self._later.clear()
         if not retry:
@@ -454,7 +462,7 @@ class Labels:
         )
         order = best[1]
         written = self._written(saved)  # what the best order wrote, to put back
-        for _ in range(_RETRIES):
+        for n in range(retries):
             # those that went far, first (already first: the same order writes the same)
             again = [*(order[i] for i in far), *(j for k, j in enumerate(order) if k not in far)]
             fine = set(range(len(far))) if self.fine_far else set()
@@ -466,6 +474,8 @@ class Labels:
             if (self.unsettled - saved[-2], len(far)) < best[0]:
                 best = ((self.unsettled - saved[-2], len(far)), order)
                 written = self._written(saved)
+            if n + 1 >= _RETRIES and best[0][1] > _FEW_FAR:
+                break  # many stand far: crowded past what another order mends
         if order is not best[1]:  # the last order written is not the best: the best again
             self._restore(saved)
             self._put_back(written)
