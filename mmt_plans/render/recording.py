@@ -745,14 +745,7 @@ class RecordingBackend(Backend):
         for c in records:
             made = type(c)
             if into and c.naming is not None:
-                if c.naming.label not in renumbered:
-                    label = c.naming.label
-                    if label in target._label_ids:
-                        label = next(_LABEL_IDS)
-                    renumbered[c.naming.label] = dataclasses.replace(
-                        c.naming.shifted(dx, dy), label=label
-                    )
-                target._naming = renumbered[c.naming.label]
+                target._naming = _renumbered(renumbered, c.naming, target, dx, dy)
             if made is Line:
                 line(t(c.start), t(c.end), c.line)
             elif made is Text and not (whole and c.label is not None):
@@ -837,14 +830,7 @@ class RecordingBackend(Backend):
                 continue
             named = naming
             if c.naming is not None:
-                if c.naming.label not in renumbered:
-                    label = c.naming.label
-                    if label in target._label_ids:
-                        label = next(_LABEL_IDS)
-                    renumbered[c.naming.label] = dataclasses.replace(
-                        c.naming.shifted(dx, dy), label=label
-                    )
-                named = renumbered[c.naming.label]
+                named = _renumbered(renumbered, c.naming, target, dx, dy)
             values = dict(c.__dict__)
             values["groups"] = groups
             if made is Line:
@@ -871,3 +857,20 @@ class RecordingBackend(Backend):
             out.append(_made(made, values))
             if named is not None:
                 ids.add(named.label)
+
+
+def _renumbered(
+    renumbered: dict[int, Naming],
+    naming: Naming,
+    target: RecordingBackend,
+    dx: float,
+    dy: float,
+) -> Naming:
+    """`naming` moved by (dx, dy) for `target`, a new label id where the
+    target already holds the label's (`renumbered` keeps what a replay gave)."""
+    if naming.label not in renumbered:
+        label = naming.label
+        if label in target._label_ids:
+            label = next(_LABEL_IDS)
+        renumbered[naming.label] = dataclasses.replace(naming.shifted(dx, dy), label=label)
+    return renumbered[naming.label]

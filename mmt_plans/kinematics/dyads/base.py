@@ -286,6 +286,19 @@ class DyadSolver:
         self.K2 = other_link(self.outer2, self.L2)
         self.kind = group.kind
 
+    def _make_locals(self) -> tuple[complex, ...]:
+        """The local coordinates a kind reads at every pass (RRR, RRP)."""
+        raise NotImplementedError(self.kind)
+
+    @property
+    def _locals(
+        self,
+    ) -> Any:  # kept in the instance's dictionary (cached_property's lock costs more)
+        found = self.__dict__.get("_kept_locals")
+        if found is None:
+            found = self.__dict__["_kept_locals"] = self._make_locals()
+        return found
+
     # local coordinates as complex numbers
     def loc(self, link: int, name: str) -> complex:
         found = self._locs.get((link, name))

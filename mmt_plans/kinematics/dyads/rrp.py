@@ -22,13 +22,6 @@ class RRP(DyadSolver):
             self.loc(self.L2, b),
         )
 
-    @property
-    def _locals(self):  # kept in the instance's dictionary (cached_property's lock costs more)
-        found = self.__dict__.get("_kept_locals")
-        if found is None:
-            found = self.__dict__["_kept_locals"] = self._make_locals()
-        return found
-
     def positions(self, m, sign):
         Ak, A1, B1, B2 = self._locals
         A = m[self.K1].at(Ak)
