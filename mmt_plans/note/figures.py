@@ -214,7 +214,9 @@ def replay_scaled(calls: Sequence[Call], backend: Backend, k: float, dx: float, 
 
 def draw_figure(composed: ComposedSheets, spec: FigureSpec, backend: Backend, rect: Rect) -> None:
     """The figure's parts in `rect`: scaled by one factor, centred, each
-    lettered under it when there are several."""
+    lettered under it when there are several. A part keeps its sheet's
+    lettering: its runs of text (a name and its index) stand where the
+    sheet's letter widths put them, and in another font they would part."""
     how, k, boxes = _arrangement(composed, spec, rect.width)
     n = len(boxes)
     label = PART_LABEL + 2.0 if n > 1 else 0.0
@@ -233,7 +235,8 @@ def draw_figure(composed: ComposedSheets, spec: FigureSpec, backend: Backend, re
         top = rect.top
         for part, box, w, h in zip(spec.parts, boxes, ws, hs):
             y0 = top - max(hs) + (max(hs) - h) / 2
-            replay_scaled(_calls(composed, part), backend, k, x - k * box[0], y0 - k * box[1])
+            with backend.lettered_as(composed.sheet(part.sheet).look.lettering):
+                replay_scaled(_calls(composed, part), backend, k, x - k * box[0], y0 - k * box[1])
             if n > 1:
                 backend.text(
                     (x + w / 2, top - max(hs) - label + 0.5), part.label, size, anchor="center"
@@ -243,7 +246,10 @@ def draw_figure(composed: ComposedSheets, spec: FigureSpec, backend: Backend, re
         y = rect.top
         for part, box, w, h in zip(spec.parts, boxes, ws, hs):
             x0 = rect.x + (rect.width - w) / 2
-            replay_scaled(_calls(composed, part), backend, k, x0 - k * box[0], y - h - k * box[1])
+            with backend.lettered_as(composed.sheet(part.sheet).look.lettering):
+                replay_scaled(
+                    _calls(composed, part), backend, k, x0 - k * box[0], y - h - k * box[1]
+                )
             y -= h + label
             if n > 1:
                 backend.text((rect.x + rect.width / 2, y + 0.5), part.label, size, anchor="center")

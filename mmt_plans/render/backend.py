@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import abc
 import contextlib
+import dataclasses
 import functools
 import math
 import re
@@ -22,7 +23,7 @@ from typing import Literal, get_args
 
 import numpy as np
 
-from .look import LINE_TYPES, LineType, Look, load_look
+from .look import LINE_TYPES, Lettering, LineType, Look, load_look
 
 __all__ = [
     "LineType",
@@ -287,6 +288,24 @@ class Backend(abc.ABC):
         """An axis-parallel rectangle from its bottom-left corner."""
         x, y = as_point(corner)
         self.polygon([(x, y), (x + width, y), (x + width, y + height), (x, y + height)], line, fill)
+
+    @contextlib.contextmanager
+    def lettered_as(self, lettering: Lettering) -> Iterator[None]:
+        """Texts drawn within in `lettering`, lines still in the page's look:
+        a figure copied from a sheet keeps the sheet's letters, so its
+        indices stand where the sheet's widths put them."""
+        kept = self.look
+        self.look = dataclasses.replace(kept, lettering=lettering)
+        self._lettering_changed()
+        try:
+            yield
+        finally:
+            self.look = kept
+            self._lettering_changed()
+
+    def _lettering_changed(self) -> None:
+        """A backend that keeps something of its lettering sets it again here."""
+        return None
 
     def close(self) -> None:
         """Check that every group was ended."""

@@ -57,16 +57,19 @@ class CairoPage(Backend):
         self.ctx = context
         self.ctx.set_line_cap(cairocffi.LINE_CAP_ROUND)
         self.ctx.set_line_join(cairocffi.LINE_JOIN_ROUND)
-        self.ctx.select_font_face(_family(tuple(look.lettering.families)))
-        # the lettering's slant, worked out once per page rather than per text
-        slant = look.lettering.slant_deg
-        self._lean = math.tan(math.radians(slant))
-        self._shear = cairocffi.Matrix(1.0, 0.0, math.tan(-math.radians(slant)), 1.0)
+        self._lettering_changed()
         # Cairo's own functions on the context, for the calls made thousands
         # of times a page (the same calls cairocffi's methods make)
         self._lib = cairocffi.cairo
         self._ptr = context._pointer
         self._dash_arrays: dict[tuple[float, ...], Any] = {}
+
+    def _lettering_changed(self) -> None:
+        let = self.look.lettering
+        self.ctx.select_font_face(_family(tuple(let.families)))
+        # the lettering's slant, worked out once per lettering rather than per text
+        self._lean = math.tan(math.radians(let.slant_deg))
+        self._shear = self._cairo.Matrix(1.0, 0.0, math.tan(-math.radians(let.slant_deg)), 1.0)
 
     def _xy(self, p: PointLike) -> tuple[float, float]:
         x, y = as_point(p)

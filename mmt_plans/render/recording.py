@@ -34,6 +34,7 @@ from .backend import (
     as_point,
     parse_markup,
 )
+from .look import Lettering
 
 __all__ = [
     "Arc",
@@ -396,6 +397,9 @@ class Text(Call):
     naming: Naming | None = None  # what the label this run belongs to names
     width: float | None = None  # None: not measured (made without a look)
     label: LabelRun | None = None  # the rich-text label this run belongs to
+    # drawn in this lettering, not the page's (a note's figure copied from a
+    # sheet: Backend.lettered_as); None: the page's
+    lettering: Lettering | None = None
 
     def points(self) -> list[Point]:
         return [self.pos]
@@ -468,6 +472,7 @@ class RecordingBackend(Backend):
         self.calls: list[Call] = []
         self._naming: Naming | None = None
         self._label_ids: set[int] = set()
+        self._page_look = self.look  # Backend.lettered_as swaps self.look for a while
         self._label: tuple[int, tuple[TextRun, ...], Point, list[int], dict[str, Any]] | None = None
 
     def rich_text(
@@ -693,6 +698,7 @@ class RecordingBackend(Backend):
                     "naming": naming,
                     "width": self.look.lettering.width(text, h, mw),
                     "label": mark,
+                    "lettering": None if self.look is self._page_look else self.look.lettering,
                 },
             )
         )
@@ -749,15 +755,16 @@ class RecordingBackend(Backend):
             if made is Line:
                 line(t(c.start), t(c.end), c.line)
             elif made is Text and not (whole and c.label is not None):
-                text(
-                    t(c.pos),
-                    c.content,
-                    c.size,
-                    anchor=c.anchor,
-                    valign=c.valign,
-                    rotation=c.rotation,
-                    max_width=c.max_width,
-                )
+                with backend.lettered_as(c.lettering) if c.lettering else contextlib.nullcontext():
+                    text(
+                        t(c.pos),
+                        c.content,
+                        c.size,
+                        anchor=c.anchor,
+                        valign=c.valign,
+                        rotation=c.rotation,
+                        max_width=c.max_width,
+                    )
                 if into and c.label is not None:
                     # into another recording: the run keeps its label's mark
                     last = target.calls[-1]

@@ -64,6 +64,7 @@ class SvgBackend(Backend):
         )
         self._dwg.add(root)
         self._stack: list[Any] = [root]
+        self._families = lettering.families  # the document's; a text in another names its own
 
     # --- output --------------------------------------------------------------
 
@@ -225,6 +226,11 @@ class SvgBackend(Backend):
                 fill=self.look.ink,
                 stroke="none",
                 class_="lettering",
+                **(
+                    {}
+                    if lettering.families == self._families
+                    else {"font_family": ", ".join(_quote_family(f) for f in lettering.families)}
+                ),
             )
         )
 

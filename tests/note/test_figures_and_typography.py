@@ -132,6 +132,42 @@ def test_figures_replay_the_sheets_drawings(case):
             assert 0.05 < ratios.pop() <= 1.0 + 1e-9
 
 
+class _LetteringSeen(RecordingBackend):
+    """A recording backend that keeps the lettering each text was drawn in."""
+
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.seen: list[tuple[str, object]] = []
+
+    def text(self, pos, content, size=3.5, **kwargs) -> None:
+        self.seen.append((str(content), self.look.lettering))
+        super().text(pos, content, size, **kwargs)
+
+
+def test_figures_keep_the_sheets_lettering(case):
+    """A figure's texts are drawn in its sheet's lettering, not the note's:
+    the sheet put a name's index where the sheet's letter widths end the name
+    (rich_text's runs), so in the note's narrower serif "(μ" and its index
+    "l" stood 6 mm apart. After the figure the page letters as the note."""
+    from mmt_plans.render.look import note_look
+
+    path, lang = case
+    doc = document(path, lang)
+    c = composed(path, lang)
+    note = note_look()
+    for key, spec in doc.content.figures.items():
+        if not spec.parts:
+            continue
+        rec = _LetteringSeen(210.0, 297.0, note)
+        draw_figure(c, spec, rec, Rect(25.0, 30.0, 170.0, 200.0))
+        sheet = c.sheet(spec.parts[0].sheet).look.lettering
+        assert sheet != note.lettering
+        drawn = [let for text, let in rec.seen if text not in {p.label for p in spec.parts}]
+        assert drawn, key
+        assert all(let == sheet for let in drawn), key
+        assert rec.look.lettering == note.lettering
+
+
 def test_every_scale_of_the_sheets_is_stated(case):
     """μ_l of each drawing, μ_V and μ_a of each plan, μ_F of each polygon and
     μ_V of the lever: each is written in the note as "μ_x = value"."""

@@ -157,3 +157,36 @@ def test_replay_onto_a_plain_recording_makes_the_records_the_methods_make():
         assert all(type(x) is float and type(y) is float for x, y in a.points())
     texts = [c for c in fast.calls if isinstance(c, Text)]
     assert texts[0].groups == ("sheet", "outer") and texts[0].pos[1] == 3.5
+
+
+def test_a_text_in_another_lettering_keeps_it_through_a_recording():
+    """Backend.lettered_as (a note's figure copied from a sheet): a text
+    recorded within carries that lettering, its width measured in it, and a
+    replay draws it so; the page's lettering is back after, and an SVG names
+    the other font on that text alone."""
+    from mmt_plans.render import SvgBackend
+    from mmt_plans.render.look import load_look, note_look
+
+    sheet, note = load_look(), note_look()
+    assert sheet.lettering.families != note.lettering.families
+    rec = RecordingBackend(210.0, 297.0, note)
+    rec.text((10.0, 10.0), "note", 3.5)
+    with rec.lettered_as(sheet.lettering):
+        rec.text((10.0, 20.0), "figure", 3.5)
+    rec.text((10.0, 30.0), "note again", 3.5)
+    first, inside, after = rec.calls
+    assert first.lettering is None and after.lettering is None
+    assert inside.lettering == sheet.lettering
+    assert inside.width == sheet.lettering.width("figure", 3.5, None)
+    assert first.width == note.lettering.width("note", 3.5, None)
+    assert rec.look is not None and rec.look.lettering == note.lettering
+
+    again = RecordingBackend(210.0, 297.0, note)
+    rec.replay(again)
+    assert [c.lettering for c in again.calls] == [None, sheet.lettering, None]
+
+    svg = SvgBackend(210.0, 297.0, look=note)
+    rec.replay(svg)
+    text = svg.to_string()
+    family = sheet.lettering.families[0]
+    assert text.count(family) == 1  # the figure's text only
