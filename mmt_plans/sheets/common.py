@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import re
 import zlib
-from collections.abc import Sequence
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 
 import shapely
 from shapely.geometry.base import BaseGeometry
 
-from ..drawing.page import FIELDS
+from ..drawing.page import FIELDS, Page, Rect
+from ..drawing.sketch import Sketch
 from ..i18n import Language, catalogue
 from ..scales import LENGTH_MANTISSA_TEXT, series
 from ..solution import Solution
@@ -19,6 +20,7 @@ from ..titles import sheet_title
 __all__ = [
     "EMPTY_MAX",
     "empty_share",
+    "laid_out_empty_share",
     "designation_base",
     "drawing_scale",
     "length_scale_step",
@@ -38,6 +40,31 @@ def empty_share(field_: BaseGeometry, boxes: Sequence[BaseGeometry]) -> float:
     rule: the linter on a recorded sheet, sheet 1 on its trial layouts)."""
     used = shapely.union_all(boxes).intersection(field_).area if boxes else 0.0
     return 1.0 - float(used) / float(field_.area)
+
+
+def laid_out_empty_share(
+    page: Page,
+    sketches: Mapping[str, Sketch],
+    placed: Mapping[str, Rect],
+    extent: Callable[[Sketch], Rect],
+) -> float:
+    """The share of a laid-out sheet's field left empty, as the linter's
+    field-filled rule measures it: the frame less the title block's band,
+    less the box of every drawing's and table's groups where the layout puts
+    them (`placed`; `extent` the sketch's own box): both composers' trials."""
+    frame, block = page.frame, page.title_block.rect
+    field_ = shapely.box(*frame.bounds).difference(
+        shapely.box(block.left, frame.bottom, frame.right, block.top)
+    )
+    parts = []
+    for name, rect in placed.items():
+        ext = extent(sketches[name])
+        dx, dy = rect.x - ext.x, rect.y - ext.y
+        parts += [
+            shapely.box(x0 + dx, y0 + dy, x1 + dx, y1 + dy)
+            for x0, y0, x1, y1 in sketches[name].group_extents()
+        ]
+    return empty_share(field_, parts)
 
 
 def next_scale(mu: float, steps: int) -> float:

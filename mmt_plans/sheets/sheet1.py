@@ -56,7 +56,7 @@ from ..scales import (
     series,
 )
 from ..solution import Solution
-from .common import EMPTY_MAX, empty_share, length_scale_step, title_fields
+from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, title_fields
 from .common import next_scale as _next_scale
 from .scales_record import Sheet1Scales
 
@@ -2096,27 +2096,6 @@ def _with_diagrams(layout: SheetLayout, page: Page, gap: float, rect: Rect) -> S
     return out
 
 
-def _empty_share(
-    page: Page, sketches: Mapping[str, Sketch], placed: Mapping[str, Rect], extents: _Extents
-) -> float:
-    """The share of the field left empty, as the sheet linter's field-filled
-    rule measures it: the frame less the title block's band, less the box of
-    every drawing's and table's groups where the layout puts them."""
-    frame, block = page.frame, page.title_block.rect
-    field_ = shapely.box(*frame.bounds).difference(
-        shapely.box(block.left, frame.bottom, frame.right, block.top)
-    )
-    parts = []
-    for name, rect in placed.items():
-        ext = extents(sketches[name])
-        dx, dy = rect.x - ext.x, rect.y - ext.y
-        parts += [
-            shapely.box(x0 + dx, y0 + dy, x1 + dx, y1 + dy)
-            for x0, y0, x1, y1 in sketches[name].group_extents()
-        ]
-    return empty_share(field_, parts)
-
-
 def compose_sheet1(
     solution: Solution, backend: Backend, lang: Language = "en", *, page: Page | None = None
 ) -> Sheet1:
@@ -2132,7 +2111,7 @@ def compose_sheet1(
     line under S says why where μ_S ≠ μ_l), grown into the room left
     (_grown_diagrams), and the tables. Of the arrangements that fit, the
     first whose field the linter's field-filled rule finds filled
-    (_empty_share ≤ EMPTY_MAX), where need be with the sheet laid out again
+    (laid_out_empty_share ≤ EMPTY_MAX), where need be with the sheet laid out again
     round the grown diagrams (their column kept as high as it was); else the
     one leaving least empty. Where nothing fits, _fallback draws the
     mechanism and the plans smaller still.
@@ -2236,7 +2215,7 @@ def compose_sheet1(
                         placed = {**placed, "diagrams": grown[1]}
                         layout = _with_diagrams(layout, page, gap, grown[1])
                         done_scales = {**done_scales, **_diagram_scales(done_drawn)}
-                    empty = _empty_share(page, done, placed, extents)
+                    empty = laid_out_empty_share(page, done, placed, extents)
                     if best is None or empty < best[0] - 1e-9:
                         result = Sheet1(
                             layout, done_scales, shrink=shrink, field=field, diagrams=done_drawn

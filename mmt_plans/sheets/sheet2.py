@@ -50,7 +50,7 @@ from ..render.backend import Backend
 from ..render.look import LineType
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
-from .common import EMPTY_MAX, empty_share, length_scale_step, scale_step, title_fields
+from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, scale_step, title_fields
 from .scales_record import Sheet2Scales
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
@@ -229,7 +229,15 @@ def _arrow_length(magnitude: float, largest: float) -> float:
 class _Drawing:
     """One drawing of sheet 2 in progress: a sketch, its labels, the state."""
 
-    def __init__(self, look: Any, state: PositionState, mu_l: float, lang: Language = "en") -> None:
+    def __init__(
+        self,
+        look: Any,
+        state: PositionState,
+        mu_l: float,
+        lang: Language = "en",
+        *,
+        turn_arcs: bool = True,
+    ) -> None:
         self.sk = Sketch(look)
         self.labels = Labels(self.sk, _TEXT, **_LABELLING, words=_index_words(lang))
         self.state = state
@@ -237,7 +245,7 @@ class _Drawing:
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
         # couples' arcs turned to leave their names room (`moment`); a compact
         # sheet's loaded mechanism keeps them at the first start
-        self.turn_arcs = True
+        self.turn_arcs = turn_arcs
 
     def mm(self, P: Any) -> np.ndarray:
         return _xy(_c(P)) / self.mu_l
@@ -486,8 +494,7 @@ def sketch_loaded_mechanism(
     (a turned arc's name may stand where such a sheet has no room left)."""
     state = fa.loads.state
     mech = state.mech
-    d = _Drawing(look, state, mu_l, lang)
-    d.turn_arcs = not compact
+    d = _Drawing(look, state, mu_l, lang, turn_arcs=not compact)
     with d.sk.group("force-mechanism", "mechanism"):
         d.links(mech.links, frame=True)
         largest = _largest_load(fa, mech.links, [fa.driving_link.balancing_vector])
@@ -1592,14 +1599,13 @@ class _Composer:
         steps.update({f"poly {name}": max(0, shrink) for name, _, _ in self.polygon_sets})
         return steps
 
-    def fill(self, steps: dict[str, int]) -> dict[str, int]:
-        """Enlarge the drawings a series step at a time while the sheet has
-        room: the mechanism with its groups, the mechanism, the lever, the
-        groups, each alone, the force polygons within their guide; a kind that
-        no longer fits is not tried again."""
+    def _fill_kinds(self) -> list[list[str]]:
+        """The kinds of drawing `fill` and `filled` enlarge together, in
+        turn: the mechanism with its groups, the groups, the lever, the
+        mechanism, each group, the driving link, the polygons, each polygon."""
         polys = [f"poly {name}" for name, _, _ in self.polygon_sets]
         groups = [f"group {g.name}" for g in self.fa.groups]
-        kinds: list[list[str]] = [
+        return [
             ["mech", *groups, "driving"],
             [*groups, "driving"],
             ["lever"],
@@ -1609,6 +1615,13 @@ class _Composer:
             polys,
             *([k] for k in polys),
         ]
+
+    def fill(self, steps: dict[str, int]) -> dict[str, int]:
+        """Enlarge the drawings a series step at a time while the sheet has
+        room: the mechanism with its groups, the mechanism, the lever, the
+        groups, each alone, the force polygons within their guide; a kind that
+        no longer fits is not tried again."""
+        kinds = self._fill_kinds()
         # every pass enlarges each kind left by a step or drops it, and no
         # scale goes past _FINEST: the passes are bounded
         for _ in range(_FILL_PASSES):
@@ -1712,10 +1725,7 @@ class _Composer:
         (`lettered`: unwall's far names stay near), until the field is filled
         or no step does."""
         empty = self.empty(steps)
-        polys = [f"poly {name}" for name, _, _ in self.polygon_sets]
-        groups = [f"group {g.name}" for g in self.fa.groups]
-        kinds = [["mech", *groups, "driving"], [*groups, "driving"], ["lever"], ["mech"]]
-        kinds += [*([k] for k in groups), ["driving"], polys, *([k] for k in polys)]
+        kinds = self._fill_kinds()
         while empty > EMPTY_MAX:
             for kind in kinds:
                 trial = {k: v - (k in kind) for k, v in steps.items()}
@@ -1735,19 +1745,7 @@ class _Composer:
         arranged = self.arrange(sketches)
         if arranged is None:
             return 1.0
-        frame, block = self.page.frame, self.page.title_block.rect
-        field_ = shapely.box(*frame.bounds).difference(
-            shapely.box(block.left, frame.bottom, frame.right, block.top)
-        )
-        parts = []
-        for name, rect in arranged[1].items():
-            ext = self.extent(sketches[name])
-            dx, dy = rect.x - ext.x, rect.y - ext.y
-            parts += [
-                shapely.box(x0 + dx, y0 + dy, x1 + dx, y1 + dy)
-                for x0, y0, x1, y1 in sketches[name].group_extents()
-            ]
-        return empty_share(field_, parts)
+        return laid_out_empty_share(self.page, sketches, arranged[1], self.extent)
 
     def _allowed(self, steps: dict[str, int], *, lever_max: bool = True) -> bool:
         if min(v for k, v in steps.items() if not k.startswith(("poly", "lever"))) < _FINEST:
