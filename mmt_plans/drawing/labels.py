@@ -27,6 +27,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Collection, Iterable, Sequence
 from contextlib import nullcontext
+from dataclasses import dataclass
 from typing import Any, cast
 
 import numpy as np
@@ -110,10 +111,15 @@ _LEADER_ALONG = (1.5, 8.0)  # a leader longer (mm) within this of a line runs al
 # thin lines a leader may cross where none crosses fewer: the last (a pole
 # ringed by a lever's arms and lines of action) before a name stands untied
 _LEADER_CROSSINGS = (2, 6, 12)
+# a leader's boxes asked about in blocks of this many, nearest first, then 4 times as many
+_LEADER_BLOCK = 64
 # what meets at a leader's foot (the arc and arrowhead of the ω it names, the
 # links at a joint) it leaves at this clearance, mm, not the one kept from
 # all else: it touches them there by design, and past the pin it crosses none
 _FOOT_CLEAR = 0.15
+# what touches a leader's foot lies within 0.05 mm of it: only what has its box
+# this near the foot (rounding kept) is measured
+_AT_FOOT = 0.05 + 1e-9
 # names that read alike (O and 0, o and 0, l and 1) stand at least this far
 # apart, mm, box to box (the sheet linter's names-unique)
 LOOKALIKE_MM = 15.0
@@ -1125,7 +1131,44 @@ class Labels:
     ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
         """Of the boxes centred at cx, cy, each led from ax, ay: the first free
         one whose leader crosses nothing, else the first whose leader crosses a
-        few thin lines; None if none is free or reachable."""
+        few thin lines; None if none is free or reachable. (Asked about in
+        blocks of boxes, nearest first, 4 times as many each time: a block
+        that holds a leader crossing nothing ends it; else each block's
+        leaders are kept for the few thin lines. Each box is measured alone,
+        so the pick is the one asking about all at once gives.)"""
+        kept: list[_Leaders] = []
+        start, size = 0, _LEADER_BLOCK
+        while start < cx.size:
+            part = slice(start, start + size)
+            led = self._leaders_of(cx[part], cy[part], ax[part], ay[part], w, h, drop, markup)
+            start, size = start + size, 4 * size
+            if led is None:
+                continue
+            found = led.first(0, self._runs_along)
+            if found is not None:
+                return found
+            kept.append(led)
+        # the first that crosses a few thin lines
+        for most in _LEADER_CROSSINGS:
+            for led in kept:
+                found = led.first(most, self._runs_along)
+                if found is not None:
+                    return found
+        return None
+
+    def _leaders_of(
+        self,
+        cx: np.ndarray,
+        cy: np.ndarray,
+        ax: np.ndarray,
+        ay: np.ndarray,
+        w: float,
+        h: float,
+        drop: float,
+        markup: str,
+    ) -> _Leaders | None:
+        """The free boxes of those centred at cx, cy (led from ax, ay) that a
+        leader reaches, with what each leader crosses; None if none is."""
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         cost = self._label_cost(x0, y0, x1, y1) + self._lookalike_cost(markup, x0, y0, x1, y1)
         free = np.flatnonzero(cost <= 1e-9)
@@ -1154,15 +1197,7 @@ class Labels:
             written = np.asarray(self.boxes, dtype=object)
             near = STRtree(written).query(clear, predicate="dwithin", distance=_FOOT_CLEAR)
             crossed[np.unique(near[0])] = np.iinfo(np.int64).max
-        # the first that crosses nothing, else the first that crosses a few thin lines
-        for most in (0, *_LEADER_CROSSINGS):
-            for i in np.flatnonzero(crossed <= most):
-                if self._runs_along(clear[i]):
-                    continue
-                k = free[i]
-                start = (float(ax[i]), float(ay[i]))
-                return (float(cx[k]), float(cy[k])), (start, (float(ex[i]), float(ey[i])))
-        return None
+        return _Leaders(cx[free], cy[free], ax, ay, ex, ey, clear, crossed)
 
     def _crossings(self, lines: np.ndarray) -> np.ndarray:
         """For each of `lines`, how many avoided lines it comes within the
@@ -1191,12 +1226,18 @@ class Labels:
         that runs over one of them crosses it."""
         if not self._obstacles or not len(clear):
             return crossed
-        shapes = np.asarray(self._obstacles, dtype=object)
-        lines = np.flatnonzero(shapely.get_type_id(shapes) != 0)  # a point keeps its clearance
         index = self._index()
+        shapes, lines, lb = index.shapes, *index.lines_bounds  # a point keeps its clearance
         crossed = crossed.copy()
         for fx, fy in np.unique(np.c_[ax, ay], axis=0):
-            at = lines[shapely.dwithin(shapes[lines], Point(fx, fy), 0.05)]
+            # (only those whose box comes within 0.05 mm of the foot are measured)
+            by = np.flatnonzero(
+                (lb[:, 0] <= fx + _AT_FOOT)
+                & (lb[:, 2] >= fx - _AT_FOOT)
+                & (lb[:, 1] <= fy + _AT_FOOT)
+                & (lb[:, 3] >= fy - _AT_FOOT)
+            )
+            at = lines[by[shapely.dwithin(shapes[lines[by]], Point(fx, fy), 0.05)]]
             if not at.size:
                 continue
             mine = np.flatnonzero((ax == fx) & (ay == fy))
@@ -1312,6 +1353,36 @@ def _segment_segment(s: np.ndarray, t: np.ndarray) -> np.ndarray:
     return np.where(crossing, 0.0, d)
 
 
+@dataclass(frozen=True)
+class _Leaders:
+    """Free boxes a leader reaches (centres cx, cy), each leader's foot (ax,
+    ay), end (ex, ey), line and how many lines it crosses (`crossed`)."""
+
+    cx: np.ndarray
+    cy: np.ndarray
+    ax: np.ndarray
+    ay: np.ndarray
+    ex: np.ndarray
+    ey: np.ndarray
+    lines: np.ndarray
+    crossed: np.ndarray
+
+    def first(
+        self, most: int, runs_along: Callable[[BaseGeometry], bool]
+    ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
+        """The first box whose leader crosses at most `most` lines and runs
+        along none (`runs_along`): its centre and the leader; else None."""
+        for i in np.flatnonzero(self.crossed <= most):
+            if runs_along(self.lines[i]):
+                continue
+            start = (float(self.ax[i]), float(self.ay[i]))
+            return (float(self.cx[i]), float(self.cy[i])), (
+                start,
+                (float(self.ex[i]), float(self.ey[i])),
+            )
+        return None
+
+
 # below this many (query, piece) pairs an index compares boxes in numpy
 # rather than asking its tree (the same pairs: a tree pays its building and
 # a geometry per query box)
@@ -1334,6 +1405,8 @@ class _ObstacleIndex:
     ) -> None:
         shapes = np.asarray(obstacles, dtype=object)
         kind = shapely.get_type_id(shapes)
+        self.shapes, self.kind = shapes, kind
+        self._lines_bounds: tuple[np.ndarray, np.ndarray] | None = None
         self.reach = np.asarray(clearance, dtype=float)
         # a polygon (measured whole) or a main line: never crossed by a leader
         self.uncrossable = (kind == 3) | (np.asarray(heavy, dtype=bool) if len(heavy) else False)
@@ -1381,6 +1454,15 @@ class _ObstacleIndex:
         self.piece_reach = self.reach[self.owner] if len(self.owner) else np.zeros(0)
         self.piece_upright = np.concatenate([np.zeros(self.n_segs, dtype=bool), self.upright])
         self._grown_columns = tuple(np.ascontiguousarray(c) for c in self.grown.T)
+
+    @property
+    def lines_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """The obstacles other than points (their indices) and their boxes
+        (x0, y0, x1, y1 rows), made at the first call."""
+        if self._lines_bounds is None:
+            lines = np.flatnonzero(self.kind != 0)
+            self._lines_bounds = lines, shapely.bounds(self.shapes[lines]).reshape(-1, 4)
+        return self._lines_bounds
 
     @property
     def tree(self) -> STRtree:
@@ -1483,22 +1565,16 @@ class _ObstacleIndex:
                 )
         if not qi.size:
             return clear
-        b = np.stack([x0, y0, x1, y1], axis=1)[qi]
         reach = self.piece_reach[pi]
         seg = pi < self.n_segs
-        if seg.all():
-            gap = _segment_box(self.segs[pi], b)
-            clear[qi[gap < reach]] = False
-            return clear
         solid = pi - self.n_segs
         upright = self.piece_upright[pi]
         if upright.any():
-            gap = _box_box(b[upright], self.whole_bounds[solid[upright]])
+            b = np.stack([x0, y0, x1, y1], axis=1)[qi[upright]]
+            gap = _box_box(b, self.whole_bounds[solid[upright]])
             clear[qi[upright][gap < reach[upright]]] = False
-        ask = seg & clear[qi]
-        if ask.any():
-            gap = _segment_box(self.segs[pi[ask]], b[ask])
-            clear[qi[ask][gap < reach[ask]]] = False
+        if seg.any():
+            self._segments_clear(clear, qi[seg], pi[seg], reach[seg], x0, y0, x1, y1)
         ask = ~seg & ~upright & clear[qi]
         if ask.any():
             rq = qi[ask]
@@ -1507,6 +1583,37 @@ class _ObstacleIndex:
             )
             clear[rq[gap < reach[ask]]] = False
         return clear
+
+    def _segments_clear(
+        self,
+        clear: np.ndarray,
+        qi: np.ndarray,
+        pi: np.ndarray,
+        reach: np.ndarray,
+        x0: np.ndarray,
+        y0: np.ndarray,
+        x1: np.ndarray,
+        y1: np.ndarray,
+    ) -> None:
+        """`clear` False for the boxes (qi) still clear that a segment (pi)
+        comes within `reach` of, as `_segment_box` measures it: an end of the
+        segment within reach first (the distance is no more than an end's:
+        those pairs are not measured whole), then the rest measured."""
+        ask = clear[qi]
+        if not ask.all():
+            qi, pi, reach = qi[ask], pi[ask], reach[ask]
+        s = self.segs[pi]
+        bx0, by0, bx1, by1 = x0[qi], y0[qi], x1[qi], y1[qi]
+        ex, ey = s[:, [0, 2]].T, s[:, [1, 3]].T
+        dx = np.maximum(np.maximum(bx0 - ex, ex - bx1), 0.0)
+        dy = np.maximum(np.maximum(by0 - ey, ey - by1), 0.0)
+        hit = np.hypot(dx, dy).min(axis=0) < reach
+        clear[qi[hit]] = False
+        rest = ~hit & clear[qi]
+        if rest.any():
+            qi, reach = qi[rest], reach[rest]
+            gap = _segment_box(s[rest], np.stack([x0[qi], y0[qi], x1[qi], y1[qi]], axis=1))
+            clear[qi[gap < reach]] = False
 
     def lines_near(self, lines: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(line, obstacle) pairs for two-point `lines`: those within each

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from shapely.geometry import LineString
 
 import mmt_plans
 from mmt_plans.drawing.layout import first_free
@@ -305,3 +306,134 @@ def test_caption_place_is_where_every_box_measured_puts_it() -> None:
         got, want = _caption_place(labels, corners, caption), every_box(labels, corners, caption)
         assert np.array_equal(got[0], want[0])
         assert (got[1] is None) == (want[1] is None)
+
+
+def _crowded_labels(seed: int):  # noqa: ANN202
+    """A placer over a random crowd of thin and main lines, rings, dots and
+    names written: most anchors there find no free place near them."""
+    from mmt_plans.drawing.labels import Labels
+    from mmt_plans.drawing.sketch import Sketch
+
+    rng = np.random.default_rng(seed)
+    sk = Sketch(RecordingBackend().look)
+    for _ in range(70):
+        a = rng.uniform(0.0, 60.0, size=2)
+        b = a + rng.uniform(-25.0, 25.0, size=2)
+        sk.line(tuple(a), tuple(b), "main" if rng.random() < 0.3 else "thin")
+    for _ in range(12):
+        sk.circle(tuple(rng.uniform(0.0, 60.0, size=2)), float(rng.uniform(0.8, 4.0)), "thin")
+    labels = Labels(sk, 3.5)
+    for k in range(10):
+        labels.place(tuple(rng.uniform(0.0, 60.0, size=2)), f"N_{{{k}}}")
+    return labels, rng
+
+
+def _leader_among_at_once(self, cx, cy, ax, ay, w, h, drop, markup):  # noqa: ANN001, ANN202
+    """Labels._leader_among as it read before it asked in blocks: every box at once."""
+    import shapely
+    from shapely import STRtree
+
+    from mmt_plans.drawing.labels import _FOOT_CLEAR, _LEADER_CROSSINGS, _LEADER_START
+
+    x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+    cost = self._label_cost(x0, y0, x1, y1) + self._lookalike_cost(markup, x0, y0, x1, y1)
+    free = np.flatnonzero(cost <= 1e-9)
+    free = free[self._clear(x0[free], y0[free], x1[free], y1[free])]
+    ax, ay = ax[free], ay[free]
+    px, py = np.clip(ax, x0[free], x1[free]), np.clip(ay, y0[free], y1[free])
+    length = np.hypot(px - ax, py - ay)
+    keep = length > _LEADER_START + 0.5
+    free, px, py, length, ax, ay = (v[keep] for v in (free, px, py, length, ax, ay))
+    if not free.size:
+        return None
+    ux, uy = (px - ax) / length, (py - ay) / length
+    ex, ey = px - 0.4 * ux, py - 0.4 * uy
+    starts = np.c_[ax + _LEADER_START * ux, ay + _LEADER_START * uy]
+    clear = shapely.linestrings(np.stack([starts, np.c_[ex, ey]], axis=1))
+    crossed = self._met_at_feet(clear, self._crossings(clear), ax, ay)
+    if self.boxes:
+        written = np.asarray(self.boxes, dtype=object)
+        near = STRtree(written).query(clear, predicate="dwithin", distance=_FOOT_CLEAR)
+        crossed[np.unique(near[0])] = np.iinfo(np.int64).max
+    for most in (0, *_LEADER_CROSSINGS):
+        for i in np.flatnonzero(crossed <= most):
+            if self._runs_along(clear[i]):
+                continue
+            k = free[i]
+            start = (float(ax[i]), float(ay[i]))
+            return (float(cx[k]), float(cy[k])), (start, (float(ex[i]), float(ey[i])))
+    return None
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_leaders_asked_in_blocks_pick_what_all_at_once_picks(
+    seed: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # _leader_among asks about a leader's boxes in blocks, nearest first, and
+    # stops at the first block holding a leader that crosses nothing: the
+    # place and the leader are those asking about every box at once gives
+    from mmt_plans.drawing import labels as mod
+
+    labels, rng = _crowded_labels(seed)
+    blocked, block = mod.Labels._leader_among, mod._LEADER_BLOCK
+    levels = set()
+    for _ in range(12):
+        anchor = tuple(rng.uniform(0.0, 60.0, size=2))
+        towards = tuple(rng.uniform(-1.0, 1.0, size=2))
+        w, h = float(rng.uniform(3.0, 12.0)), 3.5
+        got = []
+        for among, size in ((blocked, block), (blocked, 1), (_leader_among_at_once, block)):
+            monkeypatch.setattr(mod, "_LEADER_BLOCK", size)
+            monkeypatch.setattr(mod.Labels, "_leader_among", among)
+            got.append(labels._leader_place((anchor, towards, 1.5), w, h, 1.0))
+            got.append(labels._wide_leader_place((anchor, towards, 1.5), w, h, 1.0))
+        assert got[0::2] == [got[0]] * 3 and got[1::2] == [got[1]] * 3
+        for found in got[:2]:
+            if found is not None:
+                led = labels._crossings(np.array([LineString(found[1])]))[0]
+                levels.add(min(led, 1))
+            else:
+                levels.add(-1)
+    assert levels == {-1, 0, 1}  # none found, one crossing nothing, one crossing a few
+
+
+@pytest.mark.parametrize("seed", [4, 5])
+def test_what_touches_a_leaders_foot_is_found_by_its_box_first(seed: int) -> None:
+    # _met_at_feet measures only the lines whose boxes come within 0.05 mm
+    # of a foot: the counts are those of measuring every line at every foot
+    import shapely
+
+    labels, rng = _crowded_labels(seed)
+    index = labels._index()
+    shapes = np.asarray(labels._obstacles, dtype=object)
+    lines = np.flatnonzero(shapely.get_type_id(shapes) != 0)
+    # feet on the lines' ends and corners, where lines meet, and anywhere
+    ends = shapely.get_coordinates(shapes[lines])
+    feet = np.concatenate([ends[rng.integers(len(ends), size=30)], rng.uniform(0, 60, (10, 2))])
+    ax, ay = np.repeat(feet[:, 0], 8), np.repeat(feet[:, 1], 8)
+    turn = np.tile(np.radians(45.0 * np.arange(8)), len(feet))
+    leaders = shapely.linestrings(
+        np.stack(
+            [
+                np.c_[ax, ay] + 1.8 * np.c_[np.cos(turn), np.sin(turn)],
+                np.c_[ax, ay] + 9.0 * np.c_[np.cos(turn), np.sin(turn)],
+            ],
+            axis=1,
+        )
+    )
+    crossed = labels._crossings(leaders)
+    want = crossed.copy()
+    for fx, fy in np.unique(np.c_[ax, ay], axis=0):  # every line measured at every foot
+        at = lines[shapely.dwithin(shapes[lines], shapely.Point(fx, fy), 0.05)]
+        if not at.size:
+            continue
+        mine = np.flatnonzero((ax == fx) & (ay == fy))
+        weight = np.where(index.uncrossable[at] | np.isin(at, list(labels._leaders)), 10**6, 1)
+        gap = shapely.distance(leaders[mine][:, None], shapes[at][None, :])
+        reach = np.asarray(labels._clearance)[at]
+        kept = ((gap < reach) * weight).sum(axis=1)
+        hair = np.minimum(reach, 0.15)
+        want[mine] = np.maximum(want[mine] - kept, 0) + ((gap < hair) * weight).sum(axis=1)
+    got = labels._met_at_feet(leaders, crossed, ax, ay)
+    assert np.array_equal(got, want) and not np.array_equal(want, crossed)
+
