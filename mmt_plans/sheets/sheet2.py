@@ -651,6 +651,24 @@ def _wrapped(markup: str, width: float, look: Any) -> list[str]:
     return lines
 
 
+def _distance_outside(region: Any, points: np.ndarray) -> np.ndarray:
+    """The distance (mm) of `points` (x, y rows) outside `region` to it: of a
+    polygon the least to its edges, measured in numpy (within rounding of
+    shapely's measure, 1e-12 mm; _caption_place decides nothing closer than
+    1e-6 mm by it); of another shape as shapely measures it."""
+    if region.geom_type != "Polygon" or len(region.interiors):
+        return np.asarray(shapely.distance(shapely.points(points), region), dtype=float)
+    ring = shapely.get_coordinates(region.exterior)
+    px, py = points[:, 0], points[:, 1]
+    out = np.full(len(points), np.inf)
+    for (ax, ay), (bx, by) in zip(ring[:-1], ring[1:]):
+        vx, vy = bx - ax, by - ay
+        n2 = vx * vx + vy * vy
+        t = np.clip(((px - ax) * vx + (py - ay) * vy) / n2, 0.0, 1.0) if n2 > 0.0 else 0.0
+        out = np.minimum(out, np.hypot(px - (ax + t * vx), py - (ay + t * vy)))
+    return out
+
+
 def _caption_place(
     labels: Labels, corners: np.ndarray, caption: str
 ) -> tuple[np.ndarray, np.ndarray | None]:
@@ -671,7 +689,7 @@ def _caption_place(
     # the box holds the disc of radius min(w, h) / 2 round its centre and lies
     # within hypot(w, h) / 2 of it: where the centre's distance d says which
     # side of 3 mm the box is, by more than rounding, the box is not measured
-    d = shapely.distance(shapely.points(q[ask]), region)
+    d = _distance_outside(region, q[ask])
     near = d <= 3.0 + min(w, h) / 2 - 1e-6
     unsure = ~near & (d - math.hypot(w, h) / 2 <= 3.0 + 1e-6)
     b = ask[unsure]

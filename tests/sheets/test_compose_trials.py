@@ -437,3 +437,20 @@ def test_what_touches_a_leaders_foot_is_found_by_its_box_first(seed: int) -> Non
     got = labels._met_at_feet(leaders, crossed, ax, ay)
     assert np.array_equal(got, want) and not np.array_equal(want, crossed)
 
+
+def test_distance_outside_a_polygon_is_shapelys_within_rounding() -> None:
+    # _caption_place takes the distance of the grid's points outside a link's
+    # polygon in numpy: shapely's own to 1e-9 mm (it decides nothing closer
+    # than 1e-6 mm by it); a shape other than a polygon measured by shapely
+    import shapely
+
+    from mmt_plans.sheets.sheet2 import _distance_outside
+
+    rng = np.random.default_rng(21)
+    for n in (2, 3, 3, 4, 5, 8, 8):
+        region = shapely.convex_hull(shapely.multipoints(rng.uniform(0.0, 300.0, size=(n, 2))))
+        points = rng.uniform(-50.0, 350.0, size=(4000, 2))
+        outside = points[~shapely.contains_xy(region, points[:, 0], points[:, 1])]
+        want = shapely.distance(shapely.points(outside), region)
+        got = _distance_outside(region, outside)
+        assert np.abs(got - want).max() <= 1e-9 and want.max() > 10.0
