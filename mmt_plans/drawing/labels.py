@@ -183,6 +183,7 @@ class Labels:
         # the lettering as the sheet's language writes it (F_in4 is F_i4 on a
         # Ukrainian sheet): measured and written so, where it is placed
         self._say = words or (lambda markup: markup)
+        self._widths: dict[tuple[str, float], float] = {}  # `width` of (markup, size)
         # labels side by side keep `spacing` mm apart; None: a word space (else they read as one)
         self.spacing = (
             sketch.look.lettering.advance_width(" ", size) + 0.2 if spacing is None else spacing
@@ -402,10 +403,14 @@ class Labels:
         return np.c_[cx[k], cy[k]]
 
     def width(self, markup: str) -> float:
-        """The width of the lettering, mm (of its longest line)."""
-        probe = RecordingBackend(look=self.sketch.look)
-        lines = self._say(markup).split("\n")
-        return max(probe.rich_text((0.0, 0.0), line, self.size) for line in lines)
+        """The width of the lettering, mm (of its longest line); measured once
+        a markup and letter height (a retry writes the same names again)."""
+        key = (markup, self.size)
+        if key not in self._widths:
+            probe = RecordingBackend(look=self.sketch.look)
+            lines = self._say(markup).split("\n")
+            self._widths[key] = max(probe.rich_text((0.0, 0.0), line, self.size) for line in lines)
+        return self._widths[key]
 
     def later(
         self,

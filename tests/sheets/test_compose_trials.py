@@ -454,3 +454,21 @@ def test_distance_outside_a_polygon_is_shapelys_within_rounding() -> None:
         want = shapely.distance(shapely.points(outside), region)
         got = _distance_outside(region, outside)
         assert np.abs(got - want).max() <= 1e-9 and want.max() > 10.0
+
+
+def test_a_labels_width_kept_is_the_width_measured_at_its_size() -> None:
+    # Labels.width keeps each markup's width at each letter height: asked
+    # again, and at another height (the smaller figures), it is a fresh measure
+    from mmt_plans.drawing.labels import Labels
+    from mmt_plans.drawing.sketch import Sketch
+
+    def fresh(markup: str, size: float) -> float:
+        probe = RecordingBackend(look=RecordingBackend().look)
+        return max(probe.rich_text((0.0, 0.0), line, size) for line in markup.split("\n"))
+
+    labels = Labels(Sketch(RecordingBackend().look), 3.5)
+    for markup in ("F_{in4}", "R_{12}^{n}", "d,\ns_{5}", "F_{in4}"):
+        for size in (3.5, 2.5, 3.5):
+            labels.size = size
+            assert labels.width(markup) == fresh(markup, size)
+    assert fresh("F_{in4}", 2.5) < fresh("F_{in4}", 3.5)
