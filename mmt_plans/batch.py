@@ -19,6 +19,7 @@ Hygiene:
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import hashlib
 import io
@@ -605,6 +606,22 @@ def _worker_collector() -> None:
     gc.set_threshold(*_WORKER_GC_THRESHOLD)
 
 
+@contextlib.contextmanager
+def _collector_of_items() -> Iterator[None]:
+    """The items done in this process (--jobs 1, or one file) with a worker's
+    collector (_worker_collector); the process's own settings back after."""
+    import gc
+
+    kept, frozen = gc.get_threshold(), gc.get_freeze_count()
+    _worker_collector()
+    try:
+        yield
+    finally:
+        if not frozen:  # a caller that froze its objects keeps them frozen
+            gc.unfreeze()
+        gc.set_threshold(*kept)
+
+
 def run_batch(
     files: Sequence[Path],
     out: str | os.PathLike[str],
@@ -650,10 +667,11 @@ def run_batch(
         index.append(i)
     jobs = max(1, jobs or os.cpu_count() or 1)
     if jobs == 1 or len(tasks) <= 1:
-        for i, task in zip(index, tasks):
-            results[i] = _run(task)
-            if progress:
-                progress(results[i])  # type: ignore[arg-type]
+        with _collector_of_items():
+            for i, task in zip(index, tasks):
+                results[i] = _run(task)
+                if progress:
+                    progress(results[i])  # type: ignore[arg-type]
     else:
         pool = ProcessPoolExecutor(
             max_workers=min(jobs, len(tasks)),

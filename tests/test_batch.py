@@ -266,3 +266,19 @@ def test_a_worker_collects_garbage_less_often(monkeypatch):
     finally:
         gc.unfreeze()
         gc.set_threshold(*kept)
+
+
+def test_items_done_in_process_leave_the_collector_as_it_was(tmp_path):
+    import gc
+
+    from mmt_plans import batch
+
+    kept, frozen = gc.get_threshold(), gc.get_freeze_count()
+    seen = []
+    sample = Path(__file__).resolve().parents[1] / "samples" / "offset_slider_crank.toml"
+    results = batch.run_batch(
+        [sample], tmp_path / "out", jobs=1, formats=("svg",), progress=lambda r: seen.append(gc.get_threshold())
+    )
+    assert results[0].ok, results[0].message
+    assert seen == [batch._WORKER_GC_THRESHOLD]
+    assert gc.get_threshold() == kept and gc.get_freeze_count() == frozen
