@@ -28,6 +28,7 @@ import math
 import os
 import signal
 import stat
+import threading
 import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor, as_completed
@@ -606,20 +607,33 @@ def _worker_collector() -> None:
     gc.set_threshold(*_WORKER_GC_THRESHOLD)
 
 
+_IN_PROCESS = threading.Lock()  # guards the count below and the collector's settings
+_in_process_runs: list[tuple[tuple[int, int, int], int]] = []  # (thresholds, frozen) kept
+
+
 @contextlib.contextmanager
 def _collector_of_items() -> Iterator[None]:
     """The items done in this process (--jobs 1, or one file) with a worker's
-    collector (_worker_collector); the process's own settings back after."""
+    collector (_worker_collector); the process's own settings back when the
+    last of the runs in this process ends (runs in two threads at once share them)."""
     import gc
 
-    kept, frozen = gc.get_threshold(), gc.get_freeze_count()
-    _worker_collector()
+    with _IN_PROCESS:
+        if not _in_process_runs:
+            kept = cast("tuple[int, int, int]", gc.get_threshold())
+            _in_process_runs.append((kept, gc.get_freeze_count()))
+            _worker_collector()
+        else:
+            _in_process_runs.append(_in_process_runs[0])
     try:
         yield
     finally:
-        if not frozen:  # a caller that froze its objects keeps them frozen
-            gc.unfreeze()
-        gc.set_threshold(*kept)
+        with _IN_PROCESS:
+            kept, frozen = _in_process_runs.pop()
+            if not _in_process_runs:
+                if not frozen:  # a caller that froze its objects keeps them frozen
+                    gc.unfreeze()
+                gc.set_threshold(*kept)
 
 
 def run_batch(

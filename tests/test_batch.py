@@ -282,3 +282,17 @@ def test_items_done_in_process_leave_the_collector_as_it_was(tmp_path):
     assert results[0].ok, results[0].message
     assert seen == [batch._WORKER_GC_THRESHOLD]
     assert gc.get_threshold() == kept and gc.get_freeze_count() == frozen
+
+
+def test_in_process_runs_in_two_threads_share_the_collector():
+    """The settings come back when the last run in the process ends, not the first."""
+    import gc
+
+    from mmt_plans import batch
+
+    kept, frozen = gc.get_threshold(), gc.get_freeze_count()
+    with batch._collector_of_items():
+        with batch._collector_of_items():
+            assert gc.get_threshold() == batch._WORKER_GC_THRESHOLD
+        assert gc.get_threshold() == batch._WORKER_GC_THRESHOLD
+    assert gc.get_threshold() == kept and gc.get_freeze_count() == frozen
