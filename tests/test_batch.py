@@ -220,3 +220,79 @@ def test_one_batch_item_composes_each_sheet_once(tmp_path, monkeypatch):
     result = process_file(sample, tmp_path / "item", formats=("svg",))
     assert result.ok, result.message
     assert sorted(calls) == [1, 2]
+
+
+def test_outputs_written_while_the_note_is_drawn_keep_their_order_and_errors(tmp_path):
+    """The sheets are written by the item's writing thread while the note is
+    drawn: the manifest still lists the outputs in the order made (results,
+    sheets, note); a sheet that cannot be written is the item's failure,
+    named by its stage, with no manifest; the other outputs are there."""
+    from mmt_plans.batch import MANIFEST_NAME, process_file, read_manifest
+
+    sample = Path(__file__).resolve().parents[1] / "samples" / "offset_slider_crank.toml"
+    result = process_file(sample, tmp_path / "item", formats=("svg", "pdf"))
+    assert result.ok, result.message
+    order = ["results.json", "sheet1.svg", "sheet1.pdf", "sheet2.svg", "sheet2.pdf", "note.pdf"]
+    assert [Path(p).name for p in result.written] == order
+    manifest = read_manifest(tmp_path / "item")
+    assert manifest is not None and list(manifest["outputs"]) == order
+    assert all(manifest["outputs"][n] == (tmp_path / "item" / n).stat().st_size for n in order)
+
+    (tmp_path / "bad").mkdir()
+    (tmp_path / "bad" / "sheet2.pdf").mkdir()  # a folder where the sheet goes: refused
+    failed = process_file(sample, tmp_path / "bad", formats=("svg", "pdf"))
+    assert not failed.ok
+    assert failed.message is not None and failed.message.startswith("sheets: ")
+    assert "sheet2.pdf" in failed.message
+    assert not (tmp_path / "bad" / MANIFEST_NAME).exists()
+    assert (tmp_path / "bad" / "note.pdf").is_file() and (tmp_path / "bad" / "sheet2.svg").is_file()
+    assert not [p.name for p in (tmp_path / "bad").iterdir() if ".tmp-" in p.name]
+
+
+def test_a_worker_collects_garbage_less_often(monkeypatch):
+    """A batch worker freezes what it imported and raises the young
+    generation's threshold (its items' outputs are the same: the keys'
+    comparison against main, and the batch tests here run through workers)."""
+    import gc
+
+    from mmt_plans import batch
+
+    kept = gc.get_threshold()
+    try:
+        batch._worker_collector()
+        assert gc.get_threshold() == batch._WORKER_GC_THRESHOLD
+        assert gc.get_threshold()[0] > kept[0]
+        assert gc.get_freeze_count() > 10_000  # the package and its libraries
+    finally:
+        gc.unfreeze()
+        gc.set_threshold(*kept)
+
+
+def test_items_done_in_process_leave_the_collector_as_it_was(tmp_path):
+    import gc
+
+    from mmt_plans import batch
+
+    kept, frozen = gc.get_threshold(), gc.get_freeze_count()
+    seen = []
+    sample = Path(__file__).resolve().parents[1] / "samples" / "offset_slider_crank.toml"
+    results = batch.run_batch(
+        [sample], tmp_path / "out", jobs=1, formats=("svg",), progress=lambda r: seen.append(gc.get_threshold())
+    )
+    assert results[0].ok, results[0].message
+    assert seen == [batch._WORKER_GC_THRESHOLD]
+    assert gc.get_threshold() == kept and gc.get_freeze_count() == frozen
+
+
+def test_in_process_runs_in_two_threads_share_the_collector():
+    """The settings come back when the last run in the process ends, not the first."""
+    import gc
+
+    from mmt_plans import batch
+
+    kept, frozen = gc.get_threshold(), gc.get_freeze_count()
+    with batch._collector_of_items():
+        with batch._collector_of_items():
+            assert gc.get_threshold() == batch._WORKER_GC_THRESHOLD
+        assert gc.get_threshold() == batch._WORKER_GC_THRESHOLD
+    assert gc.get_threshold() == kept and gc.get_freeze_count() == frozen

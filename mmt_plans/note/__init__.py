@@ -64,6 +64,7 @@ __all__ = [
     "note_content",
     "note_document",
     "note_form",
+    "note_pdf",
     "note_svgs",
     "number",
     "plain",
@@ -232,6 +233,17 @@ def write_note(
     fixed dates: note/pdf.py), in forms 2/2a or 5/5a (note_form), from the
     sheets `composed` (composed here when not given)."""
     from ..files import write_bytes_atomic
+
+    return write_bytes_atomic(Path(target), note_pdf(analysis, lang, form, composed))
+
+
+def note_pdf(
+    analysis: Solution,
+    lang: Language = "en",
+    form: str | None = None,
+    composed: ComposedSheets | None = None,
+) -> bytes:
+    """The bytes write_note writes."""
     from .pdf import PdfDocument
 
     # drawn straight onto the PDF's pages: the same calls a recording of the
@@ -240,7 +252,6 @@ def write_note(
     document = PdfDocument()
     try:
         draw_note(analysis, lambda w, h, title: document.page(w, h, look), lang, form, composed)
-        data = document.finish()
+        return document.finish()
     finally:
         document.close()
-    return write_bytes_atomic(Path(target), data)

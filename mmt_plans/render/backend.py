@@ -251,23 +251,29 @@ class Backend(abc.ABC):
         self._check_text(size, anchor, valign)
         let = self.look.lettering
         small = let.index_size(size)
+        advance = let.advance_width
         sized = [(t, kind, size if kind == "normal" else small) for t, kind in runs]
-        advances = [let.advance_width(t, s) for t, _, s in sized]
-        lean = math.tan(math.radians(let.slant_deg)) * size if runs else 0.0
+        advances = [advance(t, s) for t, _, s in sized]
+        lean = let.lean * size if runs else 0.0
         total = sum(advances) + lean
-        along = {"left": 0.0, "center": -total / 2.0, "right": -total}[anchor]
-        across = {"baseline": 0.0, "middle": -size / 2.0, "top": -size}[valign]
-        a = math.radians(rotation)
-        ca, sa = math.cos(a), math.sin(a)
+        along = 0.0 if anchor == "left" else -total / 2.0 if anchor == "center" else -total
+        across = 0.0 if valign == "baseline" else -size / 2.0 if valign == "middle" else -size
+        if rotation:
+            a = math.radians(rotation)
+            ca, sa = math.cos(a), math.sin(a)
+        else:  # cos 0 and sin 0, exactly
+            ca, sa = 1.0, 0.0
         x, y = as_point(pos)
         offset = along
         for (text, kind, s), adv in zip(sized, advances):
-            lift = {"normal": 0.0, "sub": -0.3 * size, "sup": size - s}[kind] + across
+            lift = (
+                0.0 if kind == "normal" else -0.3 * size if kind == "sub" else size - s
+            ) + across
             # Renderers drop spaces at the ends of a text element (SVG does),
             # so they become offsets here.
             body = text.strip(" ")
             if body:
-                start = offset + let.advance_width(text[: len(text) - len(text.lstrip(" "))], s)
+                start = offset + advance(text[: len(text) - len(text.lstrip(" "))], s)
                 self.text(
                     (x + start * ca - lift * sa, y + start * sa + lift * ca),
                     body,

@@ -180,7 +180,7 @@ class CairoPage(Backend):
         self._check_text(size, anchor, valign, max_width)
         let = self.look.lettering
         content = str(content)
-        squeeze = let.squeeze(content, size, max_width)
+        squeeze = 1.0 if max_width is None else let.squeeze(content, size, max_width)
         lean = self._lean
         # as render/svg.py: offsets along and across the baseline (y up)
         if anchor == "left":
@@ -188,9 +188,12 @@ class CairoPage(Backend):
         else:
             along = (-lean * size / 2.0 if anchor == "center" else -lean * size) * squeeze
         across = 0.0 if valign == "baseline" else -size / 2.0 if valign == "middle" else -size
-        a = math.radians(rotation)
-        ca, sa = math.cos(a), math.sin(a)
         x, y = as_point(pos)
+        if rotation:
+            a = math.radians(rotation)
+            ca, sa = math.cos(a), math.sin(a)
+        else:  # cos 0 and sin 0, exactly
+            a, ca, sa = 0.0, 1.0, 0.0
         bx = x + along * ca - across * sa
         by = y + along * sa + across * ca
         lib, ptr = self._lib, self._ptr
@@ -202,7 +205,7 @@ class CairoPage(Backend):
             lib.cairo_scale(ptr, squeeze, 1.0)
         if let.slant_deg:
             lib.cairo_transform(ptr, self._shear._pointer)
-        lib.cairo_set_font_size(ptr, let.font_size(size))
+        lib.cairo_set_font_size(ptr, size / let.cap_height)  # let.font_size(size)
         width = self.ctx.text_extents(content)[4] if anchor != "left" else 0.0
         lib.cairo_move_to(
             ptr, 0.0 if anchor == "left" else -width / 2.0 if anchor == "center" else -width, 0.0

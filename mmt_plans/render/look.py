@@ -110,13 +110,21 @@ class Lettering:
         ems = kept.get(text)
         if ems is None:
             ems = kept[text] = sum(self.advances.get(ch, self.default_advance) for ch in text)
-        return ems * self.font_size(size)
+        return ems * (size / self.cap_height)  # ems * font_size(size)
 
     def natural_width(self, text: str, size: float) -> float:
         """Width of one line of `text` at `size`, in mm, slant included."""
         # The slant moves the top of the last letter to the right.
-        lean = math.tan(math.radians(self.slant_deg)) * size if text else 0.0
+        lean = self.lean * size if text else 0.0
         return self.advance_width(text, size) + lean
+
+    @property
+    def lean(self) -> float:
+        """tan of the slant: how far a letter's top leans right per mm of height."""
+        found = self.__dict__.get("_lean")  # worked out once (beside the fields)
+        if found is None:
+            found = self.__dict__["_lean"] = math.tan(math.radians(self.slant_deg))
+        return found  # type: ignore[no-any-return]
 
     def index_size(self, size: float) -> float:
         """Lettering size of indices: the next smaller standard size; indices of
@@ -135,14 +143,18 @@ class Lettering:
         """Horizontal scale (<= 1) that narrows `text` into max_width; never below min_squeeze."""
         if max_width is None:
             return 1.0
-        natural = self.natural_width(text, size)
+        return self._narrowed(self.natural_width(text, size), max_width)
+
+    def _narrowed(self, natural: float, max_width: float) -> float:
+        """squeeze() of a line `natural` mm wide."""
         if natural <= max_width or natural == 0.0:
             return 1.0
         return max(self.min_squeeze, max_width / natural)
 
     def width(self, text: str, size: float, max_width: float | None = None) -> float:
         """Drawn width of one line: natural, or narrowed to fit max_width."""
-        return self.natural_width(text, size) * self.squeeze(text, size, max_width)
+        natural = self.natural_width(text, size)
+        return natural if max_width is None else natural * self._narrowed(natural, max_width)
 
     def block_height(self, lines: int, size: float) -> float:
         """Height from the top of the first line's capitals to the last baseline."""

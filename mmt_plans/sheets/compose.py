@@ -22,10 +22,10 @@ from typing import Any
 
 from ..drawing.page import Page
 from ..errors import MmtError
-from ..files import ensure_dir
+from ..files import ensure_dir, write_bytes_atomic
 from ..i18n import Language
 from ..render.look import Look
-from ..render.output import FORMATS, write_drawing
+from ..render.output import FORMATS, render
 from ..render.recording import Call, RecordingBackend
 from ..solution import Solution
 from .scales_record import Sheet1Scales, Sheet2Scales
@@ -39,6 +39,7 @@ __all__ = [
     "SheetNotAvailable",
     "available_sheets",
     "compose",
+    "rendered_composed",
     "write_composed",
     "write_sheets",
 ]
@@ -159,6 +160,20 @@ def write_composed(
     (render's factory by format: svg, pdf, png, dxf); returns the paths. A
     sheet that could not be composed raises its error before any sheet is
     written, so a failed run leaves no sheet of it behind."""
+    files = rendered_composed(composed, solution, formats, sheets)
+    out = ensure_dir(out_dir)
+    return [write_bytes_atomic(out / name, data) for name, data in files]
+
+
+def rendered_composed(
+    composed: ComposedSheets,
+    solution: Solution,
+    formats: Sequence[str] = ("svg", "pdf", "png"),
+    sheets: Iterable[int] = (1,),
+) -> list[tuple[str, bytes]]:
+    """(file name, bytes) of sheet<N>.<format> for the composed sheets
+    `sheets`, in the order write_composed writes them (a sheet's error
+    raised before any is rendered); batch writes them while the note is drawn."""
     formats = tuple(formats)
     unknown = [f for f in formats if f not in FORMATS]
     if unknown:
@@ -167,13 +182,12 @@ def write_composed(
         )
     wanted = list(sheets)
     recordings = {n: composed.sheet(n).recording() for n in wanted}  # raises a sheet's error
-    out = ensure_dir(out_dir)
-    written: list[Path] = []
+    files: list[tuple[str, bytes]] = []
     for n, recording in recordings.items():
         title = f"{solution.mechanism.title_in(composed.lang)}, sheet {n}"
         for fmt in formats:
-            written.append(write_drawing(recording, out / f"sheet{n}.{fmt}", fmt, title))
-    return written
+            files.append((f"sheet{n}.{fmt}", render(recording, fmt, title)))
+    return files
 
 
 def write_sheets(
