@@ -1,7 +1,7 @@
 """Drawing interface and renderers.
 
 `Backend` is the interface sheets draw through; `RecordingBackend` keeps the
-calls for tests; `SvgBackend` (render/svg.py, written directly)
+calls for tests; `SvgBackend` (render/svg.py, the only user of svgwrite)
 writes SVG; `export` turns SVG into PDF and PNG with cairosvg.
 """
 
@@ -50,7 +50,7 @@ __all__ = [
 
 
 def __getattr__(name: str) -> Any:
-    # the SVG writer and cairosvg load only when a renderer is asked for.
+    # svgwrite and cairosvg load only when a renderer is asked for.
     if name == "SvgBackend":
         from .svg import SvgBackend
 

@@ -1,7 +1,7 @@
 """One factory by format: a drawing recorded once (`RecordingBackend`) is
 written as SVG, PDF, PNG or DXF. The only place that chooses a renderer.
 
-SVG written directly (render/svg.py), PDF replayed onto a Cairo surface
+SVG through svgwrite (render/svg.py), PDF replayed onto a Cairo surface
 (render/cairo_pdf.py), PNG from the SVG through cairosvg (render/export.py), DXF through ezdxf (render/dxf.py); each renderer
 is imported when its format is asked for, so that a command that draws no
 sheet loads none of them.

@@ -1,17 +1,10 @@
-"""The SVG renderer.
+"""The SVG renderer: the only module that imports svgwrite.
 
 The document is sized in millimetres (width="841mm" height="594mm") with a
 viewBox in millimetres, so one user unit is one millimetre of paper. The
 drawing interface has y up; `_xy` is the one place where it becomes SVG's
 y down. Output is repeatable: numbers at a fixed precision, ids counted per
 document, nothing taken from the clock.
-
-The document is written as text while it is drawn, element by element, in
-the bytes svgwrite gave (its elements serialised through ElementTree:
-attributes sorted by name, empty ones left out, `<x ... />` for an element
-without content, ElementTree's escaping); building svgwrite's element tree
-and serialising it took about half of writing a sheet. The tests compare
-the two on every primitive (tests/render/test_svg_backend.py).
 """
 
 from __future__ import annotations
@@ -22,6 +15,9 @@ import re
 from collections import Counter
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
+
+import svgwrite
 
 from .backend import Backend, Fill, HAlign, LineType, PointLike, VAlign, as_point
 from .look import Look
@@ -30,48 +26,10 @@ __all__ = ["SvgBackend"]
 
 _ID_START = re.compile(r"[A-Za-z_]")
 _ID_BAD = re.compile(r"[^A-Za-z0-9_.-]+")
-_XMLNS = (
-    ("xmlns", "http://www.w3.org/2000/svg"),
-    ("xmlns:ev", "http://www.w3.org/2001/xml-events"),
-    ("xmlns:xlink", "http://www.w3.org/1999/xlink"),
-)
-
-
-def _escape_text(text: str) -> str:
-    """Character data as ElementTree escapes it."""
-    if "&" in text:
-        text = text.replace("&", "&amp;")
-    if "<" in text:
-        text = text.replace("<", "&lt;")
-    if ">" in text:
-        text = text.replace(">", "&gt;")
-    return text
-
-
-def _escape_attribute(text: str) -> str:
-    """An attribute's value as ElementTree escapes it."""
-    text = _escape_text(text)
-    if '"' in text:
-        text = text.replace('"', "&quot;")
-    if "\r" in text:
-        text = text.replace("\r", "&#13;")
-    if "\n" in text:
-        text = text.replace("\n", "&#10;")
-    if "\t" in text:
-        text = text.replace("\t", "&#09;")
-    return text
-
-
-def _start(name: str, attrs: dict[str, str]) -> str:
-    """An element's start tag without its end (`<line x1="0" ...`):
-    attributes sorted by name, empty values left out, as svgwrite wrote them."""
-    return f"<{name}" + "".join(
-        f' {key}="{_escape_attribute(value)}"' for key, value in sorted(attrs.items()) if value
-    )
 
 
 class SvgBackend(Backend):
-    """Writes the SVG document as it is drawn; `to_string()` / `save()` give it."""
+    """Draws into an svgwrite.Drawing; `to_string()` / `save()` give the SVG."""
 
     def __init__(
         self,
@@ -87,49 +45,32 @@ class SvgBackend(Backend):
         # Ids this document uses itself, so that groups cannot take them.
         self._ids: Counter[str] = Counter({"paper": 1, "sheet": 1})
         w, h = self._num(self.width), self._num(self.height)
-        root = {
-            "baseProfile": "full",
-            "height": f"{h}mm",
-            "version": "1.1",
-            "viewBox": f"0 0 {w} {h}",
-            "width": f"{w}mm",
-            **dict(_XMLNS),
-        }
-        # the parts of the document so far; a group's start tag is completed
-        # (`>` or ` />`) when it ends or its first element comes
-        self._parts: list[str] = [_start("svg", root) + ">"]
-        if title:
-            self._parts.append(f"<title>{_escape_text(title)}</title>")
-        self._parts.append("<defs />")
-        paper = {"fill": self.look.background, "height": h, "id": "paper", "width": w}
-        self._parts.append(_start("rect", {**paper, "x": "0", "y": "0"}) + " />")
-        lettering = self.look.lettering
-        self._done: str | None = None  # the document, once to_string() finished it
-        # the indices in _parts of the groups begun and not ended, the sheet's first
-        self._open: list[int] = []
-        self._open_element(
-            "g",
-            {
-                "id": "sheet",
-                "fill": "none",
-                "stroke": self.look.ink,
-                "stroke-linecap": "round",
-                "stroke-linejoin": "round",
-                "font-family": ", ".join(_quote_family(f) for f in lettering.families),
-            },
+        self._dwg = svgwrite.Drawing(
+            size=(f"{w}mm", f"{h}mm"), viewBox=f"0 0 {w} {h}", profile="full", debug=False
         )
+        if title:
+            self._dwg.set_desc(title=title)
+        self._dwg.add(
+            self._dwg.rect(insert=("0", "0"), size=(w, h), fill=self.look.background, id="paper")
+        )
+        lettering = self.look.lettering
+        root = self._dwg.g(
+            id="sheet",
+            fill="none",
+            stroke=self.look.ink,
+            stroke_linecap="round",
+            stroke_linejoin="round",
+            font_family=", ".join(_quote_family(f) for f in lettering.families),
+        )
+        self._dwg.add(root)
+        self._stack: list[Any] = [root]
         self._families = lettering.families  # the document's; a text in another names its own
 
     # --- output --------------------------------------------------------------
 
     def to_string(self) -> str:
         self.close()
-        if self._done is None:
-            self._close_element("g")  # the sheet
-            self._parts.append("</svg>")
-            self._done = "".join(self._parts)
-            self._parts = [self._done]
-        return '<?xml version="1.0" encoding="utf-8" ?>\n' + self._done + "\n"
+        return '<?xml version="1.0" encoding="utf-8" ?>\n' + self._dwg.tostring() + "\n"
 
     def save(self, path: str | os.PathLike[str]) -> Path:
         """Write the SVG to `path` atomically (files.write_text_atomic)."""
@@ -161,9 +102,9 @@ class SvgBackend(Backend):
         if line is None:
             return {"stroke": "none"}
         style = self.look.line(line)
-        attrs = {"stroke-width": self._num(style.width), "class": line}
+        attrs = {"stroke_width": self._num(style.width), "class_": line}
         if style.dash:
-            attrs["stroke-dasharray"] = " ".join(self._num(d) for d in style.dash)
+            attrs["stroke_dasharray"] = " ".join(self._num(d) for d in style.dash)
         return attrs
 
     def _fill(self, fill: Fill) -> dict[str, str]:
@@ -173,47 +114,26 @@ class SvgBackend(Backend):
         colour = self.look.ink if fill == "black" else self.look.background
         return {"fill": colour}
 
-    def _add(self, name: str, attrs: dict[str, str]) -> None:
-        """An element without content in the group open last."""
-        self._content_begins()
-        self._parts.append(_start(name, attrs) + " />")
-
-    def _content_begins(self) -> None:
-        """The open group gets an element: its start tag ends with `>`."""
-        if self._done is not None:
-            raise RuntimeError("the SVG is finished: to_string() was called")
-        if self._open and self._open[-1] == len(self._parts) - 1:
-            self._parts[-1] += ">"
-
-    def _open_element(self, name: str, attrs: dict[str, str]) -> None:
-        self._content_begins()
-        self._parts.append(_start(name, attrs))
-        self._open.append(len(self._parts) - 1)
-
-    def _close_element(self, name: str) -> None:
-        at = self._open.pop()
-        if at == len(self._parts) - 1:  # nothing in it
-            self._parts[-1] += " />"
-        else:
-            self._parts.append(f"</{name}>")
+    def _add(self, element: Any) -> None:
+        self._stack[-1].add(element)
 
     # --- the interface -------------------------------------------------------
 
     def line(self, start: PointLike, end: PointLike, line: LineType = "main") -> None:
         self._check_line(line)
         (x1, y1), (x2, y2) = self._xy(start), self._xy(end)
-        self._add("line", {"x1": x1, "x2": x2, "y1": y1, "y2": y2, **self._stroke(line)})
+        self._add(self._dwg.line(start=(x1, y1), end=(x2, y2), **self._stroke(line)))
 
     def polyline(self, points: Sequence[PointLike], line: LineType = "main") -> None:
         self._check_line(line)
-        self._add("path", {"d": self._path_points(points), **self._stroke(line)})
+        self._add(self._dwg.path(d=self._path_points(points), **self._stroke(line)))
 
     def polygon(
         self, points: Sequence[PointLike], line: LineType | None = "main", fill: Fill = "none"
     ) -> None:
         self._check_line(line, allow_none=True)
         d = self._path_points(points) + " Z"
-        self._add("path", {"d": d, **self._stroke(line), **self._fill(fill)})
+        self._add(self._dwg.path(d=d, **self._stroke(line), **self._fill(fill)))
 
     def circle(
         self, center: PointLike, radius: float, line: LineType | None = "main", fill: Fill = "none"
@@ -221,9 +141,14 @@ class SvgBackend(Backend):
         self._check_line(line, allow_none=True)
         if not radius > 0:
             raise ValueError(f"circle radius must be positive, got {radius}")
-        cx, cy = self._xy(center)
-        attrs = {"cx": cx, "cy": cy, "r": self._num(radius)}
-        self._add("circle", {**attrs, **self._stroke(line), **self._fill(fill)})
+        self._add(
+            self._dwg.circle(
+                center=self._xy(center),
+                r=self._num(radius),
+                **self._stroke(line),
+                **self._fill(fill),
+            )
+        )
 
     def arc(
         self,
@@ -257,7 +182,7 @@ class SvgBackend(Backend):
         d = "M {} {} A {} {} 0 {} 0 {} {}".format(
             *self._xy(at(start_deg)), r, r, large, *self._xy(at(start_deg + span))
         )
-        self._add("path", {"d": d, **self._stroke(line)})
+        self._add(self._dwg.path(d=d, **self._stroke(line)))
 
     def text(
         self,
@@ -292,29 +217,33 @@ class SvgBackend(Backend):
             transform += f" scale({self._num(squeeze)} 1)"
         if lettering.slant_deg:
             transform += f" skewX({self._num(-lettering.slant_deg)})"
-        attrs = {
-            "transform": transform,
-            "font-size": self._num(lettering.font_size(size)),
-            "text-anchor": {"left": "start", "center": "middle", "right": "end"}[anchor],
-            "fill": self.look.ink,
-            "stroke": "none",
-            "class": "lettering",
-        }
-        if lettering.families != self._families:
-            attrs["font-family"] = ", ".join(_quote_family(f) for f in lettering.families)
-        self._content_begins()
-        body = _escape_text(str(content))
-        start = _start("text", attrs)
-        self._parts.append(f"{start}>{body}</text>" if body else f"{start} />")
+        self._add(
+            self._dwg.text(
+                str(content),
+                transform=transform,
+                font_size=self._num(lettering.font_size(size)),
+                text_anchor={"left": "start", "center": "middle", "right": "end"}[anchor],
+                fill=self.look.ink,
+                stroke="none",
+                class_="lettering",
+                **(
+                    {}
+                    if lettering.families == self._families
+                    else {"font_family": ", ".join(_quote_family(f) for f in lettering.families)}
+                ),
+            )
+        )
 
     def _begin_group(self, id: str, cls: str | None) -> None:
         attrs = {"id": self._unique_id(id)}
         if cls:
-            attrs["class"] = cls
-        self._open_element("g", attrs)
+            attrs["class_"] = cls
+        group = self._dwg.g(**attrs)
+        self._add(group)
+        self._stack.append(group)
 
     def _end_group(self) -> None:
-        self._close_element("g")
+        self._stack.pop()
 
     def _unique_id(self, wanted: str) -> str:
         """An XML id from `wanted`, made unique by a counter of this document."""
