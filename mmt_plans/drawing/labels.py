@@ -171,8 +171,13 @@ class Labels:
         fine_far: bool = False,
         wide_leaders: bool = False,
         smaller: float | None = None,
+        short_ends: bool = False,
     ) -> None:
         self.sketch = sketch
+        # with `short_ends`, a segment too short to be led from along it (a
+        # plan's component amid the pole's lettering) is led from its ends
+        # too, in the last resort before its name stands far
+        self.short_ends = short_ends
         self.size = size
         # with `smaller` (a letter height below `size`, GOST's 2.5 mm at
         # least), a label that finds no free place near what it names and no
@@ -671,6 +676,28 @@ class Labels:
 
         return self._at_sizes(write)
 
+    def place_first(
+        self,
+        anchors: Sequence[tuple[PointLike, PointLike | None]],
+        markup: str,
+        *,
+        distance: float = 1.5,
+    ) -> BaseGeometry:
+        """Name a thing drawn at several places (a joint at each of a
+        mechanism's positions drawn in main lines), each an (anchor, towards)
+        pair, preferred first: `place` at the first where the name stands
+        near it or is led to it; where it stands far at every one, at the
+        first (as `place` alone writes it)."""
+        saved = self._state() if len(anchors) > 1 else None
+        for anchor, towards in anchors:
+            before = self.far
+            footprint = self.place(anchor, markup, towards=towards, distance=distance)
+            if self.far == before or saved is None:
+                return footprint
+            self._restore(saved)
+        anchor, towards = anchors[0]
+        return self.place(anchor, markup, towards=towards, distance=distance)
+
     def _at_sizes(self, write: Callable[[bool], BaseGeometry | None]) -> BaseGeometry:
         """`write(settle)` at the letter height `size`; where that finds no
         place near and no leader (and `smaller` is set), at `smaller` (with
@@ -1077,6 +1104,8 @@ class Labels:
             p, q = np.asarray(names[1], dtype=float), np.asarray(names[2], dtype=float)
             if float(np.hypot(*(q - p))) > 2.0 * _LEADER_START:
                 starts += [tuple(p + t * (q - p)) for t in (_WIDE_ALONG if wide else _ALONG)]
+            elif wide and self.short_ends:
+                starts += [tuple(p), tuple(q)]
         dirs = self._leader_dirs
         if towards is not None and math.hypot(*towards) > 1e-12:
             t = complex(towards[0], towards[1]) / math.hypot(*towards)

@@ -818,6 +818,37 @@ def _unlettered_mechanism(solution: Solution, mu_l: float, look: Any, lang: Lang
     return sk
 
 
+def _position_numbers(labels: Labels, solution: Solution, mu_l: float) -> None:
+    """Numbered positions of the crank pin, in smaller figures and out beyond
+    the pin's circle, so that "0" is not read as a pivot's "O"; an entry of the
+    sweep that is no numbered position (an extreme) gets none. Written last
+    (before the ω and ε labels, a number takes the room kept for one), and
+    where some stand far, all once more with those first (Labels.write_each)."""
+    mech = solution.mechanism
+    pts = solution.sweep.points
+    pivot = np.asarray(pts[mech.crank_pivot][0], dtype=float) / mu_l
+    kept = labels.size
+    labels.size = _SMALL
+    writes = []
+    for k, position in enumerate(solution.positions):
+        if position.index is None:
+            continue
+        p = np.asarray(pts[mech.crank_pin][k], dtype=float) / mu_l
+
+        def write(p: np.ndarray = p, number: str = str(position.index)) -> object:
+            return labels.place(p, number, towards=unit_vector(p - pivot), distance=3.0)
+
+        writes.append(write)
+    if len(mech.links) <= _SHORT_LINKS:
+        # where some stand far, all once more with those first: a number
+        # walled in by one written before it (or its leader) goes first
+        labels.write_each(writes)
+    else:  # a long chain: the usual order alone (see _SHORT_LINKS)
+        for write in writes:
+            write()
+    labels.size = kept
+
+
 def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language) -> Sketch:
     mech = solution.mechanism
     pts = solution.sweep.points
@@ -847,14 +878,25 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         # the crank's pivot named on the side away from the pin at position 0,
         # so that its "O" stands far from the position number "0"
         opposite = -unit_vector(at(mech.crank_pin, 0) - pivot)
+        # each joint named at position 0, else (walled in there by the lines
+        # of the other positions) at the first plan position where its name
+        # stands near it: a point drawn in main lines there too (a long chain
+        # at position 0 alone: see _SHORT_LINKS)
+        drawn_at = [0, *sorted({solution.entry(i) for i in solution.plan_positions} - {0})]
+        drawn_at = drawn_at if len(mech.links) <= _SHORT_LINKS else [0]
         for name in owners:
             if name in pts:
-                p = at(name, 0)
-                if name == mech.crank_pivot:
-                    towards = opposite
-                else:
-                    towards = unit_vector(unit_vector(p - pivot) + np.array([0.3, 0.6]))
-                labels.place(p, point_markup(name), towards=towards, distance=2.0)
+                anchors: list[tuple[np.ndarray, np.ndarray]] = []
+                for k in drawn_at:
+                    p = at(name, k)
+                    if any(float(np.hypot(*(p - q))) < 1e-6 for q, _ in anchors):
+                        continue  # a frame point: the same place at every position
+                    if name == mech.crank_pivot:
+                        towards = opposite
+                    else:
+                        towards = unit_vector(unit_vector(p - pivot) + np.array([0.3, 0.6]))
+                    anchors.append((p, towards))
+                labels.place_first(anchors, point_markup(name), distance=2.0)
         # ω and ε of every rotating link at the planned positions (seed 003
         # §1.6), each beside its own link on the side freest of the others and
         # of the joints' names; all drawn before their labels are written.
@@ -927,18 +969,10 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         # arrowhead) would take another's
         for tip, markup, towards, kept in sorted(queued, key=lambda q: q[3] is None):
             labels.later(tip, markup, towards, first=kept)
-        labels.write_later()
-        # Numbered positions of the crank pin, in smaller figures and out beyond
-        # the pin's circle, so that "0" is not read as a pivot's "O"; an entry
-        # of the sweep that is no numbered position (an extreme) gets none.
-        labels.size = _SMALL
-        for k in range(n):
-            index = solution.positions[k].index
-            if index is None:
-                continue
-            p = at(mech.crank_pin, k)
-            labels.place(p, str(index), towards=unit_vector(p - pivot), distance=3.0)
-        labels.size = _TEXT
+        # where some stand far, all once more with those first (Labels.write_later;
+        # a long chain keeps the one order: see _SHORT_LINKS)
+        labels.write_later(retry=len(mech.links) <= _SHORT_LINKS)
+        _position_numbers(labels, solution, mu_l)
         _mechanism_captions(sk, mu_l, lang)
     return sk
 
@@ -1010,6 +1044,7 @@ def sketch_plan(
         leader_dirs=FINE_LEADER_DIRS,
         leader_group=FINE_LEADER_GROUP,
         smaller=_SMALL if len(solution.mechanism.links) <= _SHORT_LINKS else None,
+        short_ends=len(solution.mechanism.links) <= _SHORT_LINKS,
     )
     # the acceleration components to name: start, end, name, by the head
     components: list[tuple[np.ndarray, np.ndarray, str, bool]] = []

@@ -229,3 +229,39 @@ def test_a_name_walled_in_is_written_in_the_smaller_figures_near_it():
     assert [c.size for c in written] == [2.5]
     assert labels.size == 3.5  # the next label at the usual height
     assert _findings(sk, ["label-near", "label-clear", "letter-height"]) == []
+
+
+
+def _walled_and_free() -> Sketch:
+    """The corridor of `_walled_in`, no label written, and 40 mm to its right
+    a pin in the open (the same point drawn at another position)."""
+    sk, _ = _walled_in(None)
+    sk.calls[:] = [c for c in sk.calls if c.naming is None and not isinstance(c, Text)]
+    sk.circle((37.0, 0.0), 1.0, "main")
+    return sk
+
+
+def test_a_name_of_a_point_drawn_twice_goes_where_it_stands_near():
+    # walled in at its first place, free at its second: written by the second
+    sk = _walled_and_free()
+    labels = Labels(sk, 3.5)
+    labels.place_first([((-3.0, 0.0), (1.0, 0.0)), ((37.0, 0.0), (1.0, 0.0))], "B")
+    assert labels.far == 0
+    (text,) = [c for c in sk.calls if isinstance(c, Text)]
+    assert text.naming is not None and math.dist(text.naming.anchor, (37.0, 0.0)) < 1e-9
+    assert _findings(sk, ["label-near", "label-clear"]) == []
+
+
+def test_a_name_far_at_every_place_is_written_as_place_writes_it_at_the_first():
+    # both places in the corridor: far at each, written as `place` alone
+    # writes it at the first, once (what the second try wrote taken back)
+    _, alone = _walled_in(None)
+    sk = _walled_and_free()
+    labels = Labels(sk, 3.5)
+    labels.place_first([((-3.0, 0.0), (1.0, 0.0)), ((3.0, 0.0), (1.0, 0.0))], "B")
+    assert labels.far == 1
+    (text,) = [c for c in sk.calls if isinstance(c, Text)]
+    assert text.naming is not None and math.dist(text.naming.anchor, (-3.0, 0.0)) < 1e-9
+    (expected,) = [c for c in alone.sketch.calls if isinstance(c, Text)]
+    assert text.bbox() == expected.bbox()
+    assert labels.boxes == alone.boxes

@@ -9,7 +9,8 @@ placer's last resorts (a tighter fine grid, a leader from further out) came
 ahead of a place far off; and seed tasks and hard cases, en and uk, whose
 sheet 1 broke it before an ω arc with no room for its name was tried shorter,
 a plan's short components were named among its images (crowded first) and a
-walled-in joint's name was tried in the smaller figures."""
+walled-in joint's name was tried in the smaller figures, and a joint walled in at
+position 0 named where it is drawn again (a plan position)."""
 
 from __future__ import annotations
 
@@ -64,6 +65,7 @@ def test_generated_sheet1_labels_near_what_they_name(seed):
 
 
 HARD = Path(__file__).resolve().parents[1] / "data" / "hard"
+LINT = Path(__file__).resolve().parents[1] / "data" / "lint"
 
 
 @pytest.mark.parametrize("lang", ["en", "uk"])
@@ -80,6 +82,9 @@ HARD = Path(__file__).resolve().parents[1] / "data" / "hard"
         # a joint walled in by lines: its name in the positions' smaller figures
         HARD / "crosshead_mid_chain.toml",  # "B" 11.2 mm
         HARD / "six_points_10mm_apart.toml",  # "k" 10.4 mm, "l" 10.7 mm
+        # joints 1.6 mm apart walled in at position 0 by the other positions'
+        # main lines: named where they are drawn again, at a plan position
+        LINT / "six_link_press_v01.toml",  # "B" 10.7 mm, "D" 11.0 mm
     ],
     ids=lambda p: p.stem,
 )
