@@ -44,6 +44,7 @@ __all__ = [
     "FINE_LEADER_DIRS",
     "FINE_LEADER_GROUP",
     "FINE_LEADER_RINGS",
+    "LabelCounts",
     "LOOKALIKE",
     "LOOKALIKE_MM",
     "NEAR_MM",
@@ -148,6 +149,14 @@ _RETRIES = 1
 # past _RETRIES, `write_later` writes the labels again only while at most
 # this many of them stand far (a few walled in, not a crowded drawing)
 _FEW_FAR = 2
+
+
+@dataclass(frozen=True)
+class LabelCounts:
+    """How well a drawing is lettered, the less the better (`Labels.counts`)."""
+
+    unsettled: int  # labels written where they cover something: no place was free
+    far: int  # labels written far from what they name with no leader: none reached
 
 
 class Labels:
@@ -450,7 +459,7 @@ class Labels:
             ("arrow", tuple(float(v) for v in start), markup, tuple(float(v) for v in end), along)
         )
 
-    def write_later(self, *, retry: bool | int = False) -> None:
+    def write_later(self, *, retry: bool | int = False, grow: bool = False) -> None:
         """Write the labels kept by `later`, `later_along` and `later_arrow`, in the order they came.
 
         With `retry`, where some of them found no place near what they name
@@ -462,7 +471,10 @@ class Labels:
         times (else _RETRIES), those that went far in the last order first
         each time, past _RETRIES only while at most _FEW_FAR stand far: a
         name walled in by one written before it then goes before that one,
-        and so on down a crowded cluster."""
+        and so on down a crowded cluster. Past _RETRIES an order is kept only
+        where it letters the drawing within the box the best order before did
+        (a drawing is fitted on a sheet by its box); with `grow` (a drawing
+        given the room round it on a laid-out sheet), whatever its box."""
         retries = _RETRIES if retry is True else int(retry)
         todo = list(self._later)
         self._later.clear()
@@ -478,6 +490,11 @@ class Labels:
         )
         order = best[1]
         written = self._written(saved)  # what the best order wrote, to put back
+        # the box the best of the first _RETRIES + 1 orders letters the
+        # drawing in: past them an order that letters past it (a leader
+        # further out) is not kept, so more orders never make a drawing
+        # larger (a sheet that held its drawings holds them still)
+        slot = self.lettered_bounds()
         for n in range(retries):
             # those that went far, first (already first: the same order writes the same)
             again = [*(order[i] for i in far), *(j for k, j in enumerate(order) if k not in far)]
@@ -488,13 +505,29 @@ class Labels:
             self._restore(saved)
             far = self._write_all([todo[j] for j in order], fine)
             if (self.unsettled - saved[-2], len(far)) < best[0]:
-                best = ((self.unsettled - saved[-2], len(far)), order)
-                written = self._written(saved)
-            if n + 1 >= _RETRIES and best[0][1] > _FEW_FAR:
+                bounds = self.lettered_bounds()
+                if grow or n < _RETRIES or _within(bounds, slot):
+                    best = ((self.unsettled - saved[-2], len(far)), order)
+                    written = self._written(saved)
+                    slot = bounds if n < _RETRIES else slot
+            if n + 1 >= _RETRIES and best[0][1] > _FEW_FAR and not grow:
                 break  # many stand far: crowded past what another order mends
         if order is not best[1]:  # the last order written is not the best: the best again
             self._restore(saved)
             self._put_back(written)
+
+    def lettered_bounds(self) -> np.ndarray:
+        """The box (x0, y0, x1, y1) of everything drawn and written: the
+        obstacles (leaders among them) and the lettering."""
+        self._sync()
+        shapes = np.asarray([*self._obstacles, *self.boxes], dtype=object)
+        if not len(shapes):
+            return np.zeros(4)
+        return np.asarray(shapely.total_bounds(shapes), dtype=float)
+
+    def counts(self) -> LabelCounts:
+        """How many labels found no free place, how many stand far."""
+        return LabelCounts(self.unsettled, self.far)
 
     def write_each(
         self,
@@ -1310,6 +1343,16 @@ class Labels:
         d = _point_segment(px, py, np.tile(segs, (n, 1))).reshape(n, len(segs))
         step = math.hypot(x1 - x0, y1 - y0) / (n - 1)
         return bool((((d <= reach).sum(axis=0) - 1) * step > most).any())
+
+
+def _within(bounds: np.ndarray, slot: np.ndarray) -> bool:
+    """Whether the box `bounds` (x0, y0, x1, y1) lies in the box `slot` (1e-6 mm kept for rounding)."""
+    return bool(
+        bounds[0] >= slot[0] - 1e-6
+        and bounds[1] >= slot[1] - 1e-6
+        and bounds[2] <= slot[2] + 1e-6
+        and bounds[3] <= slot[3] + 1e-6
+    )
 
 
 def _point_box(px: np.ndarray, py: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -3,10 +3,13 @@ then replayed where the layout puts it."""
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..render.recording import RecordingBackend
 from .page import Rect
+
+if TYPE_CHECKING:
+    from .labels import LabelCounts
 
 __all__ = ["Sketch", "PAD"]
 
@@ -20,6 +23,9 @@ class Sketch(RecordingBackend):
         super().__init__(841.0, 594.0, look)
         # each call's bounds, measured once: the layout asks for extents often
         self._bounds: dict[int, tuple[Any, tuple[float, float, float, float] | None]] = {}
+        # how well its labels found room, once they are written (Labels.counts):
+        # what a composer weighs when it chooses the drawing's scale
+        self.label_counts: LabelCounts | None = None
 
     def _call_bounds(self, c: Any) -> tuple[float, float, float, float] | None:
         hit = self._bounds.get(id(c))

@@ -24,7 +24,6 @@ from __future__ import annotations
 import math
 import random
 import re
-import weakref
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -32,7 +31,7 @@ from typing import Any
 import numpy as np
 import shapely
 
-from ..drawing.labels import Labels, arc_line
+from ..drawing.labels import LabelCounts, Labels, arc_line
 from ..drawing.layout import LayoutError, SheetLayout, pack
 from ..drawing.markup import equation_markup as _equation_markup
 from ..drawing.markup import force_markup, image_markup, point_markup
@@ -58,10 +57,6 @@ __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
 _TEXT = 3.5
 _TITLE = 5.0
 _PAD = 2.0
-# how many labels of a drawing found no free place (Labels.unsettled)
-_UNSETTLED: weakref.WeakKeyDictionary[Sketch, int] = weakref.WeakKeyDictionary()
-# how many labels of a drawing stand far from what they name, with no leader (Labels.far)
-_FAR: weakref.WeakKeyDictionary[Sketch, int] = weakref.WeakKeyDictionary()
 _ARROW = dict(head_length=3.5, head_width=1.2)
 _FAR_MM = 40.0  # a reaction applied farther than this from its group's points moves to them
 # where along an arm h its name is tried, in turn: the middle first, then out to
@@ -75,10 +70,11 @@ _LABELLING: dict[str, Any] = dict(
     spacing=None, leaders=True, fine=False, fine_far=True, wide_leaders=True
 )
 # how many times a drawing's labels are written again, those that stood far
-# in the last order first (Labels.write_later); 6 cleared five more seed
-# tasks but let chain_25_links's labels lead so far out at the coarsest
-# scales that its en sheet 2 no longer fitted: one until that is mended
-_RETRY_ORDERS = 1
+# in the last order first (Labels.write_later); an order kept only where it
+# letters the drawing within the box the first order did (its leaders no
+# further out), so the drawing's size is the first order's: chain_25_links's
+# sheet 2 fits at the coarsest scales as with one order
+_RETRY_ORDERS = 6
 # where along a force's arrow its name is tried beside the shaft (after round
 # its head), in turn: out to near both ends, where other arrows leave room
 _SHAFT_ALONG = (0.5, 0.35, 0.65, 0.2, 0.8, 0.1)
@@ -237,8 +233,13 @@ class _Drawing:
         lang: Language = "en",
         *,
         turn_arcs: bool = True,
+        grow: bool = False,
     ) -> None:
         self.sk = Sketch(look)
+        # with `grow`, its labels written in the order that letters them best
+        # whatever box it takes (Labels.write_later): the drawing given the
+        # room round it on the laid-out sheet (_Composer.regrown)
+        self.grow = grow
         self.labels = Labels(self.sk, _TEXT, **_LABELLING, words=_index_words(lang))
         self.state = state
         self.mu_l = mu_l
@@ -456,9 +457,8 @@ class _Drawing:
                 self.later(self.mm(f.point), f"{force_markup(f.name)} = 0", np.array([0.0, 1.0]))
 
     def finish(self, title: str, notes: Sequence[str] = ()) -> Sketch:
-        self.labels.write_later(retry=_RETRY_ORDERS)
-        _UNSETTLED[self.sk] = self.labels.unsettled
-        _FAR[self.sk] = self.labels.far
+        self.labels.write_later(retry=_RETRY_ORDERS, grow=self.grow)
+        self.sk.label_counts = self.labels.counts()
         ext = self.sk.extent()
         y = ext.bottom - 5.0
         for note in notes:
@@ -486,15 +486,21 @@ def _largest_load(
 
 
 def sketch_loaded_mechanism(
-    fa: ForceAnalysis, mu_l: float, look: Any, lang: Language, compact: bool = False
+    fa: ForceAnalysis,
+    mu_l: float,
+    look: Any,
+    lang: Language,
+    compact: bool = False,
+    grow: bool = False,
 ) -> Sketch:
     """The mechanism with every load, F_bal and ω1 at `mu_l`; on a compact sheet
     (`_Composer`, many groups: every drawing near its coarsest scale) its
     couples' arcs at their first start, not turned to leave their names room
-    (a turned arc's name may stand where such a sheet has no room left)."""
+    (a turned arc's name may stand where such a sheet has no room left);
+    `grow` as _Drawing's."""
     state = fa.loads.state
     mech = state.mech
-    d = _Drawing(look, state, mu_l, lang, turn_arcs=not compact)
+    d = _Drawing(look, state, mu_l, lang, turn_arcs=not compact, grow=grow)
     with d.sk.group("force-mechanism", "mechanism"):
         d.links(mech.links, frame=True)
         largest = _largest_load(fa, mech.links, [fa.driving_link.balancing_vector])
@@ -532,11 +538,17 @@ def _group_forces(fa: ForceAnalysis, g: Any) -> list[tuple[str, np.ndarray, np.n
 
 
 def sketch_group(
-    fa: ForceAnalysis, g: Any, mu_l: float, look: Any, lang: Language, arm_names: list[str]
+    fa: ForceAnalysis,
+    g: Any,
+    mu_l: float,
+    look: Any,
+    lang: Language,
+    arm_names: list[str],
+    grow: bool = False,
 ) -> Sketch:
     state = fa.loads.state
     mech = state.mech
-    d = _Drawing(look, state, mu_l, lang)
+    d = _Drawing(look, state, mu_l, lang, grow=grow)
     gid = f"group-{g.name}"
     with d.sk.group(gid, "assur-group"):
         d.links(g.links, frame=False)
@@ -582,10 +594,12 @@ def sketch_group(
     return sk
 
 
-def sketch_driving_link(fa: ForceAnalysis, mu_l: float, look: Any, lang: Language) -> Sketch:
+def sketch_driving_link(
+    fa: ForceAnalysis, mu_l: float, look: Any, lang: Language, grow: bool = False
+) -> Sketch:
     state = fa.loads.state
     dl = fa.driving_link
-    d = _Drawing(look, state, mu_l, lang)
+    d = _Drawing(look, state, mu_l, lang, grow=grow)
     with d.sk.group("driving-link", "driving-link"):
         d.links([dl.link], frame=False)
         forces = [
@@ -720,12 +734,13 @@ def sketch_force_polygons(
     gid: str,
     title: str,
     equation_width: float | None = None,
+    grow: bool = False,
 ) -> Sketch:
     """The polygons of one group (or of the driving link) to μF, head to tail
     from their origin. A polygon that starts with the sides of one already
     drawn (a link's polygon inside its group's) adds only its new sides, as
     the textbook closes R54 inside the polygon of group 4-5; one that shares
-    nothing is drawn beside it."""
+    nothing is drawn beside it. `grow` as _Drawing's."""
     sk = Sketch(look)
     labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
     drawn: dict[tuple[str, int, int], bool] = {}
@@ -805,12 +820,16 @@ def sketch_force_polygons(
             labels.avoid_line(offset - 1.0, offset + 1.0)
         for start, markup, end in names.values():
             labels.later_along(start, end, markup)
-        labels.write_later(retry=_RETRY_ORDERS)
+        labels.write_later(retry=_RETRY_ORDERS, grow=grow)
         for corners_of, caption in captions:
             anchor, towards = _caption_place(labels, corners_of, caption)
+            # a polygon with no free place by it (a link's few short sides in
+            # a corner of its group's): every place near its centre on the
+            # fine grid before a leader
+            labels.fine = towards is None
             labels.place(anchor, caption, towards=towards)
-        _UNSETTLED[sk] = labels.unsettled
-        _FAR[sk] = labels.far
+            labels.fine = False
+        sk.label_counts = labels.counts()
         ext = sk.extent()
         y = ext.bottom - 5.0
         for poly in polygons:
@@ -915,8 +934,7 @@ def sketch_lever(
         for foot, numbers in feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
         labels.write_later(retry=_RETRY_ORDERS)
-        _UNSETTLED[sk] = labels.unsettled
-        _FAR[sk] = labels.far
+        sk.label_counts = labels.counts()
         ext = sk.extent()
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
         sk.rich_text(
@@ -1223,9 +1241,7 @@ def _with_note(sketch: Sketch, note: str) -> Sketch:
     gid = next(c["id"] for c in sketch.calls if c.name == "begin_group")
     out.add_to_last_group(extra, gid)
     # its labels as the drawing's: the composer counts them on the copy
-    for counts in (_UNSETTLED, _FAR):
-        if sketch in counts:
-            counts[out] = counts[sketch]
+    out.label_counts = sketch.label_counts
     return out
 
 
@@ -1246,6 +1262,11 @@ _COARSEST_CHECK = 0  # first_fit asks whether the coarsest scales fit once this 
 _HOPELESS = 1.5
 _FILL_PASSES = 2 * (12 - _FINEST)  # a bound on fill's passes (each a step of some kind)
 _UNWALL_PASSES = 4  # drawings enlarged at most this many times for their far names (unwall)
+
+
+def _counts(sketch: Sketch) -> LabelCounts:
+    """How well a drawing's labels found room (none written: nothing missed)."""
+    return sketch.label_counts or LabelCounts(0, 0)
 
 
 def _lever_scale(lever: Any) -> float:
@@ -1445,6 +1466,95 @@ class _Composer:
         yield "force-mechanism", mechanism
         yield "table-loads", loads
 
+    def given_room(
+        self,
+        sketches: dict[str, Sketch],
+        layout: SheetLayout,
+        placed: dict[str, Rect],
+        scales: dict[str, float],
+    ) -> tuple[SheetLayout, dict[str, Rect]]:
+        """The laid-out sheet with each drawing whose names stand far (but
+        the lever) lettered again in the order that letters them best
+        whatever box that takes (`regrown`): kept where fewer names stand
+        far, none more finds no free place, and its box, the drawing where it
+        was placed, lies in the field and keeps the layout's gap from every
+        other drawing and table. `sketches` takes the drawings kept."""
+        placed = dict(placed)
+        for name in self.drawings:
+            was = _counts(sketches[name])
+            grown = self.regrown(name, scales) if was.far else None
+            if grown is None:
+                continue
+            now = _counts(grown)
+            if now.far >= was.far or now.unsettled > was.unsettled:
+                continue
+            old, ext, rect = self.extent(sketches[name]), self.extent(grown), placed[name]
+            # where it was, else moved by as much as it grew past a side (the
+            # title over a drawing rises with a name written above it)
+            x, y = ext.x + rect.x - old.x, ext.y + rect.y - old.y
+            xs = (x, rect.x, rect.right - ext.width)
+            ys = (y, rect.y, rect.top - ext.height)
+            others = SheetLayout(self.page, gap=layout.gap)
+            for e in layout.elements:
+                if e.name not in ("title-block", name):
+                    others.register(e.name, e.footprint, e.kind)
+            moved = next(
+                (
+                    at
+                    for at in (Rect(x, y, ext.width, ext.height) for x in xs for y in ys)
+                    if others.fits(at)
+                ),
+                None,
+            )
+            if moved is None:
+                continue
+            sketches[name], placed[name] = grown, moved
+            kept = layout
+            layout = SheetLayout(self.page, gap=kept.gap)
+            for e in kept.elements:
+                if e.name != "title-block":
+                    layout.register(e.name, placed.get(e.name, e.footprint), e.kind)
+        return layout, placed
+
+    def regrown(self, name: str, scales: dict[str, float]) -> Sketch | None:
+        """The drawing `name` at `scales` with its labels written in the
+        order that letters them best whatever box it takes (`grow`), noted as
+        in `sketches`; None for the lever (its own labelling)."""
+        fa, look, lang = self.fa, self.look, self.lang
+        mu_l = scales["mu_l"]
+        if name == "force-mechanism":
+            return sketch_loaded_mechanism(fa, mu_l, look, lang, self.compact, grow=True)
+        if name == "driving-link":
+            mu_d = scales[f"mu_l {fa.driving_link.link}"]
+            return self._noted(sketch_driving_link(fa, mu_d, look, lang, grow=True), mu_d, mu_l)
+        before: tuple[str, ...] = ()  # the arms are numbered on through the groups
+        for g in fa.groups:
+            mu = scales[f"mu_l {g.name}"]
+            if name == f"group-{g.name}":
+                plain = sketch_group(fa, g, mu, look, lang, list(before), grow=True)
+                return self._noted(plain, mu, mu_l)
+            before = self.memo(("group", g.name, mu, before), lambda: None)[1]
+        for key, polygons, title in self.polygon_sets:
+            gid = f"force-polygon-{key}"
+            if name == gid:
+                mu_F = scales[f"mu_F {key}"]
+                width = COMPACT_EQUATION_MM if self.compact else None
+                drawn = sketch_force_polygons(
+                    polygons, mu_F, look, lang, gid, title, width, grow=True
+                )
+                note = _polygon_note(polygons, mu_F, lang)
+                return _with_note(drawn, note) if note else drawn
+        return None
+
+    def _noted(self, plain: Sketch, mu_g: float, mu_l: float) -> Sketch:
+        """A drawing of links at `mu_g` noted with the mechanism's scale where that differs."""
+        if math.isclose(mu_l, mu_g, rel_tol=1e-9):
+            return plain
+        other = _words(self.lang)["other_scale"].format(
+            scale=scale_label(mu_l, "length", self.lang).markup()
+        )
+        return _with_note(plain, other)
+
     def arrange(self, sketches: dict[str, Sketch]) -> tuple[SheetLayout, dict[str, Rect]] | None:
         """The loaded mechanism top left, the tables top right, the drawings
         from the top left: in the textbook's order first, then the largest, tallest, widest first (which
@@ -1573,7 +1683,7 @@ class _Composer:
     def unsettled(self, steps: dict[str, int]) -> int:
         """How many labels of the drawings at `steps` found no free place."""
         sketches = self.sketches(self.scales(steps))[0]
-        return sum(_UNSETTLED.get(sketches[n], 0) for n in self.drawings)
+        return sum(_counts(sketches[n]).unsettled for n in self.drawings)
 
     def first_fit(self) -> dict[str, int] | None:
         """Scales from the finest that fits: every drawing `shrink` series
@@ -1672,7 +1782,7 @@ class _Composer:
         """How many labels of each drawing at `steps` stand far from what
         they name with no leader (the drawings with any)."""
         sketches = self.sketches(self.scales(steps))[0]
-        counts = {n: _FAR.get(sketches[n], 0) for n in self.drawings}
+        counts = {n: _counts(sketches[n]).far for n in self.drawings}
         return {n: k for n, k in counts.items() if k}
 
     def unwall(self, steps: dict[str, int]) -> dict[str, int]:
@@ -1828,7 +1938,7 @@ def compose_sheet2(
     sketches, arms = composer.sketches(scales)
     arranged = composer.arrange(sketches)
     assert arranged is not None  # it fitted before
-    layout, placed = arranged
+    layout, placed = composer.given_room(sketches, *arranged, scales)
     result = Sheet2(fa, layout, dict(scales), shrink=max(steps.values()), arms={"lever": arms})
     for name in composer.tables + composer.drawings:
         ext, rect = composer.extent(sketches[name]), placed[name]
