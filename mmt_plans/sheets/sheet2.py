@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 import shapely
 
-from ..drawing.labels import Labels, arc_line
+from ..drawing.labels import NEAR_MM, Labels, arc_line
 from ..drawing.layout import LayoutError, SheetLayout, pack
 from ..drawing.markup import equation_markup as _equation_markup
 from ..drawing.markup import force_markup, image_markup, point_markup
@@ -115,6 +115,8 @@ class Sheet2:
     # the most series steps any drawing is coarser than its textbook scale
     # (negative: every drawing finer, enlarged to fill the sheet)
     shrink: int = 0
+    # the lever's detail view (drawing "zhukovsky-lever-detail"), where it has one
+    detail: LeverDetail | None = None
 
     @property
     def record(self) -> Sheet2Scales:
@@ -814,31 +816,221 @@ def sketch_force_polygons(
     return sk
 
 
+@dataclass(frozen=True)
+class LeverDetail:
+    """A detail view of the lever (GOST 2.305, "выносний елемент"): the disc
+    of `radius` round `centre` (both in m/s, on the lever at any scale) where
+    the lever's names crowd, drawn again `ratio` times larger and lettered
+    there; the lever marks it with a thin circle and `letter`."""
+
+    letter: str
+    centre: tuple[float, float]
+    radius: float
+    ratio: float
+
+
+# the series of a detail's scales (GOST 2.302: 2:1, 2.5:1, 4:1, 5:1, 10:1)
+_DETAIL_RATIOS = (2.0, 2.5, 4.0, 5.0, 10.0)
+# the radii (mm at the lever's scale) of the discs tried round a crowd
+_DETAIL_RADII = (8.0, 12.0, 16.0, 20.0, 25.0)
+# the share of a disc (widened by NEAR_MM) that names cover where they crowd
+# (the samples' levers, legible, reach 0.64; the crowded of 4-5 groups 0.9-1.7)
+_CROWDED = 0.9
+# the share a detail's ratio leaves them: 0.12-0.18 lettered gen 15's
+_NAME_SHARE = 0.12
+_DETAIL_MM = 70.0  # the largest radius of a detail's disc, mm
+_ARM_NAMED_MM = 6.0  # the shortest arm a detail names along it, mm
+# a detail's letter: a capital that names no point, force or arm (G, F, R, M, S,
+# K, P, O, I, Q, J read as loads, images or digits)
+_DETAIL_LETTERS = "ABCDEHLNTUVWXYZ"
+_LETTER_W = 2.3  # mm per character of a 3.5 mm name, a bound for counting room
+
+
+def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[tuple[np.ndarray, float, bool]]:
+    """The names the lever writes at `mu_V`: (where it stands, mm; the area of
+    its box, mm²; whether it is an arm's, lettered along p–foot)."""
+    lever = fa.lever
+    owners = tuple(fa.loads.state.mech.point_owners)
+    out: list[tuple[np.ndarray, float, bool]] = []
+
+    def area(markup: str) -> float:
+        return (len(re.sub(r"[_{}]", "", markup)) * _LETTER_W + 1.5) * (_TEXT + 1.5)
+
+    spots: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {(0, 0): (np.zeros(2), ["p"])}
+    for n, v in lever.images.items():
+        at = np.asarray(v, float) / mu_V
+        if float(np.hypot(*at)) >= 0.5:
+            key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
+            spots.setdefault(key, (at, []))[1].append(image_markup(n, owners))
+    out += [(at, area(", ".join(names)), False) for at, names in spots.values()]
+    forces = [*lever.forces, lever.balancing]
+    largest = max(float(np.hypot(*f.force)) for f in forces)
+    for f in forces:
+        size = float(np.hypot(*f.force))
+        if size <= 1e-9 * largest:
+            continue
+        at = np.asarray(f.image, float) / mu_V
+        u = np.asarray(f.force, float) / size
+        out.append((at + 0.5 * _arrow_length(size, largest) * u, area(f.label) + 8.0, False))
+        if abs(f.arm) / mu_V >= 1.0:
+            foot = at - float(np.dot(at, u)) * u
+            out.append((0.5 * foot, area("h_{10}"), True))
+    return out
+
+
+def lever_detail(fa: ForceAnalysis, mu_V: float) -> LeverDetail | None:
+    """The detail view the lever at `mu_V` needs, or None: where the names
+    of some disc round p or an image, of a radius of _DETAIL_RADII, would cover
+    more than _CROWDED of it (widened by NEAR_MM), of the discs they cover more
+    than _NAME_SHARE of, the one that holds the most of them; drawn at the first ratio of the series that leaves them _NAME_SHARE
+    and names its shortest arm along it (or draws the disc _DETAIL_MM wide)."""
+    names = _lever_names(fa, mu_V)
+    where = np.array([at for at, _, _ in names])
+    areas = np.array([a for _, a, _ in names])
+    centres = [np.zeros(2), *(at for at, _, arm in names if not arm)]
+    best: tuple[float, float, np.ndarray] | None = None
+    crowded = False
+    for c in centres:
+        dist = np.hypot(*(where - c).T)
+        for r in _DETAIL_RADII:
+            demand = float(areas[dist <= r].sum())
+            room = math.pi * (r + NEAR_MM) ** 2
+            crowded = crowded or demand > _CROWDED * room
+            if demand > _NAME_SHARE * room and (best is None or (demand, -r) > best[:2]):
+                best = (demand, -r, c)
+    if best is None or not crowded:
+        return None
+    demand, r, c = best[0], -best[1], best[2]
+    # the arms in the disc long enough, at the ratio, to be named along
+    shortest = min(
+        (
+            2.0 * float(np.hypot(*at))  # an arm's name stands at the middle of p–foot
+            for at, _, arm in names
+            if arm and float(np.hypot(*(at - c))) <= r
+        ),
+        default=math.inf,
+    )
+    ratio = next(
+        (
+            k
+            for k in _DETAIL_RATIOS
+            if (
+                demand <= _NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
+                and k * shortest >= _ARM_NAMED_MM
+            )
+            or k * r >= _DETAIL_MM
+        ),
+        _DETAIL_RATIOS[-1],
+    )
+    mech = fa.loads.state.mech
+    taken = {n[:1].upper() for n in mech.point_owners}
+    letter = next((x for x in _DETAIL_LETTERS if x not in taken), _DETAIL_LETTERS[0])
+    return LeverDetail(letter, (float(c[0]) * mu_V, float(c[1]) * mu_V), r * mu_V, ratio)
+
+
+def _clipped(
+    a: np.ndarray, b: np.ndarray, centre: np.ndarray, radius: float
+) -> tuple[np.ndarray, np.ndarray] | None:
+    """The part of the segment a–b inside the disc, or None."""
+    d = b - a
+    f = a - centre
+    A = float(np.dot(d, d))
+    if A < 1e-12:
+        return (a, b) if float(np.hypot(*f)) <= radius else None
+    B = 2.0 * float(np.dot(f, d))
+    C = float(np.dot(f, f)) - radius * radius
+    disc = B * B - 4.0 * A * C
+    if disc <= 0.0:
+        return None
+    root = math.sqrt(disc)
+    t0, t1 = max(0.0, (-B - root) / (2.0 * A)), min(1.0, (-B + root) / (2.0 * A))
+    if t1 - t0 < 1e-9:
+        return None
+    return a + t0 * d, a + t1 * d
+
+
 def sketch_lever(
-    fa: ForceAnalysis, mu_V: float, look: Any, lang: Language, arms: list[tuple[str, float]]
+    fa: ForceAnalysis,
+    mu_V: float,
+    look: Any,
+    lang: Language,
+    arms: list[tuple[str, float]],
+    detail: LeverDetail | None = None,
 ) -> Sketch:
     """The turned velocity plan to μV, every force at the image of its point
-    and its arm about the pole p; `arms` receives (label, h mm) in order."""
+    and its arm about the pole p; `arms` receives (label, h mm) in order.
+    With a `detail`, what lies in its disc is drawn but lettered only in the
+    detail view (`sketch_lever_detail`): there the forces at its images, their
+    arms and the images' names; the disc is marked by a thin circle and its letter."""
+    return _lever_view(fa, mu_V, look, lang, arms, detail, in_detail=False)
+
+
+def sketch_lever_detail(
+    fa: ForceAnalysis, mu_V: float, look: Any, lang: Language, detail: LeverDetail
+) -> Sketch:
+    """The detail view `detail` of the lever drawn at `mu_V`: its disc at
+    μV / ratio, titled "A (4:1)", the lines cut at the disc's edge, the forces
+    at the images inside it with their arms, and every name there."""
+    return _lever_view(fa, mu_V, look, lang, [], detail, in_detail=True)
+
+
+def _lever_view(
+    fa: ForceAnalysis,
+    mu_V: float,
+    look: Any,
+    lang: Language,
+    arms: list[tuple[str, float]],
+    detail: LeverDetail | None,
+    *,
+    in_detail: bool,
+) -> Sketch:
     lever = fa.lever
     mech = fa.loads.state.mech
     sk = Sketch(look)
     labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
-    img = {n: np.asarray(v, float) / mu_V for n, v in lever.images.items()}
+    mu = mu_V / detail.ratio if in_detail and detail is not None else mu_V
+    img = {n: np.asarray(v, float) / mu for n, v in lever.images.items()}
+    if detail is not None:
+        centre = np.asarray(detail.centre, float) / mu
+        radius = detail.radius / mu
+
+        def inside(at: np.ndarray) -> bool:
+            return float(np.hypot(*(at - centre))) <= radius
+
+    else:
+        centre, radius = np.zeros(2), 0.0
+
+        def inside(at: np.ndarray) -> bool:
+            return False
+
+    def here(at: np.ndarray) -> bool:
+        """Whether what stands at `at` is drawn and named in this view."""
+        return inside(at) if in_detail else not inside(at)
+
+    def line(a: Any, b: Any, kind: LineType) -> None:
+        a, b = np.asarray(a, float), np.asarray(b, float)
+        part = _clipped(a, b, centre, radius) if in_detail else (a, b)
+        if part is not None:
+            sk.line(part[0], part[1], kind)
+
     dotted: set[str] = set()  # images of S_i and K_i marked with a dot
-    with sk.group("zhukovsky-lever", "lever"):
+    gid = "zhukovsky-lever-detail" if in_detail else "zhukovsky-lever"
+    with sk.group(gid, "lever"):
         joints = [n for n in img if not re.fullmatch(r"[SK]\d+", n)]
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
-                sk.line((0.0, 0.0), img[n], "thin")
+                line((0.0, 0.0), img[n], "thin")
         for link in mech.links.values():
             names = [p for p in link.points if p in img]
             for i in range(len(names)):
                 for j in range(i + 1, len(names)):
-                    sk.line(img[names[i]], img[names[j]], "main")
+                    line(img[names[i]], img[names[j]], "main")
         # the images named, those at one point in one label: "d, s_{5}, k_{5}"
         marks: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
 
         def mark(markup: str, at: np.ndarray) -> None:
+            if not here(at):
+                return
             key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
             marks.setdefault(key, (at, []))[1].append(markup)
 
@@ -846,8 +1038,9 @@ def sketch_lever(
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
                 mark(image_markup(n, tuple(mech.point_owners)), img[n])
-        sk.circle((0.0, 0.0), 0.8, "main", "black")
-        labels.avoid_circle((0.0, 0.0), 1.2)
+        if here(np.zeros(2)):
+            sk.circle((0.0, 0.0), 0.8, "main", "black")
+            labels.avoid_circle((0.0, 0.0), 1.2)
         forces = [*lever.forces, lever.balancing]
         feet: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
         largest = max(float(np.hypot(*f.force)) for f in forces)
@@ -858,30 +1051,43 @@ def sketch_lever(
             size = float(np.hypot(*f.force))
             if size <= 1e-9 * largest:
                 continue
-            at = np.asarray(f.image, float) / mu_V
+            at = np.asarray(f.image, float) / mu
             u = np.asarray(f.force, float) / size
             end = at + _arrow_length(size, largest) * u
-            for k, (s0, e0, names) in enumerate(drawn):
-                if _coincident(s0, e0, at, end) and float(np.dot(e0 - s0, u)) > 0.0:
-                    ts = [0.0, float(np.dot(e0 - s0, u)), float(np.dot(at - s0, u))]
-                    ts.append(float(np.dot(end - s0, u)))
-                    drawn[k] = (s0 + min(ts) * u, s0 + max(ts) * u, [*names, f.label])
-                    break
-            else:
-                drawn.append((at, end, [f.label]))
-            if re.fullmatch(r"[SK]\d+", f.point) and f.point not in dotted:
+            if here(at):
+                for k, (s0, e0, names) in enumerate(drawn):
+                    if _coincident(s0, e0, at, end) and float(np.dot(e0 - s0, u)) > 0.0:
+                        ts = [0.0, float(np.dot(e0 - s0, u)), float(np.dot(at - s0, u))]
+                        ts.append(float(np.dot(end - s0, u)))
+                        drawn[k] = (s0 + min(ts) * u, s0 + max(ts) * u, [*names, f.label])
+                        break
+                else:
+                    drawn.append((at, end, [f.label]))
+            if here(at) and re.fullmatch(r"[SK]\d+", f.point) and f.point not in dotted:
                 dotted.add(f.point)
                 sk.circle(at, 0.6, "thin", "black")
                 mark(image_markup(f.point, tuple(mech.point_owners)), at)
-            h = abs(f.arm) / mu_V
-            arms.append((f.label, h))
+            h = abs(f.arm) / mu
+            arms.append((f.label, abs(f.arm) / mu_V))
             if h >= 1.0:
                 foot = at - float(np.dot(at, u)) * u
+                # an arm is the detail's where all of it lies in the disc
+                whole = inside(at) and inside(foot) and inside(np.zeros(2))
+                if in_detail and not whole:
+                    line((0.0, 0.0), foot, "thin")  # cut at the disc's edge, named on the lever
+                    line(at, foot, "thin")
+                    continue
+                if not in_detail and whole:
+                    continue
                 sk.line((0.0, 0.0), foot, "thin")
                 sk.line(at, foot, "thin")
                 # forces on one line of action share their arm: one label, h_{10,11}
                 key = (round(float(foot[0]) * 2), round(float(foot[1]) * 2))
                 feet.setdefault(key, (foot, []))[1].append(str(len(arms)))
+        if detail is not None and not in_detail:
+            sk.circle(centre, radius, "thin")
+            rim = centre + radius * np.array([math.sqrt(0.5), math.sqrt(0.5)])
+            labels.later(rim, detail.letter, rim - centre)
         for at, names in marks.values():
             pole = float(np.hypot(*at)) < 0.5
             labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
@@ -900,6 +1106,11 @@ def sketch_lever(
         _UNSETTLED[sk] = labels.unsettled
         _FAR[sk] = labels.far
         ext = sk.extent()
+        if in_detail and detail is not None:
+            ratio = catalogue(lang).plain_number(detail.ratio)
+            title = _words(lang)["lever_detail"].format(letter=detail.letter, ratio=ratio)
+            sk.text((ext.left + _PAD, ext.top + 3.0), title, _TITLE)
+            return sk
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
         sk.rich_text(
             (ext.left + _PAD, ext.bottom - 11.0),
@@ -1271,6 +1482,10 @@ class _Composer:
         for g in fa.groups:
             self.drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
         self.drawings += ["driving-link", f"force-polygon-{dl.link}"]
+        # where the lever's names crowd at its textbook scale, a detail view of them
+        self.detail = lever_detail(fa, self.lever_mu)
+        if self.detail is not None:
+            self.drawings.append("zhukovsky-lever-detail")
         self.last: Exception | None = None
         # where pack put each drawing after the same ones before it (arrange's
         # trials share the start of their orders)
@@ -1316,10 +1531,20 @@ class _Composer:
 
         def make() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
             arms: list[tuple[str, float]] = []
-            sketch = sketch_lever(self.fa, mu_V, self.look, self.lang, arms)
+            sketch = sketch_lever(self.fa, mu_V, self.look, self.lang, arms, self.detail)
             return sketch, arms, _sketch_tables(self.fa, arms, self.look, self.lang, self.compact)
 
         return self.memo(("lever", mu_V), make)  # type: ignore[no-any-return]
+
+    def lever_detail(self, mu_V: float) -> Sketch | None:
+        """The detail view of the lever at `mu_V`, where it has one."""
+        detail = self.detail
+        if detail is None:
+            return None
+        return self.memo(  # type: ignore[no-any-return]
+            ("lever-detail", mu_V),
+            lambda: sketch_lever_detail(self.fa, mu_V, self.look, self.lang, detail),
+        )
 
     def polygons(
         self, name: str, polygons: Sequence[ForcePolygon], title: str, mu_F: float
@@ -1416,6 +1641,9 @@ class _Composer:
         lever, lever_arms, tables = self.lever(mu_V)
         arms.extend(lever_arms)
         yield "zhukovsky-lever", lever
+        detail = self.lever_detail(mu_V)
+        if detail is not None:
+            yield "zhukovsky-lever-detail", detail
         yield from tables.items()
         mechanism, loads = self.memo(
             ("force-mechanism", mu_l),
@@ -1539,7 +1767,12 @@ class _Composer:
                 w, h = np.ptp(pts, axis=0) / scales[key] + 2.0 * PAD
                 yield owner[key], float(w * h)
         lever, _, tables = self.lever(scales["mu_V"])
-        for name, sketch in (("zhukovsky-lever", lever), *tables.items()):
+        detail = self.lever_detail(scales["mu_V"])
+        for name, sketch in (
+            ("zhukovsky-lever", lever),
+            *((("zhukovsky-lever-detail", detail),) if detail is not None else ()),
+            *tables.items(),
+        ):
             yield name, self.extent(sketch).width * self.extent(sketch).height
         for name, polygons, title in self.polygon_sets:
             sketch = self.polygons(name, polygons, title, scales[f"mu_F {name}"])
@@ -1668,6 +1901,7 @@ class _Composer:
         keys: dict[str, list[list[str]]] = {
             "force-mechanism": [["mech"], parts],
             "zhukovsky-lever": [["lever"]],
+            "zhukovsky-lever-detail": [["lever"]],
             "driving-link": [["driving"], parts],
         }
         keys.update({f"group-{g.name}": [[f"group {g.name}"], parts] for g in self.fa.groups})
@@ -1811,7 +2045,14 @@ def compose_sheet2(
     arranged = composer.arrange(sketches)
     assert arranged is not None  # it fitted before
     layout, placed = arranged
-    result = Sheet2(fa, layout, dict(scales), shrink=max(steps.values()), arms={"lever": arms})
+    result = Sheet2(
+        fa,
+        layout,
+        dict(scales),
+        shrink=max(steps.values()),
+        arms={"lever": arms},
+        detail=composer.detail,
+    )
     for name in composer.tables + composer.drawings:
         ext, rect = composer.extent(sketches[name]), placed[name]
         dx, dy = rect.x - ext.x, rect.y - ext.y
