@@ -115,8 +115,8 @@ class Sheet2:
     # the most series steps any drawing is coarser than its textbook scale
     # (negative: every drawing finer, enlarged to fill the sheet)
     shrink: int = 0
-    # the lever's detail view (drawing "zhukovsky-lever-detail"), where it has one
-    detail: LeverDetail | None = None
+    # the lever's detail views (drawings "zhukovsky-lever-detail", "…-detail-2")
+    details: tuple[LeverDetail, ...] = ()
 
     @property
     def record(self) -> Sheet2Scales:
@@ -839,6 +839,7 @@ _CROWDED = 0.9
 # the share a detail's ratio leaves them: 0.12-0.18 lettered gen 15's
 _NAME_SHARE = 0.12
 _DETAIL_MM = 70.0  # the largest radius of a detail's disc, mm
+_DETAILS = 1  # the most detail views of one lever (2 gave gen 194 a second, needless)
 _ARM_NAMED_MM = 6.0  # the shortest arm a detail names along it, mm
 # a detail's letter: a capital that names no point, force or arm (G, F, R, M, S,
 # K, P, O, I, Q, J read as loads, images or digits)
@@ -878,54 +879,69 @@ def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[tuple[np.ndarray, float
     return out
 
 
-def lever_detail(fa: ForceAnalysis, mu_V: float) -> LeverDetail | None:
-    """The detail view the lever at `mu_V` needs, or None: where the names
-    of some disc round p or an image, of a radius of _DETAIL_RADII, would cover
-    more than _CROWDED of it (widened by NEAR_MM), of the discs they cover more
-    than _NAME_SHARE of, the one that holds the most of them; drawn at the first ratio of the series that leaves them _NAME_SHARE
-    and names its shortest arm along it (or draws the disc _DETAIL_MM wide)."""
+def lever_details(fa: ForceAnalysis, mu_V: float) -> tuple[LeverDetail, ...]:
+    """The detail views the lever at `mu_V` needs (at most _DETAILS): while
+    the names of some disc round p or an image, of a radius of _DETAIL_RADII,
+    clear of the discs taken, would cover more than _CROWDED of it (widened by
+    NEAR_MM), of the discs they cover more than _NAME_SHARE of, the one that
+    holds the most of them; each drawn at the first ratio of the series that
+    leaves its names _NAME_SHARE and names its shortest arm along it (or
+    draws the disc _DETAIL_MM wide)."""
     names = _lever_names(fa, mu_V)
     where = np.array([at for at, _, _ in names])
     areas = np.array([a for _, a, _ in names])
-    centres = [np.zeros(2), *(at for at, _, arm in names if not arm)]
-    best: tuple[float, float, np.ndarray] | None = None
-    crowded = False
-    for c in centres:
-        dist = np.hypot(*(where - c).T)
-        for r in _DETAIL_RADII:
-            demand = float(areas[dist <= r].sum())
-            room = math.pi * (r + NEAR_MM) ** 2
-            crowded = crowded or demand > _CROWDED * room
-            if demand > _NAME_SHARE * room and (best is None or (demand, -r) > best[:2]):
-                best = (demand, -r, c)
-    if best is None or not crowded:
-        return None
-    demand, r, c = best[0], -best[1], best[2]
-    # the arms in the disc long enough, at the ratio, to be named along
-    shortest = min(
-        (
-            2.0 * float(np.hypot(*at))  # an arm's name stands at the middle of p–foot
-            for at, _, arm in names
-            if arm and float(np.hypot(*(at - c))) <= r
-        ),
-        default=math.inf,
-    )
-    ratio = next(
-        (
-            k
-            for k in _DETAIL_RATIOS
-            if (
-                demand <= _NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
-                and k * shortest >= _ARM_NAMED_MM
-            )
-            or k * r >= _DETAIL_MM
-        ),
-        _DETAIL_RATIOS[-1],
-    )
-    mech = fa.loads.state.mech
-    taken = {n[:1].upper() for n in mech.point_owners}
-    letter = next((x for x in _DETAIL_LETTERS if x not in taken), _DETAIL_LETTERS[0])
-    return LeverDetail(letter, (float(c[0]) * mu_V, float(c[1]) * mu_V), r * mu_V, ratio)
+    arm = np.array([a for _, _, a in names])
+    centres = [np.zeros(2), *(at for at, _, a in names if not a)]
+    taken = {n[:1].upper() for n in fa.loads.state.mech.point_owners}
+    letters = [x for x in _DETAIL_LETTERS if x not in taken] or list(_DETAIL_LETTERS)
+    out: list[LeverDetail] = []
+    left = np.ones(len(names), dtype=bool)  # the names no disc taken holds
+    for letter in letters[:_DETAILS]:
+        best: tuple[float, float, np.ndarray] | None = None
+        crowded = False
+        for c in centres:
+            dist = np.hypot(*(where - c).T)
+            for r in _DETAIL_RADII:
+                if any(
+                    math.dist(c, np.asarray(d.centre) / mu_V) < r + d.radius / mu_V for d in out
+                ):
+                    continue  # discs apart: a name is the lever's or one detail's
+                demand = float(areas[(dist <= r) & left].sum())
+                room = math.pi * (r + NEAR_MM) ** 2
+                crowded = crowded or demand > _CROWDED * room
+                if demand > _NAME_SHARE * room and (best is None or (demand, -r) > best[:2]):
+                    best = (demand, -r, c)
+        if best is None or not crowded:
+            break
+        demand, r, c = best[0], -best[1], best[2]
+        held = (np.hypot(*(where - c).T) <= r) & left
+        left &= ~held
+        # the arms in the disc long enough, at the ratio, to be named along
+        shortest = (
+            min((2.0 * float(np.hypot(*where[i]))) for i in np.flatnonzero(held & arm))
+            if (held & arm).any()
+            else math.inf
+        )
+        ratio = next(
+            (
+                k
+                for k in _DETAIL_RATIOS
+                if (
+                    demand <= _NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
+                    and k * shortest >= _ARM_NAMED_MM
+                )
+                or k * r >= _DETAIL_MM
+            ),
+            _DETAIL_RATIOS[-1],
+        )
+        out.append(LeverDetail(letter, (float(c[0]) * mu_V, float(c[1]) * mu_V), r * mu_V, ratio))
+    return tuple(out)
+
+
+def detail_gid(details: Sequence[LeverDetail], detail: LeverDetail) -> str:
+    """The drawing of sheet 2 that holds the detail view `detail` of `details`."""
+    k = list(details).index(detail)
+    return "zhukovsky-lever-detail" + (f"-{k + 1}" if k else "")
 
 
 def _clipped(
@@ -955,14 +971,15 @@ def sketch_lever(
     look: Any,
     lang: Language,
     arms: list[tuple[str, float]],
-    detail: LeverDetail | None = None,
+    details: Sequence[LeverDetail] = (),
 ) -> Sketch:
     """The turned velocity plan to μV, every force at the image of its point
     and its arm about the pole p; `arms` receives (label, h mm) in order.
-    With a `detail`, what lies in its disc is drawn but lettered only in the
-    detail view (`sketch_lever_detail`): there the forces at its images, their
-    arms and the images' names; the disc is marked by a thin circle and its letter."""
-    return _lever_view(fa, mu_V, look, lang, arms, detail, in_detail=False)
+    With `details`, what lies in a detail's disc is drawn but lettered only in
+    its detail view (`sketch_lever_detail`): there the forces at its images,
+    their arms and the images' names; the disc is marked by a thin circle and
+    its letter."""
+    return _lever_view(fa, mu_V, look, lang, arms, details, None)
 
 
 def sketch_lever_detail(
@@ -971,7 +988,7 @@ def sketch_lever_detail(
     """The detail view `detail` of the lever drawn at `mu_V`: its disc at
     μV / ratio, titled "A (4:1)", the lines cut at the disc's edge, the forces
     at the images inside it with their arms, and every name there."""
-    return _lever_view(fa, mu_V, look, lang, [], detail, in_detail=True)
+    return _lever_view(fa, mu_V, look, lang, [], (detail,), detail)
 
 
 def _lever_view(
@@ -980,28 +997,23 @@ def _lever_view(
     look: Any,
     lang: Language,
     arms: list[tuple[str, float]],
+    details: Sequence[LeverDetail],
     detail: LeverDetail | None,
-    *,
-    in_detail: bool,
 ) -> Sketch:
+    """The lever with `details` marked (`detail` None), or the detail view `detail`."""
+    in_detail = detail is not None
     lever = fa.lever
     mech = fa.loads.state.mech
     sk = Sketch(look)
     labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
-    mu = mu_V / detail.ratio if in_detail and detail is not None else mu_V
+    mu = mu_V / detail.ratio if detail is not None else mu_V
     img = {n: np.asarray(v, float) / mu for n, v in lever.images.items()}
-    if detail is not None:
-        centre = np.asarray(detail.centre, float) / mu
-        radius = detail.radius / mu
+    discs = [(np.asarray(d.centre, float) / mu, d.radius / mu) for d in details]
+    centre, radius = discs[0] if detail is not None else (np.zeros(2), 0.0)
 
-        def inside(at: np.ndarray) -> bool:
-            return float(np.hypot(*(at - centre))) <= radius
-
-    else:
-        centre, radius = np.zeros(2), 0.0
-
-        def inside(at: np.ndarray) -> bool:
-            return False
+    def inside(at: np.ndarray) -> bool:
+        """Whether `at` lies in a detail's disc (in this view's own)."""
+        return any(float(np.hypot(*(at - c))) <= r for c, r in discs)
 
     def here(at: np.ndarray) -> bool:
         """Whether what stands at `at` is drawn and named in this view."""
@@ -1014,7 +1026,7 @@ def _lever_view(
             sk.line(part[0], part[1], kind)
 
     dotted: set[str] = set()  # images of S_i and K_i marked with a dot
-    gid = "zhukovsky-lever-detail" if in_detail else "zhukovsky-lever"
+    gid = detail_gid(details, detail) if detail is not None else "zhukovsky-lever"
     with sk.group(gid, "lever"):
         joints = [n for n in img if not re.fullmatch(r"[SK]\d+", n)]
         for n in joints:
@@ -1072,7 +1084,10 @@ def _lever_view(
             if h >= 1.0:
                 foot = at - float(np.dot(at, u)) * u
                 # an arm is the detail's where all of it lies in the disc
-                whole = inside(at) and inside(foot) and inside(np.zeros(2))
+                whole = any(
+                    max(float(np.hypot(*(q - c))) for q in (at, foot, np.zeros(2))) <= r
+                    for c, r in discs
+                )
                 if in_detail and not whole:
                     line((0.0, 0.0), foot, "thin")  # cut at the disc's edge, named on the lever
                     line(at, foot, "thin")
@@ -1084,10 +1099,10 @@ def _lever_view(
                 # forces on one line of action share their arm: one label, h_{10,11}
                 key = (round(float(foot[0]) * 2), round(float(foot[1]) * 2))
                 feet.setdefault(key, (foot, []))[1].append(str(len(arms)))
-        if detail is not None and not in_detail:
-            sk.circle(centre, radius, "thin")
-            rim = centre + radius * np.array([math.sqrt(0.5), math.sqrt(0.5)])
-            labels.later(rim, detail.letter, rim - centre)
+        for d, (c, r) in zip(details if not in_detail else (), discs):
+            sk.circle(c, r, "thin")
+            rim = c + r * np.array([math.sqrt(0.5), math.sqrt(0.5)])
+            labels.later(rim, d.letter, rim - c)
         for at, names in marks.values():
             pole = float(np.hypot(*at)) < 0.5
             labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
@@ -1106,7 +1121,7 @@ def _lever_view(
         _UNSETTLED[sk] = labels.unsettled
         _FAR[sk] = labels.far
         ext = sk.extent()
-        if in_detail and detail is not None:
+        if detail is not None:
             ratio = catalogue(lang).plain_number(detail.ratio)
             title = _words(lang)["lever_detail"].format(letter=detail.letter, ratio=ratio)
             sk.text((ext.left + _PAD, ext.top + 3.0), title, _TITLE)
@@ -1483,9 +1498,8 @@ class _Composer:
             self.drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
         self.drawings += ["driving-link", f"force-polygon-{dl.link}"]
         # where the lever's names crowd at its textbook scale, a detail view of them
-        self.detail = lever_detail(fa, self.lever_mu)
-        if self.detail is not None:
-            self.drawings.append("zhukovsky-lever-detail")
+        self.details = lever_details(fa, self.lever_mu)
+        self.drawings += [detail_gid(self.details, d) for d in self.details]
         self.last: Exception | None = None
         # where pack put each drawing after the same ones before it (arrange's
         # trials share the start of their orders)
@@ -1531,20 +1545,23 @@ class _Composer:
 
         def make() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
             arms: list[tuple[str, float]] = []
-            sketch = sketch_lever(self.fa, mu_V, self.look, self.lang, arms, self.detail)
+            sketch = sketch_lever(self.fa, mu_V, self.look, self.lang, arms, self.details)
             return sketch, arms, _sketch_tables(self.fa, arms, self.look, self.lang, self.compact)
 
         return self.memo(("lever", mu_V), make)  # type: ignore[no-any-return]
 
-    def lever_detail(self, mu_V: float) -> Sketch | None:
-        """The detail view of the lever at `mu_V`, where it has one."""
-        detail = self.detail
-        if detail is None:
-            return None
-        return self.memo(  # type: ignore[no-any-return]
-            ("lever-detail", mu_V),
-            lambda: sketch_lever_detail(self.fa, mu_V, self.look, self.lang, detail),
-        )
+    def lever_details(self, mu_V: float) -> list[tuple[str, Sketch]]:
+        """The detail views of the lever at `mu_V` (drawing, sketch)."""
+        return [
+            (
+                detail_gid(self.details, d),
+                self.memo(
+                    ("lever-detail", d.letter, mu_V),
+                    lambda d=d: sketch_lever_detail(self.fa, mu_V, self.look, self.lang, d),
+                ),
+            )
+            for d in self.details
+        ]
 
     def polygons(
         self, name: str, polygons: Sequence[ForcePolygon], title: str, mu_F: float
@@ -1641,9 +1658,7 @@ class _Composer:
         lever, lever_arms, tables = self.lever(mu_V)
         arms.extend(lever_arms)
         yield "zhukovsky-lever", lever
-        detail = self.lever_detail(mu_V)
-        if detail is not None:
-            yield "zhukovsky-lever-detail", detail
+        yield from self.lever_details(mu_V)
         yield from tables.items()
         mechanism, loads = self.memo(
             ("force-mechanism", mu_l),
@@ -1767,10 +1782,9 @@ class _Composer:
                 w, h = np.ptp(pts, axis=0) / scales[key] + 2.0 * PAD
                 yield owner[key], float(w * h)
         lever, _, tables = self.lever(scales["mu_V"])
-        detail = self.lever_detail(scales["mu_V"])
         for name, sketch in (
             ("zhukovsky-lever", lever),
-            *((("zhukovsky-lever-detail", detail),) if detail is not None else ()),
+            *self.lever_details(scales["mu_V"]),
             *tables.items(),
         ):
             yield name, self.extent(sketch).width * self.extent(sketch).height
@@ -1901,7 +1915,7 @@ class _Composer:
         keys: dict[str, list[list[str]]] = {
             "force-mechanism": [["mech"], parts],
             "zhukovsky-lever": [["lever"]],
-            "zhukovsky-lever-detail": [["lever"]],
+            **{detail_gid(self.details, d): [["lever"]] for d in self.details},
             "driving-link": [["driving"], parts],
         }
         keys.update({f"group-{g.name}": [[f"group {g.name}"], parts] for g in self.fa.groups})
@@ -2051,7 +2065,7 @@ def compose_sheet2(
         dict(scales),
         shrink=max(steps.values()),
         arms={"lever": arms},
-        detail=composer.detail,
+        details=composer.details,
     )
     for name in composer.tables + composer.drawings:
         ext, rect = composer.extent(sketches[name]), placed[name]

@@ -15,7 +15,7 @@ from mmt_plans.sheets.sheet2 import (
     _clipped,
     _lever_scale,
     compose_sheet2,
-    lever_detail,
+    lever_details,
     sketch_lever,
     sketch_lever_detail,
 )
@@ -40,14 +40,14 @@ def _lever_texts(fa, detail, lang="en"):
 
     mu = _lever_scale(fa.lever)
     look = load_look()
-    main = sketch_lever(fa, mu, look, lang, [], detail)
+    main = sketch_lever(fa, mu, look, lang, [], (detail,))
     view = sketch_lever_detail(fa, mu, look, lang, detail)
     return mu, main, view
 
 
 def test_a_crowded_lever_has_a_detail_at_a_ratio_of_the_series():
     fa = _forces(CROWDED)
-    detail = lever_detail(fa, _lever_scale(fa.lever))
+    detail = lever_details(fa, _lever_scale(fa.lever))[0]
     assert detail is not None
     assert detail.ratio in (2.0, 2.5, 4.0, 5.0, 10.0)
     # its letter names no point of the mechanism
@@ -60,7 +60,7 @@ def test_an_uncrowded_lever_has_none():
 
     root = Path(__file__).resolve().parents[2]
     fa = mmt_plans.solve(mmt_plans.load(root / "samples" / "six_link_press.toml")).require_forces()
-    assert lever_detail(fa, _lever_scale(fa.lever)) is None
+    assert lever_details(fa, _lever_scale(fa.lever)) == ()
 
 
 def _labels(sketch) -> set[str]:
@@ -76,7 +76,7 @@ def test_every_name_stands_in_one_view_only():
     """An image's name, a force's and an arm's stand on the lever or in its
     detail, never in both, and every force of the lever is named in one."""
     fa = _forces(CROWDED)
-    detail = lever_detail(fa, _lever_scale(fa.lever))
+    detail = lever_details(fa, _lever_scale(fa.lever))[0]
     _, main, view = _lever_texts(fa, detail)
     a, b = _labels(main), _labels(view)
     assert detail.letter in a
@@ -90,7 +90,7 @@ def test_every_name_stands_in_one_view_only():
 @pytest.mark.parametrize("lang", ["en", "uk"])
 def test_the_detail_view_is_titled_with_its_letter_and_ratio(lang):
     fa = _forces(CROWDED)
-    detail = lever_detail(fa, _lever_scale(fa.lever))
+    detail = lever_details(fa, _lever_scale(fa.lever))[0]
     _, _, view = _lever_texts(fa, detail, lang)
     texts = [c["content"] for c in view.calls if c.name == "text"]
     ratio = f"{detail.ratio:g}".replace(".", "," if lang == "uk" else ".")
@@ -119,7 +119,7 @@ def crowded_sheet():
 
 def test_the_detail_is_one_more_drawing_of_sheet_2(crowded_sheet):
     sheet, view = crowded_sheet
-    assert sheet.detail is not None
+    assert sheet.details
     assert "zhukovsky-lever-detail" in sheet.placed
     assert sheet.layout.problems() == []
 
@@ -138,3 +138,27 @@ def test_the_lever_and_its_detail_letter_near_what_they_name(crowded_sheet):
     in_detail = [str(f) for f in found if inside(f, "zhukovsky-lever-detail")]
     assert on_lever == []
     assert len(in_detail) <= 2, in_detail
+
+
+def test_two_details_hold_apart_discs_and_each_name_once(monkeypatch):
+    """Two detail views (gen 194 crowds at p and at a far image): their discs
+    apart, and every name of the lever in exactly one of the three drawings."""
+    from mmt_plans.render.look import load_look
+    from mmt_plans.sheets import sheet2
+
+    monkeypatch.setattr(sheet2, "_DETAILS", 2)
+    fa = _forces(194)
+    mu = _lever_scale(fa.lever)
+    details = lever_details(fa, mu)
+    assert len(details) == 2
+    a, b = details
+    gap = float(np.hypot(*np.subtract(a.centre, b.centre)))
+    assert gap >= a.radius + b.radius
+    assert a.letter != b.letter
+    look = load_look()
+    views = [_labels(sketch_lever(fa, mu, look, "en", [], details))]
+    views += [_labels(sketch_lever_detail(fa, mu, look, "en", d)) for d in details]
+    words = [w for v in views for label in v for w in label.split(", ")]
+    for f in [*fa.lever.forces, fa.lever.balancing]:
+        if np.hypot(*f.force) > 0:
+            assert words.count(f.label.replace("_", "")) == 1, f.label

@@ -13,7 +13,7 @@ from click.testing import CliRunner
 import mmt_plans
 from mmt_plans.render.recording import RecordingBackend
 from mmt_plans.scales import is_standard
-from mmt_plans.sheets.sheet2 import compose_sheet2, force_markup
+from mmt_plans.sheets.sheet2 import compose_sheet2, detail_gid, force_markup
 
 from lettering import clashes
 
@@ -142,8 +142,8 @@ def test_drawn_lever_is_in_equilibrium_with_the_plans_balancing_force(every_samp
     # the forces at the images in a detail's disc are drawn in the detail view,
     # at μV / ratio: each arrow with the origin and μ of its drawing
     views = [("zhukovsky-lever", mu)]
-    if sheet.detail is not None:
-        views.append(("zhukovsky-lever-detail", mu / sheet.detail.ratio))
+    for d in sheet.details:
+        views.append((detail_gid(sheet.details, d), mu / d.ratio))
     arrows, origins, mus = [], [], []
     for gid, mu_view in views:
         for c in _arrows(backend, gid):
