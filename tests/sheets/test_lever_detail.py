@@ -87,14 +87,15 @@ def test_every_name_stands_in_one_view_only():
             assert f.label.replace("_", "") in words, f.label
 
 
-@pytest.mark.parametrize("lang", ["en", "uk"])
-def test_the_detail_view_is_titled_with_its_letter_and_ratio(lang):
+@pytest.mark.parametrize(("lang", "title"), [("en", "{} (2.5:1)"), ("uk", "{} (2,5:1)")])
+def test_the_detail_view_is_titled_with_its_letter_and_ratio(lang, title):
+    from dataclasses import replace
+
     fa = _forces(CROWDED)
-    detail = lever_details(fa, _lever_scale(fa.lever))[0]
+    detail = replace(lever_details(fa, _lever_scale(fa.lever))[0], ratio=2.5)
     _, _, view = _lever_texts(fa, detail, lang)
-    texts = [c["content"] for c in view.calls if c.name == "text"]
-    ratio = f"{detail.ratio:g}".replace(".", "," if lang == "uk" else ".")
-    assert f"{detail.letter} ({ratio}:1)" in texts
+    texts = [c.content for c in view.calls if isinstance(c, Text)]
+    assert title.format(detail.letter) in texts
 
 
 def test_a_segment_is_cut_at_the_discs_edge():
