@@ -833,13 +833,10 @@ class LeverDetail:
 _DETAIL_RATIOS = (2.0, 2.5, 4.0, 5.0, 10.0)
 # the radii (mm at the lever's scale) of the discs tried round a crowd
 _DETAIL_RADII = (8.0, 12.0, 16.0, 20.0, 25.0)
-# the share of a disc (widened by NEAR_MM) that names cover where they crowd
-# (the samples' levers, legible, reach 0.64; the crowded of 4-5 groups 0.9-1.7)
-_CROWDED = 0.9
-# the share a detail's ratio leaves them: 0.12-0.18 lettered gen 15's
+# the share of a detail's disc (widened by NEAR_MM) its names may cover:
 _NAME_SHARE = 0.12
 _DETAIL_MM = 70.0  # the largest radius of a detail's disc, mm
-_DETAILS = 1  # the most detail views of one lever (2 gave gen 194 a second, needless)
+_DETAILS = 2  # the most detail views of one lever
 _ARM_NAMED_MM = 6.0  # the shortest arm a detail names along it, mm
 # a detail's letter: a capital that names no point, force or arm (G, F, R, M, S,
 # K, P, O, I, Q, J read as loads, images or digits)
@@ -879,48 +876,65 @@ def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[tuple[np.ndarray, float
     return out
 
 
-def lever_details(fa: ForceAnalysis, mu_V: float) -> tuple[LeverDetail, ...]:
-    """The detail views the lever at `mu_V` needs (at most _DETAILS): while
-    the names of some disc round p or an image, of a radius of _DETAIL_RADII,
-    clear of the discs taken, would cover more than _CROWDED of it (widened by
-    NEAR_MM), of the discs they cover more than _NAME_SHARE of, the one that
-    holds the most of them; each drawn at the first ratio of the series that
-    leaves its names _NAME_SHARE and names its shortest arm along it (or
-    draws the disc _DETAIL_MM wide)."""
+def crowded_names(sketch: Sketch, lang: Language) -> np.ndarray:
+    """Where the names of a drawing that the sheet linter finds far from what
+    they name, or on a line or another name, stand for (mm, one row each: the
+    point, or the middle of the segment, they name)."""
+    from .lint import SheetView, label_clear, label_near
+
+    view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
+    found = {f.where for f in (*label_near(view), *label_clear(view))}
+    out = []
+    for lab in view.labels:
+        c = lab.box.centroid
+        if lab.naming is None or (round(float(c.x), 1), round(float(c.y), 1)) not in found:
+            continue
+        n = lab.naming
+        end = n.anchor if n.end is None else n.end
+        out.append(((n.anchor[0] + end[0]) / 2.0, (n.anchor[1] + end[1]) / 2.0))
+    return np.array(out, dtype=float).reshape(-1, 2)
+
+
+def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[LeverDetail, ...]:
+    """The detail views the lever at `mu_V` needs where the names standing
+    for the points `crowded` (mm, `crowded_names` of the lever drawn without
+    details) found no place near: at most _DETAILS discs apart, round p, an
+    image or such a point, of a radius of _DETAIL_RADII, each holding the most
+    of those points left (the largest such: the whole crowd; the smallest
+    left five_dyads crowded); each drawn at the first ratio of the series that
+    leaves the names in it _NAME_SHARE of its room and names its shortest arm
+    along it (or draws the disc _DETAIL_MM wide)."""
     names = _lever_names(fa, mu_V)
     where = np.array([at for at, _, _ in names])
     areas = np.array([a for _, a, _ in names])
     arm = np.array([a for _, _, a in names])
-    centres = [np.zeros(2), *(at for at, _, a in names if not a)]
+    centres = [np.zeros(2), *(at for at, _, a in names if not a), *crowded]
     taken = {n[:1].upper() for n in fa.loads.state.mech.point_owners}
     letters = [x for x in _DETAIL_LETTERS if x not in taken] or list(_DETAIL_LETTERS)
     out: list[LeverDetail] = []
-    left = np.ones(len(names), dtype=bool)  # the names no disc taken holds
+    left = np.ones(len(crowded), dtype=bool)  # the crowded names no disc taken holds
     for letter in letters[:_DETAILS]:
-        best: tuple[float, float, np.ndarray] | None = None
-        crowded = False
+        best: tuple[int, float, np.ndarray] | None = None  # held, radius, centre
         for c in centres:
-            dist = np.hypot(*(where - c).T)
+            near = np.hypot(*(crowded - c).T) if len(crowded) else np.zeros(0)
             for r in _DETAIL_RADII:
                 if any(
                     math.dist(c, np.asarray(d.centre) / mu_V) < r + d.radius / mu_V for d in out
                 ):
                     continue  # discs apart: a name is the lever's or one detail's
-                demand = float(areas[(dist <= r) & left].sum())
-                room = math.pi * (r + NEAR_MM) ** 2
-                crowded = crowded or demand > _CROWDED * room
-                if demand > _NAME_SHARE * room and (best is None or (demand, -r) > best[:2]):
-                    best = (demand, -r, c)
-        if best is None or not crowded:
+                held = int(((near <= r) & left).sum())
+                if held and (best is None or (held, r) > best[:2]):
+                    best = (held, r, c)
+        if best is None:
             break
-        demand, r, c = best[0], -best[1], best[2]
-        held = (np.hypot(*(where - c).T) <= r) & left
-        left &= ~held
+        r, c = best[1], best[2]
+        left &= np.hypot(*(crowded - c).T) > r
+        inside = np.hypot(*(where - c).T) <= r
+        demand = float(areas[inside].sum())
         # the arms in the disc long enough, at the ratio, to be named along
-        shortest = (
-            min((2.0 * float(np.hypot(*where[i]))) for i in np.flatnonzero(held & arm))
-            if (held & arm).any()
-            else math.inf
+        shortest = min(
+            (2.0 * float(np.hypot(*where[i])) for i in np.flatnonzero(inside & arm)),
+            default=math.inf,
         )
         ratio = next(
             (
@@ -1498,7 +1512,8 @@ class _Composer:
             self.drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
         self.drawings += ["driving-link", f"force-polygon-{dl.link}"]
         # where the lever's names crowd at its textbook scale, a detail view of them
-        self.details = lever_details(fa, self.lever_mu)
+        plain = sketch_lever(fa, self.lever_mu, look, lang, [])
+        self.details = lever_details(fa, self.lever_mu, crowded_names(plain, lang))
         self.drawings += [detail_gid(self.details, d) for d in self.details]
         self.last: Exception | None = None
         # where pack put each drawing after the same ones before it (arrange's
