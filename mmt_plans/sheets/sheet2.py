@@ -1512,9 +1512,13 @@ class _Composer:
             self.drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
         self.drawings += ["driving-link", f"force-polygon-{dl.link}"]
         # where the lever's names crowd at its textbook scale, a detail view of them
-        plain = sketch_lever(fa, self.lever_mu, look, lang, [])
+        arms: list[tuple[str, float]] = []
+        plain = sketch_lever(fa, self.lever_mu, look, lang, arms)
         self.details = lever_details(fa, self.lever_mu, crowded_names(plain, lang))
         self.drawings += [detail_gid(self.details, d) for d in self.details]
+        if not self.details:  # the lever at its textbook scale is drawn: kept
+            tables = _sketch_tables(fa, arms, look, lang, compact)
+            self.cache[("lever", self.lever_mu)] = (plain, arms, tables)
         self.last: Exception | None = None
         # where pack put each drawing after the same ones before it (arrange's
         # trials share the start of their orders)
