@@ -1491,6 +1491,7 @@ class _Composer:
         lang: Language,
         page: Page,
         compact: bool = False,
+        details: bool = True,
     ) -> None:
         self.fa, self.look, self.lang, self.page = fa, look, lang, page
         # compact (compose_sheet2's reduction for a sheet of many groups): the
@@ -1514,7 +1515,9 @@ class _Composer:
         # where the lever's names crowd at its textbook scale, a detail view of them
         arms: list[tuple[str, float]] = []
         plain = sketch_lever(fa, self.lever_mu, look, lang, arms)
-        self.details = lever_details(fa, self.lever_mu, crowded_names(plain, lang))
+        self.details = (
+            lever_details(fa, self.lever_mu, crowded_names(plain, lang)) if details else ()
+        )
         self.drawings += [detail_gid(self.details, d) for d in self.details]
         if not self.details:  # the lever at its textbook scale is drawn: kept
             tables = _sketch_tables(fa, arms, look, lang, compact)
@@ -2058,6 +2061,12 @@ def compose_sheet2(
         # many groups: the equations in short lines, the tables in parts
         plain = composer
         composer = _Composer(fa, solution, backend.look, lang, page, compact=True)
+        composer.cache.update(plain.shared_drawings())
+        steps = composer.first_fit()
+    if steps is None and composer.details:
+        # no room for the lever's detail views either (chain_25): the lever alone
+        plain = composer
+        composer = _Composer(fa, solution, backend.look, lang, page, compact=True, details=False)
         composer.cache.update(plain.shared_drawings())
         steps = composer.first_fit()
     if steps is None:
