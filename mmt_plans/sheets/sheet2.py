@@ -31,7 +31,7 @@ from typing import Any
 import numpy as np
 import shapely
 
-from ..drawing.labels import LabelCounts, Labels, arc_line
+from ..drawing.labels import NEAR_MM, LabelCounts, Labels, arc_line
 from ..drawing.layout import LayoutError, SheetLayout, pack
 from ..drawing.markup import equation_markup as _equation_markup
 from ..drawing.markup import force_markup, image_markup, point_markup
@@ -111,6 +111,8 @@ class Sheet2:
     # the most series steps any drawing is coarser than its textbook scale
     # (negative: every drawing finer, enlarged to fill the sheet)
     shrink: int = 0
+    # the lever's detail views (drawings "zhukovsky-lever-detail", "…-detail-2")
+    details: tuple[LeverDetail, ...] = ()
 
     @property
     def record(self) -> Sheet2Scales:
@@ -851,31 +853,247 @@ def sketch_force_polygons(
     return sk
 
 
+@dataclass(frozen=True)
+class LeverDetail:
+    """A detail view of the lever (GOST 2.305, "выносний елемент"): the disc
+    of `radius` round `centre` (both in m/s, on the lever at any scale) where
+    the lever's names crowd, drawn again `ratio` times larger and lettered
+    there; the lever marks it with a thin circle and `letter`."""
+
+    letter: str
+    centre: tuple[float, float]
+    radius: float
+    ratio: float
+
+
+# the series of a detail's scales (GOST 2.302: 2:1, 2.5:1, 4:1, 5:1, 10:1)
+_DETAIL_RATIOS = (2.0, 2.5, 4.0, 5.0, 10.0)
+# the radii (mm at the lever's scale) of the discs tried round a crowd
+_DETAIL_RADII = (8.0, 12.0, 16.0, 20.0, 25.0)
+# the share of a detail's disc (widened by NEAR_MM) its names may cover:
+_NAME_SHARE = 0.12
+_DETAIL_MM = 70.0  # the largest radius of a detail's disc, mm
+_DETAILS = 2  # the most detail views of one lever
+_ARM_NAMED_MM = 6.0  # the shortest arm a detail names along it, mm
+# a detail's letter: a capital that names no point, force or arm (G, F, R, M, S,
+# K, P, O, I, Q, J read as loads, images or digits)
+_DETAIL_LETTERS = "ABCDEHLNTUVWXYZ"
+_LETTER_W = 2.3  # mm per character of a 3.5 mm name, a bound for counting room
+
+
+def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[tuple[np.ndarray, float, bool]]:
+    """The names the lever writes at `mu_V`: (where it stands, mm; the area of
+    its box, mm²; whether it is an arm's, lettered along p–foot)."""
+    lever = fa.lever
+    owners = tuple(fa.loads.state.mech.point_owners)
+    out: list[tuple[np.ndarray, float, bool]] = []
+
+    def area(markup: str) -> float:
+        return (len(re.sub(r"[_{}]", "", markup)) * _LETTER_W + 1.5) * (_TEXT + 1.5)
+
+    spots: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {(0, 0): (np.zeros(2), ["p"])}
+    for n, v in lever.images.items():
+        at = np.asarray(v, float) / mu_V
+        if float(np.hypot(*at)) >= 0.5:
+            key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
+            spots.setdefault(key, (at, []))[1].append(image_markup(n, owners))
+    out += [(at, area(", ".join(names)), False) for at, names in spots.values()]
+    forces = [*lever.forces, lever.balancing]
+    largest = max(float(np.hypot(*f.force)) for f in forces)
+    for f in forces:
+        size = float(np.hypot(*f.force))
+        if size <= 1e-9 * largest:
+            continue
+        at = np.asarray(f.image, float) / mu_V
+        u = np.asarray(f.force, float) / size
+        out.append((at + 0.5 * _arrow_length(size, largest) * u, area(f.label) + 8.0, False))
+        if abs(f.arm) / mu_V >= 1.0:
+            foot = at - float(np.dot(at, u)) * u
+            out.append((0.5 * foot, area("h_{10}"), True))
+    return out
+
+
+def crowded_names(sketch: Sketch, lang: Language) -> np.ndarray:
+    """Where the names of a drawing that the sheet linter finds far from what
+    they name, or on a line or another name, stand for (mm, one row each: the
+    point, or the middle of the segment, they name)."""
+    from .lint import SheetView, label_clear, label_near
+
+    view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
+    found = {f.where for f in (*label_near(view), *label_clear(view))}
+    out = []
+    for lab in view.labels:
+        c = lab.box.centroid
+        if lab.naming is None or (round(float(c.x), 1), round(float(c.y), 1)) not in found:
+            continue
+        n = lab.naming
+        end = n.anchor if n.end is None else n.end
+        out.append(((n.anchor[0] + end[0]) / 2.0, (n.anchor[1] + end[1]) / 2.0))
+    return np.array(out, dtype=float).reshape(-1, 2)
+
+
+def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[LeverDetail, ...]:
+    """The detail views the lever at `mu_V` needs where the names standing
+    for the points `crowded` (mm, `crowded_names` of the lever drawn without
+    details) found no place near: at most _DETAILS discs apart, round p, an
+    image or such a point, of a radius of _DETAIL_RADII, each holding the most
+    of those points left (the largest such: the whole crowd; the smallest
+    left five_dyads crowded); each drawn at the first ratio of the series that
+    leaves the names in it _NAME_SHARE of its room and names its shortest arm
+    along it (or draws the disc _DETAIL_MM wide)."""
+    names = _lever_names(fa, mu_V)
+    where = np.array([at for at, _, _ in names])
+    areas = np.array([a for _, a, _ in names])
+    arm = np.array([a for _, _, a in names])
+    centres = [np.zeros(2), *(at for at, _, a in names if not a), *crowded]
+    taken = {n[:1].upper() for n in fa.loads.state.mech.point_owners}
+    letters = [x for x in _DETAIL_LETTERS if x not in taken] or list(_DETAIL_LETTERS)
+    out: list[LeverDetail] = []
+    left = np.ones(len(crowded), dtype=bool)  # the crowded names no disc taken holds
+    for letter in letters[:_DETAILS]:
+        best: tuple[int, float, np.ndarray] | None = None  # held, radius, centre
+        for c in centres:
+            near = np.hypot(*(crowded - c).T) if len(crowded) else np.zeros(0)
+            for r in _DETAIL_RADII:
+                if any(
+                    math.dist(c, np.asarray(d.centre) / mu_V) < r + d.radius / mu_V for d in out
+                ):
+                    continue  # discs apart: a name is the lever's or one detail's
+                held = int(((near <= r) & left).sum())
+                if held and (best is None or (held, r) > best[:2]):
+                    best = (held, r, c)
+        if best is None:
+            break
+        r, c = best[1], best[2]
+        left &= np.hypot(*(crowded - c).T) > r
+        inside = np.hypot(*(where - c).T) <= r
+        demand = float(areas[inside].sum())
+        # the arms in the disc long enough, at the ratio, to be named along
+        shortest = min(
+            (2.0 * float(np.hypot(*where[i])) for i in np.flatnonzero(inside & arm)),
+            default=math.inf,
+        )
+        ratio = next(
+            (
+                k
+                for k in _DETAIL_RATIOS
+                if (
+                    demand <= _NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
+                    and k * shortest >= _ARM_NAMED_MM
+                )
+                or k * r >= _DETAIL_MM
+            ),
+            _DETAIL_RATIOS[-1],
+        )
+        out.append(LeverDetail(letter, (float(c[0]) * mu_V, float(c[1]) * mu_V), r * mu_V, ratio))
+    return tuple(out)
+
+
+def detail_gid(details: Sequence[LeverDetail], detail: LeverDetail) -> str:
+    """The drawing of sheet 2 that holds the detail view `detail` of `details`."""
+    k = list(details).index(detail)
+    return "zhukovsky-lever-detail" + (f"-{k + 1}" if k else "")
+
+
+def _clipped(
+    a: np.ndarray, b: np.ndarray, centre: np.ndarray, radius: float
+) -> tuple[np.ndarray, np.ndarray] | None:
+    """The part of the segment a–b inside the disc, or None."""
+    d = b - a
+    f = a - centre
+    A = float(np.dot(d, d))
+    if A < 1e-12:
+        return (a, b) if float(np.hypot(*f)) <= radius else None
+    B = 2.0 * float(np.dot(f, d))
+    C = float(np.dot(f, f)) - radius * radius
+    disc = B * B - 4.0 * A * C
+    if disc <= 0.0:
+        return None
+    root = math.sqrt(disc)
+    t0, t1 = max(0.0, (-B - root) / (2.0 * A)), min(1.0, (-B + root) / (2.0 * A))
+    if t1 - t0 < 1e-9:
+        return None
+    return a + t0 * d, a + t1 * d
+
+
 def sketch_lever(
-    fa: ForceAnalysis, mu_V: float, look: Any, lang: Language, arms: list[tuple[str, float]]
+    fa: ForceAnalysis,
+    mu_V: float,
+    look: Any,
+    lang: Language,
+    arms: list[tuple[str, float]],
+    details: Sequence[LeverDetail] = (),
 ) -> Sketch:
     """The turned velocity plan to μV, every force at the image of its point
-    and its arm about the pole p; `arms` receives (label, h mm) in order."""
+    and its arm about the pole p; `arms` receives (label, h mm) in order.
+    With `details`, what lies in a detail's disc is drawn but lettered only in
+    its detail view (`sketch_lever_detail`): there the forces at its images,
+    their arms and the images' names; the disc is marked by a thin circle and
+    its letter."""
+    return _lever_view(fa, mu_V, look, lang, arms, details, None)
+
+
+def sketch_lever_detail(
+    fa: ForceAnalysis, mu_V: float, look: Any, lang: Language, detail: LeverDetail
+) -> Sketch:
+    """The detail view `detail` of the lever drawn at `mu_V`: its disc at
+    μV / ratio, titled "A (4:1)", the lines cut at the disc's edge, the forces
+    at the images inside it with their arms, and every name there."""
+    return _lever_view(fa, mu_V, look, lang, [], (detail,), detail)
+
+
+def _lever_view(
+    fa: ForceAnalysis,
+    mu_V: float,
+    look: Any,
+    lang: Language,
+    arms: list[tuple[str, float]],
+    details: Sequence[LeverDetail],
+    detail: LeverDetail | None,
+) -> Sketch:
+    """The lever with `details` marked (`detail` None), or the detail view `detail`."""
+    in_detail = detail is not None
     lever = fa.lever
     mech = fa.loads.state.mech
     sk = Sketch(look)
     labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
-    img = {n: np.asarray(v, float) / mu_V for n, v in lever.images.items()}
+    mu = mu_V / detail.ratio if detail is not None else mu_V
+    img = {n: np.asarray(v, float) / mu for n, v in lever.images.items()}
+    discs = [(np.asarray(d.centre, float) / mu, d.radius / mu) for d in details]
+    centre, radius = discs[0] if detail is not None else (np.zeros(2), 0.0)
+
+    def inside(at: np.ndarray) -> bool:
+        """Whether `at` lies in a detail's disc (in this view's own)."""
+        return any(float(np.hypot(*(at - c))) <= r for c, r in discs)
+
+    def here(at: np.ndarray) -> bool:
+        """Whether what stands at `at` is drawn and named in this view."""
+        return inside(at) if in_detail else not inside(at)
+
+    def line(a: Any, b: Any, kind: LineType) -> None:
+        a, b = np.asarray(a, float), np.asarray(b, float)
+        part = _clipped(a, b, centre, radius) if in_detail else (a, b)
+        if part is not None:
+            sk.line(part[0], part[1], kind)
+
     dotted: set[str] = set()  # images of S_i and K_i marked with a dot
-    with sk.group("zhukovsky-lever", "lever"):
+    gid = detail_gid(details, detail) if detail is not None else "zhukovsky-lever"
+    with sk.group(gid, "lever"):
         joints = [n for n in img if not re.fullmatch(r"[SK]\d+", n)]
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
-                sk.line((0.0, 0.0), img[n], "thin")
+                line((0.0, 0.0), img[n], "thin")
         for link in mech.links.values():
             names = [p for p in link.points if p in img]
             for i in range(len(names)):
                 for j in range(i + 1, len(names)):
-                    sk.line(img[names[i]], img[names[j]], "main")
+                    line(img[names[i]], img[names[j]], "main")
         # the images named, those at one point in one label: "d, s_{5}, k_{5}"
         marks: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
 
         def mark(markup: str, at: np.ndarray) -> None:
+            if not here(at):
+                return
             key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
             marks.setdefault(key, (at, []))[1].append(markup)
 
@@ -883,8 +1101,9 @@ def sketch_lever(
         for n in joints:
             if float(np.hypot(*img[n])) >= 0.5:
                 mark(image_markup(n, tuple(mech.point_owners)), img[n])
-        sk.circle((0.0, 0.0), 0.8, "main", "black")
-        labels.avoid_circle((0.0, 0.0), 1.2)
+        if here(np.zeros(2)):
+            sk.circle((0.0, 0.0), 0.8, "main", "black")
+            labels.avoid_circle((0.0, 0.0), 1.2)
         forces = [*lever.forces, lever.balancing]
         feet: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
         largest = max(float(np.hypot(*f.force)) for f in forces)
@@ -895,30 +1114,46 @@ def sketch_lever(
             size = float(np.hypot(*f.force))
             if size <= 1e-9 * largest:
                 continue
-            at = np.asarray(f.image, float) / mu_V
+            at = np.asarray(f.image, float) / mu
             u = np.asarray(f.force, float) / size
             end = at + _arrow_length(size, largest) * u
-            for k, (s0, e0, names) in enumerate(drawn):
-                if _coincident(s0, e0, at, end) and float(np.dot(e0 - s0, u)) > 0.0:
-                    ts = [0.0, float(np.dot(e0 - s0, u)), float(np.dot(at - s0, u))]
-                    ts.append(float(np.dot(end - s0, u)))
-                    drawn[k] = (s0 + min(ts) * u, s0 + max(ts) * u, [*names, f.label])
-                    break
-            else:
-                drawn.append((at, end, [f.label]))
-            if re.fullmatch(r"[SK]\d+", f.point) and f.point not in dotted:
+            if here(at):
+                for k, (s0, e0, names) in enumerate(drawn):
+                    if _coincident(s0, e0, at, end) and float(np.dot(e0 - s0, u)) > 0.0:
+                        ts = [0.0, float(np.dot(e0 - s0, u)), float(np.dot(at - s0, u))]
+                        ts.append(float(np.dot(end - s0, u)))
+                        drawn[k] = (s0 + min(ts) * u, s0 + max(ts) * u, [*names, f.label])
+                        break
+                else:
+                    drawn.append((at, end, [f.label]))
+            if here(at) and re.fullmatch(r"[SK]\d+", f.point) and f.point not in dotted:
                 dotted.add(f.point)
                 sk.circle(at, 0.6, "thin", "black")
                 mark(image_markup(f.point, tuple(mech.point_owners)), at)
-            h = abs(f.arm) / mu_V
-            arms.append((f.label, h))
+            h = abs(f.arm) / mu
+            arms.append((f.label, abs(f.arm) / mu_V))
             if h >= 1.0:
                 foot = at - float(np.dot(at, u)) * u
+                # an arm is the detail's where all of it lies in the disc
+                whole = any(
+                    max(float(np.hypot(*(q - c))) for q in (at, foot, np.zeros(2))) <= r
+                    for c, r in discs
+                )
+                if in_detail and not whole:
+                    line((0.0, 0.0), foot, "thin")  # cut at the disc's edge, named on the lever
+                    line(at, foot, "thin")
+                    continue
+                if not in_detail and whole:
+                    continue
                 sk.line((0.0, 0.0), foot, "thin")
                 sk.line(at, foot, "thin")
                 # forces on one line of action share their arm: one label, h_{10,11}
                 key = (round(float(foot[0]) * 2), round(float(foot[1]) * 2))
                 feet.setdefault(key, (foot, []))[1].append(str(len(arms)))
+        for d, (c, r) in zip(details if not in_detail else (), discs):
+            sk.circle(c, r, "thin")
+            rim = c + r * np.array([math.sqrt(0.5), math.sqrt(0.5)])
+            labels.later(rim, d.letter, rim - c)
         for at, names in marks.values():
             pole = float(np.hypot(*at)) < 0.5
             labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
@@ -936,6 +1171,11 @@ def sketch_lever(
         labels.write_later(retry=_RETRY_ORDERS)
         sk.label_counts = labels.counts()
         ext = sk.extent()
+        if detail is not None:
+            ratio = catalogue(lang).plain_number(detail.ratio)
+            title = _words(lang)["lever_detail"].format(letter=detail.letter, ratio=ratio)
+            sk.text((ext.left + _PAD, ext.top + 3.0), title, _TITLE)
+            return sk
         sk.rich_text((ext.left + _PAD, ext.bottom - 5.0), _words(lang)["equation"], _TEXT)
         sk.rich_text(
             (ext.left + _PAD, ext.bottom - 11.0),
@@ -1290,6 +1530,7 @@ class _Composer:
         lang: Language,
         page: Page,
         compact: bool = False,
+        details: bool = True,
     ) -> None:
         self.fa, self.look, self.lang, self.page = fa, look, lang, page
         # compact (compose_sheet2's reduction for a sheet of many groups): the
@@ -1310,6 +1551,16 @@ class _Composer:
         for g in fa.groups:
             self.drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
         self.drawings += ["driving-link", f"force-polygon-{dl.link}"]
+        # where the lever's names crowd at its textbook scale, a detail view of them
+        arms: list[tuple[str, float]] = []
+        plain = sketch_lever(fa, self.lever_mu, look, lang, arms)
+        self.details = (
+            lever_details(fa, self.lever_mu, crowded_names(plain, lang)) if details else ()
+        )
+        self.drawings += [detail_gid(self.details, d) for d in self.details]
+        if not self.details:  # the lever at its textbook scale is drawn: kept
+            tables = _sketch_tables(fa, arms, look, lang, compact)
+            self.cache[("lever", self.lever_mu)] = (plain, arms, tables)
         self.last: Exception | None = None
         # where pack put each drawing after the same ones before it (arrange's
         # trials share the start of their orders)
@@ -1355,10 +1606,23 @@ class _Composer:
 
         def make() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
             arms: list[tuple[str, float]] = []
-            sketch = sketch_lever(self.fa, mu_V, self.look, self.lang, arms)
+            sketch = sketch_lever(self.fa, mu_V, self.look, self.lang, arms, self.details)
             return sketch, arms, _sketch_tables(self.fa, arms, self.look, self.lang, self.compact)
 
         return self.memo(("lever", mu_V), make)  # type: ignore[no-any-return]
+
+    def lever_details(self, mu_V: float) -> list[tuple[str, Sketch]]:
+        """The detail views of the lever at `mu_V` (drawing, sketch)."""
+        return [
+            (
+                detail_gid(self.details, d),
+                self.memo(
+                    ("lever-detail", d.letter, mu_V),
+                    lambda d=d: sketch_lever_detail(self.fa, mu_V, self.look, self.lang, d),
+                ),
+            )
+            for d in self.details
+        ]
 
     def polygons(
         self, name: str, polygons: Sequence[ForcePolygon], title: str, mu_F: float
@@ -1455,6 +1719,7 @@ class _Composer:
         lever, lever_arms, tables = self.lever(mu_V)
         arms.extend(lever_arms)
         yield "zhukovsky-lever", lever
+        yield from self.lever_details(mu_V)
         yield from tables.items()
         mechanism, loads = self.memo(
             ("force-mechanism", mu_l),
@@ -1667,7 +1932,11 @@ class _Composer:
                 w, h = np.ptp(pts, axis=0) / scales[key] + 2.0 * PAD
                 yield owner[key], float(w * h)
         lever, _, tables = self.lever(scales["mu_V"])
-        for name, sketch in (("zhukovsky-lever", lever), *tables.items()):
+        for name, sketch in (
+            ("zhukovsky-lever", lever),
+            *self.lever_details(scales["mu_V"]),
+            *tables.items(),
+        ):
             yield name, self.extent(sketch).width * self.extent(sketch).height
         for name, polygons, title in self.polygon_sets:
             sketch = self.polygons(name, polygons, title, scales[f"mu_F {name}"])
@@ -1796,6 +2065,7 @@ class _Composer:
         keys: dict[str, list[list[str]]] = {
             "force-mechanism": [["mech"], parts],
             "zhukovsky-lever": [["lever"]],
+            **{detail_gid(self.details, d): [["lever"]] for d in self.details},
             "driving-link": [["driving"], parts],
         }
         keys.update({f"group-{g.name}": [[f"group {g.name}"], parts] for g in self.fa.groups})
@@ -1921,6 +2191,12 @@ def compose_sheet2(
         composer = _Composer(fa, solution, backend.look, lang, page, compact=True)
         composer.cache.update(plain.shared_drawings())
         steps = composer.first_fit()
+    if steps is None and composer.details:
+        # no room for the lever's detail views either (chain_25): the lever alone
+        plain = composer
+        composer = _Composer(fa, solution, backend.look, lang, page, compact=True, details=False)
+        composer.cache.update(plain.shared_drawings())
+        steps = composer.first_fit()
     if steps is None:
         what = composer.last or (
             f"its {len(composer.drawings)} drawings ({', '.join(composer.drawings)}) and "
@@ -1939,7 +2215,14 @@ def compose_sheet2(
     arranged = composer.arrange(sketches)
     assert arranged is not None  # it fitted before
     layout, placed = composer.given_room(sketches, *arranged, scales)
-    result = Sheet2(fa, layout, dict(scales), shrink=max(steps.values()), arms={"lever": arms})
+    result = Sheet2(
+        fa,
+        layout,
+        dict(scales),
+        shrink=max(steps.values()),
+        arms={"lever": arms},
+        details=composer.details,
+    )
     for name in composer.tables + composer.drawings:
         ext, rect = composer.extent(sketches[name]), placed[name]
         dx, dy = rect.x - ext.x, rect.y - ext.y

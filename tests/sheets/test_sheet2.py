@@ -13,7 +13,7 @@ from click.testing import CliRunner
 import mmt_plans
 from mmt_plans.render.recording import RecordingBackend
 from mmt_plans.scales import is_standard
-from mmt_plans.sheets.sheet2 import compose_sheet2, force_markup
+from mmt_plans.sheets.sheet2 import compose_sheet2, detail_gid, force_markup
 
 from lettering import clashes
 
@@ -137,19 +137,28 @@ def test_drawn_lever_is_in_equilibrium_with_the_plans_balancing_force(every_samp
     load's magnitude — with F_bal from the force plans, not from the lever."""
     analysis, backend, sheet = every_sample
     fa = sheet.forces
-    origin = np.array(sheet.origins["zhukovsky-lever"])
     mu = sheet.scales["mu_V"]
     loads = [f for f in fa.lever.forces if np.hypot(*f.force) > 0]
-    arrows = [c for c in _arrows(backend, "zhukovsky-lever")]
+    # the forces at the images in a detail's disc are drawn in the detail view,
+    # at μV / ratio: each arrow with the origin and μ of its drawing
+    views = [("zhukovsky-lever", mu)]
+    for d in sheet.details:
+        views.append((detail_gid(sheet.details, d), mu / d.ratio))
+    arrows, origins, mus = [], [], []
+    for gid, mu_view in views:
+        for c in _arrows(backend, gid):
+            arrows.append(c)
+            origins.append(np.array(sheet.origins[gid]))
+            mus.append(mu_view)
     # forces along one line of action in one sense share one arrow (F_PR, F_in5 at e)
     assert len(arrows) <= len(loads) + 1
     total, scale, used = 0.0, 0.0, set()
     for f in [*loads, fa.lever.balancing]:
-        at = np.asarray(f.image, float) / mu + origin  # where the image should be, mm
         v = np.asarray(f.force, float) / np.hypot(*f.force)
         on_line = []
         for k, c in enumerate(arrows):
             u = np.subtract(c["end"], c["start"]) / c["length"]
+            at = np.asarray(f.image, float) / mus[k] + origins[k]  # where the image should be, mm
             r = at - np.asarray(c["start"])
             if abs(float(u[0] * r[1] - u[1] * r[0])) < 1e-6 and float(u @ v) > 1 - 1e-9:
                 on_line.append(k)
@@ -157,6 +166,7 @@ def test_drawn_lever_is_in_equilibrium_with_the_plans_balancing_force(every_samp
         # of several arrows on one line, the one that starts at (or runs through) the image
         def gap(k):
             c = arrows[k]
+            at = np.asarray(f.image, float) / mus[k] + origins[k]
             u = np.subtract(c["end"], c["start"]) / c["length"]
             t = float(u @ (at - np.asarray(c["start"])))
             return max(0.0, -t, t - c["length"])
@@ -164,7 +174,7 @@ def test_drawn_lever_is_in_equilibrium_with_the_plans_balancing_force(every_samp
         k = min(on_line, key=gap)
         used.add(k)
         c = arrows[k]
-        image = (np.subtract(c["start"], origin)) * mu  # m/s, pole at the origin
+        image = (np.subtract(c["start"], origins[k])) * mus[k]  # m/s, pole at the origin
         u = np.subtract(c["end"], c["start"]) / c["length"]
         size = abs(fa.balancing_force_plans) if f.label == "F_bal" else float(np.hypot(*f.force))
         m = size * float(image[0] * u[1] - image[1] * u[0])

@@ -54,6 +54,8 @@ def test_a_lever_whose_names_are_walled_in_is_drawn_larger_where_the_sheet_holds
     # the lever a step larger); the mechanism with its parts a step smaller
     # gives that room, and then no name of any drawing stands far
     monkeypatch.setattr(sheet2, "_RETRY_ORDERS", 1)
+    # no detail view (one now names the crowd round 's4'): unwall's own rule
+    monkeypatch.setattr(sheet2, "_DETAILS", 0)
     solution = mmt_plans.solve(mmt_plans.load(TASKS / "seed003" / "task05_v4.toml"))
     fa = solution.require_forces()
     composer = _Composer(fa, solution, load_look(), "en", Page.of("A1"))
