@@ -70,7 +70,7 @@ FUZZ_SEED  ?= 1
 fuzz: $(STAMP)
 	$(BIN)/python tests/fuzz.py --cases $(FUZZ_CASES) --seed $(FUZZ_SEED) --draw-every 20
 
-# The sheet linter (mmt_plans/sheets/lint.py) over every sample and seed task,
+# The sheet linter (mmt_plans/sheets/lint.py, run by lint_run.py) over every sample and seed task,
 # variants of every sample family and generated mechanisms, both sheets in en
 # and uk: a table of rule x passes / fails; each failing mechanism's file and
 # findings under $(OUT)/sheets-lint/. Exit 1 while a rule fails anywhere.
@@ -78,7 +78,7 @@ LINT_GENERATED ?= 200
 LINT_VARIANTS  ?= 5
 LINT_JOBS      ?= 2
 sheets-lint: $(STAMP) fonts
-	$(BIN)/python -m mmt_plans.sheets.lint --generated $(LINT_GENERATED) \
+	$(BIN)/python -m mmt_plans.sheets.lint_run --generated $(LINT_GENERATED) \
 	  --variants $(LINT_VARIANTS) --jobs $(LINT_JOBS) --out $(OUT)/sheets-lint
 
 lint: $(STAMP)

@@ -50,6 +50,7 @@ from ..render.look import LineType
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
 from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, scale_step, title_fields
+from .lint import SheetView, label_clear, label_near
 from .scales_record import Sheet2Scales
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
@@ -917,8 +918,6 @@ def crowded_names(sketch: Sketch, lang: Language) -> np.ndarray:
     """Where the names of a drawing that the sheet linter finds far from what
     they name, or on a line or another name, stand for (mm, one row each: the
     point, or the middle of the segment, they name)."""
-    from .lint import SheetView, label_clear, label_near
-
     view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
     found = {f.where for f in (*label_near(view), *label_clear(view))}
     out = []

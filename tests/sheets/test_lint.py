@@ -12,13 +12,8 @@ import pytest
 
 from mmt_plans.drawing.table import Table, _one_format_per_column
 from mmt_plans.render.recording import RecordingBackend
-from mmt_plans.sheets.lint import (
-    Case,
-    SheetView,
-    lint,
-    lint_case,
-    lint_pair,
-)
+from mmt_plans.sheets.lint import SheetView, lint, lint_pair
+from mmt_plans.sheets.lint_run import Case, lint_case
 
 ROOT = Path(__file__).resolve().parents[2]
 
