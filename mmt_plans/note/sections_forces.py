@@ -671,10 +671,17 @@ def lever(wr: Writer, fa: ForceAnalysis, step: str) -> None:
         )
     wr.add("table", w["tab_lever"], rows=rows, widths=(24, 16, 30, 30, 36))
     drawings = [(2, ("zhukovsky-lever",))]
+    # the lever's detail views (sheet 2 draws one where its names crowd round p)
+    details = [(2, (g,)) for g in wr.drawings_named(2, "zhukovsky-lever-detail")]
     if wr.has_figure(drawings):
         n_fig = wr.next_figure
-        wr.text(w["lever_drawn"].format(mv=wr.v(mu_v, MV)) + wr.cite(n_fig) + ".")
-        wr.figure(drawings, w["fig_lever"].format(mv=wr.v(mu_v, MV)))
+        drawn = w["lever_drawn"].format(mv=wr.v(mu_v, MV)) + wr.cite(n_fig) + "."
+        wr.text(drawn + (" " + w["lever_details_drawn"] if details else ""))
+        caption = w["fig_lever"].format(mv=wr.v(mu_v, MV))
+        if details:
+            parts = ", ".join(str(w["part_letters"])[1 : 1 + len(details)])
+            caption += w["fig_lever_parts"].format(parts=parts)
+        wr.figure(drawings + details, caption)
     TOT = f"sum(lever_moment(f) for f in F.lever.forces)/{MV}"
     wr.text(w["F_bal_z"])
     sign = "+" if s > 0 else "-"

@@ -263,6 +263,15 @@ class Writer:
                 return False
         return True
 
+    def drawings_named(self, n: int, prefix: str) -> tuple[str, ...]:
+        """The drawings of composed sheet `n` whose ids start with `prefix`, in
+        drawing order (none where the sheet was not composed)."""
+        try:
+            sheet = self.composed.sheet(n)
+        except Exception:
+            return ()
+        return tuple(g for g in sheet.drawings if g.startswith(prefix))
+
     def figure(self, parts: Sequence[tuple[int, Sequence[str]]], caption: str) -> int | None:
         """A figure of the drawings `parts` ((sheet, group ids) each, lettered
         a), b) ... when more than one) of the composed sheets, with its

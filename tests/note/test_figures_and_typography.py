@@ -237,3 +237,33 @@ def test_indices_whole_and_a_true_minus(case):
         assert depth == 0, (p, t)  # an index is never split across lines
         # a minus before a number or a symbol is U+2212, not a hyphen
         assert not re.search(r"(?:^|[\s(=])-(?=[\d(A-Za-zα-ωΣ])", t), (p, t)
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_the_levers_figure_shows_its_detail_views(lang):
+    """Where sheet 2 draws the lever's crowd again as a detail view (generated
+    seed 15: twenty forces, most images within 20 mm of p), the note's lever
+    figure shows it too, as its part b), the caption says what b) is, and the
+    text says why; the sheet's lever without a detail (six_link_press) keeps
+    one part."""
+    from mmt_plans.generate import generate_one
+    from mmt_plans.spec import loads
+
+    w = catalogue(lang).words("note")  # type: ignore[arg-type]
+    g = generate_one(15)
+    solution = mmt_plans.solve(loads(g.toml, f"{g.name}.toml"))
+    c = compose(solution, lang)  # type: ignore[arg-type]
+    details = [d for d in c.sheet(2).drawings if d.startswith("zhukovsky-lever-detail")]
+    assert details, "the crowded lever has no detail view on sheet 2"
+    doc = note_document(solution, lang, composed=c)  # type: ignore[arg-type]
+    lever = [s for s in doc.content.figures.values() if any("zhukovsky-lever" in p.groups for p in s.parts)]
+    assert len(lever) == 1
+    assert [p.groups for p in lever[0].parts] == [("zhukovsky-lever",)] + [(d,) for d in details]
+    text = " ".join(_flat(t) for _, _, t in _lines(doc))
+    assert _flat(str(w["lever_details_drawn"]))[:40] in text
+    letters = str(w["part_letters"])
+    assert _flat(str(w["fig_lever_parts"]).format(parts=letters[1]))[:30] in text
+
+    plain = document(ROOT / "samples/six_link_press.toml", lang)
+    one = [s for s in plain.content.figures.values() if any("zhukovsky-lever" in p.groups for p in s.parts)]
+    assert [p.groups for p in one[0].parts] == [("zhukovsky-lever",)]
