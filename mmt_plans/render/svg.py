@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import Any
 
 import svgwrite
+from svgwrite.etree import etree
 
 from .backend import Backend, Fill, HAlign, LineType, PointLike, VAlign, as_point
 from .look import Look
@@ -70,7 +71,11 @@ class SvgBackend(Backend):
 
     def to_string(self) -> str:
         self.close()
-        return '<?xml version="1.0" encoding="utf-8" ?>\n' + self._dwg.tostring() + "\n"
+        # svgwrite's tostring() less its Python 2 detour (its own comment says
+        # so): ElementTree writes the same text as unicode, not as UTF-8 bytes
+        # through a codec, write by write, decoded again
+        text = etree.tostring(self._dwg.get_xml(), encoding="unicode")
+        return '<?xml version="1.0" encoding="utf-8" ?>\n' + text + "\n"
 
     def save(self, path: str | os.PathLike[str]) -> Path:
         """Write the SVG to `path` atomically (files.write_text_atomic)."""
