@@ -72,6 +72,8 @@ STAMP_GAP = 10.0  # text to the top of form 2 or 2a
 SYMBOLS = frozenset("⊥∥⇒")
 # a vector's mark after its letter (writer.vec): an arrow drawn over the letter
 VECTOR = "\u20d7"
+# the characters draw_markup draws itself (a symbol the font lacks, a vector's arrow)
+_DRAWN_APART = SYMBOLS | {VECTOR}
 
 
 def note_page() -> Page:
@@ -757,10 +759,11 @@ def draw_markup(
     y = pos[1]
     start = 0
     parts: list[str] = []
-    for i, ch in enumerate(text):
-        if ch in SYMBOLS or ch == VECTOR:
-            parts += [text[start:i], ch]
-            start = i + 1
+    if not _DRAWN_APART.isdisjoint(text):  # most lines have none: not read letter by letter
+        for i, ch in enumerate(text):
+            if ch in _DRAWN_APART:
+                parts += [text[start:i], ch]
+                start = i + 1
     parts.append(text[start:])
     letter = 0.0  # the width of the last letter drawn, which a vector's arrow spans
     for part in parts:
