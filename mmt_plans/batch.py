@@ -99,6 +99,7 @@ class FileResult:
     discrepancy_percent: float | None = None
     diagrams_passed: bool | None = None
     seconds: float = 0.0
+    cpu_seconds: float = 0.0  # the item's process CPU time (its writing thread's too)
     written: tuple[str, ...] = ()
     stages: dict[str, float] = field(default_factory=dict)  # seconds per stage
     kept: bool = False  # done by an earlier run (its manifest matched): not redone
@@ -323,7 +324,7 @@ def _process_file(
         kept = _kept(path, out, lang, formats, extras, fields)
         if kept is not None:
             return kept
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     stages: dict[str, float] = {}
     written: list[str] = []
     info: dict = {}
@@ -343,7 +344,13 @@ def _process_file(
     analysis = stage("analysis", lambda: solve(_with_fields(load(path), fields)))
     if analysis is None:
         return FileResult(
-            str(path), str(out), False, problems[0], seconds=time.perf_counter() - t0, stages=stages
+            str(path),
+            str(out),
+            False,
+            problems[0],
+            seconds=time.perf_counter() - t0,
+            cpu_seconds=time.process_time() - c0,
+            stages=stages,
         )
 
     def prepare() -> None:
@@ -356,7 +363,13 @@ def _process_file(
     stage("output folder", prepare)
     if problems:
         return FileResult(
-            str(path), str(out), False, problems[0], seconds=time.perf_counter() - t0, stages=stages
+            str(path),
+            str(out),
+            False,
+            problems[0],
+            seconds=time.perf_counter() - t0,
+            cpu_seconds=time.process_time() - c0,
+            stages=stages,
         )
 
     solution = cast("Solution", analysis)
@@ -405,6 +418,7 @@ def _process_file(
         "; ".join(problems) or None,
         **summary,
         seconds=time.perf_counter() - t0,
+        cpu_seconds=time.process_time() - c0,
         written=tuple(written),
         stages=stages,
     )

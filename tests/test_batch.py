@@ -296,3 +296,25 @@ def test_in_process_runs_in_two_threads_share_the_collector():
             assert gc.get_threshold() == batch._WORKER_GC_THRESHOLD
         assert gc.get_threshold() == batch._WORKER_GC_THRESHOLD
     assert gc.get_threshold() == kept and gc.get_freeze_count() == frozen
+
+
+def test_an_items_cpu_time_is_its_process_time(tmp_path):
+    """FileResult.cpu_seconds (the keys bench sums it: what a loaded machine
+    leaves) is the process time the item took, read by the caller around it
+    too; a failed item has its own."""
+    import time
+
+    from mmt_plans.batch import process_file
+
+    sample = Path(__file__).resolve().parents[1] / "samples" / "offset_slider_crank.toml"
+    process_file(sample, tmp_path / "warm", formats=("svg",))  # the imports done first
+    t = time.process_time()
+    done = process_file(sample, tmp_path / "item", formats=("svg",))
+    spent = time.process_time() - t
+    assert done.ok and 0.5 * spent <= done.cpu_seconds <= spent
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[mechanism\n", encoding="utf-8")
+    t = time.process_time()
+    failed = process_file(bad, tmp_path / "bad", formats=("svg",))
+    spent = time.process_time() - t
+    assert not failed.ok and 0.0 <= failed.cpu_seconds <= spent

@@ -155,6 +155,7 @@ def keys_rows(sample_dir: Path, echo: Callable[[str], None]) -> list[list[str]]:
         results = run_batch(files, out, jobs=KEY_WORKERS)
         total = time.perf_counter() - t0
     busy = sum(r.seconds for r in results) or 1.0
+    cpu = sum(r.cpu_seconds for r in results)  # what survives a loaded machine
     stages: dict[str, float] = {}
     for r in results:
         for name, s in r.stages.items():
@@ -166,7 +167,7 @@ def keys_rows(sample_dir: Path, echo: Callable[[str], None]) -> list[list[str]]:
             f"{len(files)} seed-003 keys, {KEY_WORKERS} workers",
             total,
             "s",
-            f"{busy / len(results):.2f} s per item",
+            f"{busy / len(results):.2f} s per item, {cpu / len(results):.2f} s cpu per key",
             GOALS["keys"],
         )
     ]

@@ -85,6 +85,9 @@ class FigureSpec:
     # each part's bounds on its sheet (bounds()), measured once when the figure
     # is chosen: the layout and the drawing ask again
     boxes: tuple[tuple[float, float, float, float], ...] = ()
+    # a figure of the note's own drawing (no parts): its sketches, named, as
+    # the text measured them ("structure": structure_sketches), drawn as they are
+    sketches: tuple[tuple[str, Sketch], ...] = ()
 
 
 def _calls(composed: ComposedSheets, part: FigurePart) -> tuple[Call, ...]:
@@ -366,7 +369,9 @@ def figure_drawers(
     gears = gear_sketch(solution)
     if gears is not None:
         out["gears"] = lambda backend, rect, lang: draw_row([gears], [""], backend, rect)
-    structure = structure_sketches(solution) if "structure" in (specs or {}) else None
+    structure: Sequence[tuple[str, Sketch]] | None = None
+    if "structure" in (specs or {}):  # as the text sketched them, else sketched now
+        structure = (specs or {})["structure"].sketches or structure_sketches(solution)
     if structure is not None:
         names = [name for name, _ in structure]
         sketches = [sk for _, sk in structure]

@@ -72,6 +72,8 @@ STAMP_GAP = 10.0  # text to the top of form 2 or 2a
 SYMBOLS = frozenset("⊥∥⇒")
 # a vector's mark after its letter (writer.vec): an arrow drawn over the letter
 VECTOR = "\u20d7"
+# the characters draw_markup draws itself (a symbol the font lacks, a vector's arrow)
+_DRAWN_APART = SYMBOLS | {VECTOR}
 
 
 def note_page() -> Page:
@@ -184,20 +186,60 @@ def _wrap(let: Lettering, text: str, size: float, width: float, first: float = 0
     return lines
 
 
-def _text_lines(let: Lettering, text: str, size: float, width: float, first: float) -> list[str]:
+# a block's lines by (lettering, kind, text, size, width, first): the layout
+# asks for them again and again (a heading's lead asks for the next block's,
+# and the contents' second pass sets every block again)
+_LINES: dict[tuple[int, str, str, float, float, float], tuple[Any, ...]] = {}
+
+
+def _kept_lines(
+    let: Lettering,
+    key: tuple[str, str, float, float, float],
+    make: Callable[[], Sequence[Any]],
+) -> tuple[Any, ...]:
+    """What `make()` gives for `key` set in `let`, made once (as markup_width
+    keeps its widths: by the lettering's id while that lettering lives)."""
+    full = (id(let), *key)
+    hit = _LINES.get(full)
+    if hit is not None and _LETTERINGS.get(id(let)) is let:
+        return hit
+    made = tuple(make())
+    if len(_LINES) > 50_000:
+        _LINES.clear()
+    _LETTERINGS.setdefault(id(let), let)
+    if _LETTERINGS[id(let)] is let:
+        _LINES[full] = made
+    return made
+
+
+def _text_lines(
+    let: Lettering, text: str, size: float, width: float, first: float
+) -> tuple[str, ...]:
     """A paragraph typeset and broken into lines; where a formula run kept
     whole would be wider than a line, its "=" may break after all."""
-    lines = _wrap(let, typeset(text), size, width, first)
-    if any(markup_width(let, t, size) > width + 1e-6 for t in lines):
-        lines = _wrap(let, typeset(text, False), size, width, first)
-    return lines
+
+    def make() -> list[str]:
+        lines = _wrap(let, typeset(text), size, width, first)
+        if any(markup_width(let, t, size) > width + 1e-6 for t in lines):
+            lines = _wrap(let, typeset(text, False), size, width, first)
+        return lines
+
+    return _kept_lines(let, ("text", text, size, width, first), make)
 
 
 def _equation_lines(
     let: Lettering, text: str, size: float, width: float
-) -> list[tuple[str, float]]:
+) -> tuple[tuple[str, float], ...]:
     """An equation as (line, indent): split at "; ", then at " = " with the
     continuation starting "= ", then at spaces."""
+    return _kept_lines(
+        let, ("equation", text, size, width, 0.0), lambda: _split_equation(let, text, size, width)
+    )
+
+
+def _split_equation(
+    let: Lettering, text: str, size: float, width: float
+) -> list[tuple[str, float]]:
     out: list[tuple[str, float]] = []
     for part in text.split("; "):
         if markup_width(let, part, size) <= width - INDENT:
@@ -491,8 +533,8 @@ class _Layout:
             self.y -= self.pitch / 4
         elif kind in ("text", "problem"):
             first = PARAGRAPH if not block.indent else 0.0
-            lines = _text_lines(let, block.text, self.body, width - block.indent, first)
-            placed = [(t, block.indent + (first if j == 0 else 0.0)) for j, t in enumerate(lines)]
+            broken = _text_lines(let, block.text, self.body, width - block.indent, first)
+            placed = [(t, block.indent + (first if j == 0 else 0.0)) for j, t in enumerate(broken)]
             self.paragraph(placed, kind, justify=True)
         elif kind == "equation":
             self.paragraph(
@@ -717,10 +759,11 @@ def draw_markup(
     y = pos[1]
     start = 0
     parts: list[str] = []
-    for i, ch in enumerate(text):
-        if ch in SYMBOLS or ch == VECTOR:
-            parts += [text[start:i], ch]
-            start = i + 1
+    if not _DRAWN_APART.isdisjoint(text):  # most lines have none: not read letter by letter
+        for i, ch in enumerate(text):
+            if ch in _DRAWN_APART:
+                parts += [text[start:i], ch]
+                start = i + 1
     parts.append(text[start:])
     letter = 0.0  # the width of the last letter drawn, which a vector's arrow spans
     for part in parts:

@@ -96,7 +96,7 @@ def structural_scheme(wr: Writer) -> None:
         return
     height = sketches_height([sk for _, sk in parts], FIGURE_WIDTH, labelled=True)
     wr.text(wr.w["structure_scheme"] + wr.cite(wr.next_figure) + ".")
-    wr.drawing("structure", height, wr.w["fig_structure"])
+    wr.drawing("structure", height, wr.w["fig_structure"], parts)
 
 
 # the kinds of the class II groups in the textbook's order: "2-го виду" is RRP

@@ -30,6 +30,7 @@ from typing import TYPE_CHECKING, Any
 from ..i18n import Language, catalogue, check_language
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..drawing.sketch import Sketch
     from ..sheets.compose import ComposedSheets
     from ..solution import Solution
     from .drawn import Drawn
@@ -300,12 +301,19 @@ class Writer:
         )
         return FRONT_FIGURES + sum(1 for x in self.blocks if x.kind == "figure")
 
-    def drawing(self, key: str, height: float, caption: str) -> int:
+    def drawing(
+        self,
+        key: str,
+        height: float,
+        caption: str,
+        sketches: Sequence[tuple[str, Sketch]] = (),
+    ) -> int:
         """A figure of the note's own drawing `key` (figures.figure_drawers:
-        "structure", "gears") `height` mm tall; returns its number."""
+        "structure", "gears") `height` mm tall, of `sketches` (named) where
+        they are drawn already; returns its number."""
         from .figures import FigureSpec
 
-        self.figures[key] = FigureSpec(key, ())
+        self.figures[key] = FigureSpec(key, (), sketches=tuple(sketches))
         b = len(self.blocks)
         self.blocks.append(
             RawBlock(

@@ -63,10 +63,11 @@ def as_point(p: PointLike) -> Point:
             if x - x == 0.0 and y - y == 0.0:  # finite (inf - inf and nan are nan)
                 return p
             raise ValueError(f"a drawn point must be finite, got ({x}, {y})")
-    x, y = (float(v) for v in p)  # raises on the wrong number of coordinates
-    if not (math.isfinite(x) and math.isfinite(y)):
-        raise ValueError(f"a drawn point must be finite, got ({x}, {y})")
-    return (x, y)
+    u, v = p  # raises on the wrong number of coordinates
+    x, y = float(u), float(v)  # numpy's floats and rows of an array too
+    if x - x == 0.0 and y - y == 0.0:
+        return (x, y)
+    raise ValueError(f"a drawn point must be finite, got ({x}, {y})")
 
 
 _MARKUP = re.compile(r"([_^])(?:\{([^{}]*)\}|(.))", re.DOTALL)

@@ -34,8 +34,11 @@ _FONT_FAMILY = re.compile(r'font-family="([^"]*)"')
 
 
 @functools.cache
+@functools.cache
 def installed_families() -> frozenset[str] | None:
-    """Font families fontconfig knows (lower case), or None without fc-list."""
+    """Font families fontconfig knows (lower case), or None without fc-list;
+    asked once a process (fc-list takes ~50 ms; every PNG and each lettering
+    of a PDF asks)."""
     fc_list = shutil.which("fc-list")
     if fc_list is None:
         return None

@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import Any
 
 import svgwrite
+from svgwrite.etree import etree
 
 from .backend import Backend, Fill, HAlign, LineType, PointLike, VAlign, as_point
 from .look import Look
@@ -70,7 +71,11 @@ class SvgBackend(Backend):
 
     def to_string(self) -> str:
         self.close()
-        return '<?xml version="1.0" encoding="utf-8" ?>\n' + self._dwg.tostring() + "\n"
+        # svgwrite's tostring() less its Python 2 detour (its own comment says
+        # so): ElementTree writes the same text as unicode, not as UTF-8 bytes
+        # through a codec, write by write, decoded again
+        text = etree.tostring(self._dwg.get_xml(), encoding="unicode")
+        return '<?xml version="1.0" encoding="utf-8" ?>\n' + text + "\n"
 
     def save(self, path: str | os.PathLike[str]) -> Path:
         """Write the SVG to `path` atomically (files.write_text_atomic)."""
@@ -198,17 +203,24 @@ class SvgBackend(Backend):
         self._check_text(size, anchor, valign, max_width)
         lettering = self.look.lettering
         squeeze = lettering.squeeze(str(content), size, max_width)
-        lean = math.tan(math.radians(lettering.slant_deg))
+        lean = lettering.lean  # tan of the slant, worked out once per lettering
         # Offsets along and across the baseline (y up) from pos to the point
         # where SVG puts the text: the baseline under the anchor. The slant
         # leans the tops right, so centred and right-aligned text moves left
         # to keep its capitals, not just its baseline, where asked.
-        along = {"left": 0.0, "center": -lean * size / 2.0, "right": -lean * size}[anchor] * squeeze
-        across = {"baseline": 0.0, "middle": -size / 2.0, "top": -size}[valign]
-        a = math.radians(rotation)
+        if anchor == "left":
+            along = 0.0 * squeeze
+        else:
+            along = (-lean * size / 2.0 if anchor == "center" else -lean * size) * squeeze
+        across = 0.0 if valign == "baseline" else -size / 2.0 if valign == "middle" else -size
+        if rotation:
+            a = math.radians(rotation)
+            ca, sa = math.cos(a), math.sin(a)
+        else:  # cos 0 and sin 0, exactly
+            ca, sa = 1.0, 0.0
         x, y = as_point(pos)
-        bx = x + along * math.cos(a) - across * math.sin(a)
-        by = y + along * math.sin(a) + across * math.cos(a)
+        bx = x + along * ca - across * sa
+        by = y + along * sa + across * ca
         sx, sy = self._xy((bx, by))
         transform = f"translate({sx} {sy})"
         if rotation % 360.0:

@@ -215,6 +215,30 @@ def test_structural_scheme_figure_names_each_group(path):
     assert last_step == "1.1" and "1.1" in steps
 
 
+def test_the_structural_scheme_is_drawn_as_the_text_sketched_it():
+    """The figure draws the sketches the text measured its height by (kept on
+    its FigureSpec, not sketched a second time), and they draw what sketching
+    them afresh draws."""
+    from mmt_plans.drawing.page import Rect as Box
+    from mmt_plans.note.figures import draw_row, structure_sketches
+
+    doc = document(PRESS, "en")
+    spec = doc.content.figures["structure"]
+    fresh = structure_sketches(solved(PRESS))
+    assert fresh is not None and [n for n, _ in spec.sketches] == [n for n, _ in fresh]
+    box = Box(20.0, 50.0, 170.0, 90.0)
+    kept, again = RecordingBackend(210.0, 297.0, note_look()), RecordingBackend(
+        210.0, 297.0, note_look()
+    )
+    figure_drawers(solved(PRESS), doc.composed, doc.content.figures)["structure"](kept, box, "en")
+    draw_row([sk for _, sk in fresh], [n for n, _ in fresh], again, box)
+    assert [c.name for c in kept.calls] == [c.name for c in again.calls]
+    assert [c.points() for c in kept.calls if c.name != "text"] == [
+        c.points() for c in again.calls if c.name != "text"
+    ]
+    assert [c["content"] for c in kept.named("text")] == [c["content"] for c in again.named("text")]
+
+
 def test_a_citation_is_never_broken_at_a_line_end(case):
     doc = document(*case)
     lines = [ln.text for p in doc.pages for ln in p.lines if ln.kind in ("text", "problem")]

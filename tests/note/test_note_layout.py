@@ -195,3 +195,29 @@ def test_the_notes_catalogue_tables_agree_and_are_used():
         if key in dynamic or key[:1].isdigit():
             continue
         assert f'"{key}"' in source or f"'{key}'" in source, key
+
+
+def test_a_blocks_lines_kept_are_those_broken_afresh():
+    """The layout keeps a paragraph's and an equation's lines (asked for again
+    by the leads and the second pass): what it keeps is what breaking them
+    anew gives, for the same lettering only."""
+    import dataclasses
+
+    from mmt_plans.note import pages
+
+    let = note_look().lettering
+    size = cap(14.0, let)
+    text = "The crank's angular velocity ω_{1} = π·n_{1}/30 = 3.1416·60/30 = 6.2832 s^{-1}; " * 4
+    equation = "V_{B} = ω_{1}·l_{OA} = 6.2832·0.2 = 1.2566 m/s; a_{B}^{n} = V_{B}^2/l = 7.895 m/s^2"
+    pages._LINES.clear()
+    first = pages._text_lines(let, text, size, 120.0, PARAGRAPH)  # broken afresh
+    eq = pages._equation_lines(let, equation, size, 60.0)
+    assert len(pages._LINES) == 2
+    assert pages._text_lines(let, text, size, 120.0, PARAGRAPH) == first  # kept
+    assert pages._equation_lines(let, equation, size, 60.0) == eq
+    assert len(pages._LINES) == 2
+    assert len(first) > 1 and len(eq) > 1
+    # another width, another lettering: broken for it, not taken from the store
+    assert pages._text_lines(let, text, size, 60.0, PARAGRAPH) != first
+    wide = dataclasses.replace(let, default_advance=let.default_advance * 3, advances={})
+    assert pages._text_lines(wide, text, size, 120.0, PARAGRAPH) != first

@@ -190,3 +190,20 @@ def test_a_text_in_another_lettering_keeps_it_through_a_recording():
     text = svg.to_string()
     family = sheet.lettering.families[0]
     assert text.count(family) == 1  # the figure's text only
+
+
+def test_a_drawn_point_is_two_python_floats_whatever_it_came_as():
+    from mmt_plans.render.backend import as_point
+
+    row = np.array([[1.5, -2.25]])[0]
+    for p in ((1.5, -2.25), (np.float64(1.5), np.float64(-2.25)), row, [1.5, -2.25], (1.5, -2.25)):
+        got = as_point(p)
+        assert got == (1.5, -2.25)
+        assert type(got) is tuple and all(type(v) is float for v in got)
+    assert as_point((3, 4)) == (3.0, 4.0) and type(as_point((3, 4))[0]) is float
+    for bad in ((np.float64("nan"), 0.0), (0.0, float("inf")), np.array([-np.inf, 1.0])):
+        with pytest.raises(ValueError, match="must be finite"):
+            as_point(bad)
+    for wrong in ((1.0,), (1.0, 2.0, 3.0), np.zeros(3)):
+        with pytest.raises(ValueError):
+            as_point(wrong)

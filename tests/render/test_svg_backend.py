@@ -120,3 +120,19 @@ def test_only_svg_module_imports_svgwrite():
         if re.search(r"^\s*(import svgwrite|from svgwrite)", p.read_text(encoding="utf-8"), re.M)
     )
     assert users == ["render/svg.py"]
+
+
+def test_the_text_is_svgwrites_own_serialisation():
+    """to_string() is svgwrite's tostring() of the same drawing (written as
+    unicode rather than through a UTF-8 codec): escapes, non-ASCII letters
+    and the attributes' order alike."""
+    b = SvgBackend(100.0, 80.0, title="a < b & 'c' — ω")
+    with b.group("plan & ω", "plan"):
+        b.line((1.0, 2.0), (30.5, 40.25), "thin")
+        b.polygon([(1.0, 1.0), (5.0, 1.0), (3.0, 4.0)], "main", "black")
+        b.circle((10.0, 10.0), 2.5, None, "white")
+        b.arc((20.0, 20.0), 5.0, 10.0, 250.0, "dashed")
+        b.text((5.0, 5.0), 'V<sub> & "μ" ↑ Ї', 3.5, anchor="center", rotation=30.0)
+    text = b.to_string()
+    assert text == '<?xml version="1.0" encoding="utf-8" ?>\n' + b._dwg.tostring() + "\n"
+    assert "&lt;" in text and "&amp;" in text and "μ" in text and "Ї" in text
