@@ -638,10 +638,19 @@ _CRANK_RADII = (_CRANK_R, 6.5, 10.0, 12.0, 5.0, 14.0)
 # the positions' numbers stand about this far out of the crank pin's circle,
 # mm, give or take the second
 _NUMBER_BAND = (5.0, 4.5)
+# where no arc at _CRANK_RADII leaves ω1's name room (every one inside a
+# crank's circle crossed by its positions' spokes): round the pivot outside
+# the circle, this much (mm) beyond the crank pin's reach, out of the spokes
+_CRANK_OUTSIDE = (4.0, 8.0, 12.0)
 
 
 def _crank_arc(
-    arcs: _ArcPlacer, labels: Labels, centre: np.ndarray, sense: float, crank: float
+    arcs: _ArcPlacer,
+    labels: Labels,
+    centre: np.ndarray,
+    sense: float,
+    crank: float,
+    radii: Sequence[float] = _CRANK_RADII,
 ) -> tuple[float, float, np.ndarray] | None:
     """Radius and start angle (deg) of ω1's 120° arc round the crank's pivot,
     and the centre of its label's box: of the arcs whose label finds a free
@@ -649,15 +658,15 @@ def _crank_arc(
     it, the arc itself kept clear), the one that crosses least, the usual
     radius first; a place out of the rooms kept for the links' ω and ε labels
     and of the band just outside the crank pin's circle (radius `crank`, mm),
-    where the positions' numbers are written next, first. None where no arc
-    leaves its label room."""
+    where the positions' numbers are written next, first; the `radii`
+    tried in turn. None where no arc leaves its label room."""
     starts = np.arange(0.0, 360.0, 15.0)
-    tries = [(r, float(a)) for r in _CRANK_RADII for a in starts]
+    tries = [(r, float(a)) for r in radii for a in starts]
     # what each arc crosses, all in one query; then the arcs asked about their
     # labels' room in that order, until none left can beat the best found
     arcs_drawn = [arc_line(centre, r, a, a + 120.0) for r, a in tries]
     score = np.array(
-        [0.5 * _CRANK_RADII.index(r) + 1e-3 * abs(a - 30.0) for r, a in tries]
+        [0.5 * list(radii).index(r) + 1e-3 * abs(a - 30.0) for r, a in tries]
     ) + arcs.costs(arcs_drawn)
     # never over a label written (a joint's name): the arc and its arrowhead
     written = shapely.STRtree(labels.boxes) if labels.boxes else None
@@ -821,12 +830,27 @@ def _unlettered_mechanism(solution: Solution, mu_l: float, look: Any, lang: Lang
 def _position_numbers(labels: Labels, solution: Solution, mu_l: float) -> None:
     """Numbered positions of the crank pin, in smaller figures and out beyond
     the pin's circle, so that "0" is not read as a pivot's "O"; an entry of the
-    sweep that is no numbered position (an extreme) gets none. Written last
+    sweep that is no numbered position (an extreme) gets none. A number walled
+    in on the crank's circle by the bundle of the positions' links is written
+    where the textbook numbers the positions too (seed 000 §1.3: A_i on the
+    crank's circle, B_i on the output's trail): at the output point's place
+    in that position, out of its trail (Labels.place_first). Written last
     (before the ω and ε labels, a number takes the room kept for one), and
     where some stand far, all once more with those first (Labels.write_each)."""
     mech = solution.mechanism
     pts = solution.sweep.points
     pivot = np.asarray(pts[mech.crank_pivot][0], dtype=float) / mu_l
+    output = mech.study.output
+    trail = (
+        np.asarray(pts[output], dtype=float) / mu_l
+        if output in pts and output != mech.crank_pin
+        else None
+    )
+    # the output's trail is numbered on the side away from the mechanism's middle
+    middle = (
+        np.nanmean(np.concatenate([np.asarray(pts[name], dtype=float) for name in pts]), axis=0)
+        / mu_l
+    )
     kept = labels.size
     labels.size = _SMALL
     writes = []
@@ -834,9 +858,15 @@ def _position_numbers(labels: Labels, solution: Solution, mu_l: float) -> None:
         if position.index is None:
             continue
         p = np.asarray(pts[mech.crank_pin][k], dtype=float) / mu_l
+        anchors: list[tuple[np.ndarray, np.ndarray]] = [(p, unit_vector(p - pivot))]
+        if trail is not None and np.all(np.isfinite(trail[k])):
+            anchors.append((trail[k], unit_vector(trail[k] - middle)))
 
-        def write(p: np.ndarray = p, number: str = str(position.index)) -> object:
-            return labels.place(p, number, towards=unit_vector(p - pivot), distance=3.0)
+        def write(
+            anchors: list[tuple[np.ndarray, np.ndarray]] = anchors,
+            number: str = str(position.index),
+        ) -> object:
+            return labels.place_first(anchors, number, distance=3.0)
 
         writes.append(write)
     if len(mech.links) <= _SHORT_LINKS:
@@ -954,6 +984,9 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         crank = [at(mech.crank_pin, k) - centre for k in range(n)]
         reach = max(float(np.hypot(*v)) for v in crank)
         found = _crank_arc(arcs, labels, centre, sense, reach)
+        if found is None:  # walled in by the spokes: outside the crank's circle
+            outside = [reach + d for d in _CRANK_OUTSIDE]
+            found = _crank_arc(arcs, labels, centre, sense, reach, outside)
         if found is not None:
             # the arc where its label finds room beside its arrowhead
             radius, start_deg, room = found

@@ -94,3 +94,39 @@ def test_sheet1_labels_near_what_they_name_en_and_uk(path, lang):
     compose_sheet1(solution, backend, lang)
     found = lint(SheetView.of(backend, lang, path.stem), RULES)
     assert [str(f) for f in found] == []
+
+
+@pytest.mark.parametrize(
+    "seed",
+    [
+        130,  # "0" 6.5 mm, "11" 11.6 mm from the crank pin, walled in by the links
+        140,  # "9" 7.4 mm, "10" 11.5 mm
+        147,  # "11" 17.2 mm
+    ],
+)
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_position_numbers_walled_in_on_the_crank_circle_near_the_output(seed, lang):
+    """A position number with no room near the crank pin on its circle (the
+    bundle of the positions' links all round it) is written where the
+    textbook numbers the positions too, at the output point in that position:
+    near it, as the linter's own rules judge."""
+    g = generate_one(seed)
+    solution = solve(loads(g.toml, f"{g.name}.toml"))
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet1(solution, backend, lang)
+    found = lint(SheetView.of(backend, lang, g.name), RULES)
+    assert [str(f) for f in found] == []
+
+
+@pytest.mark.parametrize(
+    "seed",
+    [
+        75,  # "ω1" 21.7 mm from its arc, written between the spokes
+        162,  # "ω1" on a line, "10" 16.3 mm from the crank pin
+    ],
+)
+def test_crank_arc_walled_in_by_spokes_drawn_outside_the_crank_circle(seed):
+    """Where every arc inside the crank's circle is crossed by its positions'
+    spokes so that ω1's name finds no room by its arrowhead, the arc goes round
+    the pivot outside the circle: its name near it, as the linter judges."""
+    test_every_label_of_sheet1_near_what_it_names(seed)
