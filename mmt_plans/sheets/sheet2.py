@@ -31,7 +31,8 @@ from typing import Any
 import numpy as np
 import shapely
 
-from ..drawing.labels import NEAR_MM, LabelCounts, Labels, arc_line
+from ..drawing.detail import DETAIL_LETTERS, Detail, Name, choose_details, clipped, name_area
+from ..drawing.labels import LabelCounts, Labels, arc_line
 from ..drawing.layout import LayoutError, SheetLayout, pack
 from ..drawing.markup import equation_markup as _equation_markup
 from ..drawing.markup import force_markup, image_markup, point_markup
@@ -854,51 +855,24 @@ def sketch_force_polygons(
     return sk
 
 
-@dataclass(frozen=True)
-class LeverDetail:
-    """A detail view of the lever (GOST 2.305, "выносний елемент"): the disc
-    of `radius` round `centre` (both in m/s, on the lever at any scale) where
-    the lever's names crowd, drawn again `ratio` times larger and lettered
-    there; the lever marks it with a thin circle and `letter`."""
-
-    letter: str
-    centre: tuple[float, float]
-    radius: float
-    ratio: float
-
-
-# the series of a detail's scales (GOST 2.302: 2:1, 2.5:1, 4:1, 5:1, 10:1)
-_DETAIL_RATIOS = (2.0, 2.5, 4.0, 5.0, 10.0)
-# the radii (mm at the lever's scale) of the discs tried round a crowd
-_DETAIL_RADII = (8.0, 12.0, 16.0, 20.0, 25.0)
-# the share of a detail's disc (widened by NEAR_MM) its names may cover:
-_NAME_SHARE = 0.12
-_DETAIL_MM = 70.0  # the largest radius of a detail's disc, mm
+# a lever's detail view (drawing/detail.py)
+LeverDetail = Detail
 _DETAILS = 2  # the most detail views of one lever
-_ARM_NAMED_MM = 6.0  # the shortest arm a detail names along it, mm
-# a detail's letter: a capital that names no point, force or arm (G, F, R, M, S,
-# K, P, O, I, Q, J read as loads, images or digits)
-_DETAIL_LETTERS = "ABCDEHLNTUVWXYZ"
-_LETTER_W = 2.3  # mm per character of a 3.5 mm name, a bound for counting room
 
 
-def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[tuple[np.ndarray, float, bool]]:
-    """The names the lever writes at `mu_V`: (where it stands, mm; the area of
-    its box, mm²; whether it is an arm's, lettered along p–foot)."""
+def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[Name]:
+    """The names the lever writes at `mu_V`: where each stands (mm), the area
+    of its box (mm²), an arm's lettered along p–foot with its length."""
     lever = fa.lever
     owners = tuple(fa.loads.state.mech.point_owners)
-    out: list[tuple[np.ndarray, float, bool]] = []
-
-    def area(markup: str) -> float:
-        return (len(re.sub(r"[_{}]", "", markup)) * _LETTER_W + 1.5) * (_TEXT + 1.5)
-
+    out: list[Name] = []
     spots: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {(0, 0): (np.zeros(2), ["p"])}
     for n, v in lever.images.items():
         at = np.asarray(v, float) / mu_V
         if float(np.hypot(*at)) >= 0.5:
             key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
             spots.setdefault(key, (at, []))[1].append(image_markup(n, owners))
-    out += [(at, area(", ".join(names)), False) for at, names in spots.values()]
+    out += [Name(at, name_area(", ".join(names))) for at, names in spots.values()]
     forces = [*lever.forces, lever.balancing]
     largest = max(float(np.hypot(*f.force)) for f in forces)
     for f in forces:
@@ -907,10 +881,11 @@ def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[tuple[np.ndarray, float
             continue
         at = np.asarray(f.image, float) / mu_V
         u = np.asarray(f.force, float) / size
-        out.append((at + 0.5 * _arrow_length(size, largest) * u, area(f.label) + 8.0, False))
+        out.append(Name(at + 0.5 * _arrow_length(size, largest) * u, name_area(f.label) + 8.0))
         if abs(f.arm) / mu_V >= 1.0:
             foot = at - float(np.dot(at, u)) * u
-            out.append((0.5 * foot, area("h_{10}"), True))
+            h = float(np.hypot(*foot))
+            out.append(Name(0.5 * foot, name_area("h_{10}"), h))
     return out
 
 
@@ -934,58 +909,14 @@ def crowded_names(sketch: Sketch, lang: Language) -> np.ndarray:
 def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[LeverDetail, ...]:
     """The detail views the lever at `mu_V` needs where the names standing
     for the points `crowded` (mm, `crowded_names` of the lever drawn without
-    details) found no place near: at most _DETAILS discs apart, round p, an
-    image or such a point, of a radius of _DETAIL_RADII, each holding the most
-    of those points left (the largest such: the whole crowd; the smallest
-    left five_dyads crowded); each drawn at the first ratio of the series that
-    leaves the names in it _NAME_SHARE of its room and names its shortest arm
-    along it (or draws the disc _DETAIL_MM wide)."""
+    details) found no place near (`choose_details`): at most _DETAILS discs
+    round p, an image or such a point (the smallest left five_dyads crowded),
+    lettered by capitals that name no point of the mechanism."""
     names = _lever_names(fa, mu_V)
-    where = np.array([at for at, _, _ in names])
-    areas = np.array([a for _, a, _ in names])
-    arm = np.array([a for _, _, a in names])
-    centres = [np.zeros(2), *(at for at, _, a in names if not a), *crowded]
+    centres = [np.zeros(2), *(n.at for n in names if n.arm_mm is None)]
     taken = {n[:1].upper() for n in fa.loads.state.mech.point_owners}
-    letters = [x for x in _DETAIL_LETTERS if x not in taken] or list(_DETAIL_LETTERS)
-    out: list[LeverDetail] = []
-    left = np.ones(len(crowded), dtype=bool)  # the crowded names no disc taken holds
-    for letter in letters[:_DETAILS]:
-        best: tuple[int, float, np.ndarray] | None = None  # held, radius, centre
-        for c in centres:
-            near = np.hypot(*(crowded - c).T) if len(crowded) else np.zeros(0)
-            for r in _DETAIL_RADII:
-                if any(
-                    math.dist(c, np.asarray(d.centre) / mu_V) < r + d.radius / mu_V for d in out
-                ):
-                    continue  # discs apart: a name is the lever's or one detail's
-                held = int(((near <= r) & left).sum())
-                if held and (best is None or (held, r) > best[:2]):
-                    best = (held, r, c)
-        if best is None:
-            break
-        r, c = best[1], best[2]
-        left &= np.hypot(*(crowded - c).T) > r
-        inside = np.hypot(*(where - c).T) <= r
-        demand = float(areas[inside].sum())
-        # the arms in the disc long enough, at the ratio, to be named along
-        shortest = min(
-            (2.0 * float(np.hypot(*where[i])) for i in np.flatnonzero(inside & arm)),
-            default=math.inf,
-        )
-        ratio = next(
-            (
-                k
-                for k in _DETAIL_RATIOS
-                if (
-                    demand <= _NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
-                    and k * shortest >= _ARM_NAMED_MM
-                )
-                or k * r >= _DETAIL_MM
-            ),
-            _DETAIL_RATIOS[-1],
-        )
-        out.append(LeverDetail(letter, (float(c[0]) * mu_V, float(c[1]) * mu_V), r * mu_V, ratio))
-    return tuple(out)
+    letters = [x for x in DETAIL_LETTERS if x not in taken] or list(DETAIL_LETTERS)
+    return choose_details(names, crowded, centres, mu_V, letters, _DETAILS)
 
 
 def detail_gid(details: Sequence[LeverDetail], detail: LeverDetail) -> str:
@@ -994,25 +925,7 @@ def detail_gid(details: Sequence[LeverDetail], detail: LeverDetail) -> str:
     return "zhukovsky-lever-detail" + (f"-{k + 1}" if k else "")
 
 
-def _clipped(
-    a: np.ndarray, b: np.ndarray, centre: np.ndarray, radius: float
-) -> tuple[np.ndarray, np.ndarray] | None:
-    """The part of the segment a–b inside the disc, or None."""
-    d = b - a
-    f = a - centre
-    A = float(np.dot(d, d))
-    if A < 1e-12:
-        return (a, b) if float(np.hypot(*f)) <= radius else None
-    B = 2.0 * float(np.dot(f, d))
-    C = float(np.dot(f, f)) - radius * radius
-    disc = B * B - 4.0 * A * C
-    if disc <= 0.0:
-        return None
-    root = math.sqrt(disc)
-    t0, t1 = max(0.0, (-B - root) / (2.0 * A)), min(1.0, (-B + root) / (2.0 * A))
-    if t1 - t0 < 1e-9:
-        return None
-    return a + t0 * d, a + t1 * d
+_clipped = clipped
 
 
 def sketch_lever(
