@@ -30,6 +30,7 @@ __all__ = [
     "choose_details",
     "clipped",
     "name_area",
+    "spread",
 ]
 
 
@@ -84,6 +85,12 @@ def choose_details(
     mu: float,
     letters: Iterable[str],
     most: int,
+    *,
+    points: np.ndarray | None = None,
+    spacing: float = 0.0,
+    widest: float = DETAIL_MM,
+    tightest: float | None = None,
+    radii: Sequence[float] = DETAIL_RADII,
 ) -> tuple[Detail, ...]:
     """The detail views a drawing at `mu` needs where the names standing for
     the points `crowded` (mm) found no place near: at most `most` discs
@@ -91,7 +98,12 @@ def choose_details(
     DETAIL_RADII, each holding the most of those points left (the largest
     such: the whole crowd); each drawn at the first ratio of the series that
     leaves `names` in it NAME_SHARE of its room and names its shortest arm
-    along it (or draws the disc DETAIL_MM wide); lettered in turn by `letters`."""
+    along it (or draws the disc `widest` wide); lettered in turn by `letters`.
+    With `points` (mm, what the drawing names at their places: a mechanism's
+    points), the ratio also sets those in the disc `spacing` apart (a quarter
+    of them nearer their neighbour at most: `spread`); with `tightest` (a
+    share), the smallest disc of `radii` that holds that share of the most
+    any holds: the crowd's core, whose loads and names crowd the rest."""
     where = np.array([n.at for n in names], dtype=float).reshape(-1, 2)
     areas = np.array([n.area for n in names])
     arms = np.array([math.inf if n.arm_mm is None else n.arm_mm for n in names])
@@ -99,23 +111,31 @@ def choose_details(
     out: list[Detail] = []
     left = np.ones(len(crowded), dtype=bool)  # the crowded names no disc taken holds
     for letter in list(letters)[:most]:
-        best: tuple[int, float, np.ndarray] | None = None  # held, radius, centre
+        discs: list[tuple[int, float, np.ndarray]] = []  # held, radius, centre
         for c in candidates:
             near = np.hypot(*(crowded - c).T) if len(crowded) else np.zeros(0)
-            for r in DETAIL_RADII:
+            for r in radii:
                 if any(math.dist(c, np.asarray(d.centre) / mu) < r + d.radius / mu for d in out):
                     continue  # discs apart: a name is the drawing's or one detail's
                 held = int(((near <= r) & left).sum())
-                if held and (best is None or (held, r) > best[:2]):
-                    best = (held, r, c)
-        if best is None:
+                if held:
+                    discs.append((held, r, c))
+        if not discs:
             break
+        most_held = max(h for h, _, _ in discs)
+        if tightest is None:
+            best = max(discs, key=lambda d: (d[0], d[1]))
+        else:  # the smallest of those that hold nearly the most
+            best = min(
+                (d for d in discs if d[0] >= tightest * most_held), key=lambda d: (d[1], -d[0])
+            )
         r, c = best[1], best[2]
         left &= np.hypot(*(crowded - c).T) > r
         inside = np.hypot(*(where - c).T) <= r
         demand = float(areas[inside].sum())
         # the arms in the disc long enough, at the ratio, to be named along
         shortest = float(arms[inside].min()) if inside.any() else math.inf
+        apart = spread(points[np.hypot(*(points - c).T) <= r]) if points is not None else math.inf
         ratio = next(
             (
                 k
@@ -123,13 +143,28 @@ def choose_details(
                 if (
                     demand <= NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
                     and k * shortest >= ARM_NAMED_MM
+                    and k * apart >= spacing
                 )
-                or k * r >= DETAIL_MM
+                or k * r >= widest
             ),
             DETAIL_RATIOS[-1],
         )
         out.append(Detail(letter, (float(c[0]) * mu, float(c[1]) * mu), r * mu, ratio))
     return tuple(out)
+
+
+def spread(points: np.ndarray, merged: float = 0.3) -> float:
+    """How far apart `points` (mm) stand: the distance to its nearest
+    neighbour that a quarter of them are nearer than (points nearer than
+    `merged` are one place, named once); inf for fewer than two places."""
+    pts = np.asarray(points, float).reshape(-1, 2)
+    if len(pts) < 2:
+        return math.inf
+    d = np.hypot(*(pts[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))
+    d[d < merged] = math.inf
+    nearest = d.min(axis=1)
+    nearest = nearest[np.isfinite(nearest)]
+    return float(np.percentile(nearest, 25)) if len(nearest) else math.inf
 
 
 def clipped(

@@ -48,6 +48,11 @@ from ..i18n import Language, catalogue, check_language
 from ..model import FRAME
 from ..render.backend import Backend
 from ..render.look import LineType
+from ..render.recording import Arc as RecArc
+from ..render.recording import Circle as RecCircle
+from ..render.recording import Line as RecLine
+from ..render.recording import Polygon as RecPolygon
+from ..render.recording import Polyline as RecPolyline
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
 from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, scale_step, title_fields
@@ -238,8 +243,15 @@ class _Drawing:
         *,
         turn_arcs: bool = True,
         grow: bool = False,
+        details: Sequence[Detail] = (),
+        detail: Detail | None = None,
     ) -> None:
         self.sk = Sketch(look)
+        # `details` (their discs in m): what stands in a disc is drawn but
+        # lettered only in its detail view; with `detail`, this drawing is that
+        # view (its lines cut at the disc's edge), else the disc is marked
+        self.discs = [(np.asarray(d.centre, float) / mu_l, d.radius / mu_l) for d in details]
+        self.in_detail = detail is not None
         # with `grow`, its labels written in the order that letters them best
         # whatever box it takes (Labels.write_later): the drawing given the
         # room round it on the laid-out sheet (_Composer.regrown)
@@ -255,12 +267,66 @@ class _Drawing:
     def mm(self, P: Any) -> np.ndarray:
         return _xy(_c(P)) / self.mu_l
 
+    def here(self, at: np.ndarray) -> bool:
+        """Whether what stands at `at` is lettered in this drawing: in its
+        disc for a detail view, in no detail's disc otherwise."""
+        inside = any(float(np.hypot(*(at - c))) <= r for c, r in self.discs)
+        return inside if self.in_detail else not inside
+
     def line(self, a: np.ndarray, b: np.ndarray, kind: LineType = "main") -> None:
+        if self.in_detail:
+            part = clipped(np.asarray(a, float), np.asarray(b, float), *self.discs[0])
+            if part is not None:
+                self.sk.line(part[0], part[1], kind)
+            return
         self.sk.line(a, b, kind)
 
+    def _cut(self, first: int) -> None:
+        """A detail view's calls from `first` on cut at its disc's edge: lines
+        and outlines clipped, circles and arcs kept where their centre is in it."""
+        if not self.in_detail:
+            return
+        centre, radius = self.discs[0]
+        disc = shapely.Point(*centre).buffer(radius, 64)
+        kept: list[Any] = []
+        for c in self.sk.calls[first:]:
+            if isinstance(c, RecLine):
+                part = clipped(np.asarray(c.start), np.asarray(c.end), centre, radius)
+                if part is not None:
+                    kept.append(c.with_changes(start=tuple(part[0]), end=tuple(part[1])))
+            elif isinstance(c, RecPolyline):
+                cut = (
+                    shapely.Polygon(c.vertices)
+                    if isinstance(c, RecPolygon)
+                    else shapely.LineString(c.vertices)
+                ).intersection(disc)
+                for g in getattr(cut, "geoms", [cut]):
+                    if g.is_empty:
+                        continue
+                    if g.geom_type == "Polygon":
+                        kept.append(c.with_changes(vertices=tuple(g.exterior.coords[:-1])))
+                    elif g.geom_type == "LineString":
+                        kept.append(c.with_changes(vertices=tuple(g.coords)))
+            elif isinstance(c, (RecCircle, RecArc)):
+                if math.dist(c.center, centre) <= radius:
+                    kept.append(c)
+            else:
+                kept.append(c)
+        del self.sk.calls[first:]
+        self.sk.calls.extend(kept)
+
+    def marks(self, details: Sequence[Detail], lang: Language) -> None:
+        """The discs of `details` as thin circles, each with its letter."""
+        for d, (c, r) in zip(details, self.discs):
+            self.sk.circle(c, r, "thin")
+            rim = c + r * np.array([math.sqrt(0.5), math.sqrt(0.5)])
+            self.labels.later(rim, d.letter, rim - c)
+
     def later(self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None) -> None:
-        """A label written after every line, so that it can avoid them all."""
-        self.labels.later(anchor, markup, towards)
+        """A label written after every line, so that it can avoid them all
+        (where it is this drawing's: `here`)."""
+        if self.here(anchor):
+            self.labels.later(anchor, markup, towards)
 
     def later_along(
         self, start: np.ndarray, end: np.ndarray, markup: str, along: Sequence[float] | None = None
@@ -271,7 +337,7 @@ class _Drawing:
         self, at: np.ndarray, F: np.ndarray, label: str, largest: float, line: str = "main"
     ) -> None:
         size = float(np.hypot(*F))
-        if size <= 1e-9 * max(largest, 1e-300):
+        if size <= 1e-9 * max(largest, 1e-300) or not self.here(at):
             return
         u = np.asarray(F, float) / size
         end = at + _arrow_length(size, largest) * u
@@ -296,7 +362,7 @@ class _Drawing:
         positive), turned where it leaves room for its label by the arrowhead
         and for `name` (the name of the point at `centre`, the side it is
         written first), and crosses least."""
-        if M == 0.0:
+        if M == 0.0 or not self.here(centre):
             return
         # the arc is avoided as drawn (the labels follow the sketch), not as a
         # disc: the points inside it (the pivot it turns round) are named there
@@ -343,9 +409,9 @@ class _Drawing:
         foot = pivot + r - float(np.dot(r, u)) * u
         h = float(np.hypot(*(foot - pivot)))
         if h >= 1.0:
-            self.sk.line(pivot, foot, "thin")
+            self.line(pivot, foot, "thin")
             # the line of action carried on to the foot, thin
-            self.sk.line(at, foot, "thin")
+            self.line(at, foot, "thin")
             self.later_along(pivot, foot, label, _ARM_ALONG)
         return h
 
@@ -403,11 +469,15 @@ class _Drawing:
         state, mech = self.state, self.state.mech
         # the lines and blocks drawn are avoided as the labels follow the sketch
         # (once: a line listed twice would count twice when a leader crosses it)
+        first = len(self.sk.calls)
         drawn = draw_poses(self.sk, [self._pose(lids, frame)])
+        self._cut(first)
         for P in drawn.pivots:
-            self.labels.avoid_line(P, P - np.array([0.0, 6.0]), 4.5)
+            if not self.in_detail or self.here(P):
+                self.labels.avoid_line(P, P - np.array([0.0, 6.0]), 4.5)
         for P in [*drawn.pivots, *(c for c, _ in drawn.pins)]:
-            self.labels.avoid_circle(P, 1.6)
+            if not self.in_detail or self.here(P):
+                self.labels.avoid_circle(P, 1.6)
         written: set[str] = set()
         for pin in mech.revolutes:
             moving = [lk for lk in pin.links if lk != FRAME]
@@ -438,7 +508,7 @@ class _Drawing:
         for lid in lids:
             ll = fa.loads.links[lid]
             S = self.mm(ll.centre_of_mass)
-            if ll.mass:
+            if ll.mass and (not self.in_detail or self.here(S)):
                 self.sk.circle(S, 0.8, "main", "black")
                 self.labels.avoid_circle(S, 1.2)
                 self.later(S, f"S_{{{lid}}}", _S_SIDE)
@@ -446,8 +516,8 @@ class _Drawing:
             sh = ll.shifted_inertia_force
             if sh is not None and ll.mass:
                 K = self.mm(sh.point)
-                if float(np.hypot(*(K - S))) >= 1.0:
-                    self.sk.line(S, K, "thin")
+                if float(np.hypot(*(K - S))) >= 1.0 and self.here(S):
+                    self.line(S, K, "thin")
                     self.later_along(S, K, f"h_{{{lid}}}", _ARM_ALONG)
                 self.force(K, ll.inertia_force, f"F_in{lid}", largest)
             elif ll.mass:
@@ -496,16 +566,46 @@ def sketch_loaded_mechanism(
     lang: Language,
     compact: bool = False,
     grow: bool = False,
+    details: Sequence[Detail] = (),
 ) -> Sketch:
     """The mechanism with every load, F_bal and ω1 at `mu_l`; on a compact sheet
     (`_Composer`, many groups: every drawing near its coarsest scale) its
     couples' arcs at their first start, not turned to leave their names room
     (a turned arc's name may stand where such a sheet has no room left);
-    `grow` as _Drawing's."""
+    `grow` as _Drawing's. With `details`, what stands in a detail's disc (its
+    points' names, the loads applied there) is drawn only in its detail view
+    (`sketch_loaded_detail`); the disc is marked by a thin circle and its letter."""
+    return _loaded_view(fa, mu_l, look, lang, compact, grow, details, None)
+
+
+def sketch_loaded_detail(
+    fa: ForceAnalysis, mu_l: float, look: Any, lang: Language, detail: Detail, compact: bool = False
+) -> Sketch:
+    """The detail view `detail` of the loaded mechanism drawn at `mu_l`: its
+    disc at μl / ratio, titled "A (4:1)", the links cut at the disc's edge, the
+    loads applied inside it (to direction, as on the mechanism) and every name there."""
+    return _loaded_view(fa, mu_l, look, lang, compact, False, (detail,), detail)
+
+
+def _loaded_view(
+    fa: ForceAnalysis,
+    mu_l: float,
+    look: Any,
+    lang: Language,
+    compact: bool,
+    grow: bool,
+    details: Sequence[Detail],
+    detail: Detail | None,
+) -> Sketch:
+    """The loaded mechanism with `details` marked (`detail` None), or the detail view `detail`."""
     state = fa.loads.state
     mech = state.mech
-    d = _Drawing(look, state, mu_l, lang, turn_arcs=not compact, grow=grow)
-    with d.sk.group("force-mechanism", "mechanism"):
+    mu = mu_l / detail.ratio if detail is not None else mu_l
+    d = _Drawing(
+        look, state, mu, lang, turn_arcs=not compact, grow=grow, details=details, detail=detail
+    )
+    gid = loaded_detail_gid(details, detail) if detail is not None else "force-mechanism"
+    with d.sk.group(gid, "mechanism"):
         d.links(mech.links, frame=True)
         largest = _largest_load(fa, mech.links, [fa.driving_link.balancing_vector])
         d.loads(fa, mech.links, largest)
@@ -514,11 +614,96 @@ def sketch_loaded_mechanism(
         O = d.mm(state.point(mech.drive.link, mech.crank_pivot))
         name = (point_markup(mech.crank_pivot), _PIN_SIDE)
         d.moment(O, state.omega1, "ω_{1}", radius=9.0, name=name)
+        if detail is not None:
+            ratio = catalogue(lang).plain_number(detail.ratio)
+            return d.finish(_words(lang)["lever_detail"].format(letter=detail.letter, ratio=ratio))
+        d.marks(details, lang)
         label = scale_label(mu_l, "length", lang).markup()
         sk = d.finish(
             _words(lang)["mechanism"].format(i=fa.index), [label, _words(lang)["not_to_scale"]]
         )
     return sk
+
+
+_LOADED_DETAILS = 1  # the most detail views of the loaded mechanism
+_POINTS_APART_MM = 7.0  # a detail of the loaded mechanism sets its points this far apart
+_LOADED_DETAIL_MM = 45.0  # the largest radius of its disc, mm
+_LOADED_RADII = (4.0, 6.0, 8.0, 12.0, 16.0)  # the radii of its discs tried, mm
+_CORE_SHARE = 0.7  # its disc: the smallest that holds this share of the most any holds
+
+
+def _loaded_names(fa: ForceAnalysis, mu_l: float) -> tuple[list[Name], np.ndarray]:
+    """The names the loaded mechanism writes at `mu_l`: its points', the
+    centres of mass', the loads' by their arrows and the arms' (`Name`); and
+    the places (mm) of the points and centres of mass named."""
+    state = fa.loads.state
+    mech = state.mech
+    out: list[Name] = []
+    for name, owners in mech.point_owners.items():
+        at = _xy(_c(state.point(next(iter(owners)), name))) / mu_l
+        out.append(Name(at, name_area(name)))
+    forces: list[tuple[np.ndarray, np.ndarray, str]] = []
+    for lid in mech.links:
+        ll = fa.loads.links[lid]
+        if not ll.mass:
+            continue
+        S = _xy(_c(ll.centre_of_mass)) / mu_l
+        out.append(Name(S, name_area(f"S_{{{lid}}}")))
+        forces.append((S, np.asarray(ll.weight, float), f"G{lid}"))
+        sh = ll.shifted_inertia_force
+        K = S if sh is None else _xy(_c(sh.point)) / mu_l
+        forces.append((K, np.asarray(ll.inertia_force, float), f"F_in{lid}"))
+        h = float(np.hypot(*(K - S)))
+        if h >= 1.0:
+            out.append(Name((S + K) / 2.0, name_area(f"h_{{{lid}}}"), h))
+    for f in fa.loads.production_resistance:
+        if f.acting:
+            forces.append((_xy(_c(f.point)) / mu_l, np.asarray(f.force, float), f.name))
+    A = _xy(_c(state.point(mech.drive.link, mech.crank_pin))) / mu_l
+    forces.append((A, np.asarray(fa.driving_link.balancing_vector, float), "F_bal"))
+    largest = max([float(np.hypot(*F)) for _, F, _ in forces] + [0.0])
+    for at, F, label in forces:
+        size = float(np.hypot(*F))
+        if size > 1e-9 * max(largest, 1e-300):
+            u = F / size
+            mid = at + 0.5 * _arrow_length(size, largest) * u
+            out.append(Name(mid, name_area(label) + 8.0))
+    points = [n.at for n in out[: len(mech.point_owners)]]
+    points += [at for at, _, label in forces if label.startswith("G")]
+    return out, np.array(points, dtype=float).reshape(-1, 2)
+
+
+def loaded_details(
+    fa: ForceAnalysis, mu_l: float, crowded: np.ndarray, taken: Iterable[str] = ()
+) -> tuple[Detail, ...]:
+    """The detail view the loaded mechanism at `mu_l` needs where the names
+    standing for the points `crowded` (mm, `crowded_names` of the mechanism
+    drawn without details) found no place near (`choose_details`): at most
+    _LOADED_DETAILS disc round a point of the mechanism or such a point,
+    lettered by a capital that names no point and is not in `taken` (the
+    lever's details' letters)."""
+    names, points = _loaded_names(fa, mu_l)
+    used = {n[:1].upper() for n in fa.loads.state.mech.point_owners} | set(taken)
+    letters = [x for x in DETAIL_LETTERS if x not in used]
+    return choose_details(
+        names,
+        crowded,
+        list(points),
+        mu_l,
+        letters,
+        _LOADED_DETAILS,
+        points=points,
+        spacing=_POINTS_APART_MM,
+        widest=_LOADED_DETAIL_MM,
+        tightest=_CORE_SHARE,
+        radii=_LOADED_RADII,
+    )
+
+
+def loaded_detail_gid(details: Sequence[Detail], detail: Detail) -> str:
+    """The drawing of sheet 2 that holds the detail view `detail` of the loaded mechanism."""
+    k = list(details).index(detail)
+    return "force-mechanism-detail" + (f"-{k + 1}" if k else "")
 
 
 def _group_forces(fa: ForceAnalysis, g: Any) -> list[tuple[str, np.ndarray, np.ndarray, str]]:
@@ -889,10 +1074,11 @@ def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[Name]:
     return out
 
 
-def crowded_names(sketch: Sketch, lang: Language) -> np.ndarray:
+def crowded_names(sketch: Sketch, lang: Language, anchors: bool = False) -> np.ndarray:
     """Where the names of a drawing that the sheet linter finds far from what
     they name, or on a line or another name, stand for (mm, one row each: the
-    point, or the middle of the segment, they name)."""
+    point, or the middle of the segment, they name; with `anchors`, the
+    segment's start: where a force is applied)."""
     view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
     found = {f.where for f in (*label_near(view), *label_clear(view))}
     out = []
@@ -901,7 +1087,7 @@ def crowded_names(sketch: Sketch, lang: Language) -> np.ndarray:
         if lab.naming is None or (round(float(c.x), 1), round(float(c.y), 1)) not in found:
             continue
         n = lab.naming
-        end = n.anchor if n.end is None else n.end
+        end = n.anchor if n.end is None or anchors else n.end
         out.append(((n.anchor[0] + end[0]) / 2.0, (n.anchor[1] + end[1]) / 2.0))
     return np.array(out, dtype=float).reshape(-1, 2)
 
