@@ -120,6 +120,8 @@ class Sheet2:
     shrink: int = 0
     # the lever's detail views (drawings "zhukovsky-lever-detail", "…-detail-2")
     details: tuple[LeverDetail, ...] = ()
+    # the loaded mechanism's (drawing "force-mechanism-detail")
+    mechanism_details: tuple[Detail, ...] = ()
 
     @property
     def record(self) -> Sheet2Scales:
@@ -1629,8 +1631,12 @@ class _Composer:
         page: Page,
         compact: bool = False,
         details: bool = True,
+        mechanism_details: tuple[Detail, ...] = (),
     ) -> None:
         self.fa, self.look, self.lang, self.page = fa, look, lang, page
+        # the loaded mechanism's detail views (compose_sheet2 finds them on
+        # the mechanism that reached the sheet without)
+        self.mechanism_details = mechanism_details
         # compact (compose_sheet2's reduction for a sheet of many groups): the
         # equations under the polygons in lines of COMPACT_EQUATION_MM, the
         # tables numbered and continued in parts (GOST 2.105)
@@ -1656,6 +1662,7 @@ class _Composer:
             lever_details(fa, self.lever_mu, crowded_names(plain, lang)) if details else ()
         )
         self.drawings += [detail_gid(self.details, d) for d in self.details]
+        self.drawings += [loaded_detail_gid(mechanism_details, d) for d in mechanism_details]
         if not self.details:  # the lever at its textbook scale is drawn: kept
             tables = _sketch_tables(fa, arms, look, lang, compact)
             self.cache[("lever", self.lever_mu)] = (plain, arms, tables)
@@ -1822,11 +1829,21 @@ class _Composer:
         mechanism, loads = self.memo(
             ("force-mechanism", mu_l),
             lambda: (
-                sketch_loaded_mechanism(fa, mu_l, look, lang, self.compact),
+                sketch_loaded_mechanism(
+                    fa, mu_l, look, lang, self.compact, details=self.mechanism_details
+                ),
                 sketch_loads_table(fa, mu_l, look, lang, self.compact),
             ),
         )
         yield "force-mechanism", mechanism
+        for d in self.mechanism_details:
+            yield (
+                loaded_detail_gid(self.mechanism_details, d),
+                self.memo(
+                    ("force-mechanism-detail", d.letter, mu_l),
+                    lambda d=d: sketch_loaded_detail(fa, mu_l, look, lang, d, self.compact),
+                ),
+            )
         yield "table-loads", loads
 
     def given_room(
@@ -1886,7 +1903,9 @@ class _Composer:
         fa, look, lang = self.fa, self.look, self.lang
         mu_l = scales["mu_l"]
         if name == "force-mechanism":
-            return sketch_loaded_mechanism(fa, mu_l, look, lang, self.compact, grow=True)
+            return sketch_loaded_mechanism(
+                fa, mu_l, look, lang, self.compact, grow=True, details=self.mechanism_details
+            )
         if name == "driving-link":
             mu_d = scales[f"mu_l {fa.driving_link.link}"]
             return self._noted(sketch_driving_link(fa, mu_d, look, lang, grow=True), mu_d, mu_l)
@@ -2162,6 +2181,10 @@ class _Composer:
         parts = ["mech", *groups, "driving"]
         keys: dict[str, list[list[str]]] = {
             "force-mechanism": [["mech"], parts],
+            **{
+                loaded_detail_gid(self.mechanism_details, d): [["mech"], parts]
+                for d in self.mechanism_details
+            },
             "zhukovsky-lever": [["lever"]],
             **{detail_gid(self.details, d): [["lever"]] for d in self.details},
             "driving-link": [["driving"], parts],
@@ -2267,6 +2290,43 @@ class _Composer:
         return steps["lever"] >= 0 or not lever_max or self.fa.lever.pa / mu_V <= _LEVER_MAX
 
 
+def _with_mechanism_details(
+    composer: _Composer, steps: dict[str, int], solution: Solution
+) -> tuple[_Composer, dict[str, int]]:
+    """Where names of the loaded mechanism as it reaches the sheet (at
+    `steps`) stand far or on something, the sheet again with a detail view of
+    their crowd (`loaded_details`): kept where it fits and fewer labels of
+    all its drawings stand far or found no free place; else as it was."""
+    fa, lang = composer.fa, composer.lang
+    scales = composer.scales(steps)
+    mechanism = composer.sketches(scales)[0]["force-mechanism"]
+    crowd = crowded_names(mechanism, lang, anchors=True)
+    if not len(crowd):
+        return composer, steps
+    taken = [d.letter for d in composer.details]
+    found = loaded_details(fa, scales["mu_l"], crowd, taken)
+    if not found:
+        return composer, steps
+    detailed = _Composer(
+        fa,
+        solution,
+        composer.look,
+        lang,
+        composer.page,
+        compact=composer.compact,
+        details=bool(composer.details),
+        mechanism_details=found,
+    )
+    detailed.cache.update(composer.shared_drawings())
+    trial = detailed.first_fit()
+    if trial is None:
+        return composer, steps
+    trial = detailed.filled(detailed.unwall(detailed.fill(trial)))
+    if sum(detailed.lettered(trial)) >= sum(composer.lettered(steps)):
+        return composer, steps
+    return detailed, trial
+
+
 def compose_sheet2(
     solution: Solution,
     backend: Backend,
@@ -2308,6 +2368,7 @@ def compose_sheet2(
             "groups (the force analysis of every group goes on one sheet)"
         )
     steps = composer.filled(composer.unwall(composer.fill(steps)))
+    composer, steps = _with_mechanism_details(composer, steps, solution)
     scales = composer.scales(steps)
     sketches, arms = composer.sketches(scales)
     arranged = composer.arrange(sketches)
@@ -2320,6 +2381,7 @@ def compose_sheet2(
         shrink=max(steps.values()),
         arms={"lever": arms},
         details=composer.details,
+        mechanism_details=composer.mechanism_details,
     )
     for name in composer.tables + composer.drawings:
         ext, rect = composer.extent(sketches[name]), placed[name]
