@@ -32,7 +32,7 @@ import numpy as np
 import shapely
 
 from ..drawing.detail import DETAIL_LETTERS, Detail, Name, choose_details, clipped, name_area
-from ..drawing.labels import LabelCounts, Labels, arc_line
+from ..drawing.labels import NEAR_MM, LabelCounts, Labels, arc_line
 from ..drawing.layout import LayoutError, SheetLayout, pack
 from ..drawing.markup import equation_markup as _equation_markup
 from ..drawing.markup import force_markup, image_markup, point_markup
@@ -874,17 +874,20 @@ def _distance_outside(region: Any, points: np.ndarray) -> np.ndarray:
     return out
 
 
+_CAPTION_REACH = NEAR_MM - 1.0  # a link polygon's caption walled in: this far from it at most
+
+
 def _caption_place(
-    labels: Labels, corners: np.ndarray, caption: str
+    labels: Labels, corners: np.ndarray, caption: str, reach: float = 3.0
 ) -> tuple[np.ndarray, np.ndarray | None]:
     """Where a link's polygon inside its group's is named ("link 4"): on the
-    polygon or by it (the box within 3 mm of it), at the free place nearest its centre
+    polygon or by it (the box within `reach` mm of it), at the free place nearest its centre
     (the anchor and the side the placer tries first put the box there); else
     beside the centre."""
     centre = corners.mean(axis=0)
     w, h = labels.width(caption) + 0.4, labels.size + 0.4
     region = shapely.convex_hull(shapely.multipoints(corners))
-    lo, hi = corners.min(axis=0) - (w / 2 + 3.0), corners.max(axis=0) + (w / 2 + 3.0)
+    lo, hi = corners.min(axis=0) - (w / 2 + reach), corners.max(axis=0) + (w / 2 + reach)
     xs, ys = np.meshgrid(np.arange(lo[0], hi[0], 1.0), np.arange(lo[1], hi[1], 1.0))
     q = np.c_[xs.ravel(), ys.ravel()]
     x0, y0, x1, y1 = q[:, 0] - w / 2, q[:, 1] - h / 2, q[:, 0] + w / 2, q[:, 1] + h / 2
@@ -895,10 +898,10 @@ def _caption_place(
     # within hypot(w, h) / 2 of it: where the centre's distance d says which
     # side of 3 mm the box is, by more than rounding, the box is not measured
     d = _distance_outside(region, q[ask])
-    near = d <= 3.0 + min(w, h) / 2 - 1e-6
-    unsure = ~near & (d - math.hypot(w, h) / 2 <= 3.0 + 1e-6)
+    near = d <= reach + min(w, h) / 2 - 1e-6
+    unsure = ~near & (d - math.hypot(w, h) / 2 <= reach + 1e-6)
     b = ask[unsure]
-    near[unsure] = shapely.distance(shapely.box(x0[b], y0[b], x1[b], y1[b]), region) <= 3.0
+    near[unsure] = shapely.distance(shapely.box(x0[b], y0[b], x1[b], y1[b]), region) <= reach
     on[ask] = near
     taken = shapely.bounds(labels.boxes).reshape(-1, 4)
     gap = labels.spacing
@@ -926,12 +929,17 @@ def sketch_force_polygons(
     title: str,
     equation_width: float | None = None,
     grow: bool = False,
+    captions_first: bool = False,
 ) -> Sketch:
     """The polygons of one group (or of the driving link) to μF, head to tail
     from their origin. A polygon that starts with the sides of one already
     drawn (a link's polygon inside its group's) adds only its new sides, as
     the textbook closes R54 inside the polygon of group 4-5; one that shares
-    nothing is drawn beside it. `grow` as _Drawing's."""
+    nothing is drawn beside it. `grow` as _Drawing's. A link's polygon is
+    named after the sides' names, by it; where the sides' names leave it no
+    place by it (task5_v04's link 2, 2 mm across, walled in by arrows), the
+    polygons are drawn again with the captions written first
+    (`captions_first`), kept where that letters them better."""
     sk = Sketch(look)
     labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
     drawn: dict[tuple[str, int, int], bool] = {}
@@ -1009,11 +1017,19 @@ def sketch_force_polygons(
             # zero, the polygon a single point, drawn as one
             sk.circle(offset, 0.8, "main", "black")
             labels.avoid_line(offset - 1.0, offset + 1.0)
+        if captions_first:
+            for corners_of, caption in captions:
+                anchor, towards = _caption_place(labels, corners_of, caption)
+                labels.place(anchor, caption, towards=towards)
         for start, markup, end in names.values():
             labels.later_along(start, end, markup)
         labels.write_later(retry=_RETRY_ORDERS, grow=grow)
-        for corners_of, caption in captions:
+        walled = False
+        for corners_of, caption in captions if not captions_first else ():
             anchor, towards = _caption_place(labels, corners_of, caption)
+            if towards is None:  # none by it: one within the linter's reach
+                anchor, towards = _caption_place(labels, corners_of, caption, _CAPTION_REACH)
+                walled |= towards is None
             # a polygon with no free place by it (a link's few short sides in
             # a corner of its group's): every place near its centre on the
             # fine grid before a leader
@@ -1039,6 +1055,12 @@ def sketch_force_polygons(
             _words(lang)["polygon"].format(title=_polygon_title(title, lang)),
             _TITLE,
         )
+    if walled:
+        again = sketch_force_polygons(
+            polygons, mu_F, look, lang, gid, title, equation_width, grow, captions_first=True
+        )
+        if len(crowded_names(again, lang)) < len(crowded_names(sk, lang)):
+            return again
     return sk
 
 
