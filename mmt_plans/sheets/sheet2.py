@@ -1701,6 +1701,17 @@ class _Composer:
             (f"mu_l {dl.link}", self._pin_points({dl.link})),
         ]
 
+    def with_mechanism_details(self, details: tuple[Detail, ...]) -> None:
+        """The loaded mechanism drawn with `details` from now on: what the
+        sheet's fits and packing found forgotten (the sketches are kept: their
+        extents are known by id)."""
+        self.drawings = [d for d in self.drawings if not d.startswith("force-mechanism-detail")]
+        self.mechanism_details = details
+        self.drawings += [loaded_detail_gid(details, d) for d in details]
+        for key in [k for k in self.cache if k[0] in ("fits", "fits at", "bounded")]:
+            del self.cache[key]
+        self.packed = {}
+
     def shared_drawings(self) -> dict[tuple[Any, ...], Any]:
         """The drawings of links made so far, which a compact sheet draws the
         same (its polygons, tables and the sketches holding them differ)."""
@@ -1849,7 +1860,7 @@ class _Composer:
         yield from self.lever_details(mu_V)
         yield from tables.items()
         mechanism, loads = self.memo(
-            ("force-mechanism", mu_l),
+            ("force-mechanism", mu_l, self.mechanism_details),
             lambda: (
                 sketch_loaded_mechanism(
                     fa, mu_l, look, lang, self.compact, details=self.mechanism_details
@@ -2316,9 +2327,11 @@ def _with_mechanism_details(
     composer: _Composer, steps: dict[str, int], solution: Solution
 ) -> tuple[_Composer, dict[str, int]]:
     """Where names of the loaded mechanism as it reaches the sheet (at
-    `steps`) stand far or on something, the sheet again with a detail view of
-    their crowd (`loaded_details`): kept where it fits and fewer labels of
-    all its drawings stand far or found no free place; else as it was."""
+    `steps`) stand far or on something, a detail view of their crowd
+    (`loaded_details`), decided once on that drawing: the sheet at the same
+    steps with it, else with the mechanism a step or two smaller (the
+    detail holds its crowd); kept where it fits and fewer labels of all its
+    drawings stand far or found no free place; else as it was."""
     fa, lang = composer.fa, composer.lang
     scales = composer.scales(steps)
     mechanism = composer.sketches(scales)[0]["force-mechanism"]
@@ -2329,24 +2342,14 @@ def _with_mechanism_details(
     found = loaded_details(fa, scales["mu_l"], crowd, taken)
     if not found:
         return composer, steps
-    detailed = _Composer(
-        fa,
-        solution,
-        composer.look,
-        lang,
-        composer.page,
-        compact=composer.compact,
-        details=bool(composer.details),
-        mechanism_details=found,
-    )
-    detailed.cache.update(composer.shared_drawings())
-    trial = detailed.first_fit()
-    if trial is None:
-        return composer, steps
-    trial = detailed.filled(detailed.unwall(detailed.fill(trial)))
-    if sum(detailed.lettered(trial)) >= sum(composer.lettered(steps)):
-        return composer, steps
-    return detailed, trial
+    was = sum(composer.lettered(steps))
+    composer.with_mechanism_details(found)
+    for by in (0, 1, 2):
+        trial = {**steps, "mech": steps["mech"] + by}
+        if composer.fits(trial) and sum(composer.lettered(trial)) < was:
+            return composer, trial
+    composer.with_mechanism_details(())
+    return composer, steps
 
 
 def compose_sheet2(
