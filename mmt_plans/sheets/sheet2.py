@@ -2330,7 +2330,8 @@ def _with_mechanism_details(
     `steps`) stand far or on something, a detail view of their crowd
     (`loaded_details`), decided once on that drawing: the sheet at the same
     steps with it, else with the mechanism a step or two smaller (the
-    detail holds its crowd); kept where it fits and fewer labels of all its
+    detail holds its crowd), else the sheet fitted again with it (the filled
+    sheet has no room left); kept where it fits and fewer labels of all its
     drawings stand far or found no free place; else as it was."""
     fa, lang = composer.fa, composer.lang
     scales = composer.scales(steps)
@@ -2349,7 +2350,25 @@ def _with_mechanism_details(
         if composer.fits(trial) and sum(composer.lettered(trial)) < was:
             return composer, trial
     composer.with_mechanism_details(())
-    return composer, steps
+    # the filled sheet has no room for it: the sheet fitted again with it
+    detailed = _Composer(
+        fa,
+        solution,
+        composer.look,
+        lang,
+        composer.page,
+        compact=composer.compact,
+        details=bool(composer.details),
+        mechanism_details=found,
+    )
+    detailed.cache.update(composer.shared_drawings())
+    refit = detailed.first_fit()
+    if refit is None:
+        return composer, steps
+    refit = detailed.filled(detailed.unwall(detailed.fill(refit)))
+    if sum(detailed.lettered(refit)) >= was:
+        return composer, steps
+    return detailed, refit
 
 
 def compose_sheet2(
