@@ -168,14 +168,20 @@ def loads(wr: Writer, fa: ForceAnalysis) -> None:
         )
         wr.text(w["shift_side"].format(lid=lid))
     drawings = [(2, ("force-mechanism",))]
+    # the mechanism's detail view (sheet 2 draws one where its names crowd)
+    details = [(2, (g,)) for g in wr.drawings_named(2, "force-mechanism-detail")]
     if wr.has_figure(drawings):
         mu_l, ML = wr.drawn.loaded()
         n_fig = wr.next_figure
-        wr.text(w["loads_drawn"].format(mu=wr.v(mu_l, ML)) + wr.cite(n_fig) + ".")
-        wr.figure(
-            drawings,
-            w["fig_loads"].format(i=wr.i(fa.index or 0, "J['forces']['index']"), mu=wr.v(mu_l, ML)),
+        drawn = w["loads_drawn"].format(mu=wr.v(mu_l, ML)) + wr.cite(n_fig) + "."
+        wr.text(drawn + (" " + w["loads_details_drawn"] if details else ""))
+        caption = w["fig_loads"].format(
+            i=wr.i(fa.index or 0, "J['forces']['index']"), mu=wr.v(mu_l, ML)
         )
+        if details:
+            parts = ", ".join(str(w["part_letters"])[1 : 1 + len(details)])
+            caption += w["fig_loads_parts"].format(parts=parts)
+        wr.figure(drawings + details, caption)
 
 
 def _sense(wr: Writer, x: float) -> str:

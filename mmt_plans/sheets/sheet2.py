@@ -31,6 +31,7 @@ from typing import Any
 import numpy as np
 import shapely
 
+from ..drawing.detail import DETAIL_LETTERS, Detail, Name, choose_details, clipped, name_area
 from ..drawing.labels import NEAR_MM, LabelCounts, Labels, arc_line
 from ..drawing.layout import LayoutError, SheetLayout, pack
 from ..drawing.markup import equation_markup as _equation_markup
@@ -47,6 +48,11 @@ from ..i18n import Language, catalogue, check_language
 from ..model import FRAME
 from ..render.backend import Backend
 from ..render.look import LineType
+from ..render.recording import Arc as RecArc
+from ..render.recording import Circle as RecCircle
+from ..render.recording import Line as RecLine
+from ..render.recording import Polygon as RecPolygon
+from ..render.recording import Polyline as RecPolyline
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
 from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, scale_step, title_fields
@@ -114,6 +120,8 @@ class Sheet2:
     shrink: int = 0
     # the lever's detail views (drawings "zhukovsky-lever-detail", "…-detail-2")
     details: tuple[LeverDetail, ...] = ()
+    # the loaded mechanism's (drawing "force-mechanism-detail")
+    mechanism_details: tuple[Detail, ...] = ()
 
     @property
     def record(self) -> Sheet2Scales:
@@ -237,8 +245,15 @@ class _Drawing:
         *,
         turn_arcs: bool = True,
         grow: bool = False,
+        details: Sequence[Detail] = (),
+        detail: Detail | None = None,
     ) -> None:
         self.sk = Sketch(look)
+        # `details` (their discs in m): what stands in a disc is drawn but
+        # lettered only in its detail view; with `detail`, this drawing is that
+        # view (its lines cut at the disc's edge), else the disc is marked
+        self.discs = [(np.asarray(d.centre, float) / mu_l, d.radius / mu_l) for d in details]
+        self.in_detail = detail is not None
         # with `grow`, its labels written in the order that letters them best
         # whatever box it takes (Labels.write_later): the drawing given the
         # room round it on the laid-out sheet (_Composer.regrown)
@@ -254,12 +269,66 @@ class _Drawing:
     def mm(self, P: Any) -> np.ndarray:
         return _xy(_c(P)) / self.mu_l
 
+    def here(self, at: np.ndarray) -> bool:
+        """Whether what stands at `at` is lettered in this drawing: in its
+        disc for a detail view, in no detail's disc otherwise."""
+        inside = any(float(np.hypot(*(at - c))) <= r for c, r in self.discs)
+        return inside if self.in_detail else not inside
+
     def line(self, a: np.ndarray, b: np.ndarray, kind: LineType = "main") -> None:
+        if self.in_detail:
+            part = clipped(np.asarray(a, float), np.asarray(b, float), *self.discs[0])
+            if part is not None:
+                self.sk.line(part[0], part[1], kind)
+            return
         self.sk.line(a, b, kind)
 
+    def _cut(self, first: int) -> None:
+        """A detail view's calls from `first` on cut at its disc's edge: lines
+        and outlines clipped, circles and arcs kept where their centre is in it."""
+        if not self.in_detail:
+            return
+        centre, radius = self.discs[0]
+        disc = shapely.Point(*centre).buffer(radius, 64)
+        kept: list[Any] = []
+        for c in self.sk.calls[first:]:
+            if isinstance(c, RecLine):
+                part = clipped(np.asarray(c.start), np.asarray(c.end), centre, radius)
+                if part is not None:
+                    kept.append(c.with_changes(start=tuple(part[0]), end=tuple(part[1])))
+            elif isinstance(c, RecPolyline):
+                cut = (
+                    shapely.Polygon(c.vertices)
+                    if isinstance(c, RecPolygon)
+                    else shapely.LineString(c.vertices)
+                ).intersection(disc)
+                for g in getattr(cut, "geoms", [cut]):
+                    if g.is_empty:
+                        continue
+                    if g.geom_type == "Polygon":
+                        kept.append(c.with_changes(vertices=tuple(g.exterior.coords[:-1])))
+                    elif g.geom_type == "LineString":
+                        kept.append(c.with_changes(vertices=tuple(g.coords)))
+            elif isinstance(c, (RecCircle, RecArc)):
+                if math.dist(c.center, centre) <= radius:
+                    kept.append(c)
+            else:
+                kept.append(c)
+        del self.sk.calls[first:]
+        self.sk.calls.extend(kept)
+
+    def marks(self, details: Sequence[Detail], lang: Language) -> None:
+        """The discs of `details` as thin circles, each with its letter."""
+        for d, (c, r) in zip(details, self.discs):
+            self.sk.circle(c, r, "thin")
+            rim = c + r * np.array([math.sqrt(0.5), math.sqrt(0.5)])
+            self.labels.later(rim, d.letter, rim - c)
+
     def later(self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None) -> None:
-        """A label written after every line, so that it can avoid them all."""
-        self.labels.later(anchor, markup, towards)
+        """A label written after every line, so that it can avoid them all
+        (where it is this drawing's: `here`)."""
+        if self.here(anchor):
+            self.labels.later(anchor, markup, towards)
 
     def later_along(
         self, start: np.ndarray, end: np.ndarray, markup: str, along: Sequence[float] | None = None
@@ -270,7 +339,7 @@ class _Drawing:
         self, at: np.ndarray, F: np.ndarray, label: str, largest: float, line: str = "main"
     ) -> None:
         size = float(np.hypot(*F))
-        if size <= 1e-9 * max(largest, 1e-300):
+        if size <= 1e-9 * max(largest, 1e-300) or not self.here(at):
             return
         u = np.asarray(F, float) / size
         end = at + _arrow_length(size, largest) * u
@@ -295,7 +364,7 @@ class _Drawing:
         positive), turned where it leaves room for its label by the arrowhead
         and for `name` (the name of the point at `centre`, the side it is
         written first), and crosses least."""
-        if M == 0.0:
+        if M == 0.0 or not self.here(centre):
             return
         # the arc is avoided as drawn (the labels follow the sketch), not as a
         # disc: the points inside it (the pivot it turns round) are named there
@@ -342,9 +411,9 @@ class _Drawing:
         foot = pivot + r - float(np.dot(r, u)) * u
         h = float(np.hypot(*(foot - pivot)))
         if h >= 1.0:
-            self.sk.line(pivot, foot, "thin")
+            self.line(pivot, foot, "thin")
             # the line of action carried on to the foot, thin
-            self.sk.line(at, foot, "thin")
+            self.line(at, foot, "thin")
             self.later_along(pivot, foot, label, _ARM_ALONG)
         return h
 
@@ -402,11 +471,15 @@ class _Drawing:
         state, mech = self.state, self.state.mech
         # the lines and blocks drawn are avoided as the labels follow the sketch
         # (once: a line listed twice would count twice when a leader crosses it)
+        first = len(self.sk.calls)
         drawn = draw_poses(self.sk, [self._pose(lids, frame)])
+        self._cut(first)
         for P in drawn.pivots:
-            self.labels.avoid_line(P, P - np.array([0.0, 6.0]), 4.5)
+            if not self.in_detail or self.here(P):
+                self.labels.avoid_line(P, P - np.array([0.0, 6.0]), 4.5)
         for P in [*drawn.pivots, *(c for c, _ in drawn.pins)]:
-            self.labels.avoid_circle(P, 1.6)
+            if not self.in_detail or self.here(P):
+                self.labels.avoid_circle(P, 1.6)
         written: set[str] = set()
         for pin in mech.revolutes:
             moving = [lk for lk in pin.links if lk != FRAME]
@@ -437,7 +510,7 @@ class _Drawing:
         for lid in lids:
             ll = fa.loads.links[lid]
             S = self.mm(ll.centre_of_mass)
-            if ll.mass:
+            if ll.mass and (not self.in_detail or self.here(S)):
                 self.sk.circle(S, 0.8, "main", "black")
                 self.labels.avoid_circle(S, 1.2)
                 self.later(S, f"S_{{{lid}}}", _S_SIDE)
@@ -445,8 +518,8 @@ class _Drawing:
             sh = ll.shifted_inertia_force
             if sh is not None and ll.mass:
                 K = self.mm(sh.point)
-                if float(np.hypot(*(K - S))) >= 1.0:
-                    self.sk.line(S, K, "thin")
+                if float(np.hypot(*(K - S))) >= 1.0 and self.here(S):
+                    self.line(S, K, "thin")
                     self.later_along(S, K, f"h_{{{lid}}}", _ARM_ALONG)
                 self.force(K, ll.inertia_force, f"F_in{lid}", largest)
             elif ll.mass:
@@ -495,16 +568,46 @@ def sketch_loaded_mechanism(
     lang: Language,
     compact: bool = False,
     grow: bool = False,
+    details: Sequence[Detail] = (),
 ) -> Sketch:
     """The mechanism with every load, F_bal and ω1 at `mu_l`; on a compact sheet
     (`_Composer`, many groups: every drawing near its coarsest scale) its
     couples' arcs at their first start, not turned to leave their names room
     (a turned arc's name may stand where such a sheet has no room left);
-    `grow` as _Drawing's."""
+    `grow` as _Drawing's. With `details`, what stands in a detail's disc (its
+    points' names, the loads applied there) is drawn only in its detail view
+    (`sketch_loaded_detail`); the disc is marked by a thin circle and its letter."""
+    return _loaded_view(fa, mu_l, look, lang, compact, grow, details, None)
+
+
+def sketch_loaded_detail(
+    fa: ForceAnalysis, mu_l: float, look: Any, lang: Language, detail: Detail, compact: bool = False
+) -> Sketch:
+    """The detail view `detail` of the loaded mechanism drawn at `mu_l`: its
+    disc at μl / ratio, titled "A (4:1)", the links cut at the disc's edge, the
+    loads applied inside it (to direction, as on the mechanism) and every name there."""
+    return _loaded_view(fa, mu_l, look, lang, compact, False, (detail,), detail)
+
+
+def _loaded_view(
+    fa: ForceAnalysis,
+    mu_l: float,
+    look: Any,
+    lang: Language,
+    compact: bool,
+    grow: bool,
+    details: Sequence[Detail],
+    detail: Detail | None,
+) -> Sketch:
+    """The loaded mechanism with `details` marked (`detail` None), or the detail view `detail`."""
     state = fa.loads.state
     mech = state.mech
-    d = _Drawing(look, state, mu_l, lang, turn_arcs=not compact, grow=grow)
-    with d.sk.group("force-mechanism", "mechanism"):
+    mu = mu_l / detail.ratio if detail is not None else mu_l
+    d = _Drawing(
+        look, state, mu, lang, turn_arcs=not compact, grow=grow, details=details, detail=detail
+    )
+    gid = loaded_detail_gid(details, detail) if detail is not None else "force-mechanism"
+    with d.sk.group(gid, "mechanism"):
         d.links(mech.links, frame=True)
         largest = _largest_load(fa, mech.links, [fa.driving_link.balancing_vector])
         d.loads(fa, mech.links, largest)
@@ -513,11 +616,96 @@ def sketch_loaded_mechanism(
         O = d.mm(state.point(mech.drive.link, mech.crank_pivot))
         name = (point_markup(mech.crank_pivot), _PIN_SIDE)
         d.moment(O, state.omega1, "ω_{1}", radius=9.0, name=name)
+        if detail is not None:
+            ratio = catalogue(lang).plain_number(detail.ratio)
+            return d.finish(_words(lang)["lever_detail"].format(letter=detail.letter, ratio=ratio))
+        d.marks(details, lang)
         label = scale_label(mu_l, "length", lang).markup()
         sk = d.finish(
             _words(lang)["mechanism"].format(i=fa.index), [label, _words(lang)["not_to_scale"]]
         )
     return sk
+
+
+_LOADED_DETAILS = 1  # the most detail views of the loaded mechanism
+_POINTS_APART_MM = 7.0  # a detail of the loaded mechanism sets its points this far apart
+_LOADED_DETAIL_MM = 45.0  # the largest radius of its disc, mm
+_LOADED_RADII = (4.0, 6.0, 8.0, 12.0, 16.0)  # the radii of its discs tried, mm
+_CORE_SHARE = 0.7  # its disc: the smallest that holds this share of the most any holds
+
+
+def _loaded_names(fa: ForceAnalysis, mu_l: float) -> tuple[list[Name], np.ndarray]:
+    """The names the loaded mechanism writes at `mu_l`: its points', the
+    centres of mass', the loads' by their arrows and the arms' (`Name`); and
+    the places (mm) of the points and centres of mass named."""
+    state = fa.loads.state
+    mech = state.mech
+    out: list[Name] = []
+    for name, owners in mech.point_owners.items():
+        at = _xy(_c(state.point(next(iter(owners)), name))) / mu_l
+        out.append(Name(at, name_area(name)))
+    forces: list[tuple[np.ndarray, np.ndarray, str]] = []
+    for lid in mech.links:
+        ll = fa.loads.links[lid]
+        if not ll.mass:
+            continue
+        S = _xy(_c(ll.centre_of_mass)) / mu_l
+        out.append(Name(S, name_area(f"S_{{{lid}}}")))
+        forces.append((S, np.asarray(ll.weight, float), f"G{lid}"))
+        sh = ll.shifted_inertia_force
+        K = S if sh is None else _xy(_c(sh.point)) / mu_l
+        forces.append((K, np.asarray(ll.inertia_force, float), f"F_in{lid}"))
+        h = float(np.hypot(*(K - S)))
+        if h >= 1.0:
+            out.append(Name((S + K) / 2.0, name_area(f"h_{{{lid}}}"), h))
+    for f in fa.loads.production_resistance:
+        if f.acting:
+            forces.append((_xy(_c(f.point)) / mu_l, np.asarray(f.force, float), f.name))
+    A = _xy(_c(state.point(mech.drive.link, mech.crank_pin))) / mu_l
+    forces.append((A, np.asarray(fa.driving_link.balancing_vector, float), "F_bal"))
+    largest = max([float(np.hypot(*F)) for _, F, _ in forces] + [0.0])
+    for at, F, label in forces:
+        size = float(np.hypot(*F))
+        if size > 1e-9 * max(largest, 1e-300):
+            u = F / size
+            mid = at + 0.5 * _arrow_length(size, largest) * u
+            out.append(Name(mid, name_area(label) + 8.0))
+    points = [n.at for n in out[: len(mech.point_owners)]]
+    points += [at for at, _, label in forces if label.startswith("G")]
+    return out, np.array(points, dtype=float).reshape(-1, 2)
+
+
+def loaded_details(
+    fa: ForceAnalysis, mu_l: float, crowded: np.ndarray, taken: Iterable[str] = ()
+) -> tuple[Detail, ...]:
+    """The detail view the loaded mechanism at `mu_l` needs where the names
+    standing for the points `crowded` (mm, `crowded_names` of the mechanism
+    drawn without details) found no place near (`choose_details`): at most
+    _LOADED_DETAILS disc round a point of the mechanism or such a point,
+    lettered by a capital that names no point and is not in `taken` (the
+    lever's details' letters)."""
+    names, points = _loaded_names(fa, mu_l)
+    used = {n[:1].upper() for n in fa.loads.state.mech.point_owners} | set(taken)
+    letters = [x for x in DETAIL_LETTERS if x not in used]
+    return choose_details(
+        names,
+        crowded,
+        list(points),
+        mu_l,
+        letters,
+        _LOADED_DETAILS,
+        points=points,
+        spacing=_POINTS_APART_MM,
+        widest=_LOADED_DETAIL_MM,
+        tightest=_CORE_SHARE,
+        radii=_LOADED_RADII,
+    )
+
+
+def loaded_detail_gid(details: Sequence[Detail], detail: Detail) -> str:
+    """The drawing of sheet 2 that holds the detail view `detail` of the loaded mechanism."""
+    k = list(details).index(detail)
+    return "force-mechanism-detail" + (f"-{k + 1}" if k else "")
 
 
 def _group_forces(fa: ForceAnalysis, g: Any) -> list[tuple[str, np.ndarray, np.ndarray, str]]:
@@ -686,17 +874,20 @@ def _distance_outside(region: Any, points: np.ndarray) -> np.ndarray:
     return out
 
 
+_CAPTION_REACH = NEAR_MM - 1.0  # a link polygon's caption walled in: this far from it at most
+
+
 def _caption_place(
-    labels: Labels, corners: np.ndarray, caption: str
+    labels: Labels, corners: np.ndarray, caption: str, reach: float = 3.0
 ) -> tuple[np.ndarray, np.ndarray | None]:
     """Where a link's polygon inside its group's is named ("link 4"): on the
-    polygon or by it (the box within 3 mm of it), at the free place nearest its centre
+    polygon or by it (the box within `reach` mm of it), at the free place nearest its centre
     (the anchor and the side the placer tries first put the box there); else
     beside the centre."""
     centre = corners.mean(axis=0)
     w, h = labels.width(caption) + 0.4, labels.size + 0.4
     region = shapely.convex_hull(shapely.multipoints(corners))
-    lo, hi = corners.min(axis=0) - (w / 2 + 3.0), corners.max(axis=0) + (w / 2 + 3.0)
+    lo, hi = corners.min(axis=0) - (w / 2 + reach), corners.max(axis=0) + (w / 2 + reach)
     xs, ys = np.meshgrid(np.arange(lo[0], hi[0], 1.0), np.arange(lo[1], hi[1], 1.0))
     q = np.c_[xs.ravel(), ys.ravel()]
     x0, y0, x1, y1 = q[:, 0] - w / 2, q[:, 1] - h / 2, q[:, 0] + w / 2, q[:, 1] + h / 2
@@ -707,10 +898,10 @@ def _caption_place(
     # within hypot(w, h) / 2 of it: where the centre's distance d says which
     # side of 3 mm the box is, by more than rounding, the box is not measured
     d = _distance_outside(region, q[ask])
-    near = d <= 3.0 + min(w, h) / 2 - 1e-6
-    unsure = ~near & (d - math.hypot(w, h) / 2 <= 3.0 + 1e-6)
+    near = d <= reach + min(w, h) / 2 - 1e-6
+    unsure = ~near & (d - math.hypot(w, h) / 2 <= reach + 1e-6)
     b = ask[unsure]
-    near[unsure] = shapely.distance(shapely.box(x0[b], y0[b], x1[b], y1[b]), region) <= 3.0
+    near[unsure] = shapely.distance(shapely.box(x0[b], y0[b], x1[b], y1[b]), region) <= reach
     on[ask] = near
     taken = shapely.bounds(labels.boxes).reshape(-1, 4)
     gap = labels.spacing
@@ -738,12 +929,17 @@ def sketch_force_polygons(
     title: str,
     equation_width: float | None = None,
     grow: bool = False,
+    captions_first: bool = False,
 ) -> Sketch:
     """The polygons of one group (or of the driving link) to μF, head to tail
     from their origin. A polygon that starts with the sides of one already
     drawn (a link's polygon inside its group's) adds only its new sides, as
     the textbook closes R54 inside the polygon of group 4-5; one that shares
-    nothing is drawn beside it. `grow` as _Drawing's."""
+    nothing is drawn beside it. `grow` as _Drawing's. A link's polygon is
+    named after the sides' names, by it; where the sides' names leave it no
+    place by it (task5_v04's link 2, 2 mm across, walled in by arrows), the
+    polygons are drawn again with the captions written first
+    (`captions_first`), kept where that letters them better."""
     sk = Sketch(look)
     labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
     drawn: dict[tuple[str, int, int], bool] = {}
@@ -821,11 +1017,19 @@ def sketch_force_polygons(
             # zero, the polygon a single point, drawn as one
             sk.circle(offset, 0.8, "main", "black")
             labels.avoid_line(offset - 1.0, offset + 1.0)
+        if captions_first:
+            for corners_of, caption in captions:
+                anchor, towards = _caption_place(labels, corners_of, caption)
+                labels.place(anchor, caption, towards=towards)
         for start, markup, end in names.values():
             labels.later_along(start, end, markup)
         labels.write_later(retry=_RETRY_ORDERS, grow=grow)
-        for corners_of, caption in captions:
+        walled = False
+        for corners_of, caption in captions if not captions_first else ():
             anchor, towards = _caption_place(labels, corners_of, caption)
+            if towards is None:  # none by it: one within the linter's reach
+                anchor, towards = _caption_place(labels, corners_of, caption, _CAPTION_REACH)
+                walled |= towards is None
             # a polygon with no free place by it (a link's few short sides in
             # a corner of its group's): every place near its centre on the
             # fine grid before a leader
@@ -851,54 +1055,33 @@ def sketch_force_polygons(
             _words(lang)["polygon"].format(title=_polygon_title(title, lang)),
             _TITLE,
         )
+    if walled:
+        again = sketch_force_polygons(
+            polygons, mu_F, look, lang, gid, title, equation_width, grow, captions_first=True
+        )
+        if len(crowded_names(again, lang)) < len(crowded_names(sk, lang)):
+            return again
     return sk
 
 
-@dataclass(frozen=True)
-class LeverDetail:
-    """A detail view of the lever (GOST 2.305, "выносний елемент"): the disc
-    of `radius` round `centre` (both in m/s, on the lever at any scale) where
-    the lever's names crowd, drawn again `ratio` times larger and lettered
-    there; the lever marks it with a thin circle and `letter`."""
-
-    letter: str
-    centre: tuple[float, float]
-    radius: float
-    ratio: float
-
-
-# the series of a detail's scales (GOST 2.302: 2:1, 2.5:1, 4:1, 5:1, 10:1)
-_DETAIL_RATIOS = (2.0, 2.5, 4.0, 5.0, 10.0)
-# the radii (mm at the lever's scale) of the discs tried round a crowd
-_DETAIL_RADII = (8.0, 12.0, 16.0, 20.0, 25.0)
-# the share of a detail's disc (widened by NEAR_MM) its names may cover:
-_NAME_SHARE = 0.12
-_DETAIL_MM = 70.0  # the largest radius of a detail's disc, mm
+# a lever's detail view (drawing/detail.py)
+LeverDetail = Detail
 _DETAILS = 2  # the most detail views of one lever
-_ARM_NAMED_MM = 6.0  # the shortest arm a detail names along it, mm
-# a detail's letter: a capital that names no point, force or arm (G, F, R, M, S,
-# K, P, O, I, Q, J read as loads, images or digits)
-_DETAIL_LETTERS = "ABCDEHLNTUVWXYZ"
-_LETTER_W = 2.3  # mm per character of a 3.5 mm name, a bound for counting room
 
 
-def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[tuple[np.ndarray, float, bool]]:
-    """The names the lever writes at `mu_V`: (where it stands, mm; the area of
-    its box, mm²; whether it is an arm's, lettered along p–foot)."""
+def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[Name]:
+    """The names the lever writes at `mu_V`: where each stands (mm), the area
+    of its box (mm²), an arm's lettered along p–foot with its length."""
     lever = fa.lever
     owners = tuple(fa.loads.state.mech.point_owners)
-    out: list[tuple[np.ndarray, float, bool]] = []
-
-    def area(markup: str) -> float:
-        return (len(re.sub(r"[_{}]", "", markup)) * _LETTER_W + 1.5) * (_TEXT + 1.5)
-
+    out: list[Name] = []
     spots: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {(0, 0): (np.zeros(2), ["p"])}
     for n, v in lever.images.items():
         at = np.asarray(v, float) / mu_V
         if float(np.hypot(*at)) >= 0.5:
             key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
             spots.setdefault(key, (at, []))[1].append(image_markup(n, owners))
-    out += [(at, area(", ".join(names)), False) for at, names in spots.values()]
+    out += [Name(at, name_area(", ".join(names))) for at, names in spots.values()]
     forces = [*lever.forces, lever.balancing]
     largest = max(float(np.hypot(*f.force)) for f in forces)
     for f in forces:
@@ -907,17 +1090,19 @@ def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[tuple[np.ndarray, float
             continue
         at = np.asarray(f.image, float) / mu_V
         u = np.asarray(f.force, float) / size
-        out.append((at + 0.5 * _arrow_length(size, largest) * u, area(f.label) + 8.0, False))
+        out.append(Name(at + 0.5 * _arrow_length(size, largest) * u, name_area(f.label) + 8.0))
         if abs(f.arm) / mu_V >= 1.0:
             foot = at - float(np.dot(at, u)) * u
-            out.append((0.5 * foot, area("h_{10}"), True))
+            h = float(np.hypot(*foot))
+            out.append(Name(0.5 * foot, name_area("h_{10}"), h))
     return out
 
 
-def crowded_names(sketch: Sketch, lang: Language) -> np.ndarray:
+def crowded_names(sketch: Sketch, lang: Language, anchors: bool = False) -> np.ndarray:
     """Where the names of a drawing that the sheet linter finds far from what
     they name, or on a line or another name, stand for (mm, one row each: the
-    point, or the middle of the segment, they name)."""
+    point, or the middle of the segment, they name; with `anchors`, the
+    segment's start: where a force is applied)."""
     view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
     found = {f.where for f in (*label_near(view), *label_clear(view))}
     out = []
@@ -926,7 +1111,7 @@ def crowded_names(sketch: Sketch, lang: Language) -> np.ndarray:
         if lab.naming is None or (round(float(c.x), 1), round(float(c.y), 1)) not in found:
             continue
         n = lab.naming
-        end = n.anchor if n.end is None else n.end
+        end = n.anchor if n.end is None or anchors else n.end
         out.append(((n.anchor[0] + end[0]) / 2.0, (n.anchor[1] + end[1]) / 2.0))
     return np.array(out, dtype=float).reshape(-1, 2)
 
@@ -934,58 +1119,14 @@ def crowded_names(sketch: Sketch, lang: Language) -> np.ndarray:
 def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[LeverDetail, ...]:
     """The detail views the lever at `mu_V` needs where the names standing
     for the points `crowded` (mm, `crowded_names` of the lever drawn without
-    details) found no place near: at most _DETAILS discs apart, round p, an
-    image or such a point, of a radius of _DETAIL_RADII, each holding the most
-    of those points left (the largest such: the whole crowd; the smallest
-    left five_dyads crowded); each drawn at the first ratio of the series that
-    leaves the names in it _NAME_SHARE of its room and names its shortest arm
-    along it (or draws the disc _DETAIL_MM wide)."""
+    details) found no place near (`choose_details`): at most _DETAILS discs
+    round p, an image or such a point (the smallest left five_dyads crowded),
+    lettered by capitals that name no point of the mechanism."""
     names = _lever_names(fa, mu_V)
-    where = np.array([at for at, _, _ in names])
-    areas = np.array([a for _, a, _ in names])
-    arm = np.array([a for _, _, a in names])
-    centres = [np.zeros(2), *(at for at, _, a in names if not a), *crowded]
+    centres = [np.zeros(2), *(n.at for n in names if n.arm_mm is None)]
     taken = {n[:1].upper() for n in fa.loads.state.mech.point_owners}
-    letters = [x for x in _DETAIL_LETTERS if x not in taken] or list(_DETAIL_LETTERS)
-    out: list[LeverDetail] = []
-    left = np.ones(len(crowded), dtype=bool)  # the crowded names no disc taken holds
-    for letter in letters[:_DETAILS]:
-        best: tuple[int, float, np.ndarray] | None = None  # held, radius, centre
-        for c in centres:
-            near = np.hypot(*(crowded - c).T) if len(crowded) else np.zeros(0)
-            for r in _DETAIL_RADII:
-                if any(
-                    math.dist(c, np.asarray(d.centre) / mu_V) < r + d.radius / mu_V for d in out
-                ):
-                    continue  # discs apart: a name is the lever's or one detail's
-                held = int(((near <= r) & left).sum())
-                if held and (best is None or (held, r) > best[:2]):
-                    best = (held, r, c)
-        if best is None:
-            break
-        r, c = best[1], best[2]
-        left &= np.hypot(*(crowded - c).T) > r
-        inside = np.hypot(*(where - c).T) <= r
-        demand = float(areas[inside].sum())
-        # the arms in the disc long enough, at the ratio, to be named along
-        shortest = min(
-            (2.0 * float(np.hypot(*where[i])) for i in np.flatnonzero(inside & arm)),
-            default=math.inf,
-        )
-        ratio = next(
-            (
-                k
-                for k in _DETAIL_RATIOS
-                if (
-                    demand <= _NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
-                    and k * shortest >= _ARM_NAMED_MM
-                )
-                or k * r >= _DETAIL_MM
-            ),
-            _DETAIL_RATIOS[-1],
-        )
-        out.append(LeverDetail(letter, (float(c[0]) * mu_V, float(c[1]) * mu_V), r * mu_V, ratio))
-    return tuple(out)
+    letters = [x for x in DETAIL_LETTERS if x not in taken] or list(DETAIL_LETTERS)
+    return choose_details(names, crowded, centres, mu_V, letters, _DETAILS)
 
 
 def detail_gid(details: Sequence[LeverDetail], detail: LeverDetail) -> str:
@@ -994,25 +1135,7 @@ def detail_gid(details: Sequence[LeverDetail], detail: LeverDetail) -> str:
     return "zhukovsky-lever-detail" + (f"-{k + 1}" if k else "")
 
 
-def _clipped(
-    a: np.ndarray, b: np.ndarray, centre: np.ndarray, radius: float
-) -> tuple[np.ndarray, np.ndarray] | None:
-    """The part of the segment a–b inside the disc, or None."""
-    d = b - a
-    f = a - centre
-    A = float(np.dot(d, d))
-    if A < 1e-12:
-        return (a, b) if float(np.hypot(*f)) <= radius else None
-    B = 2.0 * float(np.dot(f, d))
-    C = float(np.dot(f, f)) - radius * radius
-    disc = B * B - 4.0 * A * C
-    if disc <= 0.0:
-        return None
-    root = math.sqrt(disc)
-    t0, t1 = max(0.0, (-B - root) / (2.0 * A)), min(1.0, (-B + root) / (2.0 * A))
-    if t1 - t0 < 1e-9:
-        return None
-    return a + t0 * d, a + t1 * d
+_clipped = clipped
 
 
 def sketch_lever(
@@ -1530,8 +1653,12 @@ class _Composer:
         page: Page,
         compact: bool = False,
         details: bool = True,
+        mechanism_details: tuple[Detail, ...] = (),
     ) -> None:
         self.fa, self.look, self.lang, self.page = fa, look, lang, page
+        # the loaded mechanism's detail views (compose_sheet2 finds them on
+        # the mechanism that reached the sheet without)
+        self.mechanism_details = mechanism_details
         # compact (compose_sheet2's reduction for a sheet of many groups): the
         # equations under the polygons in lines of COMPACT_EQUATION_MM, the
         # tables numbered and continued in parts (GOST 2.105)
@@ -1557,6 +1684,7 @@ class _Composer:
             lever_details(fa, self.lever_mu, crowded_names(plain, lang)) if details else ()
         )
         self.drawings += [detail_gid(self.details, d) for d in self.details]
+        self.drawings += [loaded_detail_gid(mechanism_details, d) for d in mechanism_details]
         if not self.details:  # the lever at its textbook scale is drawn: kept
             tables = _sketch_tables(fa, arms, look, lang, compact)
             self.cache[("lever", self.lever_mu)] = (plain, arms, tables)
@@ -1572,6 +1700,17 @@ class _Composer:
             *((f"mu_l {g.name}", self._pin_points(set(g.links))) for g in fa.groups),
             (f"mu_l {dl.link}", self._pin_points({dl.link})),
         ]
+
+    def with_mechanism_details(self, details: tuple[Detail, ...]) -> None:
+        """The loaded mechanism drawn with `details` from now on: what the
+        sheet's fits and packing found forgotten (the sketches are kept: their
+        extents are known by id)."""
+        self.drawings = [d for d in self.drawings if not d.startswith("force-mechanism-detail")]
+        self.mechanism_details = details
+        self.drawings += [loaded_detail_gid(details, d) for d in details]
+        for key in [k for k in self.cache if k[0] in ("fits", "fits at", "bounded")]:
+            del self.cache[key]
+        self.packed = {}
 
     def shared_drawings(self) -> dict[tuple[Any, ...], Any]:
         """The drawings of links made so far, which a compact sheet draws the
@@ -1721,13 +1860,23 @@ class _Composer:
         yield from self.lever_details(mu_V)
         yield from tables.items()
         mechanism, loads = self.memo(
-            ("force-mechanism", mu_l),
+            ("force-mechanism", mu_l, self.mechanism_details),
             lambda: (
-                sketch_loaded_mechanism(fa, mu_l, look, lang, self.compact),
+                sketch_loaded_mechanism(
+                    fa, mu_l, look, lang, self.compact, details=self.mechanism_details
+                ),
                 sketch_loads_table(fa, mu_l, look, lang, self.compact),
             ),
         )
         yield "force-mechanism", mechanism
+        for d in self.mechanism_details:
+            yield (
+                loaded_detail_gid(self.mechanism_details, d),
+                self.memo(
+                    ("force-mechanism-detail", d.letter, mu_l),
+                    lambda d=d: sketch_loaded_detail(fa, mu_l, look, lang, d, self.compact),
+                ),
+            )
         yield "table-loads", loads
 
     def given_room(
@@ -1787,7 +1936,9 @@ class _Composer:
         fa, look, lang = self.fa, self.look, self.lang
         mu_l = scales["mu_l"]
         if name == "force-mechanism":
-            return sketch_loaded_mechanism(fa, mu_l, look, lang, self.compact, grow=True)
+            return sketch_loaded_mechanism(
+                fa, mu_l, look, lang, self.compact, grow=True, details=self.mechanism_details
+            )
         if name == "driving-link":
             mu_d = scales[f"mu_l {fa.driving_link.link}"]
             return self._noted(sketch_driving_link(fa, mu_d, look, lang, grow=True), mu_d, mu_l)
@@ -2063,6 +2214,10 @@ class _Composer:
         parts = ["mech", *groups, "driving"]
         keys: dict[str, list[list[str]]] = {
             "force-mechanism": [["mech"], parts],
+            **{
+                loaded_detail_gid(self.mechanism_details, d): [["mech"], parts]
+                for d in self.mechanism_details
+            },
             "zhukovsky-lever": [["lever"]],
             **{detail_gid(self.details, d): [["lever"]] for d in self.details},
             "driving-link": [["driving"], parts],
@@ -2168,6 +2323,54 @@ class _Composer:
         return steps["lever"] >= 0 or not lever_max or self.fa.lever.pa / mu_V <= _LEVER_MAX
 
 
+def _with_mechanism_details(
+    composer: _Composer, steps: dict[str, int], solution: Solution
+) -> tuple[_Composer, dict[str, int]]:
+    """Where names of the loaded mechanism as it reaches the sheet (at
+    `steps`) stand far or on something, a detail view of their crowd
+    (`loaded_details`), decided once on that drawing: the sheet at the same
+    steps with it, else with the mechanism a step or two smaller (the
+    detail holds its crowd), else the sheet fitted again with it (the filled
+    sheet has no room left); kept where it fits and fewer labels of all its
+    drawings stand far or found no free place; else as it was."""
+    fa, lang = composer.fa, composer.lang
+    scales = composer.scales(steps)
+    mechanism = composer.sketches(scales)[0]["force-mechanism"]
+    crowd = crowded_names(mechanism, lang, anchors=True)
+    if not len(crowd):
+        return composer, steps
+    taken = [d.letter for d in composer.details]
+    found = loaded_details(fa, scales["mu_l"], crowd, taken)
+    if not found:
+        return composer, steps
+    was = sum(composer.lettered(steps))
+    composer.with_mechanism_details(found)
+    for by in (0, 1, 2):
+        trial = {**steps, "mech": steps["mech"] + by}
+        if composer.fits(trial) and sum(composer.lettered(trial)) < was:
+            return composer, trial
+    composer.with_mechanism_details(())
+    # the filled sheet has no room for it: the sheet fitted again with it
+    detailed = _Composer(
+        fa,
+        solution,
+        composer.look,
+        lang,
+        composer.page,
+        compact=composer.compact,
+        details=bool(composer.details),
+        mechanism_details=found,
+    )
+    detailed.cache.update(composer.shared_drawings())
+    refit = detailed.first_fit()
+    if refit is None:
+        return composer, steps
+    refit = detailed.filled(detailed.unwall(detailed.fill(refit)))
+    if sum(detailed.lettered(refit)) >= was:
+        return composer, steps
+    return detailed, refit
+
+
 def compose_sheet2(
     solution: Solution,
     backend: Backend,
@@ -2209,6 +2412,7 @@ def compose_sheet2(
             "groups (the force analysis of every group goes on one sheet)"
         )
     steps = composer.filled(composer.unwall(composer.fill(steps)))
+    composer, steps = _with_mechanism_details(composer, steps, solution)
     scales = composer.scales(steps)
     sketches, arms = composer.sketches(scales)
     arranged = composer.arrange(sketches)
@@ -2221,6 +2425,7 @@ def compose_sheet2(
         shrink=max(steps.values()),
         arms={"lever": arms},
         details=composer.details,
+        mechanism_details=composer.mechanism_details,
     )
     for name in composer.tables + composer.drawings:
         ext, rect = composer.extent(sketches[name]), placed[name]

@@ -1,0 +1,188 @@
+"""Detail views (GOST 2.305, "виносний елемент") of any drawing whose names
+crowd: a disc of the drawing, marked on it by a thin circle and a capital
+letter, drawn again apart at a larger scale of the standard series (2:1, 2.5:1,
+4:1, 5:1, 10:1) and lettered there.
+
+A drawing lists the names it writes (`Name`: where each stands, the room it
+takes, whether it is an arm's lettered along its arm) and where the names it
+wrote crowd (the points they name, found by the sheet linter's rules on the
+drawing made without details); `choose_details` picks the discs that hold the
+most of the crowd and the ratio at which each disc's names find room. The
+drawing itself draws what lies in a disc and letters it only in its detail view
+(`clipped` cuts a line at the disc's edge there).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from .labels import NEAR_MM
+
+__all__ = [
+    "DETAIL_LETTERS",
+    "Detail",
+    "Name",
+    "choose_details",
+    "clipped",
+    "name_area",
+    "spread",
+]
+
+
+@dataclass(frozen=True)
+class Detail:
+    """A detail view: the disc of `radius` round `centre` (both in the
+    drawing's own unit, m or m/s, so at any of its scales) where its names
+    crowd, drawn again `ratio` times larger and lettered there; the drawing
+    marks it with a thin circle and `letter`."""
+
+    letter: str
+    centre: tuple[float, float]
+    radius: float
+    ratio: float
+
+
+@dataclass(frozen=True)
+class Name:
+    """A name a drawing writes: where it stands (mm at the drawing's scale),
+    the area of its box (mm²) and, for an arm's name lettered along its arm,
+    that arm's length (mm)."""
+
+    at: np.ndarray
+    area: float
+    arm_mm: float | None = None
+
+
+# the series of a detail's scales (GOST 2.302: 2:1, 2.5:1, 4:1, 5:1, 10:1)
+DETAIL_RATIOS = (2.0, 2.5, 4.0, 5.0, 10.0)
+# the radii (mm at the drawing's scale) of the discs tried round a crowd
+DETAIL_RADII = (8.0, 12.0, 16.0, 20.0, 25.0)
+# the share of a detail's disc (widened by NEAR_MM) its names may cover:
+NAME_SHARE = 0.12
+DETAIL_MM = 70.0  # the largest radius of a detail's disc, mm
+ARM_NAMED_MM = 6.0  # the shortest arm a detail names along it, mm
+# a detail's letter: a capital that names no point, force or arm (G, F, R, M, S,
+# K, P, O, I, Q, J read as loads, images or digits)
+DETAIL_LETTERS = "ABCDEHLNTUVWXYZ"
+LETTER_W = 2.3  # mm per character of a 3.5 mm name, a bound for counting room
+_TEXT = 3.5
+
+
+def name_area(markup: str) -> float:
+    """A bound of the area (mm²) a 3.5 mm name `markup` takes with its clearance."""
+    return (len(re.sub(r"[_{}]", "", markup)) * LETTER_W + 1.5) * (_TEXT + 1.5)
+
+
+def choose_details(
+    names: Sequence[Name],
+    crowded: np.ndarray,
+    centres: Iterable[np.ndarray],
+    mu: float,
+    letters: Iterable[str],
+    most: int,
+    *,
+    points: np.ndarray | None = None,
+    spacing: float = 0.0,
+    widest: float = DETAIL_MM,
+    tightest: float | None = None,
+    radii: Sequence[float] = DETAIL_RADII,
+) -> tuple[Detail, ...]:
+    """The detail views a drawing at `mu` needs where the names standing for
+    the points `crowded` (mm) found no place near: at most `most` discs
+    apart, each round one of `centres` or such a point, of a radius of
+    DETAIL_RADII, each holding the most of those points left (the largest
+    such: the whole crowd); each drawn at the first ratio of the series that
+    leaves `names` in it NAME_SHARE of its room and names its shortest arm
+    along it (or draws the disc `widest` wide); lettered in turn by `letters`.
+    With `points` (mm, what the drawing names at their places: a mechanism's
+    points), the ratio also sets those in the disc `spacing` apart (a quarter
+    of them nearer their neighbour at most: `spread`); with `tightest` (a
+    share), the smallest disc of `radii` that holds that share of the most
+    any holds: the crowd's core, whose loads and names crowd the rest."""
+    where = np.array([n.at for n in names], dtype=float).reshape(-1, 2)
+    areas = np.array([n.area for n in names])
+    arms = np.array([math.inf if n.arm_mm is None else n.arm_mm for n in names])
+    candidates = [*centres, *crowded]
+    out: list[Detail] = []
+    left = np.ones(len(crowded), dtype=bool)  # the crowded names no disc taken holds
+    for letter in list(letters)[:most]:
+        discs: list[tuple[int, float, np.ndarray]] = []  # held, radius, centre
+        for c in candidates:
+            near = np.hypot(*(crowded - c).T) if len(crowded) else np.zeros(0)
+            for r in radii:
+                if any(math.dist(c, np.asarray(d.centre) / mu) < r + d.radius / mu for d in out):
+                    continue  # discs apart: a name is the drawing's or one detail's
+                held = int(((near <= r) & left).sum())
+                if held:
+                    discs.append((held, r, c))
+        if not discs:
+            break
+        most_held = max(h for h, _, _ in discs)
+        if tightest is None:
+            best = max(discs, key=lambda d: (d[0], d[1]))
+        else:  # the smallest of those that hold nearly the most
+            best = min(
+                (d for d in discs if d[0] >= tightest * most_held), key=lambda d: (d[1], -d[0])
+            )
+        r, c = best[1], best[2]
+        left &= np.hypot(*(crowded - c).T) > r
+        inside = np.hypot(*(where - c).T) <= r
+        demand = float(areas[inside].sum())
+        # the arms in the disc long enough, at the ratio, to be named along
+        shortest = float(arms[inside].min()) if inside.any() else math.inf
+        apart = spread(points[np.hypot(*(points - c).T) <= r]) if points is not None else math.inf
+        ratio = next(
+            (
+                k
+                for k in DETAIL_RATIOS
+                if (
+                    demand <= NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
+                    and k * shortest >= ARM_NAMED_MM
+                    and k * apart >= spacing
+                )
+                or k * r >= widest
+            ),
+            DETAIL_RATIOS[-1],
+        )
+        out.append(Detail(letter, (float(c[0]) * mu, float(c[1]) * mu), r * mu, ratio))
+    return tuple(out)
+
+
+def spread(points: np.ndarray, merged: float = 0.3) -> float:
+    """How far apart `points` (mm) stand: the distance to its nearest
+    neighbour that a quarter of them are nearer than (points nearer than
+    `merged` are one place, named once); inf for fewer than two places."""
+    pts = np.asarray(points, float).reshape(-1, 2)
+    if len(pts) < 2:
+        return math.inf
+    d = np.hypot(*(pts[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))
+    d[d < merged] = math.inf
+    nearest = d.min(axis=1)
+    nearest = nearest[np.isfinite(nearest)]
+    return float(np.percentile(nearest, 25)) if len(nearest) else math.inf
+
+
+def clipped(
+    a: np.ndarray, b: np.ndarray, centre: np.ndarray, radius: float
+) -> tuple[np.ndarray, np.ndarray] | None:
+    """The part of the segment a–b inside the disc, or None."""
+    d = b - a
+    f = a - centre
+    A = float(np.dot(d, d))
+    if A < 1e-12:
+        return (a, b) if float(np.hypot(*f)) <= radius else None
+    B = 2.0 * float(np.dot(f, d))
+    C = float(np.dot(f, f)) - radius * radius
+    disc = B * B - 4.0 * A * C
+    if disc <= 0.0:
+        return None
+    root = math.sqrt(disc)
+    t0, t1 = max(0.0, (-B - root) / (2.0 * A)), min(1.0, (-B + root) / (2.0 * A))
+    if t1 - t0 < 1e-9:
+        return None
+    return a + t0 * d, a + t1 * d
