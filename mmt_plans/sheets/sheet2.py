@@ -25,7 +25,7 @@ import math
 import random
 import re
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -1054,16 +1054,6 @@ def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[
     return tuple(out)
 
 
-def detail_at(detail: LeverDetail, mu_V: float, chosen: float) -> LeverDetail:
-    """The detail view `detail`, chosen for the lever at μV `chosen`, for the
-    lever drawn at `mu_V`: its own scale (μV / ratio) kept, to the series'
-    first ratio that reaches it (a lever drawn smaller, its detail at a
-    larger ratio: the names it parts stay as far apart)."""
-    want = detail.ratio * mu_V / chosen
-    ratio = next((k for k in _DETAIL_RATIOS if k >= want * (1.0 - 1e-9)), _DETAIL_RATIOS[-1])
-    return replace(detail, ratio=ratio)
-
-
 def detail_gid(details: Sequence[LeverDetail], detail: LeverDetail) -> str:
     """The drawing of sheet 2 that holds the detail view `detail` of `details`."""
     k = list(details).index(detail)
@@ -1695,9 +1685,7 @@ class _Composer:
                 detail_gid(self.details, d),
                 self.memo(
                     ("lever-detail", d.letter, mu_V),
-                    lambda d=d: sketch_lever_detail(
-                        self.fa, mu_V, self.look, self.lang, detail_at(d, mu_V, self.lever_mu)
-                    ),
+                    lambda d=d: sketch_lever_detail(self.fa, mu_V, self.look, self.lang, d),
                 ),
             )
             for d in self.details

@@ -260,18 +260,3 @@ def test_the_levers_arms_and_balance_do_not_change_with_its_details(tight):
         for m, f, (_, h) in zip(moments, forces, arms)
     )
     assert abs(signed) <= 1e-9 * scale
-
-
-def test_a_lever_drawn_smaller_draws_its_detail_at_a_larger_ratio():
-    """The detail keeps its own scale (μV / ratio) where the sheet draws the
-    lever at another μV than the one it was chosen at, to the next ratio of
-    GOST 2.302's series: chosen at 4:1 for μV 0.01, the lever at 0.025 wants
-    10:1 exactly, at 0.012 4.8:1 (so 5:1), at 0.005 2:1."""
-    from mmt_plans.sheets.sheet2 import LeverDetail, detail_at
-
-    d = LeverDetail("A", (0.0, 0.0), 0.05, 4.0)
-    assert detail_at(d, 0.01, 0.01) == d
-    assert detail_at(d, 0.025, 0.01).ratio == 10.0
-    assert detail_at(d, 0.012, 0.01).ratio == 5.0
-    assert detail_at(d, 0.005, 0.01).ratio == 2.0
-    assert detail_at(d, 0.025, 0.01).radius == d.radius
