@@ -31,7 +31,17 @@ from typing import Any
 import numpy as np
 import shapely
 
-from ..drawing.detail import DETAIL_LETTERS, Detail, Name, choose_details, clipped, name_area
+from ..drawing.detail import (
+    ARM_NAMED_MM,
+    DETAIL_LETTERS,
+    DETAIL_MM,
+    NAME_SHARE,
+    Detail,
+    Name,
+    choose_details,
+    clipped,
+    name_area,
+)
 from ..drawing.labels import NEAR_MM, LabelCounts, Labels, arc_line
 from ..drawing.layout import LayoutError, SheetLayout, pack
 from ..drawing.markup import equation_markup as _equation_markup
@@ -51,6 +61,7 @@ from ..render.look import LineType
 from ..render.recording import Arc as RecArc
 from ..render.recording import Circle as RecCircle
 from ..render.recording import Line as RecLine
+from ..render.recording import Naming
 from ..render.recording import Polygon as RecPolygon
 from ..render.recording import Polyline as RecPolyline
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
@@ -1067,6 +1078,18 @@ def sketch_force_polygons(
 # a lever's detail view (drawing/detail.py)
 LeverDetail = Detail
 _DETAILS = 2  # the most detail views of one lever
+# the series of a lever detail's scales (GOST 2.302's enlargements, 2:1 … 100:1)
+# and the radii (mm at the lever's scale) of the discs tried round its crowd:
+# a lever's images may crowd within a millimetre of p (gen 30)
+_LEVER_RATIOS = (2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0)
+_LEVER_RADII = (1.5, 2.0, 3.0, 5.0, 8.0, 12.0, 16.0, 20.0, 25.0)
+# the least distance (mm, in a detail's view) of two spots where images are
+# named: room for their names and the arrows of the forces at them
+_SPOT_MM = 10.0
+# a disc lettered at its ratio is taken if it holds this share of the crowded
+# names the disc holding the most holds (gen 30: 6 of 7 round p at 40:1; gen 15's
+# crowd strung along 15 mm of p's line, 8 of 23, goes in one wide disc)
+_LETTERED_SHARE = 0.75
 
 
 def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[Name]:
@@ -1098,35 +1121,154 @@ def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[Name]:
     return out
 
 
+def _crowded(sketch: Sketch, lang: Language) -> Iterator[Naming]:
+    """What the names of a drawing that the sheet linter finds far from what
+    they name, or on a line or another name, name."""
+    view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
+    found = {f.where for f in (*label_near(view), *label_clear(view))}
+    for lab in view.labels:
+        c = lab.box.centroid
+        if lab.naming is not None and (round(float(c.x), 1), round(float(c.y), 1)) in found:
+            yield lab.naming
+
+
 def crowded_names(sketch: Sketch, lang: Language, anchors: bool = False) -> np.ndarray:
     """Where the names of a drawing that the sheet linter finds far from what
     they name, or on a line or another name, stand for (mm, one row each: the
     point, or the middle of the segment, they name; with `anchors`, the
     segment's start: where a force is applied)."""
-    view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
-    found = {f.where for f in (*label_near(view), *label_clear(view))}
     out = []
-    for lab in view.labels:
-        c = lab.box.centroid
-        if lab.naming is None or (round(float(c.x), 1), round(float(c.y), 1)) not in found:
-            continue
-        n = lab.naming
+    for n in _crowded(sketch, lang):
         end = n.anchor if n.end is None or anchors else n.end
         out.append(((n.anchor[0] + end[0]) / 2.0, (n.anchor[1] + end[1]) / 2.0))
     return np.array(out, dtype=float).reshape(-1, 2)
 
 
+def crowded_ends(sketch: Sketch, lang: Language) -> np.ndarray:
+    """What the crowded names of a drawing (as `crowded_names`) stand for,
+    both ends (mm, one row each, x0, y0, x1, y1): the point, or the arrow's
+    start, twice; the segment's ends."""
+    out = []
+    for n in _crowded(sketch, lang):
+        end = n.end if n.kind == "segment" and n.end is not None else n.anchor
+        out.append((n.anchor[0], n.anchor[1], end[0], end[1]))
+    return np.array(out, dtype=float).reshape(-1, 4)
+
+
+def _spots(fa: ForceAnalysis, mu_V: float) -> np.ndarray:
+    """Where the lever at `mu_V` writes a name of its images (mm): p and each
+    image's spot, the images within 0.5 mm of one another in one."""
+    spots: dict[tuple[int, int], np.ndarray] = {(0, 0): np.zeros(2)}
+    for v in fa.lever.images.values():
+        at = np.asarray(v, float) / mu_V
+        spots.setdefault((round(float(at[0]) * 2), round(float(at[1]) * 2)), at)
+    return np.array(list(spots.values()), dtype=float).reshape(-1, 2)
+
+
+def _detail_ratio(
+    where: np.ndarray, areas: np.ndarray, spots: np.ndarray, r: float
+) -> float | None:
+    """The first ratio of the series at which the disc of radius `r` (mm,
+    `where`, `spots` relative to its centre) letters what it holds: its names
+    NAME_SHARE of its room, its images' spots _SPOT_MM apart, and its view
+    at most DETAIL_MM in radius (an arm shorter than ARM_NAMED_MM there is
+    not drawn: the table of moments gives it); None if no ratio does."""
+    inside = np.hypot(*where.T) <= r
+    demand = float(areas[inside].sum())
+    held = spots[np.hypot(*spots.T) <= r]
+    gaps = np.hypot(*(held[:, None, :] - held[None, :, :]).transpose(2, 0, 1))
+    closest = float(gaps[gaps > 0.0].min()) if (gaps > 0.0).any() else math.inf
+    return next(
+        (
+            k
+            for k in _LEVER_RATIOS
+            if demand <= NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
+            and k * closest >= _SPOT_MM
+            and k * r <= DETAIL_MM
+        ),
+        None,
+    )
+
+
 def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[LeverDetail, ...]:
-    """The detail views the lever at `mu_V` needs where the names standing
-    for the points `crowded` (mm, `crowded_names` of the lever drawn without
-    details) found no place near (`choose_details`): at most _DETAILS discs
-    round p, an image or such a point (the smallest left five_dyads crowded),
-    lettered by capitals that name no point of the mechanism."""
+    """The detail views the lever at `mu_V` needs where the names of what
+    `crowded` names (mm, `crowded_ends` of the lever drawn without details)
+    found no place near: at most _DETAILS discs apart, round p, an image or
+    such a point, of a radius of _LEVER_RADII, each holding (drawing in its
+    view) the most of those names left (of discs holding as many, the widest)
+    among those lettered at a ratio of the series (`_detail_ratio`, the first
+    such ratio), where one of them holds _LETTERED_SHARE of what the disc
+    covering the most of their middles covers; else that disc (`choose_details`'
+    rule), at the first ratio that leaves its names their room and names its
+    shortest arm, or draws it DETAIL_MM wide; lettered by capitals that name
+    no point of the mechanism."""
     names = _lever_names(fa, mu_V)
-    centres = [np.zeros(2), *(n.at for n in names if n.arm_mm is None)]
+    where = np.array([n.at for n in names], dtype=float).reshape(-1, 2)
+    areas = np.array([n.area for n in names])
+    spots = _spots(fa, mu_V)
+    crowded = np.asarray(crowded, dtype=float).reshape(-1, 4)
+    centres = [np.zeros(2), *(n.at for n in names if n.arm_mm is None), *crowded[:, :2]]
     taken = {n[:1].upper() for n in fa.loads.state.mech.point_owners}
     letters = [x for x in DETAIL_LETTERS if x not in taken] or list(DETAIL_LETTERS)
-    return choose_details(names, crowded, centres, mu_V, letters, _DETAILS)
+    out: list[LeverDetail] = []
+    left = np.ones(len(crowded), dtype=bool)  # the crowded names no disc taken holds
+
+    def holds(c: np.ndarray, r: float) -> np.ndarray:
+        """Which crowded names the disc draws: their points (both ends) in it."""
+        a = np.hypot(*(crowded[:, :2] - c).T) <= r
+        return a & (np.hypot(*(crowded[:, 2:] - c).T) <= r)
+
+    def covers(c: np.ndarray, r: float) -> np.ndarray:
+        """Which crowded names' middles the disc covers (a wide disc's measure)."""
+        return np.hypot(*((crowded[:, :2] + crowded[:, 2:]) / 2.0 - c).T) <= r
+
+    for letter in letters[:_DETAILS]:
+        # the disc holding the most (of as many, the widest), and such a disc
+        # of those lettered at a ratio: (held, radius), centre, ratio
+        most: tuple[tuple[int, float], np.ndarray, float | None] | None = None
+        lettered: tuple[tuple[int, float], np.ndarray, float | None] | None = None
+        for c in centres:
+            for r in _LEVER_RADII:
+                if any(
+                    math.dist(c, np.asarray(d.centre) / mu_V) < r + d.radius / mu_V for d in out
+                ):
+                    continue  # discs apart: a name is the lever's or one detail's
+                covered = int((covers(c, r) & left).sum())
+                if covered and (most is None or (covered, r) > most[0]):
+                    most = ((covered, r), c, None)
+                held = int((holds(c, r) & left).sum())
+                if not held:
+                    continue
+                ratio = _detail_ratio(where - c, areas, spots - c, r)
+                if ratio is not None and (lettered is None or (held, r) > lettered[0]):
+                    lettered = ((held, r), c, ratio)
+        if most is None:
+            break
+        if lettered is not None and lettered[0][0] >= _LETTERED_SHARE * most[0][0]:
+            most = lettered
+        (_, r), c, ratio = most
+        left &= ~(holds(c, r) | covers(c, r))
+        if ratio is None:  # no ratio letters the disc: its names their room at least
+            inside = np.hypot(*(where - c).T) <= r
+            demand = float(areas[inside].sum())
+            shortest = min(
+                (n.arm_mm for n, i in zip(names, inside) if i and n.arm_mm is not None),
+                default=math.inf,
+            )
+            ratio = next(
+                (
+                    k
+                    for k in _LEVER_RATIOS
+                    if (
+                        demand <= NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
+                        and k * shortest >= ARM_NAMED_MM
+                    )
+                    or k * r >= DETAIL_MM
+                ),
+                _LEVER_RATIOS[-1],
+            )
+        out.append(LeverDetail(letter, (float(c[0]) * mu_V, float(c[1]) * mu_V), r * mu_V, ratio))
+    return tuple(out)
 
 
 def detail_gid(details: Sequence[LeverDetail], detail: LeverDetail) -> str:
@@ -1254,7 +1396,9 @@ def _lever_view(
                 mark(image_markup(f.point, tuple(mech.point_owners)), at)
             h = abs(f.arm) / mu
             arms.append((f.label, abs(f.arm) / mu_V))
-            if h >= 1.0:
+            # an arm is drawn 1 mm long at least; in a detail view long enough
+            # to be named along (a shorter one the table of moments gives)
+            if h >= (ARM_NAMED_MM if in_detail and here(at) else 1.0):
                 foot = at - float(np.dot(at, u)) * u
                 # an arm is the detail's where all of it lies in the disc
                 whole = any(
@@ -1681,7 +1825,7 @@ class _Composer:
         arms: list[tuple[str, float]] = []
         plain = sketch_lever(fa, self.lever_mu, look, lang, arms)
         self.details = (
-            lever_details(fa, self.lever_mu, crowded_names(plain, lang)) if details else ()
+            lever_details(fa, self.lever_mu, crowded_ends(plain, lang)) if details else ()
         )
         self.drawings += [detail_gid(self.details, d) for d in self.details]
         self.drawings += [loaded_detail_gid(mechanism_details, d) for d in mechanism_details]

@@ -15,7 +15,7 @@ from mmt_plans.sheets.sheet2 import (
     _clipped,
     _lever_scale,
     compose_sheet2,
-    crowded_names,
+    crowded_ends,
     lever_details,
     sketch_lever,
     sketch_lever_detail,
@@ -33,7 +33,7 @@ def _details(fa, lang="en"):
 
     mu = _lever_scale(fa.lever)
     plain = sketch_lever(fa, mu, load_look(), lang, [])
-    return lever_details(fa, mu, crowded_names(plain, lang))
+    return lever_details(fa, mu, crowded_ends(plain, lang))
 
 
 @cache
@@ -172,3 +172,91 @@ def test_two_details_hold_apart_discs_and_each_name_once():
     for f in [*fa.lever.forces, fa.lever.balancing]:
         if np.hypot(*f.force) > 0:
             assert words.count(f.label.replace("_", "")) == 1, f.label
+
+
+TIGHT = 30  # gen 30 (RRR-RRR-RRR-RRP-RRR): a dozen images within 1.3 mm of p, 15 forces at them
+
+
+@pytest.fixture(scope="module")
+def tight():
+    from mmt_plans.render.look import load_look
+
+    fa = _forces(TIGHT)
+    mu = _lever_scale(fa.lever)
+    details = _details(fa)
+    look = load_look()
+    arms: list[tuple[str, float]] = []
+    main = sketch_lever(fa, mu, look, "en", arms, details)
+    views = [sketch_lever_detail(fa, mu, look, "en", d) for d in details]
+    return fa, mu, details, arms, main, views
+
+
+def _far(sketch) -> list[str]:
+    from mmt_plans.sheets.lint import label_clear, label_near
+
+    v = SheetView(list(sketch.calls), 841.0, 594.0, "en")
+    return [str(f) for f in (*label_near(v), *label_clear(v))]
+
+
+def test_a_tight_crowd_round_p_is_drawn_large_enough_to_letter(tight):
+    """Gen 30's crowd round p (its images 0.3 mm apart on the lever; before,
+    one disc 25 mm wide at 4:1 left 19 of its names 10-26 mm off): a small
+    disc round p at a ratio of GOST 2.302's series, judged by the linter's
+    own rules: the lever has no name far or on a line, its detail at most 3
+    of its names (arms' names among the crowd's lines)."""
+    fa, mu, details, _, main, views = tight
+    assert details
+    detail = details[0]
+    assert detail.ratio in (2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0)
+    assert np.hypot(*detail.centre) <= detail.radius  # the disc holds p
+    # its images, on the lever within 1.3 mm of p, in the view 5 mm apart at least
+    inside = [
+        np.asarray(v, float)
+        for v in fa.lever.images.values()
+        if 0.1 * mu <= np.hypot(*np.subtract(v, detail.centre)) <= detail.radius
+    ]
+    assert len(inside) >= 8
+    apart = [
+        np.hypot(*(a - b)) / mu * detail.ratio
+        for i, a in enumerate(inside)
+        for b in inside[i + 1 :]
+        if np.hypot(*(a - b)) / mu >= 0.25  # not written as one name ("k7, s10")
+    ]
+    assert min(apart) >= 5.0
+    assert _far(main) == []
+    names = sum(1 for c in views[0].calls if isinstance(c, Text) and c.naming is not None)
+    assert len(_far(views[0])) <= 3 < names // 10
+
+
+def test_an_arm_too_short_to_name_is_not_drawn_in_the_detail(tight):
+    """In a detail view every arm drawn (named h_i along p-foot) is 6 mm long
+    at least; a shorter one the table of moments gives."""
+    _, _, _, _, _, views = tight
+    for view in views:
+        v = SheetView(list(view.calls), 841.0, 594.0, "en")
+        arms = [lab for lab in v.labels if lab.text.startswith("h") and lab.naming.end is not None]
+        assert arms
+        for lab in arms:
+            assert np.hypot(*np.subtract(lab.naming.end, lab.naming.anchor)) >= 6.0 - 1e-9
+
+
+def test_the_levers_arms_and_balance_do_not_change_with_its_details(tight):
+    """The arms the lever gives its tables are every force's |h| / μV, its
+    details drawn or not, and the lever balances: the moments about p of the
+    forces at their images (cross products, not the arms) sum to zero, and
+    the arms with those moments' signs give the same sum."""
+    from mmt_plans.render.look import load_look
+
+    fa, mu, _, arms, _, _ = tight
+    plain: list[tuple[str, float]] = []
+    sketch_lever(fa, mu, load_look(), "en", plain)
+    forces = [*fa.lever.forces, fa.lever.balancing]
+    assert arms == plain == [(f.label, abs(f.arm) / mu) for f in forces]
+    moments = [f.image[0] * f.force[1] - f.image[1] * f.force[0] for f in forces]
+    scale = sum(abs(m) for m in moments)
+    assert abs(sum(moments)) <= 1e-9 * scale
+    signed = sum(
+        np.sign(m) * float(np.hypot(*f.force)) * h * mu
+        for m, f, (_, h) in zip(moments, forces, arms)
+    )
+    assert abs(signed) <= 1e-9 * scale
