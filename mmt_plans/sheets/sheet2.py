@@ -1671,11 +1671,10 @@ class _Composer:
         return dict(self._sketched(scales, arms)), arms
 
     def _sketched(
-        self, scales: dict[str, float], arms: list[tuple[str, float]], links: bool = True
+        self, scales: dict[str, float], arms: list[tuple[str, float]], mechanism: bool = True
     ) -> Iterator[tuple[str, Sketch]]:
         """The drawings and tables at `scales` one at a time (name, sketch),
-        the lever's arms into `arms`; without `links`, not the drawings of
-        links (the loaded mechanism, the groups, the driving link)."""
+        the lever's arms into `arms`; the loaded mechanism last (not without `mechanism`)."""
         fa, look, lang = self.fa, self.look, self.lang
         mu_l, mu_V = scales["mu_l"], scales["mu_V"]
 
@@ -1697,17 +1696,16 @@ class _Composer:
             return self.memo(("noted", id(plain), mu_l), lambda: _with_note(plain, other))
 
         arm_names: tuple[str, ...] = ()  # the arms are numbered on through the groups
-        for g, mu in zip(fa.groups, group_mu) if links else ():
+        for g, mu in zip(fa.groups, group_mu):
             before = arm_names
             plain, arm_names = self.memo(
                 ("group", g.name, mu, before), lambda: group_at(g, mu, before)
             )
             yield f"group-{g.name}", noted(plain, mu)
-        if links:
-            driving = self.memo(
-                ("driving-link", mu_d), lambda: sketch_driving_link(fa, mu_d, look, lang)
-            )
-            yield "driving-link", noted(driving, mu_d)
+        driving = self.memo(
+            ("driving-link", mu_d), lambda: sketch_driving_link(fa, mu_d, look, lang)
+        )
+        yield "driving-link", noted(driving, mu_d)
         for name, polygons, title in self.polygon_sets:
             mu_F = scales[f"mu_F {name}"]
             gid = f"force-polygon-{name}"
@@ -1729,7 +1727,7 @@ class _Composer:
                 lambda: sketch_loads_table(fa, mu_l, look, lang, self.compact),
             ),
         )
-        if not links:
+        if not mechanism:
             return  # the most lettering, last (`could_fit` takes it as a box)
         yield (
             "force-mechanism",
@@ -1989,9 +1987,9 @@ class _Composer:
                 # other will: stop now (not sooner: drawing everything at the
                 # coarsest scales costs as much as the trials up to the
                 # textbook's, and most sheets fit by then). Asked with the
-                # drawings of links as the boxes of their pins (could_fit):
-                # lettered, crowded at those scales, they cost more than the
-                # rest; where they hold so, the scales between are tried
+                # loaded mechanism as the box of its pins (could_fit):
+                # lettered, crowded at those scales, it costs more than the
+                # rest; where it holds so, the scales between are tried
                 coarsest_tried = True
                 if not self.could_fit(self._steps(_COARSEST, _COARSEST)):
                     return None
@@ -2001,18 +1999,20 @@ class _Composer:
 
     def could_fit(self, steps: dict[str, int]) -> bool:
         """Whether the drawings at `steps` may fit the sheet: `fits` with the
-        drawings of links (the loaded mechanism, the groups, the driving
-        link) taken as the boxes of their pins (`_pin_boxes`), not lettered
-        (their lettering, crowded at a coarse scale, costs more than all the
-        rest): where the sheet holds no arrangement of them so, it holds none
-        with them lettered. first_fit's question whether even
+        loaded mechanism taken as the box of its pins (`_pin_boxes`), not
+        lettered (its lettering, crowded at a coarse scale, costs more than
+        all the rest): where the sheet holds no arrangement of them so, it
+        holds none with it lettered (the groups are lettered: taken as their
+        pins' boxes too, chain_25's sheet of full size would pass and the
+        scales between be tried in vain). first_fit's question whether even
         the coarsest scales fit, asked before the scales between."""
         scales = self.scales(steps)
         field = self.page.frame.inset(5.0)
         if self.least_area(scales) > field.width * field.height:
             return False
-        sketches = dict(self._sketched(scales, [], links=False))
-        return self.arrange(sketches, dict(self._pin_boxes(scales, empty=True))) is not None
+        sketches = dict(self._sketched(scales, [], mechanism=False))
+        pins = dict(self._pin_boxes(scales, empty=True))
+        return self.arrange(sketches, {"force-mechanism": pins["force-mechanism"]}) is not None
 
     def _pin_boxes(
         self, scales: dict[str, float], empty: bool = False
