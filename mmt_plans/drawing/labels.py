@@ -27,7 +27,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Collection, Iterable, Sequence
 from contextlib import nullcontext
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, cast
 
 import numpy as np
@@ -157,6 +157,11 @@ class LabelCounts:
 
     unsettled: int  # labels written where they cover something: no place was free
     far: int  # labels written far from what they name with no leader: none reached
+    # whether `write_later(grow=True)` could letter the drawing otherwise: an
+    # order past _RETRIES kept from it by the box, or its orders cut short by
+    # many standing far (False: lettered with `grow`, the same drawing); not
+    # a count: counts compare equal whatever it is
+    grows: bool = field(default=False, compare=False)
 
 
 class Labels:
@@ -240,6 +245,7 @@ class Labels:
         self._grown: BaseGeometry | None = None
         self.unsettled = 0  # labels written where they cover something: no place was free
         self.far = 0  # labels written far from what they name with no leader: none reached
+        self.grows = False  # LabelCounts.grows: what `grow` would have written otherwise
         self._later: list[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]] = []
 
     def avoid(self, shape: BaseGeometry, clearance: float, *, heavy: bool = False) -> None:
@@ -510,8 +516,12 @@ class Labels:
                     best = ((self.unsettled - saved[-2], len(far)), order)
                     written = self._written(saved)
                     slot = bounds if n < _RETRIES else slot
+                else:
+                    self.grows = True  # kept from the drawing by its box alone
             if n + 1 >= _RETRIES and best[0][1] > _FEW_FAR and not grow:
-                break  # many stand far: crowded past what another order mends
+                # many stand far: crowded past what another order mends
+                self.grows |= n + 1 < retries  # `grow` writes the orders left
+                break
         if order is not best[1]:  # the last order written is not the best: the best again
             self._restore(saved)
             self._put_back(written)
@@ -527,7 +537,7 @@ class Labels:
 
     def counts(self) -> LabelCounts:
         """How many labels found no free place, how many stand far."""
-        return LabelCounts(self.unsettled, self.far)
+        return LabelCounts(self.unsettled, self.far, self.grows)
 
     def write_each(
         self,

@@ -1954,10 +1954,10 @@ class _Composer:
         return dict(self._sketched(scales, arms)), arms
 
     def _sketched(
-        self, scales: dict[str, float], arms: list[tuple[str, float]]
+        self, scales: dict[str, float], arms: list[tuple[str, float]], mechanism: bool = True
     ) -> Iterator[tuple[str, Sketch]]:
         """The drawings and tables at `scales` one at a time (name, sketch),
-        the lever's arms into `arms`."""
+        the lever's arms into `arms`; the loaded mechanism last (not without `mechanism`)."""
         fa, look, lang = self.fa, self.look, self.lang
         mu_l, mu_V = scales["mu_l"], scales["mu_V"]
 
@@ -2003,16 +2003,14 @@ class _Composer:
         yield "zhukovsky-lever", lever
         yield from self.lever_details(mu_V)
         yield from tables.items()
-        mechanism, loads = self.memo(
-            ("force-mechanism", mu_l, self.mechanism_details),
-            lambda: (
-                sketch_loaded_mechanism(
-                    fa, mu_l, look, lang, self.compact, details=self.mechanism_details
-                ),
-                sketch_loads_table(fa, mu_l, look, lang, self.compact),
+        yield (
+            "table-loads",
+            self.memo(
+                ("table-loads", mu_l),
+                lambda: sketch_loads_table(fa, mu_l, look, lang, self.compact),
             ),
         )
-        yield "force-mechanism", mechanism
+        # its details (drawn apart: `could_fit` sketches them)
         for d in self.mechanism_details:
             yield (
                 loaded_detail_gid(self.mechanism_details, d),
@@ -2021,7 +2019,17 @@ class _Composer:
                     lambda d=d: sketch_loaded_detail(fa, mu_l, look, lang, d, self.compact),
                 ),
             )
-        yield "table-loads", loads
+        if not mechanism:
+            return  # the most lettering, last (`could_fit` takes it as a box)
+        yield (
+            "force-mechanism",
+            self.memo(
+                ("force-mechanism", mu_l, self.mechanism_details),
+                lambda: sketch_loaded_mechanism(
+                    fa, mu_l, look, lang, self.compact, details=self.mechanism_details
+                ),
+            ),
+        )
 
     def given_room(
         self,
@@ -2039,7 +2047,9 @@ class _Composer:
         placed = dict(placed)
         for name in self.drawings:
             was = _counts(sketches[name])
-            grown = self.regrown(name, scales) if was.far else None
+            # lettered again only where `grow` letters it otherwise (no order
+            # was kept from it by its box or cut short): else the same drawing
+            grown = self.regrown(name, scales) if was.far and was.grows else None
             if grown is None:
                 continue
             now = _counts(grown)
@@ -2114,12 +2124,16 @@ class _Composer:
         )
         return _with_note(plain, other)
 
-    def arrange(self, sketches: dict[str, Sketch]) -> tuple[SheetLayout, dict[str, Rect]] | None:
+    def arrange(
+        self, sketches: dict[str, Sketch], boxes: dict[str, Rect] | None = None
+    ) -> tuple[SheetLayout, dict[str, Rect]] | None:
         """The loaded mechanism top left, the tables top right, the drawings
         from the top left: in the textbook's order first, then the largest, tallest, widest first (which
-        may pack tighter), then in other orders; None if nothing fits."""
+        may pack tighter), then in other orders; None if nothing fits. A
+        drawing of `boxes` is taken as that box (not sketched)."""
         drawings = self.drawings
-        size = {n: self.extent(sketches[n]) for n in (*self.tables, *drawings)}
+        boxes = boxes or {}
+        size = {n: boxes.get(n) or self.extent(sketches[n]) for n in (*self.tables, *drawings)}
         orders = [(8.0, drawings), (5.0, drawings)]
         for by in (
             lambda n: -size[n].width * size[n].height,
@@ -2219,12 +2233,8 @@ class _Composer:
         """least_area's parts by drawing (mm²): the drawings of links by the
         boxes of their pins, the lever, its tables and the polygons (without
         a note) as sketched."""
-        owner = {"mu_l": "force-mechanism", f"mu_l {self.fa.driving_link.link}": "driving-link"}
-        owner.update({f"mu_l {g.name}": f"group-{g.name}" for g in self.fa.groups})
-        for key, pts in self._pins:
-            if len(pts):
-                w, h = np.ptp(pts, axis=0) / scales[key] + 2.0 * PAD
-                yield owner[key], float(w * h)
+        for name, box in self._pin_boxes(scales):
+            yield name, box.width * box.height
         lever, _, tables = self.lever(scales["mu_V"])
         for name, sketch in (
             ("zhukovsky-lever", lever),
@@ -2272,13 +2282,45 @@ class _Composer:
                 # the coarsest scales: if the sheet cannot hold even those, no
                 # other will: stop now (not sooner: drawing everything at the
                 # coarsest scales costs as much as the trials up to the
-                # textbook's, and most sheets fit by then)
+                # textbook's, and most sheets fit by then). Asked with the
+                # loaded mechanism as the box of its pins (could_fit):
+                # lettered, crowded at those scales, it costs more than the
+                # rest; where it holds so, the scales between are tried
                 coarsest_tried = True
-                if not self.fits(self._steps(_COARSEST, _COARSEST)):
+                if not self.could_fit(self._steps(_COARSEST, _COARSEST)):
                     return None
             if found and self.unsettled(found[0]) == 0:
                 break
         return min(found, key=self.unsettled) if found else None
+
+    def could_fit(self, steps: dict[str, int]) -> bool:
+        """Whether the drawings at `steps` may fit the sheet: `fits` with the
+        loaded mechanism taken as the box of its pins (`_pin_boxes`), not
+        lettered (its lettering, crowded at a coarse scale, costs more than
+        all the rest): where the sheet holds no arrangement of them so, it
+        holds none with it lettered (the groups are lettered: taken as their
+        pins' boxes too, chain_25's sheet of full size would pass and the
+        scales between be tried in vain). first_fit's question whether even
+        the coarsest scales fit, asked before the scales between."""
+        scales = self.scales(steps)
+        field = self.page.frame.inset(5.0)
+        if self.least_area(scales) > field.width * field.height:
+            return False
+        sketches = dict(self._sketched(scales, [], mechanism=False))
+        pins = dict(self._pin_boxes(scales, empty=True))
+        return self.arrange(sketches, {"force-mechanism": pins["force-mechanism"]}) is not None
+
+    def _pin_boxes(
+        self, scales: dict[str, float], empty: bool = False
+    ) -> Iterator[tuple[str, Rect]]:
+        """The drawings of links at `scales`, each as the box (mm) of its pins
+        with PAD round it, no larger than its extent; with `empty` those of no pin too."""
+        owner = {"mu_l": "force-mechanism", f"mu_l {self.fa.driving_link.link}": "driving-link"}
+        owner.update({f"mu_l {g.name}": f"group-{g.name}" for g in self.fa.groups})
+        for key, pts in self._pins:
+            if len(pts) or empty:
+                w, h = (np.ptp(pts, axis=0) / scales[key] if len(pts) else np.zeros(2)) + 2.0 * PAD
+                yield owner[key], Rect(0.0, 0.0, float(w), float(h))
 
     def _steps(self, shrink: int, mech: int) -> dict[str, int]:
         """Every drawing `shrink` steps from its textbook scale, the loaded

@@ -131,3 +131,17 @@ def test_a_noted_drawing_keeps_its_label_counts():
     assert plain.label_counts is not None
     noted = sheet2._with_note(plain, "drawn to another scale")
     assert noted.label_counts == plain.label_counts and noted is not plain
+
+
+def test_a_drawing_grow_letters_otherwise_says_so(monkeypatch):
+    # task09_v2's polygon 4-5 (uk): its third order was kept from it by the
+    # box alone, so `grow` letters it otherwise (given_room letters it
+    # again); with two orders no order was kept from it: grown, the same
+    two = _polygons_4_5("uk", monkeypatch, 1, False)
+    six = _polygons_4_5("uk", monkeypatch, 6, False)
+    assert six.label_counts is not None and six.label_counts.grows
+    assert two.label_counts is not None and not two.label_counts.grows
+    grown_two = _polygons_4_5("uk", monkeypatch, 1, True)
+    assert grown_two.extent() == two.extent()
+    assert [c.name for c in grown_two.calls] == [c.name for c in two.calls]
+    assert grown_two.label_counts == two.label_counts
