@@ -340,9 +340,8 @@ def _process_file(
             stages[name] = stages.get(name, 0.0) + time.perf_counter() - t
         return None
 
-    digest = _sha256(path)  # before the analysis: what the manifest vouches for
-    analysis = stage("analysis", lambda: solve(_with_fields(load(path), fields)))
-    if analysis is None:
+    def failed() -> FileResult:
+        """The item stopped at its first problem."""
         return FileResult(
             str(path),
             str(out),
@@ -352,6 +351,11 @@ def _process_file(
             cpu_seconds=time.process_time() - c0,
             stages=stages,
         )
+
+    digest = _sha256(path)  # before the analysis: what the manifest vouches for
+    analysis = stage("analysis", lambda: solve(_with_fields(load(path), fields)))
+    if analysis is None:
+        return failed()
 
     def prepare() -> None:
         ensure_dir(out)
@@ -362,15 +366,7 @@ def _process_file(
 
     stage("output folder", prepare)
     if problems:
-        return FileResult(
-            str(path),
-            str(out),
-            False,
-            problems[0],
-            seconds=time.perf_counter() - t0,
-            cpu_seconds=time.process_time() - c0,
-            stages=stages,
-        )
+        return failed()
 
     solution = cast("Solution", analysis)
     with _Writes(out) as writes:

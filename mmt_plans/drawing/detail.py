@@ -30,6 +30,7 @@ __all__ = [
     "choose_details",
     "clipped",
     "name_area",
+    "roomy_ratio",
     "spread",
 ]
 
@@ -136,21 +137,39 @@ def choose_details(
         # the arms in the disc long enough, at the ratio, to be named along
         shortest = float(arms[inside].min()) if inside.any() else math.inf
         apart = spread(points[np.hypot(*(points - c).T) <= r]) if points is not None else math.inf
-        ratio = next(
-            (
-                k
-                for k in DETAIL_RATIOS
-                if (
-                    demand <= NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
-                    and k * shortest >= ARM_NAMED_MM
-                    and k * apart >= spacing
-                )
-                or k * r >= widest
-            ),
-            DETAIL_RATIOS[-1],
-        )
+        ratio = roomy_ratio(demand, r, shortest, widest=widest, apart=apart, spacing=spacing)
         out.append(Detail(letter, (float(c[0]) * mu, float(c[1]) * mu), r * mu, ratio))
     return tuple(out)
+
+
+def roomy_ratio(
+    demand: float,
+    r: float,
+    shortest: float,
+    *,
+    ratios: Sequence[float] = DETAIL_RATIOS,
+    widest: float = DETAIL_MM,
+    apart: float = math.inf,
+    spacing: float = 0.0,
+) -> float:
+    """The first of `ratios` at which a disc of radius `r` (mm at the
+    drawing's scale) leaves the names in it (`demand`, mm² of boxes)
+    NAME_SHARE of its room, names its `shortest` arm along it and sets its
+    points `apart` at least `spacing` apart, or draws it `widest` wide; the
+    last ratio if none does."""
+    return next(
+        (
+            k
+            for k in ratios
+            if (
+                demand <= NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
+                and k * shortest >= ARM_NAMED_MM
+                and k * apart >= spacing
+            )
+            or k * r >= widest
+        ),
+        ratios[-1],
+    )
 
 
 def spread(points: np.ndarray, merged: float = 0.3) -> float:

@@ -37,6 +37,8 @@ __all__ = [
     "Point",
     "PointLike",
     "as_point",
+    "slant_offsets",
+    "turned",
     "arrow_geometry",
     "Backend",
 ]
@@ -53,6 +55,29 @@ PointLike = Sequence[float] | np.ndarray
 _HALIGNS = get_args(HAlign)
 _VALIGNS = get_args(VAlign)
 _FILLS = get_args(Fill)
+
+
+def slant_offsets(
+    anchor: str, valign: str, size: float, lean: float, squeeze: float
+) -> tuple[float, float]:
+    """Offsets (mm) along and across a text's baseline (y up) from where it is
+    asked for to where its baseline starts under the anchor: the slant leans
+    the tops right (`lean`, its tan), so centred and right-aligned text moves
+    left to keep its capitals, not just its baseline, where asked."""
+    if anchor == "left":
+        along = 0.0 * squeeze
+    else:
+        along = (-lean * size / 2.0 if anchor == "center" else -lean * size) * squeeze
+    across = 0.0 if valign == "baseline" else -size / 2.0 if valign == "middle" else -size
+    return along, across
+
+
+def turned(degrees: float) -> tuple[float, float]:
+    """cos and sin of a text's rotation (degrees): 1 and 0, exactly, unturned."""
+    if not degrees:
+        return 1.0, 0.0
+    a = math.radians(degrees)
+    return math.cos(a), math.sin(a)
 
 
 def as_point(p: PointLike) -> Point:
@@ -259,11 +284,7 @@ class Backend(abc.ABC):
         total = sum(advances) + lean
         along = 0.0 if anchor == "left" else -total / 2.0 if anchor == "center" else -total
         across = 0.0 if valign == "baseline" else -size / 2.0 if valign == "middle" else -size
-        if rotation:
-            a = math.radians(rotation)
-            ca, sa = math.cos(a), math.sin(a)
-        else:  # cos 0 and sin 0, exactly
-            ca, sa = 1.0, 0.0
+        ca, sa = turned(rotation)
         x, y = as_point(pos)
         offset = along
         for (text, kind, s), adv in zip(sized, advances):

@@ -25,7 +25,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from .backend import Backend, Fill, HAlign, PointLike, VAlign, as_point
+from .backend import Backend, Fill, HAlign, PointLike, VAlign, as_point, slant_offsets
 from .cairo_lib import import_cairo
 from .look import LineType, Look
 from .recording import RecordingBackend
@@ -183,11 +183,7 @@ class CairoPage(Backend):
         squeeze = 1.0 if max_width is None else let.squeeze(content, size, max_width)
         lean = self._lean
         # as render/svg.py: offsets along and across the baseline (y up)
-        if anchor == "left":
-            along = 0.0 * squeeze
-        else:
-            along = (-lean * size / 2.0 if anchor == "center" else -lean * size) * squeeze
-        across = 0.0 if valign == "baseline" else -size / 2.0 if valign == "middle" else -size
+        along, across = slant_offsets(anchor, valign, size, lean, squeeze)
         x, y = as_point(pos)
         if rotation:
             a = math.radians(rotation)

@@ -20,7 +20,17 @@ from typing import Any
 import svgwrite
 from svgwrite.etree import etree
 
-from .backend import Backend, Fill, HAlign, LineType, PointLike, VAlign, as_point
+from .backend import (
+    Backend,
+    Fill,
+    HAlign,
+    LineType,
+    PointLike,
+    VAlign,
+    as_point,
+    slant_offsets,
+    turned,
+)
 from .look import Look
 
 __all__ = ["SvgBackend"]
@@ -204,20 +214,9 @@ class SvgBackend(Backend):
         lettering = self.look.lettering
         squeeze = lettering.squeeze(str(content), size, max_width)
         lean = lettering.lean  # tan of the slant, worked out once per lettering
-        # Offsets along and across the baseline (y up) from pos to the point
-        # where SVG puts the text: the baseline under the anchor. The slant
-        # leans the tops right, so centred and right-aligned text moves left
-        # to keep its capitals, not just its baseline, where asked.
-        if anchor == "left":
-            along = 0.0 * squeeze
-        else:
-            along = (-lean * size / 2.0 if anchor == "center" else -lean * size) * squeeze
-        across = 0.0 if valign == "baseline" else -size / 2.0 if valign == "middle" else -size
-        if rotation:
-            a = math.radians(rotation)
-            ca, sa = math.cos(a), math.sin(a)
-        else:  # cos 0 and sin 0, exactly
-            ca, sa = 1.0, 0.0
+        # where SVG puts the text: the baseline under the anchor
+        along, across = slant_offsets(anchor, valign, size, lean, squeeze)
+        ca, sa = turned(rotation)
         x, y = as_point(pos)
         bx = x + along * ca - across * sa
         by = y + along * sa + across * ca

@@ -41,6 +41,7 @@ from ..drawing.detail import (
     choose_details,
     clipped,
     name_area,
+    roomy_ratio,
 )
 from ..drawing.labels import NEAR_MM, LabelCounts, Labels, arc_line
 from ..drawing.layout import LayoutError, SheetLayout, pack
@@ -1255,18 +1256,7 @@ def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[
                 (n.arm_mm for n, i in zip(names, inside) if i and n.arm_mm is not None),
                 default=math.inf,
             )
-            ratio = next(
-                (
-                    k
-                    for k in _LEVER_RATIOS
-                    if (
-                        demand <= NAME_SHARE * math.pi * (k * r + NEAR_MM) ** 2
-                        and k * shortest >= ARM_NAMED_MM
-                    )
-                    or k * r >= DETAIL_MM
-                ),
-                _LEVER_RATIOS[-1],
-            )
+            ratio = roomy_ratio(demand, r, shortest, ratios=_LEVER_RATIOS)
         out.append(LeverDetail(letter, (float(c[0]) * mu_V, float(c[1]) * mu_V), r * mu_V, ratio))
     return tuple(out)
 

@@ -28,14 +28,18 @@ from mmt_plans.spec import loads
 RULES = ["label-near", "label-clear", "names-unique", "arrows-named"]
 
 
+def _findings(toml: str, name: str, lang: str) -> list[str]:
+    """The linter's findings on sheet 1 of the mechanism file `toml`."""
+    solution = solve(loads(toml, f"{name}.toml"))
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet1(solution, backend, lang)
+    return [str(f) for f in lint(SheetView.of(backend, lang, name), RULES)]
+
+
 @pytest.mark.parametrize("seed", [13, 23, 24])
 def test_every_label_of_sheet1_near_what_it_names(seed):
     g = generate_one(seed)
-    solution = solve(loads(g.toml, f"{g.name}.toml"))
-    backend = RecordingBackend(841.0, 594.0)
-    compose_sheet1(solution, backend, "en")
-    found = lint(SheetView.of(backend, "en", g.name), RULES)
-    assert [str(f) for f in found] == []
+    assert _findings(g.toml, g.name, "en") == []
 
 
 TASKS = Path(__file__).resolve().parents[2] / "samples" / "tasks"
@@ -89,11 +93,7 @@ LINT = Path(__file__).resolve().parents[1] / "data" / "lint"
     ids=lambda p: p.stem,
 )
 def test_sheet1_labels_near_what_they_name_en_and_uk(path, lang):
-    solution = solve(loads(path.read_text(encoding="utf-8"), str(path)))
-    backend = RecordingBackend(841.0, 594.0)
-    compose_sheet1(solution, backend, lang)
-    found = lint(SheetView.of(backend, lang, path.stem), RULES)
-    assert [str(f) for f in found] == []
+    assert _findings(path.read_text(encoding="utf-8"), path.stem, lang) == []
 
 
 @pytest.mark.parametrize(
@@ -111,11 +111,7 @@ def test_position_numbers_walled_in_on_the_crank_circle_near_the_output(seed, la
     textbook numbers the positions too, at the output point in that position:
     near it, as the linter's own rules judge."""
     g = generate_one(seed)
-    solution = solve(loads(g.toml, f"{g.name}.toml"))
-    backend = RecordingBackend(841.0, 594.0)
-    compose_sheet1(solution, backend, lang)
-    found = lint(SheetView.of(backend, lang, g.name), RULES)
-    assert [str(f) for f in found] == []
+    assert _findings(g.toml, g.name, lang) == []
 
 
 @pytest.mark.parametrize(
