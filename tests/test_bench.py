@@ -52,3 +52,19 @@ def test_the_overview_rows_read_measured_over_goal():
     from mmt_plans.bench.overview import _row
 
     assert _row("solve", 1.5e-3, "ms", "goal", 3e-3) == ["solve", "1.5 ms", "goal", "3 ms", "0.50"]
+
+
+def test_bench_without_the_samples_folder_says_where_to_run_it(tmp_path):
+    """Run outside the repository, the bench names the missing file and the fix
+    (exit 2), instead of a subprocess failure reported as an internal error."""
+    from click.testing import CliRunner
+
+    from mmt_plans.cli import main
+
+    result = CliRunner().invoke(main, ["bench", "--summary", "--samples", str(tmp_path)])
+    assert result.exit_code == 2
+    assert "six_link_press.toml does not exist" in result.output
+    assert "fix:" in result.output and "Traceback" not in result.output
+    (tmp_path / "six_link_press.toml").write_text("")
+    result = CliRunner().invoke(main, ["bench", "--summary", "--keys", "--samples", str(tmp_path)])
+    assert result.exit_code == 2 and "seed003 does not exist" in result.output

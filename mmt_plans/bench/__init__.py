@@ -38,6 +38,22 @@ def sweep_time(path: Path, count: int, repeat: int) -> float:
     return float(done.stdout.strip().splitlines()[-1])
 
 
+def _check_samples(sample_dir: Path, keys: bool) -> None:
+    """The files the bench times are there, or a message naming the folder and
+    the fix (not a subprocess's failure reported as a bug)."""
+    from ..errors import SettingError
+    from .overview import DEFAULT
+
+    needed = [sample_dir / f"{DEFAULT}.toml"] + ([sample_dir / "tasks" / "seed003"] if keys else [])
+    for path in needed:
+        if not path.exists():
+            raise SettingError(
+                f"--samples {sample_dir}: {path} does not exist\n"
+                "  fix: run from the repository's root (where samples/ is), or pass "
+                "--samples PATH/TO/samples"
+            )
+
+
 def run_benchmarks(
     sample_dir: Path, quick: bool = False, echo=print, keys: bool = False, summary: bool = False
 ) -> None:
@@ -45,6 +61,7 @@ def run_benchmarks(
     every detailed section; `keys` adds the 55 seed-task keys on two workers."""
     from .overview import bench_overview
 
+    _check_samples(Path(sample_dir), keys)
     repeat = 3 if quick else 7
     bench_overview(Path(sample_dir), repeat, echo, keys)
     if summary:
