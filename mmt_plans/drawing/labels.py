@@ -1307,14 +1307,17 @@ class Labels:
         shapes, lines, lb = index.shapes, *index.lines_bounds  # a point keeps its clearance
         crossed = crossed.copy()
         for fx, fy in np.unique(np.c_[ax, ay], axis=0):
-            # (only those whose box comes within 0.05 mm of the foot are measured)
-            by = np.flatnonzero(
-                (lb[:, 0] <= fx + _AT_FOOT)
-                & (lb[:, 2] >= fx - _AT_FOOT)
-                & (lb[:, 1] <= fy + _AT_FOOT)
-                & (lb[:, 3] >= fy - _AT_FOOT)
-            )
-            at = lines[by[shapely.dwithin(shapes[lines[by]], Point(fx, fy), 0.05)]]
+            at = index.at_foot.get((fx, fy))
+            if at is None:
+                # (only those whose box comes within 0.05 mm of the foot are measured)
+                by = np.flatnonzero(
+                    (lb[:, 0] <= fx + _AT_FOOT)
+                    & (lb[:, 2] >= fx - _AT_FOOT)
+                    & (lb[:, 1] <= fy + _AT_FOOT)
+                    & (lb[:, 3] >= fy - _AT_FOOT)
+                )
+                at = lines[by[shapely.dwithin(shapes[lines[by]], Point(fx, fy), 0.05)]]
+                index.at_foot[(fx, fy)] = at
             if not at.size:
                 continue
             mine = np.flatnonzero((ax == fx) & (ay == fy))
@@ -1494,6 +1497,8 @@ class _ObstacleIndex:
         kind = shapely.get_type_id(shapes)
         self.shapes, self.kind = shapes, kind
         self._lines_bounds: tuple[np.ndarray, np.ndarray] | None = None
+        # the obstacles (other than points) at each leader's foot asked, by the foot
+        self.at_foot: dict[tuple[float, float], np.ndarray] = {}
         self.reach = np.asarray(clearance, dtype=float)
         # a polygon (measured whole) or a main line: never crossed by a leader
         self.uncrossable = (kind == 3) | (np.asarray(heavy, dtype=bool) if len(heavy) else False)
@@ -1698,8 +1703,11 @@ class _ObstacleIndex:
         clear[qi[hit]] = False
         rest = ~hit & clear[qi]
         if rest.any():
-            qi, reach = qi[rest], reach[rest]
-            gap = _segment_box(s[rest], np.stack([x0[qi], y0[qi], x1[qi], y1[qi]], axis=1))
+            # (the ends are out of reach here: met, or a corner within reach)
+            qi, reach, s = qi[rest], reach[rest], s[rest]
+            b = np.stack([x0[qi], y0[qi], x1[qi], y1[qi]], axis=1)
+            corners = _point_segment(b[:, [0, 2, 2, 0]].T, b[:, [1, 1, 3, 3]].T, s).min(axis=0)
+            gap = np.where(segments_meet_boxes(s, b), 0.0, corners)
             clear[qi[gap < reach]] = False
 
     def lines_near(self, lines: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
