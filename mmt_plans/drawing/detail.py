@@ -92,6 +92,7 @@ def choose_details(
     widest: float = DETAIL_MM,
     tightest: float | None = None,
     radii: Sequence[float] = DETAIL_RADII,
+    fewest: int = 1,
 ) -> tuple[Detail, ...]:
     """The detail views a drawing at `mu` needs where the names standing for
     the points `crowded` (mm) found no place near: at most `most` discs
@@ -104,7 +105,9 @@ def choose_details(
     points), the ratio also sets those in the disc `spacing` apart (a quarter
     of them nearer their neighbour at most: `spread`); with `tightest` (a
     share), the smallest disc of `radii` that holds that share of the most
-    any holds: the crowd's core, whose loads and names crowd the rest."""
+    any holds: the crowd's core, whose loads and names crowd the rest. A disc
+    past the first is taken only where it holds `fewest` of those points at
+    least (a crowd of its own, not a name or two a leader serves)."""
     where = np.array([n.at for n in names], dtype=float).reshape(-1, 2)
     areas = np.array([n.area for n in names])
     arms = np.array([math.inf if n.arm_mm is None else n.arm_mm for n in names])
@@ -124,6 +127,8 @@ def choose_details(
         if not discs:
             break
         most_held = max(h for h, _, _ in discs)
+        if out and most_held < fewest:
+            break
         if tightest is None:
             best = max(discs, key=lambda d: (d[0], d[1]))
         else:  # the smallest of those that hold nearly the most

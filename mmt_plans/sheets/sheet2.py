@@ -132,7 +132,7 @@ class Sheet2:
     shrink: int = 0
     # the lever's detail views (drawings "zhukovsky-lever-detail", "…-detail-2")
     details: tuple[LeverDetail, ...] = ()
-    # the loaded mechanism's (drawing "force-mechanism-detail")
+    # the loaded mechanism's (drawings "force-mechanism-detail", "…-detail-2")
     mechanism_details: tuple[Detail, ...] = ()
 
     @property
@@ -639,7 +639,11 @@ def _loaded_view(
     return sk
 
 
-_LOADED_DETAILS = 1  # the most detail views of the loaded mechanism
+_LOADED_DETAILS = 2  # the most detail views of the loaded mechanism
+# a second detail view only for a crowd of its own: this many names far or on
+# something that the first leaves at least (gen 5 uk: six round its crank; gen
+# 63's two left over get none, a leader serves them)
+_SECOND_CROWD = 3
 _POINTS_APART_MM = 7.0  # a detail of the loaded mechanism sets its points this far apart
 _LOADED_DETAIL_MM = 45.0  # the largest radius of its disc, mm
 _LOADED_RADII = (4.0, 6.0, 8.0, 12.0, 16.0)  # the radii of its discs tried, mm
@@ -690,11 +694,12 @@ def _loaded_names(fa: ForceAnalysis, mu_l: float) -> tuple[list[Name], np.ndarra
 def loaded_details(
     fa: ForceAnalysis, mu_l: float, crowded: np.ndarray, taken: Iterable[str] = ()
 ) -> tuple[Detail, ...]:
-    """The detail view the loaded mechanism at `mu_l` needs where the names
+    """The detail views the loaded mechanism at `mu_l` needs where the names
     standing for the points `crowded` (mm, `crowded_names` of the mechanism
     drawn without details) found no place near (`choose_details`): at most
-    _LOADED_DETAILS disc round a point of the mechanism or such a point,
-    lettered by a capital that names no point and is not in `taken` (the
+    _LOADED_DETAILS discs apart round a point of the mechanism or such a
+    point, one past the first only for a crowd of _SECOND_CROWD names or more,
+    lettered by capitals that name no point and are not in `taken` (the
     lever's details' letters)."""
     names, points = _loaded_names(fa, mu_l)
     used = {n[:1].upper() for n in fa.loads.state.mech.point_owners} | set(taken)
@@ -711,6 +716,7 @@ def loaded_details(
         widest=_LOADED_DETAIL_MM,
         tightest=_CORE_SHARE,
         radii=_LOADED_RADII,
+        fewest=_SECOND_CROWD,
     )
 
 

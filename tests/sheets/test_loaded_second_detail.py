@@ -1,0 +1,93 @@
+"""A second detail view of the loaded mechanism (#21): where the first leaves
+a crowd of its own (_SECOND_CROWD names or more far or on something), a
+second disc apart from the first is drawn larger and lettered there; a name
+or two left over get none (a leader serves them)."""
+
+from __future__ import annotations
+
+import math
+from functools import cache
+
+import numpy as np
+import pytest
+
+from mmt_plans.drawing.detail import Name, choose_details, name_area
+from mmt_plans.generate import generate_one
+from mmt_plans.render.recording import RecordingBackend
+from mmt_plans.sheets import sheet2
+from mmt_plans.sheets.lint import SheetView, lint
+from mmt_plans.sheets.sheet2 import compose_sheet2
+from mmt_plans.solution import solve
+from mmt_plans.spec import loads
+
+NEAR_RULES = {"label-near", "label-clear"}
+
+
+def _crowds(*crowds: tuple[tuple[float, float], int]) -> np.ndarray:
+    """Points (mm) in crowds of `n` round `centre`, 1 mm apart on a line."""
+    return np.array(
+        [(cx + k, cy) for (cx, cy), n in crowds for k in range(n)], dtype=float
+    ).reshape(-1, 2)
+
+
+def _details(crowded: np.ndarray, fewest: int):
+    names = [Name(p, name_area("S_{1}")) for p in crowded]
+    return choose_details(
+        names, crowded, list(crowded), 1.0, "ABC", 2, radii=(6.0, 8.0), fewest=fewest
+    )
+
+
+def test_a_second_crowd_gets_a_second_disc_apart_from_the_first():
+    crowded = _crowds(((0.0, 0.0), 5), ((100.0, 0.0), 3))
+    first, second = _details(crowded, fewest=3)
+    for d in (first, second):  # each disc holds one crowd whole
+        c, r = np.asarray(d.centre), d.radius
+        assert int((np.hypot(*(crowded - c).T) <= r).sum()) in (5, 3)
+    assert math.dist(first.centre, second.centre) > first.radius + second.radius
+    assert first.letter != second.letter
+
+
+def test_a_name_or_two_left_over_get_no_second_disc():
+    crowded = _crowds(((0.0, 0.0), 5), ((100.0, 0.0), 2))
+    (only,) = _details(crowded, fewest=3)
+    assert math.dist(only.centre, (2.0, 0.0)) <= only.radius  # the crowd of five
+    assert len(_details(crowded, fewest=1)) == 2  # the rule alone keeps it out
+
+
+@cache
+def _solved(seed: int):
+    g = generate_one(seed)
+    return solve(loads(g.toml, f"{g.name}.toml"))
+
+
+def _mechanism_findings(seed: int, lang: str):
+    """Sheet 2's loaded mechanism and its details: their names far or on something."""
+    backend = RecordingBackend(841.0, 594.0)
+    sheet = compose_sheet2(_solved(seed), backend, lang)  # type: ignore[arg-type]
+    view = SheetView.of(backend, lang, f"gen {seed} {lang}")  # type: ignore[arg-type]
+    where = {
+        (round(lab.box.centroid.x, 1), round(lab.box.centroid.y, 1)): lab.groups[:1]
+        for lab in view.labels
+    }
+    found = [
+        f
+        for f in lint(view)
+        if f.rule in NEAR_RULES
+        and where.get((round(f.where[0], 1), round(f.where[1], 1)), ("",))[0].startswith(
+            "force-mechanism"
+        )
+    ]
+    return sheet, found
+
+
+# gen 5 (RRR-PRP-RPP-RRR-RPR, 1:20): the loaded mechanism's names crowd round
+# its crank (six of them, uk) as well as round U, which the first detail takes
+@pytest.mark.parametrize("lang", ["uk"])
+def test_gen_5s_loaded_mechanism_takes_two_details_and_fewer_names_stand_far(lang, monkeypatch):
+    sheet, found = _mechanism_findings(5, lang)
+    assert len(sheet.mechanism_details) == 2
+    assert "force-mechanism-detail-2" in sheet.placed
+    monkeypatch.setattr(sheet2, "_LOADED_DETAILS", 1)
+    one_sheet, one = _mechanism_findings(5, lang)
+    assert len(one_sheet.mechanism_details) == 1
+    assert len(found) < len(one)
