@@ -165,8 +165,9 @@ _SHORT_WIDER = (0.0, 3.0)
 # each label far, is then spent where they seldom help)
 _SHORT_LINKS = 12
 # a plan where more labels than this find no place near in the usual order
-# keeps it (too crowded for another order to help)
-_REORDER_MOST = 4
+# keeps it (too crowded for another order to help; the acceleration plans of
+# chains of 4 and 5 dyads, with 5 to 12 far at first, are helped by another)
+_REORDER_MOST = 12
 # how many of a link's candidate arcs, best scored first, are asked whether
 # their labels find room (a long link of many positions has up to 84)
 _ROOM_TRIES = 16
@@ -1174,9 +1175,13 @@ def sketch_plan(
 
         # (a long chain's plans keep the usual order: see _SHORT_LINKS)
         chain = len(solution.mechanism.links) > _SHORT_LINKS
+        # the components before the images too: a component's name has a
+        # place near it only along its short shaft, an image's all round it
+        parts = [k for k in crowded if not isinstance(items[k], list)]
+        parts += [k for k in crowded if isinstance(items[k], list)]
         placer.write_each(
             [write(item) for item in items],
-            [crowded] if short and not chain else [],
+            [crowded, parts] if short and not chain else [],
             most=0 if chain else _REORDER_MOST,
         )
         ext = sk.extent()

@@ -126,3 +126,14 @@ def test_crank_arc_walled_in_by_spokes_drawn_outside_the_crank_circle(seed):
     spokes so that ω1's name finds no room by its arrowhead, the arc goes round
     the pivot outside the circle: its name near it, as the linter judges."""
     test_every_label_of_sheet1_near_what_it_names(seed)
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_acceleration_plan_components_named_first_where_many_stand_far(lang):
+    """A chain of five dyads (generated seed 30) whose acceleration plan named
+    "aτXB" 10.2 mm from its arrow in every order tried (the usual one, the
+    crowded first): with the plan's components written before its images in
+    one more order, every label of sheet 1 stands near what it names, as the
+    linter's own rules judge."""
+    g = generate_one(30)
+    assert _findings(g.toml, g.name, lang) == []
