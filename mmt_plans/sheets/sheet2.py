@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 import random
 import re
-from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -1093,18 +1093,6 @@ _SPOT_MM = 10.0
 _LETTERED_SHARE = 0.75
 
 
-def _spot_key(spots: Mapping[tuple[int, int], tuple[Any, ...]], at: np.ndarray) -> tuple[int, int]:
-    """The spot of `spots` (keyed by the half-millimetre cell, each value's
-    first item where its name stands, mm) that a lever's image at `at` (mm)
-    is named at: one within 0.5 mm of it, else its own cell's (task06_v5:
-    s4 and k4 0.13 mm apart, in two cells, were two names, and no detail's
-    ratio parts them 10 mm)."""
-    key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
-    if key in spots:
-        return key
-    return next((k for k, v in spots.items() if math.dist(v[0], at) < 0.5), key)
-
-
 def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[Name]:
     """The names the lever writes at `mu_V`: where each stands (mm), the area
     of its box (mm²), an arm's lettered along p–foot with its length."""
@@ -1115,7 +1103,7 @@ def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[Name]:
     for n, v in lever.images.items():
         at = np.asarray(v, float) / mu_V
         if float(np.hypot(*at)) >= 0.5:
-            key = _spot_key(spots, at)
+            key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
             spots.setdefault(key, (at, []))[1].append(image_markup(n, owners))
     out += [Name(at, name_area(", ".join(names))) for at, names in spots.values()]
     forces = [*lever.forces, lever.balancing]
@@ -1174,7 +1162,7 @@ def _spots(fa: ForceAnalysis, mu_V: float) -> np.ndarray:
     spots: dict[tuple[int, int], np.ndarray] = {(0, 0): np.zeros(2)}
     for v in fa.lever.images.values():
         at = np.asarray(v, float) / mu_V
-        spots.setdefault(_spot_key({k: (v,) for k, v in spots.items()}, at), at)
+        spots.setdefault((round(float(at[0]) * 2), round(float(at[1]) * 2)), at)
     return np.array(list(spots.values()), dtype=float).reshape(-1, 2)
 
 
@@ -1360,7 +1348,7 @@ def _lever_view(
         def mark(markup: str, at: np.ndarray) -> None:
             if not here(at):
                 return
-            key = _spot_key(marks, at)
+            key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
             marks.setdefault(key, (at, []))[1].append(markup)
 
         mark("p", np.zeros(2))  # the pole: no image is written p (image_markup)
