@@ -1794,6 +1794,7 @@ class _Composer:
         compact: bool = False,
         details: bool = True,
         mechanism_details: tuple[Detail, ...] = (),
+        lever_views: tuple[LeverDetail, ...] | None = None,
     ) -> None:
         self.fa, self.look, self.lang, self.page = fa, look, lang, page
         # the loaded mechanism's detail views (compose_sheet2 finds them on
@@ -1820,9 +1821,14 @@ class _Composer:
         # where the lever's names crowd at its textbook scale, a detail view of them
         arms: list[tuple[str, float]] = []
         plain = sketch_lever(fa, self.lever_mu, look, lang, arms)
-        self.details = (
-            lever_details(fa, self.lever_mu, crowded_ends(plain, lang)) if details else ()
-        )
+        # (or `lever_views`: those found on the lever as it reached the sheet)
+        self.allows_details = details
+        if lever_views is not None:
+            self.details = lever_views
+        else:
+            self.details = (
+                lever_details(fa, self.lever_mu, crowded_ends(plain, lang)) if details else ()
+            )
         self.drawings += [detail_gid(self.details, d) for d in self.details]
         self.drawings += [loaded_detail_gid(mechanism_details, d) for d in mechanism_details]
         if not self.details:  # the lever at its textbook scale is drawn: kept
@@ -2505,6 +2511,46 @@ class _Composer:
         return steps["lever"] >= 0 or not lever_max or self.fa.lever.pa / mu_V <= _LEVER_MAX
 
 
+def _with_lever_details(
+    composer: _Composer, steps: dict[str, int], solution: Solution
+) -> tuple[_Composer, dict[str, int]]:
+    """Where the lever reached the sheet with no detail view (none crowded at
+    its textbook scale) but smaller, and names crowd there (five_dyads: 3
+    steps smaller, 'h15,…' 26 mm from its arm): its detail views found on the
+    lever at the scale it reached (`lever_details`), the sheet fitted again
+    with them; kept where it fits and fewer labels of all its drawings stand
+    far or found no free place; else as it was."""
+    fa, lang = composer.fa, composer.lang
+    scales = composer.scales(steps)
+    if not composer.allows_details or composer.details or scales["mu_V"] == composer.lever_mu:
+        return composer, steps
+    mu_V = scales["mu_V"]
+    plain = sketch_lever(fa, mu_V, composer.look, lang, [])
+    crowd = crowded_ends(plain, lang)
+    if not len(crowd):
+        return composer, steps
+    found = lever_details(fa, mu_V, crowd)
+    if not found:
+        return composer, steps
+    detailed = _Composer(
+        fa,
+        solution,
+        composer.look,
+        lang,
+        composer.page,
+        compact=composer.compact,
+        lever_views=found,
+    )
+    detailed.cache.update(composer.shared_drawings())
+    refit = detailed.first_fit()
+    if refit is None:
+        return composer, steps
+    refit = detailed.filled(detailed.unwall(detailed.fill(refit)))
+    if sum(detailed.lettered(refit)) >= sum(composer.lettered(steps)):
+        return composer, steps
+    return detailed, refit
+
+
 def _with_mechanism_details(
     composer: _Composer, steps: dict[str, int], solution: Solution
 ) -> tuple[_Composer, dict[str, int]]:
@@ -2594,6 +2640,7 @@ def compose_sheet2(
             "groups (the force analysis of every group goes on one sheet)"
         )
     steps = composer.filled(composer.unwall(composer.fill(steps)))
+    composer, steps = _with_lever_details(composer, steps, solution)
     composer, steps = _with_mechanism_details(composer, steps, solution)
     scales = composer.scales(steps)
     sketches, arms = composer.sketches(scales)
