@@ -2541,14 +2541,7 @@ def _with_lever_details(
         compact=composer.compact,
         lever_views=found,
     )
-    detailed.cache.update(composer.shared_drawings())
-    refit = detailed.first_fit()
-    if refit is None:
-        return composer, steps
-    refit = detailed.filled(detailed.unwall(detailed.fill(refit)))
-    if sum(detailed.lettered(refit)) >= sum(composer.lettered(steps)):
-        return composer, steps
-    return detailed, refit
+    return _refitted(composer, detailed, sum(composer.lettered(steps))) or (composer, steps)
 
 
 def _with_mechanism_details(
@@ -2589,14 +2582,21 @@ def _with_mechanism_details(
         details=bool(composer.details),
         mechanism_details=found,
     )
+    return _refitted(composer, detailed, was) or (composer, steps)
+
+
+def _refitted(
+    composer: _Composer, detailed: _Composer, was: int
+) -> tuple[_Composer, dict[str, int]] | None:
+    """The sheet fitted again by `detailed` (sharing `composer`'s drawings of
+    links), filled: kept where it fits and fewer than `was` labels of all its
+    drawings stand far or found no free place."""
     detailed.cache.update(composer.shared_drawings())
     refit = detailed.first_fit()
     if refit is None:
-        return composer, steps
+        return None
     refit = detailed.filled(detailed.unwall(detailed.fill(refit)))
-    if sum(detailed.lettered(refit)) >= was:
-        return composer, steps
-    return detailed, refit
+    return (detailed, refit) if sum(detailed.lettered(refit)) < was else None
 
 
 def compose_sheet2(
