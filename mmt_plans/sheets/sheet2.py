@@ -1819,15 +1819,18 @@ class _Composer:
             self.drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
         self.drawings += ["driving-link", f"force-polygon-{dl.link}"]
         # where the lever's names crowd at its textbook scale, a detail view of them
+        # (or `lever_views`: those found on the lever as it reached the sheet,
+        # where the lever at its textbook scale is not drawn at all)
         arms: list[tuple[str, float]] = []
-        plain = sketch_lever(fa, self.lever_mu, look, lang, arms)
-        # (or `lever_views`: those found on the lever as it reached the sheet)
         self.allows_details = details
-        if lever_views is not None:
+        if lever_views:
             self.details = lever_views
         else:
+            plain = sketch_lever(fa, self.lever_mu, look, lang, arms)
             self.details = (
-                lever_details(fa, self.lever_mu, crowded_ends(plain, lang)) if details else ()
+                lever_details(fa, self.lever_mu, crowded_ends(plain, lang))
+                if details and lever_views is None
+                else ()
             )
         self.drawings += [detail_gid(self.details, d) for d in self.details]
         self.drawings += [loaded_detail_gid(mechanism_details, d) for d in mechanism_details]
