@@ -1197,7 +1197,12 @@ def _detail_ratio(
     )
 
 
-def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[LeverDetail, ...]:
+def lever_details(
+    fa: ForceAnalysis,
+    mu_V: float,
+    crowded: np.ndarray,
+    crowding: Callable[[tuple[LeverDetail, ...]], int] | None = None,
+) -> tuple[LeverDetail, ...]:
     """The detail views the lever at `mu_V` needs where the names of what
     `crowded` names (mm, `crowded_ends` of the lever drawn without details)
     found no place near: at most _DETAILS discs apart, round p, an image or
@@ -1208,7 +1213,13 @@ def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[
     covering the most of their middles covers; else that disc (`choose_details`'
     rule), at the first ratio that leaves its names their room and names its
     shortest arm, or draws it DETAIL_MM wide; lettered by capitals that name
-    no point of the mechanism."""
+    no point of the mechanism. With `crowding` (how many names of the lever
+    and its views stand far or on something, drawn with the details given),
+    where a disc lettered at its ratio holds less than that share, the two
+    are both drawn and the one leaving fewer names crowded taken: the wide
+    disc's low ratio may leave a tight crowd of images as tight as it was
+    (gen 141: ten images within 2 mm of p, 4:1), the small disc's high ratio
+    may leave the long arms round it crowding on the lever (gen 91)."""
     names = _lever_names(fa, mu_V)
     where = np.array([n.at for n in names], dtype=float).reshape(-1, 2)
     areas = np.array([n.area for n in names])
@@ -1228,6 +1239,19 @@ def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[
     def covers(c: np.ndarray, r: float) -> np.ndarray:
         """Which crowded names' middles the disc covers (a wide disc's measure)."""
         return np.hypot(*((crowded[:, :2] + crowded[:, 2:]) / 2.0 - c).T) <= r
+
+    def disc(letter: str, c: np.ndarray, r: float, ratio: float | None) -> LeverDetail:
+        """The detail view of the disc; with no ratio that letters it, at the
+        first that leaves its names their room at least."""
+        if ratio is None:
+            inside = np.hypot(*(where - c).T) <= r
+            demand = float(areas[inside].sum())
+            shortest = min(
+                (n.arm_mm for n, i in zip(names, inside) if i and n.arm_mm is not None),
+                default=math.inf,
+            )
+            ratio = roomy_ratio(demand, r, shortest, ratios=_LEVER_RATIOS)
+        return LeverDetail(letter, (float(c[0]) * mu_V, float(c[1]) * mu_V), r * mu_V, ratio)
 
     for letter in letters[:_DETAILS]:
         # the disc holding the most (of as many, the widest), and such a disc
@@ -1252,19 +1276,33 @@ def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[
         if most is None:
             break
         if lettered is not None and lettered[0][0] >= _LETTERED_SHARE * most[0][0]:
-            most = lettered
-        (_, r), c, ratio = most
+            options = [lettered]
+        elif lettered is not None and crowding is not None:
+            options = [most, lettered]  # both drawn: the one leaving fewer crowded
+        else:
+            options = [most]
+        views = [disc(letter, c, r, ratio) for (_, r), c, ratio in options]
+        crowds = [crowding((*out, v)) for v in views] if crowding and len(views) > 1 else [0]
+        k = crowds.index(min(crowds))  # on a tie the wide disc, as without weighing
+        (_, r), c, _ = options[k]
         left &= ~(holds(c, r) | covers(c, r))
-        if ratio is None:  # no ratio letters the disc: its names their room at least
-            inside = np.hypot(*(where - c).T) <= r
-            demand = float(areas[inside].sum())
-            shortest = min(
-                (n.arm_mm for n, i in zip(names, inside) if i and n.arm_mm is not None),
-                default=math.inf,
-            )
-            ratio = roomy_ratio(demand, r, shortest, ratios=_LEVER_RATIOS)
-        out.append(LeverDetail(letter, (float(c[0]) * mu_V, float(c[1]) * mu_V), r * mu_V, ratio))
+        out.append(views[k])
     return tuple(out)
+
+
+def lever_crowding(
+    fa: ForceAnalysis, mu_V: float, look: Any, lang: Language
+) -> Callable[[tuple[LeverDetail, ...]], int]:
+    """How many names of the lever at `mu_V` and of its detail views the
+    sheet linter finds far from what they name or on something, drawn with
+    the detail views given (`lever_details`' weighing of two discs)."""
+
+    def crowding(details: tuple[LeverDetail, ...]) -> int:
+        views = [sketch_lever(fa, mu_V, look, lang, [], details)]
+        views += [sketch_lever_detail(fa, mu_V, look, lang, d) for d in details]
+        return sum(len(list(_crowded(v, lang))) for v in views)
+
+    return crowding
 
 
 def detail_gid(details: Sequence[LeverDetail], detail: LeverDetail) -> str:
@@ -1828,7 +1866,12 @@ class _Composer:
         else:
             plain = sketch_lever(fa, self.lever_mu, look, lang, arms)
             self.details = (
-                lever_details(fa, self.lever_mu, crowded_ends(plain, lang))
+                lever_details(
+                    fa,
+                    self.lever_mu,
+                    crowded_ends(plain, lang),
+                    lever_crowding(fa, self.lever_mu, look, lang),
+                )
                 if details and lever_views is None
                 else ()
             )
@@ -2532,7 +2575,7 @@ def _with_lever_details(
     crowd = crowded_ends(plain, lang)
     if not len(crowd):
         return composer, steps
-    found = lever_details(fa, mu_V, crowd)
+    found = lever_details(fa, mu_V, crowd, lever_crowding(fa, mu_V, composer.look, lang))
     if not found:
         return composer, steps
     detailed = _Composer(
