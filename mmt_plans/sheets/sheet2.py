@@ -1215,11 +1215,13 @@ def lever_details(
     shortest arm, or draws it DETAIL_MM wide; lettered by capitals that name
     no point of the mechanism. With `crowding` (how many names of the lever
     and its views stand far or on something, drawn with the details given),
-    where a disc lettered at its ratio holds less than that share, the two
-    are both drawn and the one leaving fewer names crowded taken: the wide
-    disc's low ratio may leave a tight crowd of images as tight as it was
-    (gen 141: ten images within 2 mm of p, 4:1), the small disc's high ratio
-    may leave the long arms round it crowding on the lever (gen 91)."""
+    the wide disc is weighed against the disc lettered at its ratio (where
+    that holds less than the share) and against itself made tighter, the
+    widest whose view may be drawn at a larger ratio: all are drawn and the
+    one leaving fewest names crowded taken, of as few the view drawn largest.
+    The wide disc's low ratio may leave a tight crowd of images as tight as
+    it was (gen 141: ten images within 2 mm of p, 4:1); the small disc's high
+    ratio may leave the long arms round it crowding on the lever (gen 91)."""
     names = _lever_names(fa, mu_V)
     where = np.array([n.at for n in names], dtype=float).reshape(-1, 2)
     areas = np.array([n.area for n in names])
@@ -1282,8 +1284,23 @@ def lever_details(
         else:
             options = [most]
         views = [disc(letter, c, r, ratio) for (_, r), c, ratio in options]
+        (held, r), c, _ = options[0]
+        # the wide disc made tighter, the widest whose view may be drawn at a
+        # larger ratio than the wide one's (DETAIL_MM in radius at most)
+        tighter = [
+            (x, max(k for k in _LEVER_RATIOS if k * x <= DETAIL_MM))
+            for x in sorted(_LEVER_RADII, reverse=True)
+            if x < r and _LEVER_RATIOS[0] * x <= DETAIL_MM
+        ]
+        tighter = [(x, k) for x, k in tighter if k > views[0].ratio][:1]
+        if crowding is not None and options[0] is most and tighter:
+            options.append(((held, tighter[0][0]), c, tighter[0][1]))
+            views.append(disc(letter, c, *tighter[0]))
         crowds = [crowding((*out, v)) for v in views] if crowding and len(views) > 1 else [0]
-        k = crowds.index(min(crowds))  # on a tie the wide disc, as without weighing
+        # of as few, the view drawn largest: the lever reaches the sheet at its
+        # textbook scale or smaller, and its views with it (gen 6: three discs
+        # letter it at 1:0.004, the widest crowds at the 1:0.005 it reaches)
+        k = min(range(len(views)), key=lambda i: (crowds[i], -views[i].ratio * views[i].radius))
         (_, r), c, _ = options[k]
         left &= ~(holds(c, r) | covers(c, r))
         out.append(views[k])

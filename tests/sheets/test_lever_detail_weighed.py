@@ -44,3 +44,20 @@ def test_a_tight_crowd_of_images_gets_the_small_disc_that_spreads_it():
 def test_the_wide_disc_is_kept_where_it_letters_better():
     crowding, wide, weighed = _chosen(WIDE)
     assert weighed == wide
+
+
+SHRUNK = 6  # gen 6 (RPP-RPR-RPP-RPR): its lever reaches the sheet a step smaller
+
+
+def test_of_discs_that_letter_it_alike_the_view_drawn_largest():
+    """At the textbook's μV the wide disc (2.5:1) and tighter ones letter the
+    lever alike; the one whose view is drawn largest is taken, and it still
+    letters the lever a series step smaller, where the wide one crowds."""
+    from mmt_plans.sheets.common import scale_step
+
+    crowding, wide, weighed = _chosen(SHRUNK)
+    assert weighed[0].ratio * weighed[0].radius > wide[0].ratio * wide[0].radius
+    g = generate_one(SHRUNK)
+    fa = solve(loads(g.toml, f"{g.name}.toml")).require_forces()
+    smaller = lever_crowding(fa, scale_step(_lever_scale(fa.lever), 1), load_look(), "en")
+    assert smaller(weighed) < smaller(wide)
