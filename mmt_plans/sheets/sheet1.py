@@ -249,15 +249,17 @@ class _ArcPlacer:
     of it, crossing as little of what is drawn as it can (a main line of a link
     or block counts 1, a thin line of another position or a trajectory 0.2, an
     arc or the room kept for a label 3, a label or its leader written 50: an
-    arc over it puts a label on a line), with a free box for each label next
-    to its arrowhead."""
+    arc over it puts a label on a line; made `far`, a block's outline or a pin
+    10), with a free box for each label next to its arrowhead."""
 
-    _WEIGHT = {"main": 1.0, "thin": 0.2, "arc": 3.0, "label": 50.0}
+    _WEIGHT = {"main": 1.0, "thin": 0.2, "arc": 3.0, "label": 50.0, "symbol": 10.0}
 
     def __init__(self, sk: Sketch, far: bool = False) -> None:
         self.sk = sk
         # with `far`, the arcs of a link whose names find no room at the usual
-        # radii are tried larger still (_FAR_WIDER); `lacking`: some found none
+        # radii are tried larger still (_FAR_WIDER), and every arc keeps off
+        # the blocks and the pins (an outline or a circle counts 10: a large
+        # arc is not drawn over a slider); `lacking`: some found no room
         self.far = far
         self.lacking = False
         self._seen = 0
@@ -282,6 +284,7 @@ class _ArcPlacer:
             kind = "arc" if arc else ("main" if c.args.get("line") == "main" else "thin")
             # lettering, and a label's leader (it names something), are kept clear
             kind = "label" if c.name == "text" or c.naming is not None else kind
+            kind = "symbol" if self.far and c.name in ("polygon", "circle") else kind
             self._add(drawn_shapes(c, self.sk), kind)
         self._seen = len(calls)
         if not self._shapes:
@@ -468,6 +471,8 @@ class _ArcPlacer:
             i, j = self._near_all(shapely.linestrings(xy), 0.6)
             if i.size:
                 score += np.bincount(i, weights=self._w[j], minlength=m)
+                if wider in _FAR_WIDER:  # an arc that large never over a name written
+                    score[i[self._w[j] >= self._WEIGHT["label"]]] = np.inf
             fine = np.radians(
                 (st + inset)[:, None] + np.linspace(0.0, sweep, int(sweep * radius / 25.0) + 2)
             )
