@@ -900,11 +900,14 @@ def _position_numbers(labels: Labels, solution: Solution, mu_l: float) -> None:
 def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language) -> Sketch:
     """The mechanism in all its positions, lettered; where some link's ω/ε
     names found no room near their arcs and some name stands far or on
-    something, lettered once more with such a link's arcs tried larger still
+    something (a mechanism of _SHORT_LINKS links at most), lettered once
+    more with such a link's arcs tried larger still
     (_FAR_WIDER), the better of the two kept (fewer names on something, then
     fewer far; the first on a tie: a drawing not crowded is drawn as before)."""
     sk, counts, lacking = _lettered_mechanism(solution, mu_l, look, lang, far=False)
-    if lacking and (counts.unsettled or counts.far):
+    # (a long chain keeps the one lettering: see _SHORT_LINKS)
+    short = len(solution.mechanism.links) <= _SHORT_LINKS
+    if short and lacking and (counts.unsettled or counts.far):
         again, counts_again, _ = _lettered_mechanism(solution, mu_l, look, lang, far=True)
         if (counts_again.unsettled, counts_again.far) < (counts.unsettled, counts.far):
             return again
