@@ -30,6 +30,7 @@ from ..drawing.labels import (
     FINE_LEADER_GROUP,
     FINE_LEADER_RINGS,
     NEAR_MM,
+    LabelCounts,
     Labels,
     arc_line,
     drawn_shapes,
@@ -159,6 +160,11 @@ _WIDER = (3.0, 6.0)
 # further along the link too (_ALONG_SHORT), at the usual radii and larger
 _SHORT_SPAN = 120.0
 _SHORT_WIDER = (0.0, 3.0)
+# and where none of those leaves it room either (a link among the wide bundle
+# of the positions' lines round a crowded crank), in a second lettering of
+# the drawing, kept where it letters it better (sketch_mechanism): the usual
+# arcs larger still, their arrowheads out of that bundle
+_FAR_WIDER = (9.0, 12.0)
 # a mechanism of more links than this (a long chain, every drawing of it
 # crowded) keeps the usual arcs and letter heights: the shorter arcs and the
 # smaller figures are not tried (their cost, a pass more for each link and
@@ -243,13 +249,19 @@ class _ArcPlacer:
     of it, crossing as little of what is drawn as it can (a main line of a link
     or block counts 1, a thin line of another position or a trajectory 0.2, an
     arc or the room kept for a label 3, a label or its leader written 50: an
-    arc over it puts a label on a line), with a free box for each label next
-    to its arrowhead."""
+    arc over it puts a label on a line; made `far`, a block's outline or a pin
+    10), with a free box for each label next to its arrowhead."""
 
-    _WEIGHT = {"main": 1.0, "thin": 0.2, "arc": 3.0, "label": 50.0}
+    _WEIGHT = {"main": 1.0, "thin": 0.2, "arc": 3.0, "label": 50.0, "symbol": 10.0}
 
-    def __init__(self, sk: Sketch) -> None:
+    def __init__(self, sk: Sketch, far: bool = False) -> None:
         self.sk = sk
+        # with `far`, the arcs of a link whose names find no room at the usual
+        # radii are tried larger still (_FAR_WIDER), and every arc keeps off
+        # the blocks and the pins (an outline or a circle counts 10: a large
+        # arc is not drawn over a slider); `lacking`: some found no room
+        self.far = far
+        self.lacking = False
         self._seen = 0
         self._shapes: list[Any] = []
         self._weights: list[float] = []
@@ -272,6 +284,7 @@ class _ArcPlacer:
             kind = "arc" if arc else ("main" if c.args.get("line") == "main" else "thin")
             # lettering, and a label's leader (it names something), are kept clear
             kind = "label" if c.name == "text" or c.naming is not None else kind
+            kind = "symbol" if self.far and c.name in ("polygon", "circle") else kind
             self._add(drawn_shapes(c, self.sk), kind)
         self._seen = len(calls)
         if not self._shapes:
@@ -379,7 +392,7 @@ class _ArcPlacer:
         no room near its arrowhead there, at radii _WIDER mm larger in turn
         (an arrowhead out of a bundle of lines), then (with `short`) the arcs
         shorter (_SHORT_SPAN, tried further along the link, at the usual radii
-        and 3 mm larger): the arcs
+        and 3 mm larger), then (a placer made `far`) _FAR_WIDER mm larger: the arcs
         whose labels find room, crossing least. The centre, start angle, the
         labels' places, how much larger the radii are, mm, and the span, deg."""
         best: tuple[float, np.ndarray, float, list[np.ndarray | None], float, float] | None = None
@@ -387,6 +400,7 @@ class _ArcPlacer:
         if labels is not None:
             tries += [(_SPAN, _ALONG_LINK, w) for w in _WIDER]
             tries += [(_SHORT_SPAN, _ALONG_SHORT, w) for w in _SHORT_WIDER if short]
+            tries += [(_SPAN, _ALONG_LINK, w) for w in _FAR_WIDER if self.far]
         for span, along, wider in tries:
             wide = [(radius + wider, sense) for radius, sense in spins]
             centre, start, picked, cost = self._beside(
@@ -398,6 +412,7 @@ class _ArcPlacer:
                 break
         assert best is not None
         _, centre, start, picked, wider, span = best
+        self.lacking |= any(p is None for p in picked)
         self.reserve([_room_box(*p) for p in picked if p is not None])
         return centre, start, picked, wider, span
 
@@ -456,6 +471,8 @@ class _ArcPlacer:
             i, j = self._near_all(shapely.linestrings(xy), 0.6)
             if i.size:
                 score += np.bincount(i, weights=self._w[j], minlength=m)
+                if wider in _FAR_WIDER:  # an arc that large never over a name written
+                    score[i[self._w[j] >= self._WEIGHT["label"]]] = np.inf
             fine = np.radians(
                 (st + inset)[:, None] + np.linspace(0.0, sweep, int(sweep * radius / 25.0) + 2)
             )
@@ -881,6 +898,28 @@ def _position_numbers(labels: Labels, solution: Solution, mu_l: float) -> None:
 
 
 def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language) -> Sketch:
+    """The mechanism in all its positions, lettered; where some link's ω/ε
+    names found no room near their arcs and some name stands far or on
+    something (a mechanism of _SHORT_LINKS links at most), lettered once
+    more with such a link's arcs tried larger still
+    (_FAR_WIDER), the better of the two kept (fewer names on something, then
+    fewer far; the first on a tie: a drawing not crowded is drawn as before)."""
+    sk, counts, lacking = _lettered_mechanism(solution, mu_l, look, lang, far=False)
+    # (a long chain keeps the one lettering: see _SHORT_LINKS)
+    short = len(solution.mechanism.links) <= _SHORT_LINKS
+    if short and lacking and (counts.unsettled or counts.far):
+        again, counts_again, _ = _lettered_mechanism(solution, mu_l, look, lang, far=True)
+        if (counts_again.unsettled, counts_again.far) < (counts.unsettled, counts.far):
+            return again
+    return sk
+
+
+def _lettered_mechanism(
+    solution: Solution, mu_l: float, look: Any, lang: Language, far: bool
+) -> tuple[Sketch, LabelCounts, bool]:
+    """The mechanism lettered, its links' ω/ε arcs tried `far` (_ArcPlacer):
+    the drawing, how well its labels found room, and whether some link's
+    ω/ε names found none near their arcs."""
     mech = solution.mechanism
     pts = solution.sweep.points
     owners = {p: (0 if 0 in o else o[0], o) for p, o in mech.point_owners.items()}
@@ -931,7 +970,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         # ω and ε of every rotating link at the planned positions (seed 003
         # §1.6), each beside its own link on the side freest of the others and
         # of the joints' names; all drawn before their labels are written.
-        arcs = _ArcPlacer(sk)
+        arcs = _ArcPlacer(sk, far)
         # the frame's pivots: no arc over a hatched base
         arcs.reserve(
             [
@@ -1008,7 +1047,7 @@ def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language)
         labels.write_later(retry=len(mech.links) <= _SHORT_LINKS)
         _position_numbers(labels, solution, mu_l)
         _mechanism_captions(sk, mu_l, lang)
-    return sk
+    return sk, labels.counts(), arcs.lacking
 
 
 def sketch_formula(solution: Solution, look: Any, lang: Language) -> Sketch:
