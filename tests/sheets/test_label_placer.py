@@ -232,7 +232,6 @@ def test_a_name_walled_in_is_written_in_the_smaller_figures_near_it():
     assert _findings(sk, ["label-near", "label-clear", "letter-height"]) == []
 
 
-
 def _walled_and_free() -> Sketch:
     """The corridor of `_walled_in`, no label written, and 40 mm to its right
     a pin in the open (the same point drawn at another position)."""
@@ -276,9 +275,7 @@ def _block(angle: float) -> list[tuple[float, float]]:
 
 @pytest.mark.parametrize("angle", [0.0, 0.3, 1.2])
 @pytest.mark.parametrize("reverse", [False, True])
-def test_regression_gen104_every_leader_ends_at_its_point_under_two_crossed_blocks(
-    angle, reverse
-):
+def test_regression_gen104_every_leader_ends_at_its_point_under_two_crossed_blocks(angle, reverse):
     """gen 104 sheet 2, 'S5': a mass centre under two blocks as large crossed
     over it, ringed by thin lines so that its name is led out. The leader
     starts on the edge of the block the linter measures to, wherever the
