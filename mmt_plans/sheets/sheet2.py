@@ -1251,10 +1251,11 @@ def lever_details(fa: ForceAnalysis, mu_V: float, crowded: np.ndarray) -> tuple[
                     continue  # discs apart: a name is the lever's or one detail's
                 covered = int((covers(c, r) & left).sum())
                 held = int((holds(c, r) & left).sum())
-                # a disc past the first letters a name of the crowd whole at
-                # least (gen 30: one round the middle of an arm from p drew
-                # nothing of it, the arm being p's detail's and the lever's)
-                if covered and (held or not out) and (most is None or (covered, r) > most[0]):
+                # a disc past the first holds an image at least, or its view
+                # names nothing (gen 30: one round the middle of an arm from p,
+                # p in the first: an arm is drawn in a view that holds it whole)
+                empty = bool(out) and not (np.hypot(*(spots - c).T) <= r).any()
+                if covered and not empty and (most is None or (covered, r) > most[0]):
                     most = ((covered, r), c, None)
                 if not held:
                     continue

@@ -290,9 +290,9 @@ def test_regression_task06_v5_images_0_13_mm_apart_in_two_cells_are_one_name(lan
 def test_a_second_detail_letters_a_name_of_the_crowd(tight):
     """Gen 30, its images 0.3-0.5 mm apart joined into one name where nearer
     than 0.5 mm: the plain lever's crowd then holds an arm's name (h5, from p
-    23 mm long) besides p's crowd. A second disc round that arm's middle would
-    draw nothing of it (the arm is p's detail's at one end and the lever's at
-    the other): none is taken, and every detail view names what it holds."""
+    23 mm long) besides p's crowd. A second disc round that arm's middle and
+    no image would draw nothing of it (an arm is drawn in a view that holds
+    it whole, from p): none is taken, and every detail view names something."""
     _, _, details, _, _, views = tight
     for detail, view in zip(details, views):
         named = [c for c in view.calls if isinstance(c, Text) and c.naming is not None]
