@@ -1803,9 +1803,13 @@ def enclosing(point: PointLike, outlines: Iterable[BaseGeometry]) -> BaseGeometr
     that holds `point` (a slider's block round its pin or mass centre), or
     None: a point drawn there is named beside the outline. Of two blocks as
     large (a link's two sliders over its mass centre), the one whose middle
-    is nearest the point: the placer and the sheet linter, which see the
-    outlines in different orders, take the same one."""
-    p = Point(float(point[0]), float(point[1]))
+    is nearest the point, and of two as near (two blocks crossed over it, gen
+    104's S5) the one whose corners come first, taken from the point: the
+    placer and the sheet linter, which see the outlines in different orders
+    and moved by the sheet's layout, take the same one (a leader started on
+    the other block's edge does not reach the block the linter sees)."""
+    x, y = float(point[0]), float(point[1])
+    p = Point(x, y)
     held = [
         g
         for g in outlines
@@ -1813,7 +1817,15 @@ def enclosing(point: PointLike, outlines: Iterable[BaseGeometry]) -> BaseGeometr
         and max(g.bounds[2] - g.bounds[0], g.bounds[3] - g.bounds[1]) <= BLOCK_MM
         and g.contains(p)
     ]
-    return min(held, key=lambda g: (round(g.area, 6), g.centroid.distance(p))) if held else None
+
+    def order(g: BaseGeometry) -> tuple[Any, ...]:
+        # every measure taken from the point and rounded: the same wherever the drawing stands
+        corners = sorted(
+            (round(cx - x, 6), round(cy - y, 6)) for cx, cy in shapely.get_coordinates(g)[:-1]
+        )
+        return (round(g.area, 6), round(g.centroid.distance(p), 6), corners)
+
+    return min(held, key=order) if held else None
 
 
 def _gap(

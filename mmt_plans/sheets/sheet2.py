@@ -1093,6 +1093,7 @@ _LEVER_RADII = (1.5, 2.0, 3.0, 5.0, 8.0, 12.0, 16.0, 20.0, 25.0)
 # the least distance (mm, in a detail's view) of two spots where images are
 # named: room for their names and the arrows of the forces at them
 _SPOT_MM = 10.0
+_MERGED_MM = 0.5  # images nearer (mm of the view) are written as one name
 # a disc lettered at its ratio is taken if it holds this share of the crowded
 # names the disc holding the most holds (gen 30: 6 of 7 round p at 40:1; gen 15's
 # crowd strung along 15 mm of p's line, 8 of 23, goes in one wide disc)
@@ -1160,6 +1161,14 @@ def crowded_ends(sketch: Sketch, lang: Language) -> np.ndarray:
         end = n.end if n.kind == "segment" and n.end is not None else n.anchor
         out.append((n.anchor[0], n.anchor[1], end[0], end[1]))
     return np.array(out, dtype=float).reshape(-1, 4)
+
+
+def _one_spot(a: np.ndarray, b: np.ndarray) -> bool:
+    """Whether the lever writes the images at `a` and `b` (mm of the view
+    drawn) as one name though they fall in two of its 0.5 mm cells: nearer
+    than _MERGED_MM (task06_v5's s4 and k4, 0.13 mm apart, were two names
+    crowding each other)."""
+    return float(np.hypot(*(a - b))) < _MERGED_MM
 
 
 def _spots(fa: ForceAnalysis, mu_V: float) -> np.ndarray:
@@ -1267,9 +1276,13 @@ def lever_details(
                 ):
                     continue  # discs apart: a name is the lever's or one detail's
                 covered = int((covers(c, r) & left).sum())
-                if covered and (most is None or (covered, r) > most[0]):
-                    most = ((covered, r), c, None)
                 held = int((holds(c, r) & left).sum())
+                # a disc past the first holds an image at least, or its view
+                # names nothing (gen 30: one round the middle of an arm from p,
+                # p in the first: an arm is drawn in a view that holds it whole)
+                empty = bool(out) and not (np.hypot(*(spots - c).T) <= r).any()
+                if covered and not empty and (most is None or (covered, r) > most[0]):
+                    most = ((covered, r), c, None)
                 if not held:
                     continue
                 ratio = _detail_ratio(where - c, areas, spots - c, r)
@@ -1410,6 +1423,9 @@ def _lever_view(
             if not here(at):
                 return
             key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
+            if key not in marks:  # nearer one in the next cell: one name all the same
+                near = (k for k, (spot, _) in marks.items() if _one_spot(spot, at))
+                key = next(near, key)
             marks.setdefault(key, (at, []))[1].append(markup)
 
         mark("p", np.zeros(2))  # the pole: no image is written p (image_markup)

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 from shapely.geometry import LineString, Point, box
 
 from mmt_plans.drawing.labels import NEAR_MM, Labels
@@ -231,7 +232,6 @@ def test_a_name_walled_in_is_written_in_the_smaller_figures_near_it():
     assert _findings(sk, ["label-near", "label-clear", "letter-height"]) == []
 
 
-
 def _walled_and_free() -> Sketch:
     """The corridor of `_walled_in`, no label written, and 40 mm to its right
     a pin in the open (the same point drawn at another position)."""
@@ -265,3 +265,32 @@ def test_a_name_far_at_every_place_is_written_as_place_writes_it_at_the_first():
     (expected,) = [c for c in alone.sketch.calls if isinstance(c, Text)]
     assert text.bbox() == expected.bbox()
     assert labels.boxes == alone.boxes
+
+
+def _block(angle: float) -> list[tuple[float, float]]:
+    u = np.array([math.cos(angle), math.sin(angle)])
+    n = np.array([-u[1], u[0]])
+    return [tuple(a * 6.0 * u + b * 3.5 * n) for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+
+
+@pytest.mark.parametrize("angle", [0.0, 0.3, 1.2])
+@pytest.mark.parametrize("reverse", [False, True])
+def test_regression_gen104_every_leader_ends_at_its_point_under_two_crossed_blocks(angle, reverse):
+    """gen 104 sheet 2, 'S5': a mass centre under two blocks as large crossed
+    over it, ringed by thin lines so that its name is led out. The leader
+    starts on the edge of the block the linter measures to, wherever the
+    sheet's layout moves the drawing (the placer and the linter chose
+    between the two blocks by a float difference of 1e-13 mm; a leader from
+    the other block's edge ended 2.4 mm off the one the linter sees)."""
+    sk = _sketch()
+    for r in np.arange(8.0, 20.0, 1.5):
+        sk.circle((0.0, 0.0), float(r), "thin")
+    blocks = [_block(angle), _block(angle + math.pi / 2)]
+    for b in reversed(blocks) if reverse else blocks:
+        sk.polygon(b, "main", "white")
+    Labels(sk, 3.5).place((0.0, 0.0), "S_{5}", towards=(0.0, 1.0))
+    assert len(_leaders(sk)) == 1
+    for dx, dy in ((0.0, 0.0), (781.6022233122015, 474.8737977742024), (0.1, 1e-7), (333.3, 77.7)):
+        moved = _sketch()
+        moved.calls.extend(c.shifted(dx, dy) for c in sk.calls)
+        assert _findings(moved, ["label-near", "label-clear"]) == []

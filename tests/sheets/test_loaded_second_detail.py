@@ -14,7 +14,6 @@ import pytest
 from mmt_plans.drawing.detail import Name, choose_details, name_area
 from mmt_plans.generate import generate_one
 from mmt_plans.render.recording import RecordingBackend
-from mmt_plans.sheets import sheet2
 from mmt_plans.sheets.lint import SheetView, lint
 from mmt_plans.sheets.sheet2 import compose_sheet2
 from mmt_plans.solution import solve
@@ -80,14 +79,14 @@ def _mechanism_findings(seed: int, lang: str):
     return sheet, found
 
 
-# gen 5 (RRR-PRP-RPP-RRR-RPR, 1:20): the loaded mechanism's names crowd round
-# its crank (six of them, uk) as well as round U, which the first detail takes
+# gen 5 (RRR-PRP-RPP-RRR-RPR, 1:20): the loaded mechanism's names crowded round
+# its crank (six of them, uk) as well as round U, and took a second detail (S3
+# still stood 14.9 mm off). Since the placer and the linter take the same of two
+# crossed blocks (labels.enclosing, gen 104's 'S5'), the names the composer
+# weighs no longer crowd round the crank: one detail letters the mechanism with
+# one name far at most (the second detail's own rule: the tests above).
 @pytest.mark.parametrize("lang", ["uk"])
-def test_gen_5s_loaded_mechanism_takes_two_details_and_fewer_names_stand_far(lang, monkeypatch):
+def test_gen_5s_loaded_mechanism_is_lettered_with_one_name_far_at_most(lang):
     sheet, found = _mechanism_findings(5, lang)
-    assert len(sheet.mechanism_details) == 2
-    assert "force-mechanism-detail-2" in sheet.placed
-    monkeypatch.setattr(sheet2, "_LOADED_DETAILS", 1)
-    one_sheet, one = _mechanism_findings(5, lang)
-    assert len(one_sheet.mechanism_details) == 1
-    assert len(found) < len(one)
+    assert len(sheet.mechanism_details) >= 1
+    assert len(found) <= 1, found
