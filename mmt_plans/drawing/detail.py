@@ -32,6 +32,7 @@ __all__ = [
     "choose_details",
     "clipped",
     "cut_to_disc",
+    "heads_outside",
     "name_area",
     "roomy_ratio",
     "spread",
@@ -252,4 +253,28 @@ def cut_to_disc(calls: Sequence[Call], centre: np.ndarray, radius: float) -> lis
                 kept.append(c)
         else:
             kept.append(c)
+    return kept
+
+
+def heads_outside(calls: Sequence[Call], discs: Sequence[tuple[np.ndarray, float]]) -> list[Call]:
+    """A drawing's `calls` with its details' `discs` marked: an arrow whose
+    head lies in a disc is drawn (a plain line of its kind) only up to the
+    disc's edge, its head and name being its detail view's; one wholly in the
+    disc only there. The rest kept."""
+    kept: list[Call] = []
+    for c in calls:
+        disc = (
+            next((d for d in discs if math.dist(c.end, d[0]) <= d[1]), None)
+            if isinstance(c, Arrow)
+            else None
+        )
+        if not isinstance(c, Arrow) or disc is None:
+            kept.append(c)
+            continue
+        start = np.asarray(c.start, float)
+        part = clipped(start, np.asarray(c.end, float), *disc)
+        if part is None or float(np.hypot(*(part[0] - start))) < 1e-9:
+            continue
+        edge = (float(part[0][0]), float(part[0][1]))
+        kept.append(Line("line", {"start": c.start, "end": edge, "line": c.line}, c.groups))
     return kept

@@ -25,7 +25,16 @@ from ..diagrams import (
     KinematicDiagrams,
     graphical_differentiation,
 )
-from ..drawing.detail import DETAIL_LETTERS, Detail, Name, choose_details, cut_to_disc, name_area
+from ..drawing.detail import (
+    DETAIL_LETTERS,
+    Detail,
+    Name,
+    choose_details,
+    clipped,
+    cut_to_disc,
+    heads_outside,
+    name_area,
+)
 from ..drawing.labels import (
     FINE_LEADER_DIRS,
     FINE_LEADER_GROUP,
@@ -1162,8 +1171,12 @@ def _plan_view(
     """The plan with `details` marked (`detail` None), or the detail view
     `detail`: its disc at μ / ratio, its lines cut at the disc's edge, every
     name there, titled "A (4:1)"."""
+    gid = f"{kind}-plan-{index}"
     if detail is not None:
+        k = list(details).index(detail)
+        gid += "-detail" + (f"-{k + 1}" if k else "")
         mu = mu / detail.ratio
+        details = [detail]  # its own disc
     discs = [(np.asarray(d.centre, float) / mu, d.radius / mu) for d in details]
 
     def here(at: np.ndarray) -> bool:
@@ -1186,10 +1199,6 @@ def _plan_view(
             images[g.point] = (np.asarray(last.start, float) + np.asarray(last.vector, float)) / mu
             solved.append(g.point)
     sk = Sketch(look)
-    gid = f"{kind}-plan-{index}"
-    if detail is not None:
-        k = list(details).index(detail)
-        gid += "-detail" + (f"-{k + 1}" if k else "")
     pole = "p" if kind == "velocity" else "π"
     moving = _moving_points(solution)
     # the components' labels are written last, at _SMALL
@@ -1227,8 +1236,11 @@ def _plan_view(
                 # relative one), each naming its arrow
                 if kind == "acceleration" and c.kind in tags:
                     name = f"a^{{{tags[c.kind]}}}_{{{c.label.split('_', 1)[-1]}}}"
-                    if here((s + e) / 2.0):
-                        components.append((s, e, name, c.kind in ("normal", "coriolis")))
+                    # named where its head is drawn: by a detail whose disc holds it
+                    if here(e):
+                        inside = clipped(s, e, *discs[0]) if detail is not None else None
+                        start = inside[0] if inside is not None else s
+                        components.append((start, e, name, c.kind in ("normal", "coriolis")))
         # The image of each link: its joints' images joined by thin lines (the
         # relative vectors ab, de, and the similarity triangles of three-point links).
         owners = solution.mechanism.point_owners
@@ -1259,7 +1271,9 @@ def _plan_view(
             labels.setdefault(key, []).append(name)
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         if detail is not None:
-            sk.calls[begun:] = cut_to_disc(sk.calls[begun:], *discs[list(details).index(detail)])
+            sk.calls[begun:] = cut_to_disc(sk.calls[begun:], *discs[0])
+        else:
+            sk.calls[begun:] = heads_outside(sk.calls[begun:], discs)
         for middle, r in discs if detail is None else ():
             sk.circle(middle, r, "thin")
         placer.avoid_drawn(sk.calls)
