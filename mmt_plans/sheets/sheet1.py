@@ -1104,6 +1104,7 @@ _PLAN_CROWD = 3  # a plan's names found far or on something: this many make a cr
 _PLAN_DETAILS = 2  # the most detail views of one plan
 _PLAN_DETAIL_MM = 30.0  # the largest radius of a plan detail's disc, mm
 _PLAN_APART_MM = 7.0  # a plan's detail sets its images this far apart
+_PLAN_RADII = (3.0, 4.0, 6.0, 8.0, 12.0)  # the radii of its discs tried, mm (a knot round the pole)
 _PLAN_CORE = 0.7  # a plan detail's disc: the smallest that holds this share of the most any holds
 
 
@@ -1153,6 +1154,7 @@ def plan_details(
         spacing=_PLAN_APART_MM,
         widest=_PLAN_DETAIL_MM,
         tightest=_PLAN_CORE,
+        radii=_PLAN_RADII,
         fewest=_PLAN_CROWD,
     )
 
@@ -1272,6 +1274,7 @@ def _plan_view(
         sk.circle((0.0, 0.0), 0.8, "main", "black")
         if detail is not None:
             sk.calls[begun:] = cut_to_disc(sk.calls[begun:], *discs[0])
+            sk.circle(discs[0][0], discs[0][1], "thin")  # the view's edge
         else:
             sk.calls[begun:] = heads_outside(sk.calls[begun:], discs)
         for middle, r in discs if detail is None else ():
