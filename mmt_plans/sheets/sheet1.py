@@ -1076,6 +1076,7 @@ def sketch_plan_details(
     lang: Language,
     note: str = "",
     letters: str = DETAIL_LETTERS,
+    plain: Sketch | None = None,
 ) -> tuple[Sketch, list[Sketch], str] | None:
     """The plan (`sketch_plan`) whose names crowd, with its crowd marked by a
     circle and a letter, its detail views (a sketch each): the crowd drawn
@@ -1083,8 +1084,10 @@ def sketch_plan_details(
     (`plan_details`, by the first of `letters` that name no point), and the
     letters it took.
     None where fewer than _PLAN_CROWD of its names find no place near what
-    they name (`crowded_names`), or where the detail views letter them no better."""
-    plain, _ = _plan_view(solution, index, mu, kind, look, lang, note)
+    they name (`crowded_names`), or where the detail views letter them no better.
+    `plain`: the plan as `sketch_plan` drew it, where it was."""
+    if plain is None:
+        plain, _ = _plan_view(solution, index, mu, kind, look, lang, note)
     crowd = crowded_names(plain, lang)
     if len(crowd) < _PLAN_CROWD:
         return None
@@ -1884,7 +1887,9 @@ def _sketch_all(
             memo(
                 f"{kind}-plan-{i}-details {letters}",
                 mu,
-                lambda: sketch_plan_details(solution, i, mu, kind, look, lang, note, letters),
+                lambda: sketch_plan_details(
+                    solution, i, mu, kind, look, lang, note, letters, sketches[f"{kind}-plan-{i}"]
+                ),
             )
             if details and letters
             else None
