@@ -15,7 +15,7 @@ from mmt_plans.generate import generate_one
 from mmt_plans.render.look import load_look
 from mmt_plans.render.recording import BeginGroup, RecordingBackend, Text
 from mmt_plans.sheets.crowd import crowded_names
-from mmt_plans.sheets.lint import SheetView, label_clear, label_near
+from mmt_plans.sheets.lint import SheetView, arrows_named, label_clear, label_near
 from mmt_plans.sheets.sheet1 import (
     _plan_scales,
     compose_sheet1,
@@ -74,6 +74,9 @@ def test_the_crowds_names_stand_near_in_the_detail_view():
         # the names found far from what they name: fewer on the plan, none in its detail
         assert len(_near_findings(main, lang)) < len(_near_findings(plain, lang))
         assert _near_findings(view, lang) == []
+        # a vector whose head is in the disc is the detail's, head and name: on the
+        # plan none is left with no name near it
+        assert list(arrows_named(SheetView(list(main.calls), 841.0, 594.0, lang))) == []
         named = [c for c in view.calls if isinstance(c, Text) and c.naming is not None]
         assert len(named) >= 8  # the crowd lettered there
         # titled by its letter and its scale, as sheet 2's details are
