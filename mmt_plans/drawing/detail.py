@@ -20,7 +20,9 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
 
+from ..render.recording import Arc, Arrow, Call, Circle, Line, Polygon, Polyline
 from .labels import NEAR_MM
 
 __all__ = [
@@ -29,6 +31,8 @@ __all__ = [
     "Name",
     "choose_details",
     "clipped",
+    "cut_to_disc",
+    "heads_outside",
     "name_area",
     "roomy_ratio",
     "spread",
@@ -210,3 +214,67 @@ def clipped(
     if t1 - t0 < 1e-9:
         return None
     return a + t0 * d, a + t1 * d
+
+
+def cut_to_disc(calls: Sequence[Call], centre: np.ndarray, radius: float) -> list[Call]:
+    """A detail view's `calls` cut at its disc's edge: lines and outlines
+    clipped; an arrow clipped, its head kept where its end lies in the disc (a
+    plain line of its kind where it does not); circles and arcs kept where
+    their centre is in it; the rest (lettering) kept."""
+    disc = shapely.Point(*map(float, centre)).buffer(radius, 64)
+    kept: list[Call] = []
+    for c in calls:
+        if isinstance(c, (Line, Arrow)):
+            part = clipped(np.asarray(c.start, float), np.asarray(c.end, float), centre, radius)
+            if part is None:
+                continue
+            start, end = (
+                (float(part[0][0]), float(part[0][1])),
+                (float(part[1][0]), float(part[1][1])),
+            )
+            if isinstance(c, Arrow) and math.dist(end, c.end) > 1e-9:
+                kept.append(Line("line", {"start": start, "end": end, "line": c.line}, c.groups))
+            else:
+                kept.append(c.with_changes(start=start, end=end))
+        elif isinstance(c, Polyline):
+            shape = shapely.Polygon(c.vertices) if isinstance(c, Polygon) else None
+            cut = (shape if shape is not None else shapely.LineString(c.vertices)).intersection(
+                disc
+            )
+            for g in getattr(cut, "geoms", [cut]):
+                if g.is_empty:
+                    continue
+                if g.geom_type == "Polygon":
+                    kept.append(c.with_changes(vertices=tuple(g.exterior.coords[:-1])))
+                elif g.geom_type == "LineString":
+                    kept.append(c.with_changes(vertices=tuple(g.coords)))
+        elif isinstance(c, (Circle, Arc)):
+            if math.dist(c.center, centre) <= radius:
+                kept.append(c)
+        else:
+            kept.append(c)
+    return kept
+
+
+def heads_outside(calls: Sequence[Call], discs: Sequence[tuple[np.ndarray, float]]) -> list[Call]:
+    """A drawing's `calls` with its details' `discs` marked: an arrow whose
+    head lies in a disc is drawn (a plain line of its kind) only up to the
+    disc's edge, its head and name being its detail view's; one wholly in the
+    disc only there. The rest kept."""
+    kept: list[Call] = []
+    for c in calls:
+        disc = (
+            next((d for d in discs if math.dist(c.end, d[0]) <= d[1]), None)
+            if isinstance(c, Arrow)
+            else None
+        )
+        if not isinstance(c, Arrow) or disc is None:
+            kept.append(c)
+            continue
+        start = np.asarray(c.start, float)
+        part = clipped(start, np.asarray(c.end, float), *disc)
+        if part is None or float(np.hypot(*(part[0] - start))) < 1e-9:
+            continue
+        edge = (float(part[0][0]), float(part[0][1]))
+        kept.append(Line("line", {"start": c.start, "end": edge, "line": c.line}, c.groups))
+    return kept

@@ -25,6 +25,16 @@ from ..diagrams import (
     KinematicDiagrams,
     graphical_differentiation,
 )
+from ..drawing.detail import (
+    DETAIL_LETTERS,
+    Detail,
+    Name,
+    choose_details,
+    clipped,
+    cut_to_disc,
+    heads_outside,
+    name_area,
+)
 from ..drawing.labels import (
     FINE_LEADER_DIRS,
     FINE_LEADER_GROUP,
@@ -59,6 +69,7 @@ from ..scales import (
 from ..solution import Solution
 from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, title_fields
 from .common import next_scale as _next_scale
+from .crowd import crowded_names
 from .scales_record import Sheet1Scales
 
 __all__ = ["Sheet1", "compose_sheet1", "GROUPS"]
@@ -1092,6 +1103,132 @@ def sketch_plan(
     The pole is at the local origin; returns the sketch and the images in mm;
     `note` (a plan drawn below the guide's size: why) goes under its scale.
     """
+    return _plan_view(solution, index, mu, kind, look, lang, note)
+
+
+def sketch_plan_details(
+    solution: Solution,
+    index: int,
+    mu: float,
+    kind: str,
+    look: Any,
+    lang: Language,
+    note: str = "",
+    letters: str = DETAIL_LETTERS,
+    plain: Sketch | None = None,
+) -> tuple[Sketch, list[Sketch], str] | None:
+    """The plan (`sketch_plan`) whose names crowd, with its crowd marked by a
+    circle and a letter, its detail views (a sketch each): the crowd drawn
+    again at a larger scale of the standard series, lettered there
+    (`plan_details`, by the first of `letters` that name no point), and the
+    letters it took.
+    None where fewer than _PLAN_CROWD of its names find no place near what
+    they name (`crowded_names`), or where the detail views letter them no better.
+    `plain`: the plan as `sketch_plan` drew it, where it was."""
+    if plain is None:
+        plain, _ = _plan_view(solution, index, mu, kind, look, lang, note)
+    crowd = crowded_names(plain, lang)
+    if len(crowd) < _PLAN_CROWD:
+        return None
+    details = plan_details(solution, index, mu, kind, crowd, letters)
+    if not details:
+        return None
+    sk, _ = _plan_view(solution, index, mu, kind, look, lang, note, details)
+    views = [
+        _plan_view(solution, index, mu, kind, look, lang, note, details, d)[0] for d in details
+    ]
+    if sum(len(crowded_names(s, lang)) for s in (sk, *views)) >= len(crowd):
+        return None  # the details letter the crowd no better
+    return sk, views, "".join(d.letter for d in details)
+
+
+_PLAN_CROWD = 3  # a plan's names found far or on something: this many make a crowd
+_PLAN_DETAILS = 2  # the most detail views of one plan
+_PLAN_DETAIL_MM = 30.0  # the largest radius of a plan detail's disc, mm
+_PLAN_APART_MM = 7.0  # a plan's detail sets its images this far apart
+_PLAN_RADII = (3.0, 4.0, 6.0, 8.0, 12.0)  # the radii of its discs tried, mm (a knot round the pole)
+_PLAN_CORE = 0.7  # a plan detail's disc: the smallest that holds this share of the most any holds
+
+
+def _plan_names(
+    solution: Solution, index: int, mu: float, kind: str
+) -> tuple[list[Name], np.ndarray]:
+    """The names a plan at `mu` writes (`Name`: its images' and its
+    components', where each stands, mm) and its images (mm)."""
+    view = solution.plan(index)
+    images_si = view.velocity_images if kind == "velocity" else view.acceleration_images
+    owners = tuple(solution.mechanism.point_owners)
+    spots: dict[tuple[int, int], tuple[np.ndarray, list[str]]] = {}
+    for n, v in images_si.items():
+        at = np.asarray(v, float) / mu
+        key = (round(float(at[0]) * 2), round(float(at[1]) * 2))
+        spots.setdefault(key, (at, []))[1].append(image_markup(n, owners))
+    out = [Name(at, name_area(", ".join(names))) for at, names in spots.values()]
+    for g in view.groups:
+        for c in g.velocity if kind == "velocity" else g.acceleration:
+            s = np.asarray(c.start, float) / mu
+            e = s + np.asarray(c.vector, float) / mu
+            if kind == "acceleration" and float(np.hypot(*(e - s))) >= 0.5:
+                name = f"a^{{n}}_{{{c.label.split('_', 1)[-1]}}}"
+                out.append(Name((s + e) / 2.0, name_area(name)))
+    points = np.array([at for at, _ in spots.values()], dtype=float).reshape(-1, 2)
+    return out, points
+
+
+def plan_details(
+    solution: Solution, index: int, mu: float, kind: str, crowded: np.ndarray, letters: str
+) -> tuple[Detail, ...]:
+    """The detail views a plan at `mu` needs where the names standing for
+    `crowded` (mm, `crowded_names` of the plan drawn without details) found no
+    place near (`choose_details`): at most _PLAN_DETAILS discs apart round the
+    pole, an image or such a point, one past the first only for a crowd of its
+    own (_PLAN_CROWD), lettered by `letters` that name no point."""
+    names, points = _plan_names(solution, index, mu, kind)
+    used = {n[:1].upper() for n in solution.mechanism.point_owners}
+    return choose_details(
+        names,
+        crowded,
+        [np.zeros(2), *points],
+        mu,
+        [x for x in letters if x not in used],
+        _PLAN_DETAILS,
+        points=np.vstack([np.zeros((1, 2)), points]),
+        spacing=_PLAN_APART_MM,
+        widest=_PLAN_DETAIL_MM,
+        tightest=_PLAN_CORE,
+        radii=_PLAN_RADII,
+        fewest=_PLAN_CROWD,
+    )
+
+
+def _plan_view(
+    solution: Solution,
+    index: int,
+    mu: float,
+    kind: str,
+    look: Any,
+    lang: Language,
+    note: str = "",
+    details: Sequence[Detail] = (),
+    detail: Detail | None = None,
+) -> tuple[Sketch, dict[str, np.ndarray]]:
+    """The plan with `details` marked (`detail` None), or the detail view
+    `detail`: its disc at μ / ratio, its lines cut at the disc's edge, every
+    name there, titled "A (4:1)"."""
+    gid = f"{kind}-plan-{index}"
+    if detail is not None:
+        k = list(details).index(detail)
+        gid += "-detail" + (f"-{k + 1}" if k else "")
+        mu = mu / detail.ratio
+        details = [detail]  # its own disc
+    discs = [(np.asarray(d.centre, float) / mu, d.radius / mu) for d in details]
+
+    def here(at: np.ndarray) -> bool:
+        """Whether what stands at `at` is lettered in this view: in its disc
+        for a detail view, in no detail's disc otherwise."""
+        inside = any(float(np.hypot(*(np.asarray(at) - c))) <= r for c, r in discs)
+        return inside if detail is not None else not inside
+
     view = solution.plan(index)
     images_si = view.velocity_images if kind == "velocity" else view.acceleration_images
     images = {n: np.asarray(v, dtype=float) / mu for n, v in images_si.items()}
@@ -1106,7 +1243,6 @@ def sketch_plan(
             images[g.point] = (np.asarray(last.start, float) + np.asarray(last.vector, float)) / mu
             solved.append(g.point)
     sk = Sketch(look)
-    gid = f"{kind}-plan-{index}"
     pole = "p" if kind == "velocity" else "π"
     moving = _moving_points(solution)
     # the components' labels are written last, at _SMALL
@@ -1121,7 +1257,8 @@ def sketch_plan(
     )
     # the acceleration components to name: start, end, name, by the head
     components: list[tuple[np.ndarray, np.ndarray, str, bool]] = []
-    with sk.group(gid, "plan"):
+    with sk.group(gid, "plan" if detail is None else "plan-detail"):
+        begun = len(sk.calls)
         # Components of the vector equations, dashed.
         for g in view.groups:
             comps = g.velocity if kind == "velocity" else g.acceleration
@@ -1143,7 +1280,11 @@ def sketch_plan(
                 # relative one), each naming its arrow
                 if kind == "acceleration" and c.kind in tags:
                     name = f"a^{{{tags[c.kind]}}}_{{{c.label.split('_', 1)[-1]}}}"
-                    components.append((s, e, name, c.kind in ("normal", "coriolis")))
+                    # named where its head is drawn: by a detail whose disc holds it
+                    if here(e):
+                        inside = clipped(s, e, *discs[0]) if detail is not None else None
+                        start = inside[0] if inside is not None else s
+                        components.append((start, e, name, c.kind in ("normal", "coriolis")))
         # The image of each link: its joints' images joined by thin lines (the
         # relative vectors ab, de, and the similarity triangles of three-point links).
         owners = solution.mechanism.point_owners
@@ -1173,14 +1314,27 @@ def sketch_plan(
             key = (round(float(v[0]) * 2), round(float(v[1]) * 2))
             labels.setdefault(key, []).append(name)
         sk.circle((0.0, 0.0), 0.8, "main", "black")
+        if detail is not None:
+            sk.calls[begun:] = cut_to_disc(sk.calls[begun:], *discs[0])
+            sk.circle(discs[0][0], discs[0][1], "thin")  # the view's edge
+        else:
+            sk.calls[begun:] = heads_outside(sk.calls[begun:], discs)
+        for middle, r in discs if detail is None else ():
+            sk.circle(middle, r, "thin")
         placer.avoid_drawn(sk.calls)
-        placer.place((0.0, 0.0), pole, towards=(-1.0, -1.0))
+        if here(np.zeros(2)):
+            placer.place((0.0, 0.0), pole, towards=(-1.0, -1.0))
+        for d, (middle, r) in zip(details, discs) if detail is None else ():
+            rim = middle + r * np.array([math.sqrt(0.5), math.sqrt(0.5)])
+            placer.place(rim, d.letter, towards=rim - middle)
         # the images among most lines first (they have the fewest places near
         # them), then the components; where some find no place near: the
         # components shorter than _SHORT_COMPONENT (amid the pole's or an
         # image's arrowheads) among the images, crowded first, then the rest
         named: list[Any] = [
-            names for names in labels.values() if float(np.hypot(*images[names[0]])) >= 0.5
+            names
+            for names in labels.values()
+            if float(np.hypot(*images[names[0]])) >= 0.5 and here(images[names[0]])
         ]
         items = [*_crowded_first(placer, [images[n[0]] for n in named], named), *components]
         short = [
@@ -1224,6 +1378,11 @@ def sketch_plan(
             most=0 if chain else _REORDER_MOST,
         )
         ext = sk.extent()
+        if detail is not None:
+            ratio = catalogue(lang).plain_number(detail.ratio)
+            title = _words(lang)["plan_detail"].format(letter=detail.letter, ratio=ratio)
+            sk.text(((ext.left + ext.right) / 2, ext.top + 3.0), title, _TEXT, anchor="center")
+            return sk, images
         q: Quantity = "velocity" if kind == "velocity" else "acceleration"
         sk.rich_text(
             ((ext.left + ext.right) / 2, ext.bottom - 5.0),
@@ -1735,10 +1894,14 @@ def _sketch_all(
     mu_l: float,
     stacked: bool,
     cache: dict[tuple[str, float], Any],
+    details: bool = False,
 ) -> tuple[dict[str, Sketch], dict[str, float], KinematicDiagrams]:
     """Every drawing but the mechanism: the plans at `plan_mu` (_plan_scales), the diagrams
     as the Solution constructed them (its μ_S and poles, the ones the note and
-    the results JSON give); `cache` keeps what was drawn at a scale."""
+    the results JSON give); `cache` keeps what was drawn at a scale. With
+    `details`, a plan whose names crowd is drawn with its crowd marked, and
+    its detail views apart ("…-plan-3-detail", `sketch_plan_details`), each
+    plan's lettered by letters of its own."""
 
     def memo(name: str, mu: float, make: Callable[[], Any]) -> Any:
         if (name, mu) not in cache:
@@ -1749,15 +1912,32 @@ def _sketch_all(
     sketches["structural-formula"] = memo(
         "structural-formula", 0.0, lambda: sketch_formula(solution, look, lang)
     )
-    for i in solution.plan_positions:
-        for kind in ("velocity", "acceleration"):
-            mu = plan_mu[f"{kind} {i}"]
-            note = _reduced_note(solution, i, kind, mu, lang)
-            sketches[f"{kind}-plan-{i}"] = memo(
-                f"{kind}-plan-{i}",
+    used = {n[:1].upper() for n in solution.mechanism.point_owners}
+    letters = "".join(x for x in DETAIL_LETTERS if x not in used)
+    for i, kind in itertools.product(solution.plan_positions, ("velocity", "acceleration")):
+        mu = plan_mu[f"{kind} {i}"]
+        note = _reduced_note(solution, i, kind, mu, lang)
+        sketches[f"{kind}-plan-{i}"] = memo(
+            f"{kind}-plan-{i}",
+            mu,
+            lambda: sketch_plan(solution, i, mu, kind, look, lang, note)[0],
+        )
+        crowd = (
+            memo(
+                f"{kind}-plan-{i}-details {letters}",
                 mu,
-                lambda: sketch_plan(solution, i, mu, kind, look, lang, note)[0],
+                lambda: sketch_plan_details(
+                    solution, i, mu, kind, look, lang, note, letters, sketches[f"{kind}-plan-{i}"]
+                ),
             )
+            if details and letters
+            else None
+        )
+        if crowd is not None:
+            sketches[f"{kind}-plan-{i}"], views, taken = crowd
+            for k, view in enumerate(views):
+                sketches[f"{kind}-plan-{i}-detail" + (f"-{k + 1}" if k else "")] = view
+            letters = "".join(x for x in letters if x not in taken)
 
     dg = solution.require_diagrams()
     drawn = dg.construction
@@ -1785,6 +1965,42 @@ def _sketch_all(
         **_diagram_scales(drawn),
     }
     return sketches, scales, drawn
+
+
+def _with_details(
+    solution: Solution,
+    look: Any,
+    lang: Language,
+    mu_l: float,
+    cache: dict[tuple[str, float], Any],
+) -> Iterator[tuple[int, dict[str, Sketch], dict[str, float], KinematicDiagrams]]:
+    """The drawings of the sheet (`_sketch_all`) as compose_sheet1 tries them,
+    the plans 0, 1, 2 series steps coarser than their guide's (`_plan_scales`);
+    at each, first with the detail views of every plan whose names crowd, then
+    then (where more than one plan has them: they take room the sheet may not
+    have) with those of one plan alone, the plan whose details letter most
+    names first; then with none."""
+    for shrink in range(3):
+        plan_mu = _plan_scales(solution, shrink)
+        full, scales, drawn = _sketch_all(solution, look, lang, plan_mu, mu_l, True, cache, True)
+        crowded = {n.split("-detail")[0] for n in full if "-detail" in n}
+        if not crowded:
+            yield shrink, full, scales, drawn
+            continue
+        plain, _, _ = _sketch_all(solution, look, lang, plan_mu, mu_l, True, cache)
+
+        def lettered(plan: str) -> int:
+            views = [v for n, v in full.items() if n.startswith(plan + "-detail")]
+            return sum(c.naming is not None for v in views for c in v.calls)
+
+        alone = sorted(crowded, key=lambda p: (-lettered(p), list(full).index(p)))
+        tried = [set(crowded), *({p} for p in alone)] if len(crowded) > 1 else [set(crowded)]
+        for kept in [*tried, set()]:
+            sketches = dict(plain)
+            for n, v in full.items():
+                if n.split("-detail")[0] in kept:
+                    sketches[n] = v
+            yield shrink, sketches, scales, drawn
 
 
 def _diagram_sketch(
@@ -2255,9 +2471,7 @@ def compose_sheet1(
         if width_m / mu_l > region.width or height_m / mu_l > region.height:
             continue
         placed_field = False
-        for shrink in range(3):
-            plan_mu = _plan_scales(solution, shrink)
-            sketches, scales, drawn = _sketch_all(solution, look, lang, plan_mu, mu_l, True, cache)
+        for shrink, sketches, scales, drawn in _with_details(solution, look, lang, mu_l, cache):
             sketches["mechanism"] = _bare_mechanism(solution, mu_l, look)
             order = _order(sketches, True)
             tables = [extents(sketches[n]).width for n in order if n.startswith("table")]

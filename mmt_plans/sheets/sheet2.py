@@ -62,13 +62,12 @@ from ..render.look import LineType
 from ..render.recording import Arc as RecArc
 from ..render.recording import Circle as RecCircle
 from ..render.recording import Line as RecLine
-from ..render.recording import Naming
 from ..render.recording import Polygon as RecPolygon
 from ..render.recording import Polyline as RecPolyline
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
 from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, scale_step, title_fields
-from .lint import SheetView, label_clear, label_near
+from .crowd import crowded, crowded_ends, crowded_names
 from .scales_record import Sheet2Scales
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
@@ -1129,40 +1128,6 @@ def _lever_names(fa: ForceAnalysis, mu_V: float) -> list[Name]:
     return out
 
 
-def _crowded(sketch: Sketch, lang: Language) -> Iterator[Naming]:
-    """What the names of a drawing that the sheet linter finds far from what
-    they name, or on a line or another name, name."""
-    view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
-    found = {f.where for f in (*label_near(view), *label_clear(view))}
-    for lab in view.labels:
-        c = lab.box.centroid
-        if lab.naming is not None and (round(float(c.x), 1), round(float(c.y), 1)) in found:
-            yield lab.naming
-
-
-def crowded_names(sketch: Sketch, lang: Language, anchors: bool = False) -> np.ndarray:
-    """Where the names of a drawing that the sheet linter finds far from what
-    they name, or on a line or another name, stand for (mm, one row each: the
-    point, or the middle of the segment, they name; with `anchors`, the
-    segment's start: where a force is applied)."""
-    out = []
-    for n in _crowded(sketch, lang):
-        end = n.anchor if n.end is None or anchors else n.end
-        out.append(((n.anchor[0] + end[0]) / 2.0, (n.anchor[1] + end[1]) / 2.0))
-    return np.array(out, dtype=float).reshape(-1, 2)
-
-
-def crowded_ends(sketch: Sketch, lang: Language) -> np.ndarray:
-    """What the crowded names of a drawing (as `crowded_names`) stand for,
-    both ends (mm, one row each, x0, y0, x1, y1): the point, or the arrow's
-    start, twice; the segment's ends."""
-    out = []
-    for n in _crowded(sketch, lang):
-        end = n.end if n.kind == "segment" and n.end is not None else n.anchor
-        out.append((n.anchor[0], n.anchor[1], end[0], end[1]))
-    return np.array(out, dtype=float).reshape(-1, 4)
-
-
 def _one_spot(a: np.ndarray, b: np.ndarray) -> bool:
     """Whether the lever writes the images at `a` and `b` (mm of the view
     drawn) as one name though they fall in two of its 0.5 mm cells: nearer
@@ -1330,7 +1295,7 @@ def lever_crowding(
     def crowding(details: tuple[LeverDetail, ...]) -> int:
         views = [sketch_lever(fa, mu_V, look, lang, [], details)]
         views += [sketch_lever_detail(fa, mu_V, look, lang, d) for d in details]
-        return sum(len(list(_crowded(v, lang))) for v in views)
+        return sum(len(list(crowded(v, lang))) for v in views)
 
     return crowding
 
