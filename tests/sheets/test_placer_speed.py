@@ -1,18 +1,24 @@
 """The label placer's and sheet 2's short cuts for speed (issue 21, item 4):
 each must give what the plain form gives, to the bit, so that the sheets
 stay byte-identical: the distance kernels, the written boxes' index kept
-between labels, the candidates asked in two batches."""
+between labels, the candidates asked in two batches, the lever sketched once
+at the scale it reaches."""
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import numpy as np
 import pytest
 import shapely
 
+import mmt_plans
 from mmt_plans.drawing import labels as mod
 from mmt_plans.drawing.labels import Labels
 from mmt_plans.drawing.sketch import Sketch
 from mmt_plans.render.recording import RecordingBackend
+
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _point_segment_plain(px: np.ndarray, py: np.ndarray, s: np.ndarray) -> np.ndarray:
@@ -108,3 +114,26 @@ def test_a_label_takes_the_first_free_place_near_in_order(seed: int) -> None:
             seen.add(None)
         assert len(labels.sketch.calls) > before
     assert {False, True} <= seen  # places in the first ring and past it
+
+
+def test_the_lever_at_the_scale_it_reached_is_sketched_once(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # five_dyads' lever reaches the sheet 3 steps smaller than its textbook
+    # scale, its names crowded there: the detail views are found on the lever
+    # the composer drew at that scale, not on a second sketch of it
+    from mmt_plans.render.recording import RecordingBackend as Backend
+    from mmt_plans.sheets import sheet2
+
+    drawn: list[tuple[float, tuple[object, ...]]] = []
+    sketch_lever = sheet2.sketch_lever
+
+    def counted(fa, mu_V, look, lang, arms, details=()):  # noqa: ANN001, ANN202
+        drawn.append((mu_V, tuple(details)))
+        return sketch_lever(fa, mu_V, look, lang, arms, details)
+
+    monkeypatch.setattr(sheet2, "sketch_lever", counted)
+    sol = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "five_dyads.toml"))
+    result = sheet2.compose_sheet2(sol, Backend(841.0, 594.0), "en")
+    assert result.details  # found at the scale reached
+    assert len(drawn) == len(set(drawn))
