@@ -113,7 +113,7 @@ _LEADER_ALONG = (1.5, 8.0)  # a leader longer (mm) within this of a line runs al
 # ringed by a lever's arms and lines of action) before a name stands untied
 _LEADER_CROSSINGS = (2, 6, 12)
 # a leader's boxes asked about in blocks of this many, nearest first, then 4 times as many
-_LEADER_BLOCK = 64
+_LEADER_BLOCK = 256
 # what meets at a leader's foot (the arc and arrowhead of the ω it names, the
 # links at a joint) it leaves at this clearance, mm, not the one kept from
 # all else: it touches them there by design, and past the pin it crosses none
@@ -235,6 +235,9 @@ class Labels:
         # the last ring it is written where it covers least
         self.rings = np.array(rings, dtype=float)
         self.boxes: list[BaseGeometry] = []
+        # the bounds of `boxes` and a tree of them, made once per change of them (`_boxes_changed`)
+        self._boxes_bounds: np.ndarray | None = None
+        self._boxes_tree: STRtree | None = None
         self._texts: list[str] = []  # the markup of each of `boxes`
         self._obstacles: list[BaseGeometry] = []  # shapes, each kept its `_clearance` mm off
         self._clearance: list[float] = []
@@ -651,6 +654,7 @@ class Labels:
         )
         self.sketch.calls.extend(calls)
         self.boxes.extend(boxes)
+        self._boxes_changed()
         self._texts.extend(texts)
         self._obstacles.extend(obstacles)
         self._clearance.extend(clearance)
@@ -663,9 +667,27 @@ class Labels:
         calls, boxes, obstacles, outlines, leaders, unsettled, far = state
         del self.sketch.calls[calls:]
         del self.boxes[boxes:], self._texts[boxes:]
+        self._boxes_changed()
         del self._obstacles[obstacles:], self._clearance[obstacles:], self._heavy[obstacles:]
         del self._outlines[outlines:]
         self._counts_back(leaders, unsettled, far)
+
+    def _boxes_changed(self) -> None:
+        """`boxes` written or undone: their bounds and tree made again when asked."""
+        self._boxes_bounds = None
+        self._boxes_tree = None
+
+    def _written_bounds(self) -> np.ndarray:
+        """The bounds of the labels written (x0, y0, x1, y1 rows)."""
+        if self._boxes_bounds is None:
+            self._boxes_bounds = shapely.bounds(self.boxes).reshape(-1, 4)
+        return self._boxes_bounds
+
+    def _written_tree(self) -> STRtree:
+        """A tree of the labels written (leaders keep off them)."""
+        if self._boxes_tree is None:
+            self._boxes_tree = STRtree(np.asarray(self.boxes, dtype=object))
+        return self._boxes_tree
 
     def _counts_back(self, leaders: set[Any], unsettled: int, far: int) -> None:
         """After the written labels' lists were cut or extended: the leaders
@@ -932,11 +954,11 @@ class Labels:
         each other as if they were one."""
         if not self.boxes:
             return np.zeros(x0.size)
-        b = shapely.bounds(self.boxes)  # every box's bounds in one call
+        b = self._written_bounds()
         sp = self.spacing
         dx = np.minimum(x1[:, None], b[:, 2] + sp) - np.maximum(x0[:, None], b[:, 0] - sp)
         dy = np.minimum(y1[:, None], b[:, 3]) - np.maximum(y0[:, None], b[:, 1])
-        return (np.clip(dx, 0, None) * np.clip(dy, 0, None)).sum(axis=1)
+        return (np.maximum(dx, 0) * np.maximum(dy, 0)).sum(axis=1)
 
     def _lookalike_cost(
         self, markup: str, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
@@ -985,21 +1007,21 @@ class Labels:
         near = (
             _gap(names, x0, y0, x1, y1, outline) <= _NEAR_KEPT if names is not None else cost >= 0.0
         )
-        # The obstacles are asked about one ring of candidates at a time, nearest
-        # first: most labels find room in the first ring (the same pick as asking
-        # about all of them, since the candidates are in order of preference).
+        # The obstacles are asked about the first ring of candidates with any
+        # to ask, then about all the rest at once: most labels find room in the
+        # first ring (the same pick as asking about all of them, since the
+        # candidates are in order of preference; a query costs more than its boxes).
         per_ring = max(1, cx.size // len(self.rings))
         # (only those near and off the lettering are asked, and only whether any is met)
+        asked = np.flatnonzero((cost <= 1e-9) & near)
         k = -1
-        for r0 in range(0, cx.size, per_ring):
-            ring = np.arange(r0, min(cx.size, r0 + per_ring))
-            ring = ring[(cost[ring] <= 1e-9) & near[ring]]
-            if not ring.size:
-                continue
-            free = ring[self._clear(x0[ring], y0[ring], x1[ring], y1[ring])]
-            if free.size:
-                k = int(free[0])
-                break
+        if asked.size:
+            first_ring = np.searchsorted(asked, (asked[0] // per_ring + 1) * per_ring)
+            for part in (asked[:first_ring], asked[first_ring:]):
+                free = part[self._clear(x0[part], y0[part], x1[part], y1[part])]
+                if free.size:
+                    k = int(free[0])
+                    break
         line: tuple[tuple[float, float], tuple[float, float]] | None = None
         if k < 0 and names is not None and self.fine:
             # between the compass's places: every place near it on a fine grid,
@@ -1071,6 +1093,7 @@ class Labels:
             self._leaders.add(len(self._obstacles))
             self.avoid(LineString(line), self.clearance)
         self.boxes.append(footprint)
+        self._boxes_changed()
         self._texts.append(markup)
         return footprint
 
@@ -1263,17 +1286,22 @@ class Labels:
         clear = shapely.linestrings(
             np.stack(
                 [
-                    np.c_[ax + _LEADER_START * ux, ay + _LEADER_START * uy],
-                    np.c_[ex, ey],
+                    np.column_stack([ax + _LEADER_START * ux, ay + _LEADER_START * uy]),
+                    np.column_stack([ex, ey]),
                 ],
                 axis=1,
             )
         )
-        crossed = self._met_at_feet(clear, self._crossings(clear), ax, ay)
         if self.boxes:  # never through lettering (passing it by a hair is not through)
-            written = np.asarray(self.boxes, dtype=object)
-            near = STRtree(written).query(clear, predicate="dwithin", distance=_FOOT_CLEAR)
-            crossed[np.unique(near[0])] = np.iinfo(np.int64).max
+            near = self._written_tree().query(clear, predicate="dwithin", distance=_FOOT_CLEAR)
+            # (no leader is taken there: what the others cross is measured alone)
+            off = np.ones(len(clear), dtype=bool)
+            off[near[0]] = False
+            if not off.all():
+                free, ax, ay, ex, ey, clear = (v[off] for v in (free, ax, ay, ex, ey, clear))
+                if not free.size:
+                    return None
+        crossed = self._met_at_feet(clear, self._crossings(clear), ax, ay)
         return _Leaders(cx[free], cy[free], ax, ay, ex, ey, clear, crossed)
 
     def _crossings(self, lines: np.ndarray) -> np.ndarray:
@@ -1306,7 +1334,8 @@ class Labels:
         index = self._index()
         shapes, lines, lb = index.shapes, *index.lines_bounds  # a point keeps its clearance
         crossed = crossed.copy()
-        for fx, fy in np.unique(np.c_[ax, ay], axis=0):
+        leaders = list(self._leaders)
+        for fx, fy in set(zip(ax.tolist(), ay.tolist())):  # each foot once (in any order)
             at = index.at_foot.get((fx, fy))
             if at is None:
                 # (only those whose box comes within 0.05 mm of the foot are measured)
@@ -1321,9 +1350,9 @@ class Labels:
             if not at.size:
                 continue
             mine = np.flatnonzero((ax == fx) & (ay == fy))
-            weight = np.where(index.uncrossable[at] | np.isin(at, list(self._leaders)), 10**6, 1)
+            weight = np.where(index.uncrossable[at] | np.isin(at, leaders), 10**6, 1)
             gap = shapely.distance(clear[mine][:, None], shapes[at][None, :])
-            reach = np.asarray(self._clearance)[at]
+            reach = index.reach[at]
             kept = ((gap < reach) * weight).sum(axis=1)
             hair = np.minimum(reach, _FOOT_CLEAR)
             crossed[mine] = np.maximum(crossed[mine] - kept, 0) + ((gap < hair) * weight).sum(
@@ -1387,9 +1416,10 @@ def _point_segment(px: np.ndarray, py: np.ndarray, s: np.ndarray) -> np.ndarray:
     """Distance from points to segments (x0, y0, x1, y1 columns of `s`)."""
     vx, vy = s[:, 2] - s[:, 0], s[:, 3] - s[:, 1]
     n2 = vx * vx + vy * vy
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = np.where(n2 > 0.0, ((px - s[:, 0]) * vx + (py - s[:, 1]) * vy) / n2, 0.0)
-    t = np.clip(t, 0.0, 1.0)
+    # (t 0 on a segment of no length; its sign of zero changes no distance)
+    along = (px - s[:, 0]) * vx + (py - s[:, 1]) * vy
+    t = np.divide(along, n2, out=np.zeros(np.broadcast(along, n2).shape), where=n2 > 0.0)
+    t = np.minimum(np.maximum(t, 0.0), 1.0)
     return np.hypot(px - (s[:, 0] + t * vx), py - (s[:, 1] + t * vy))
 
 
@@ -1402,8 +1432,7 @@ def segments_meet_boxes(s: np.ndarray, b: np.ndarray) -> np.ndarray:
     p = np.stack([-dx, dx, -dy, dy])
     q = np.stack([x0 - b[:, 0], b[:, 2] - x0, y0 - b[:, 1], b[:, 3] - y0])
     flat = p == 0.0
-    with np.errstate(divide="ignore", invalid="ignore"):
-        r = q / np.where(flat, 1.0, p)
+    r = q / np.where(flat, 1.0, p)
     t0 = np.maximum(np.where(~flat & (p < 0.0), r, 0.0).max(axis=0), 0.0)
     t1 = np.minimum(np.where(~flat & (p > 0.0), r, 1.0).min(axis=0), 1.0)
     return ~(flat & (q < 0.0)).any(axis=0) & (t0 <= t1)
@@ -1590,8 +1619,8 @@ class _ObstacleIndex:
     ) -> tuple[np.ndarray, np.ndarray]:
         """(box, obstacle) pairs: the boxes within each obstacle's clearance."""
         near = self._query(
-            np.c_[np.minimum(x0, x1), np.minimum(y0, y1)],
-            np.c_[np.maximum(x0, x1), np.maximum(y0, y1)],
+            np.column_stack([np.minimum(x0, x1), np.minimum(y0, y1)]),
+            np.column_stack([np.maximum(x0, x1), np.maximum(y0, y1)]),
         )
         if not near.shape[1]:
             return near[0], near[1]
@@ -1840,7 +1869,7 @@ def _gap(
     point (the block round it, `outline`), or the segment of an arrow or a
     link (as the linter measures it)."""
     _, a, b = names
-    b_ = np.c_[x0, y0, x1, y1]
+    b_ = np.column_stack([x0, y0, x1, y1])
     if outline is not None:
         return np.asarray(shapely.distance(shapely.box(x0, y0, x1, y1), outline), dtype=float)
     if b is None or math.dist(a, b) < 1e-9:

@@ -2569,7 +2569,9 @@ def _with_lever_details(
     if not composer.allows_details or composer.details or scales["mu_V"] == composer.lever_mu:
         return composer, steps
     mu_V = scales["mu_V"]
-    plain = sketch_lever(fa, mu_V, composer.look, lang, [])
+    # the lever as the sheet draws it (no detail views: the sketch the
+    # composer made at that scale; nothing letters it again once made)
+    plain = composer.lever(mu_V)[0]
     crowd = crowded_ends(plain, lang)
     if not len(crowd):
         return composer, steps
