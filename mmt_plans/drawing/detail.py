@@ -18,6 +18,7 @@ import math
 import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import shapely
@@ -34,6 +35,7 @@ __all__ = [
     "cut_to_disc",
     "heads_outside",
     "name_area",
+    "outline_in_disc",
     "roomy_ratio",
     "spread",
 ]
@@ -216,6 +218,22 @@ def clipped(
     return a + t0 * d, a + t1 * d
 
 
+def outline_in_disc(c: Polyline, disc: Any) -> list[Call]:
+    """The parts of an outline (a polygon's area, a polyline's run) inside a
+    detail's `disc` (a shapely polygon), each an outline of its kind."""
+    shape = shapely.Polygon(c.vertices) if isinstance(c, Polygon) else None
+    cut = (shape if shape is not None else shapely.LineString(c.vertices)).intersection(disc)
+    kept: list[Call] = []
+    for g in getattr(cut, "geoms", [cut]):
+        if g.is_empty:
+            continue
+        if g.geom_type == "Polygon":
+            kept.append(c.with_changes(vertices=tuple(g.exterior.coords[:-1])))
+        elif g.geom_type == "LineString":
+            kept.append(c.with_changes(vertices=tuple(g.coords)))
+    return kept
+
+
 def cut_to_disc(calls: Sequence[Call], centre: np.ndarray, radius: float) -> list[Call]:
     """A detail view's `calls` cut at its disc's edge: lines and outlines
     clipped; an arrow clipped, its head kept where its end lies in the disc (a
@@ -237,17 +255,7 @@ def cut_to_disc(calls: Sequence[Call], centre: np.ndarray, radius: float) -> lis
             else:
                 kept.append(c.with_changes(start=start, end=end))
         elif isinstance(c, Polyline):
-            shape = shapely.Polygon(c.vertices) if isinstance(c, Polygon) else None
-            cut = (shape if shape is not None else shapely.LineString(c.vertices)).intersection(
-                disc
-            )
-            for g in getattr(cut, "geoms", [cut]):
-                if g.is_empty:
-                    continue
-                if g.geom_type == "Polygon":
-                    kept.append(c.with_changes(vertices=tuple(g.exterior.coords[:-1])))
-                elif g.geom_type == "LineString":
-                    kept.append(c.with_changes(vertices=tuple(g.coords)))
+            kept += outline_in_disc(c, disc)
         elif isinstance(c, (Circle, Arc)):
             if math.dist(c.center, centre) <= radius:
                 kept.append(c)

@@ -41,6 +41,7 @@ from ..drawing.detail import (
     choose_details,
     clipped,
     name_area,
+    outline_in_disc,
     roomy_ratio,
 )
 from ..drawing.labels import NEAR_MM, LabelCounts, Labels, arc_line
@@ -62,7 +63,6 @@ from ..render.look import LineType
 from ..render.recording import Arc as RecArc
 from ..render.recording import Circle as RecCircle
 from ..render.recording import Line as RecLine
-from ..render.recording import Polygon as RecPolygon
 from ..render.recording import Polyline as RecPolyline
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
@@ -308,18 +308,7 @@ class _Drawing:
                 if part is not None:
                     kept.append(c.with_changes(start=tuple(part[0]), end=tuple(part[1])))
             elif isinstance(c, RecPolyline):
-                cut = (
-                    shapely.Polygon(c.vertices)
-                    if isinstance(c, RecPolygon)
-                    else shapely.LineString(c.vertices)
-                ).intersection(disc)
-                for g in getattr(cut, "geoms", [cut]):
-                    if g.is_empty:
-                        continue
-                    if g.geom_type == "Polygon":
-                        kept.append(c.with_changes(vertices=tuple(g.exterior.coords[:-1])))
-                    elif g.geom_type == "LineString":
-                        kept.append(c.with_changes(vertices=tuple(g.coords)))
+                kept += outline_in_disc(c, disc)
             elif isinstance(c, (RecCircle, RecArc)):
                 if math.dist(c.center, centre) <= radius:
                     kept.append(c)
