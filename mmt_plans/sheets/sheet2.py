@@ -2547,25 +2547,32 @@ class _Composer:
 def _with_lever_details(
     composer: _Composer, steps: dict[str, int], solution: Solution
 ) -> tuple[_Composer, dict[str, int]]:
-    """Where the lever reached the sheet with no detail view (none crowded at
-    its textbook scale) but smaller, and names crowd there (five_dyads: 3
-    steps smaller, 'h15,…' 26 mm from its arm): its detail views found on the
-    lever at the scale it reached (`lever_details`), the sheet fitted again
-    with them; kept where it fits and fewer labels of all its drawings stand
-    far or found no free place; else as it was."""
+    """Where the lever reached the sheet at another scale than its textbook
+    one and names crowd there, with no detail view (none crowded at its
+    textbook scale: five_dyads, 3 steps smaller, 'h15,…' 26 mm from its arm)
+    or with those chosen at the textbook scale (gen 112: 'h…' 10–20 mm off):
+    its detail views found on the lever at the scale it reached
+    (`lever_details`), the sheet fitted again with them; kept where it fits
+    and fewer labels of all its drawings stand far or found no free place;
+    else as it was."""
     fa, lang = composer.fa, composer.lang
     scales = composer.scales(steps)
-    if not composer.allows_details or composer.details or scales["mu_V"] == composer.lever_mu:
+    if not composer.allows_details or scales["mu_V"] == composer.lever_mu:
         return composer, steps
     mu_V = scales["mu_V"]
-    # the lever as the sheet draws it (no detail views: the sketch the
-    # composer made at that scale; nothing letters it again once made)
-    plain = composer.lever(mu_V)[0]
-    crowd = crowded_ends(plain, lang)
+    # the lever as the sheet draws it (the sketch the composer made at that
+    # scale; nothing letters it again once made)
+    drawn = composer.lever(mu_V)[0]
+    crowd = crowded_ends(drawn, lang)
     if not len(crowd):
         return composer, steps
+    if composer.details:
+        # its details, chosen at the textbook scale, leave names crowded at
+        # this one (gen 68: 'h5' … 'h19' 10–23 mm off): chosen again here,
+        # on the lever drawn without them
+        crowd = crowded_ends(sketch_lever(fa, mu_V, composer.look, lang, []), lang)
     found = lever_details(fa, mu_V, crowd, lever_crowding(fa, mu_V, composer.look, lang))
-    if not found:
+    if not found or found == composer.details:
         return composer, steps
     detailed = _Composer(
         fa,
