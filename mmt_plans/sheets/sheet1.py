@@ -1976,7 +1976,7 @@ def _with_details(
 ) -> Iterator[tuple[int, dict[str, Sketch], dict[str, float], KinematicDiagrams]]:
     """The drawings of the sheet (`_sketch_all`) as compose_sheet1 tries them,
     the plans 0, 1, 2 series steps coarser than their guide's (`_plan_scales`);
-    at each, first with the detail views of every plan whose names crowd, then
+    at each, first with the detail views of every plan whose names crowd,
     then (where more than one plan has them: they take room the sheet may not
     have) with those of one plan alone, the plan whose details letter most
     names first; then with none."""
