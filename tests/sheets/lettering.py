@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 
@@ -154,3 +155,22 @@ def label_clashes_anywhere(backend, area: float = 0.2):
 
 
 __all__ += ["primitive_shapes", "label_hits", "label_clashes_anywhere"]
+
+
+@functools.cache
+def solved_seed(seed: int):
+    """The Solution of generated mechanism `seed` (mmt_plans.generate), solved once per run."""
+    from mmt_plans.generate import generate_one
+    from mmt_plans.solution import solve
+    from mmt_plans.spec import loads
+
+    g = generate_one(seed)
+    return solve(loads(g.toml, f"{g.name}.toml"))
+
+
+def near_findings(sketch, lang: str = "en") -> list:
+    """The label-near and label-clear findings on `sketch` laid on an A1 sheet."""
+    from mmt_plans.sheets.lint import SheetView, label_clear, label_near
+
+    view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
+    return [*label_near(view), *label_clear(view)]

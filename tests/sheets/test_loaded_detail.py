@@ -5,18 +5,17 @@ the sheet linter's own rules."""
 from __future__ import annotations
 
 import math
-from functools import cache
 from pathlib import Path
 
 import numpy as np
+from lettering import near_findings, solved_seed
 
 import mmt_plans
 from mmt_plans.drawing.detail import DETAIL_RATIOS, spread
-from mmt_plans.generate import generate_one
 from mmt_plans.render.look import load_look
 from mmt_plans.render.recording import Line, RecordingBackend
 from mmt_plans.sheets.common import length_scale_step
-from mmt_plans.sheets.lint import SheetView, label_clear, label_near, lint
+from mmt_plans.sheets.lint import SheetView, lint
 from mmt_plans.sheets.sheet2 import (
     compose_sheet2,
     crowded_names,
@@ -24,26 +23,13 @@ from mmt_plans.sheets.sheet2 import (
     sketch_loaded_detail,
     sketch_loaded_mechanism,
 )
-from mmt_plans.solution import solve
-from mmt_plans.spec import loads
 
 ROOT = Path(__file__).resolve().parents[2]
 CROWDED = 63  # gen 63 (RPR-RRP-RRR-RPP-RRP): ten of its points within 4 mm at 1:0.4
 
 
-@cache
-def _solved(seed: int):
-    g = generate_one(seed)
-    return solve(loads(g.toml, f"{g.name}.toml"))
-
-
-def _near_findings(sketch, lang="en"):
-    view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
-    return [*label_near(view), *label_clear(view)]
-
-
 def _views(lang="en"):
-    solution = _solved(CROWDED)
+    solution = solved_seed(CROWDED)
     fa = solution.require_forces()
     mu = length_scale_step(float(solution.mu_l), 2)  # the mechanism a little small
     look = load_look()
@@ -56,7 +42,7 @@ def _views(lang="en"):
 
 def test_a_crowded_loaded_mechanism_gets_a_detail_of_its_core():
     fa, mu, plain, details, main, views = _views()
-    assert len(_near_findings(plain)) >= 10  # the crowd: names far or on lines
+    assert len(near_findings(plain)) >= 10  # the crowd: names far or on lines
     (detail,) = details
     assert detail.ratio in DETAIL_RATIOS
     assert detail.letter not in {n[:1].upper() for n in fa.loads.state.mech.point_owners}
@@ -75,9 +61,9 @@ def test_a_crowded_loaded_mechanism_gets_a_detail_of_its_core():
 
 def test_the_main_view_is_clean_and_the_crowd_lessens():
     _, _, plain, _, main, views = _views()
-    assert _near_findings(main) == []
+    assert near_findings(main) == []
     # the core itself (pins a fraction of a millimetre apart) keeps a few
-    assert sum(len(_near_findings(v)) for v in views) <= 0.6 * len(_near_findings(plain))
+    assert sum(len(near_findings(v)) for v in views) <= 0.6 * len(near_findings(plain))
 
 
 def test_a_name_is_the_main_views_or_the_details_never_both():
@@ -102,7 +88,7 @@ def test_the_detail_cuts_its_links_at_the_disc():
 
 
 def test_the_composed_sheet_draws_it_and_its_mechanism_is_clean():
-    solution = _solved(CROWDED)
+    solution = solved_seed(CROWDED)
     for lang in ("en", "uk"):
         backend = RecordingBackend(841.0, 594.0)
         sheet = compose_sheet2(solution, backend, lang)

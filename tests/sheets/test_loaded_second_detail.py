@@ -6,18 +6,15 @@ or two left over get none (a leader serves them)."""
 from __future__ import annotations
 
 import math
-from functools import cache
 
 import numpy as np
 import pytest
+from lettering import solved_seed
 
 from mmt_plans.drawing.detail import Name, choose_details, name_area
-from mmt_plans.generate import generate_one
 from mmt_plans.render.recording import RecordingBackend
 from mmt_plans.sheets.lint import SheetView, lint
 from mmt_plans.sheets.sheet2 import compose_sheet2
-from mmt_plans.solution import solve
-from mmt_plans.spec import loads
 
 NEAR_RULES = {"label-near", "label-clear"}
 
@@ -53,16 +50,10 @@ def test_a_name_or_two_left_over_get_no_second_disc():
     assert len(_details(crowded, fewest=1)) == 2  # the rule alone keeps it out
 
 
-@cache
-def _solved(seed: int):
-    g = generate_one(seed)
-    return solve(loads(g.toml, f"{g.name}.toml"))
-
-
 def _mechanism_findings(seed: int, lang: str):
     """Sheet 2's loaded mechanism and its details: their names far or on something."""
     backend = RecordingBackend(841.0, 594.0)
-    sheet = compose_sheet2(_solved(seed), backend, lang)  # type: ignore[arg-type]
+    sheet = compose_sheet2(solved_seed(seed), backend, lang)  # type: ignore[arg-type]
     view = SheetView.of(backend, lang, f"gen {seed} {lang}")  # type: ignore[arg-type]
     where = {
         (round(lab.box.centroid.x, 1), round(lab.box.centroid.y, 1)): lab.groups[:1]

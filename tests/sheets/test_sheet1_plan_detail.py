@@ -5,17 +5,16 @@ and lettered there (#21), judged by the sheet linter's own rules."""
 from __future__ import annotations
 
 import re
-from functools import cache
 from pathlib import Path
 
 import numpy as np
+from lettering import near_findings, solved_seed
 
 from mmt_plans.drawing.detail import DETAIL_RATIOS
-from mmt_plans.generate import generate_one
 from mmt_plans.render.look import load_look
 from mmt_plans.render.recording import BeginGroup, RecordingBackend, Text
 from mmt_plans.sheets.crowd import crowded_names
-from mmt_plans.sheets.lint import SheetView, arrows_named, label_clear, label_near
+from mmt_plans.sheets.lint import SheetView, arrows_named, label_near
 from mmt_plans.sheets.sheet1 import (
     _plan_scales,
     compose_sheet1,
@@ -24,7 +23,7 @@ from mmt_plans.sheets.sheet1 import (
     sketch_plan_details,
 )
 from mmt_plans.solution import solve
-from mmt_plans.spec import load, loads
+from mmt_plans.spec import load
 
 ROOT = Path(__file__).resolve().parents[2]
 # gen 110 (RPR-PRP-RRR-RPP-RPR), acceleration plan of position 3 drawn two
@@ -32,19 +31,8 @@ ROOT = Path(__file__).resolve().parents[2]
 CROWDED = 110
 
 
-@cache
-def _solved(seed: int):
-    g = generate_one(seed)
-    return solve(loads(g.toml, f"{g.name}.toml"))
-
-
-def _near_findings(sketch, lang="en"):
-    view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
-    return [*label_near(view), *label_clear(view)]
-
-
 def _plan(lang="en"):
-    solution = _solved(CROWDED)
+    solution = solved_seed(CROWDED)
     mu = _plan_scales(solution, 2)["acceleration 3"]
     look = load_look()
     plain, images = sketch_plan(solution, 3, mu, "acceleration", look, lang)
@@ -72,8 +60,8 @@ def test_the_crowds_names_stand_near_in_the_detail_view():
         main, (view,), letters = made
         assert len(letters) == 1
         # the names found far from what they name: fewer on the plan, none in its detail
-        assert len(_near_findings(main, lang)) < len(_near_findings(plain, lang))
-        assert _near_findings(view, lang) == []
+        assert len(near_findings(main, lang)) < len(near_findings(plain, lang))
+        assert near_findings(view, lang) == []
         # a vector whose head is in the disc is the detail's, head and name: on the
         # plan none is left with no name near it
         assert list(arrows_named(SheetView(list(main.calls), 841.0, 594.0, lang))) == []
@@ -96,7 +84,7 @@ def test_a_plan_without_a_crowd_gets_no_detail():
 
 
 def test_the_sheet_draws_the_detail_and_its_crowd_near():
-    solution = _solved(CROWDED)
+    solution = solved_seed(CROWDED)
     backend = RecordingBackend(841.0, 594.0)
     compose_sheet1(solution, backend, "en")
     groups = {c.id: c.cls for c in backend.calls if isinstance(c, BeginGroup)}
