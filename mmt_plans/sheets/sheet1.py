@@ -58,7 +58,7 @@ from ..errors import shown
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend
 from ..render.look import LineType
-from ..render.recording import RecordingBackend
+from ..render.recording import RecordingBackend, Text
 from ..scales import (
     LENGTH_MANTISSA_TEXT,
     Quantity,
@@ -856,7 +856,13 @@ def _unlettered_mechanism(solution: Solution, mu_l: float, look: Any, lang: Lang
     return sk
 
 
-def _position_numbers(labels: Labels, solution: Solution, mu_l: float) -> None:
+def _position_numbers(
+    labels: Labels,
+    solution: Solution,
+    mu_l: float,
+    here: Callable[[np.ndarray], bool] | None = None,
+    in_no_disc: Callable[[np.ndarray], bool] | None = None,
+) -> None:
     """Numbered positions of the crank pin, in smaller figures and out beyond
     the pin's circle, so that "0" is not read as a pivot's "O"; an entry of the
     sweep that is no numbered position (an extreme) gets none. A number walled
@@ -865,7 +871,12 @@ def _position_numbers(labels: Labels, solution: Solution, mu_l: float) -> None:
     crank's circle, B_i on the output's trail): at the output point's place
     in that position, out of its trail (Labels.place_first). Written last
     (before the ω and ε labels, a number takes the room kept for one), and
-    where some stand far, all once more with those first (Labels.write_each)."""
+    where some stand far, all once more with those first (Labels.write_each).
+    With `here` (a drawing with detail views: whether this view letters
+    what stands at a place) and `in_no_disc` (whether a place is in no
+    detail's disc), a number is written by its places out of every disc, in the
+    drawing (the output's, where the crank pin's is in a disc), else by those
+    in the detail view's."""
     mech = solution.mechanism
     pts = solution.sweep.points
     pivot = np.asarray(pts[mech.crank_pivot][0], dtype=float) / mu_l
@@ -890,6 +901,12 @@ def _position_numbers(labels: Labels, solution: Solution, mu_l: float) -> None:
         anchors: list[tuple[np.ndarray, np.ndarray]] = [(p, unit_vector(p - pivot))]
         if trail is not None and np.all(np.isfinite(trail[k])):
             anchors.append((trail[k], unit_vector(trail[k] - middle)))
+        if here is not None and in_no_disc is not None:
+            mine = [(at, u) for at, u in anchors if here(at)]
+            out_of_discs = any(in_no_disc(at) for at, _ in anchors)
+            if not mine or (out_of_discs and not any(in_no_disc(at) for at, _ in mine)):
+                continue  # another view numbers it (the drawing, where it can)
+            anchors = mine
 
         def write(
             anchors: list[tuple[np.ndarray, np.ndarray]] = anchors,
@@ -908,40 +925,82 @@ def _position_numbers(labels: Labels, solution: Solution, mu_l: float) -> None:
     labels.size = kept
 
 
-def sketch_mechanism(solution: Solution, mu_l: float, look: Any, lang: Language) -> Sketch:
+def sketch_mechanism(
+    solution: Solution,
+    mu_l: float,
+    look: Any,
+    lang: Language,
+    details: Sequence[Detail] = (),
+    detail: Detail | None = None,
+) -> Sketch:
     """The mechanism in all its positions, lettered; where some link's ω/ε
     names found no room near their arcs and some name stands far or on
     something (a mechanism of _SHORT_LINKS links at most), lettered once
     more with such a link's arcs tried larger still
     (_FAR_WIDER), the better of the two kept (fewer names on something, then
-    fewer far; the first on a tie: a drawing not crowded is drawn as before)."""
-    sk, counts, lacking = _lettered_mechanism(solution, mu_l, look, lang, far=False)
+    fewer far; the first on a tie: a drawing not crowded is drawn as before).
+    With `details`, what stands in a detail's disc is drawn but lettered only
+    in its detail view, the disc marked by a thin circle and its letter; with
+    `detail` too, the drawing is that view (`_lettered_mechanism`)."""
+    sk, counts, lacking = _lettered_mechanism(solution, mu_l, look, lang, False, details, detail)
     # (a long chain keeps the one lettering: see _SHORT_LINKS)
     short = len(solution.mechanism.links) <= _SHORT_LINKS
     if short and lacking and (counts.unsettled or counts.far):
-        again, counts_again, _ = _lettered_mechanism(solution, mu_l, look, lang, far=True)
+        again, counts_again, _ = _lettered_mechanism(
+            solution, mu_l, look, lang, True, details, detail
+        )
         if (counts_again.unsettled, counts_again.far) < (counts.unsettled, counts.far):
             return again
     return sk
 
 
 def _lettered_mechanism(
-    solution: Solution, mu_l: float, look: Any, lang: Language, far: bool
+    solution: Solution,
+    mu_l: float,
+    look: Any,
+    lang: Language,
+    far: bool,
+    details: Sequence[Detail] = (),
+    detail: Detail | None = None,
 ) -> tuple[Sketch, LabelCounts, bool]:
     """The mechanism lettered, its links' ω/ε arcs tried `far` (_ArcPlacer):
     the drawing, how well its labels found room, and whether some link's
-    ω/ε names found none near their arcs."""
+    ω/ε names found none near their arcs. With `details` (their discs in m),
+    a point is named, a position numbered and a link's arcs drawn in the view
+    that holds its place (`_arc_parts`): this drawing, its discs marked, or
+    with `detail` that detail view, its disc at μl / ratio, the lines cut at
+    the disc's edge."""
     mech = solution.mechanism
     pts = solution.sweep.points
     owners = {p: (0 if 0 in o else o[0], o) for p, o in mech.point_owners.items()}
     n = len(solution.positions)
     sk = Sketch(look)
+    ratio = detail.ratio if detail is not None else 1.0
+    mu_l = mu_l / ratio
+    discs = [(np.asarray(d.centre, float) / mu_l, d.radius / mu_l) for d in details]
+    own = discs[list(details).index(detail)] if detail is not None else None
 
     def at(name: str, k: int) -> np.ndarray:
         return np.asarray(pts[name][k], dtype=float) / mu_l
 
-    with sk.group("mechanism", "mechanism"):
+    def in_no_disc(p: np.ndarray) -> bool:
+        """Whether `p` is in no detail's disc."""
+        return all(float(np.hypot(*(p - c))) > r for c, r in discs)
+
+    def here(p: np.ndarray) -> bool:
+        """Whether what stands at `p` is lettered in this view."""
+        if own is not None:
+            return float(np.hypot(*(p - own[0]))) <= own[1]
+        return in_no_disc(p)
+
+    gid = "mechanism" if detail is None else _mechanism_detail_name(details, detail)
+    with sk.group(gid, "mechanism"):
+        begun = len(sk.calls)
         _mechanism_lines(sk, solution, mu_l)
+        if own is not None:
+            sk.calls[begun:] = cut_to_disc(sk.calls[begun:], *own)
+        for middle, r in [own] if own is not None else discs:
+            sk.circle(middle, r, "thin")  # the view's edge, or the disc marked
         # Lettering goes where it covers no line, no arc and no other letter:
         # the joints' names first (the arcs are then drawn clear of them), then
         # ω and ε once every arc is drawn, then the positions' numbers.
@@ -956,6 +1015,10 @@ def _lettered_mechanism(
             smaller=_SMALL if len(mech.links) <= _SHORT_LINKS else None,
         )
         labels.avoid_drawn(sk.calls)
+        for d, (middle, r) in zip(details, discs) if detail is None else ():
+            # by the disc's rim, up and right first, where the letter stands near it
+            rims = [middle + r * np.array([math.cos(a), math.sin(a)]) for a in _RIM]
+            labels.place_first([(rim, rim - middle) for rim in rims], d.letter)
         # the crank's pivot named on the side away from the pin at position 0,
         # so that its "O" stands far from the position number "0"
         opposite = -unit_vector(at(mech.crank_pin, 0) - pivot)
@@ -966,10 +1029,13 @@ def _lettered_mechanism(
         drawn_at = [0, *sorted({solution.entry(i) for i in solution.plan_positions} - {0})]
         drawn_at = drawn_at if len(mech.links) <= _SHORT_LINKS else [0]
         for name in owners:
-            if name in pts:
+            # (named in the view that holds its place at position 0)
+            if name in pts and here(at(name, 0)):
                 anchors: list[tuple[np.ndarray, np.ndarray]] = []
                 for k in drawn_at:
                     p = at(name, k)
+                    if not here(p):
+                        continue
                     if any(float(np.hypot(*(p - q))) < 1e-6 for q, _ in anchors):
                         continue  # a frame point: the same place at every position
                     if name == mech.crank_pivot:
@@ -1010,6 +1076,9 @@ def _lettered_mechanism(
                 if not spins:
                     continue
                 segments = [(at(a, k), at(b, k)) for a, b in itertools.combinations(names, 2)]
+                segments = _arc_parts(segments, discs, own, ratio)
+                if not segments:
+                    continue  # the link lies in a detail's disc: its arcs are drawn there
                 centre, start_deg, rooms, wider, span = arcs.beside(
                     segments,
                     [(r, v) for v, r, _, _ in spins],
@@ -1034,8 +1103,8 @@ def _lettered_mechanism(
         sense = float(mech.drive.signed_omega)
         crank = [at(mech.crank_pin, k) - centre for k in range(n)]
         reach = max(float(np.hypot(*v)) for v in crank)
-        found = _crank_arc(arcs, labels, centre, sense, reach)
-        if found is None:  # walled in by the spokes: outside the crank's circle
+        found = _crank_arc(arcs, labels, centre, sense, reach) if here(centre) else None
+        if found is None and here(centre):  # walled in by the spokes: outside the crank's circle
             outside = [reach + d for d in _CRANK_OUTSIDE]
             found = _crank_arc(arcs, labels, centre, sense, reach, outside)
         if found is not None:
@@ -1043,7 +1112,7 @@ def _lettered_mechanism(
             radius, start_deg, room = found
             tip = sense_arc(sk, centre, radius, sense, start_deg, start_deg + 120.0)
             queued.insert(0, (tip, "ω_{1}", room - tip, room))
-        else:
+        elif here(centre):
             start_deg = arcs.round_pivot(centre, _CRANK_R, sense)
             tip = sense_arc(sk, centre, _CRANK_R, sense, start_deg, start_deg + 120.0)
             # ω1 names its arc's arrowhead, written towards the gap between the spokes
@@ -1056,9 +1125,159 @@ def _lettered_mechanism(
         # where some stand far, all once more with those first (Labels.write_later;
         # a long chain keeps the one order: see _SHORT_LINKS)
         labels.write_later(retry=len(mech.links) <= _SHORT_LINKS)
-        _position_numbers(labels, solution, mu_l)
-        _mechanism_captions(sk, mu_l, lang)
+        _position_numbers(labels, solution, mu_l, here if discs else None, in_no_disc)
+        if detail is None:
+            _mechanism_captions(sk, mu_l, lang)
+        else:
+            ext = sk.extent()
+            number = catalogue(lang).plain_number(detail.ratio)
+            title = _words(lang)["plan_detail"].format(letter=detail.letter, ratio=number)
+            sk.text(((ext.left + ext.right) / 2, ext.top + 3.0), title, _TEXT, anchor="center")
     return sk, labels.counts(), arcs.lacking
+
+
+# where round a detail's disc its letter is tried, in turn (rad)
+_RIM = tuple(math.radians(a) for a in (45.0, 135.0, -45.0, -135.0, 90.0, 0.0, 180.0, -90.0))
+# a link's part out of every detail's disc at least this long (mm at the
+# drawing's scale) carries its ω/ε arcs in the drawing; else its detail view does
+_ARC_ROOM_MM = 3.0
+
+
+def _arc_parts(
+    segments: Sequence[tuple[np.ndarray, np.ndarray]],
+    discs: Sequence[tuple[np.ndarray, float]],
+    own: tuple[np.ndarray, float] | None,
+    ratio: float,
+) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The parts of a link's `segments` (mm) along which a view draws its
+    ω/ε arcs: all of them where no detail's disc is drawn; the parts out of
+    every one of `discs` at least _ARC_ROOM_MM long in the drawing; in the
+    detail view of the disc `own` (drawn `ratio` times larger), the parts in
+    it of a link that has none such."""
+    if not discs:
+        return list(segments)
+    holes = shapely.union_all([shapely.Point(*map(float, c)).buffer(r, 64) for c, r in discs])
+    out: list[tuple[np.ndarray, np.ndarray]] = []
+    for a, b in segments:
+        if float(np.hypot(*(b - a))) < 1e-9:
+            continue
+        rest = shapely.LineString([a, b]).difference(holes)
+        for g in getattr(rest, "geoms", [rest]):
+            if not g.is_empty and g.length >= _ARC_ROOM_MM * ratio:
+                xy = shapely.get_coordinates(g)
+                out.append((xy[0], xy[-1]))
+    if own is None:
+        return out
+    if out:
+        return []
+    inside = [clipped(a, b, *own) for a, b in segments]
+    return [p for p in inside if p is not None and float(np.hypot(*(p[1] - p[0]))) > 1e-6]
+
+
+def _mechanism_detail_name(details: Sequence[Detail], detail: Detail) -> str:
+    """The drawing of sheet 1 that holds the mechanism's detail view `detail`."""
+    k = list(details).index(detail)
+    return "mechanism-detail" + (f"-{k + 1}" if k else "")
+
+
+def sketch_mechanism_details(
+    solution: Solution,
+    mu_l: float,
+    look: Any,
+    lang: Language,
+    letters: str,
+    plain: Sketch,
+) -> tuple[Sketch, list[Sketch]] | None:
+    """The mechanism (`plain`: as `sketch_mechanism` drew it at `mu_l`) whose
+    names crowd, with its crowd marked by a circle and a letter, and its
+    detail views (a sketch each): the crowd drawn again at a larger scale of
+    the standard series, lettered there (`mechanism_details`, by the first of
+    `letters`). None where fewer than _MECHANISM_CROWD of its names stand
+    far or on something (`crowded_names`: leaders serve a name or two), or
+    where the detail views letter them no better."""
+    crowd = crowded_names(plain, lang)
+    if len(crowd) < _MECHANISM_CROWD:
+        return None
+    details = mechanism_details(solution, mu_l, crowd, letters)
+    if not details:
+        return None
+    sk = sketch_mechanism(solution, mu_l, look, lang, details)
+    views = [sketch_mechanism(solution, mu_l, look, lang, details, d) for d in details]
+    if sum(len(crowded_names(v, lang)) for v in (sk, *views)) >= len(crowd):
+        return None  # the details letter the crowd no better
+    return sk, views
+
+
+_MECHANISM_CROWD = 3  # the mechanism's names far or on something: this many make a crowd
+_MECHANISM_DETAILS = 1  # the most detail views of the mechanism
+_MECHANISM_DETAIL_MM = 45.0  # the largest radius of its detail's disc, mm
+_MECHANISM_APART_MM = 7.0  # its detail sets the points this far apart
+_MECHANISM_RADII = (4.0, 6.0, 8.0, 12.0, 16.0)  # the radii of its discs tried, mm
+_MECHANISM_CORE = 0.7  # its disc: the smallest that holds this share of the most any holds
+
+
+def _mechanism_names(solution: Solution, mu_l: float) -> tuple[list[Name], np.ndarray]:
+    """The names the mechanism at `mu_l` writes (`Name`: its points' at
+    position 0, ω and ε of each link at the planned positions by the link's
+    middle, ω1 and the positions' numbers by the crank), and the places
+    (mm) of its points at position 0 and at the planned positions."""
+    mech = solution.mechanism
+    pts = solution.sweep.points
+
+    def at(name: str, k: int) -> np.ndarray:
+        return np.asarray(pts[name][k], dtype=float) / mu_l
+
+    drawn = sorted({0, *(solution.entry(i) for i in solution.plan_positions)})
+    named = [p for p in mech.point_owners if p in pts]
+    out = [Name(at(p, 0), name_area(point_markup(p))) for p in named]
+    for k in drawn[1:] if solution.plan_positions else ():
+        for lid, link in mech.links.items():
+            ends = [at(p, k) for p in link.points if p in pts]
+            if lid != mech.drive.link and len(ends) > 1:
+                middle = np.mean(ends, axis=0)
+                out += [Name(middle, name_area(f"{sym}_{{{lid}}}")) for sym in "ωε"]
+    out.append(Name(at(mech.crank_pivot, 0), name_area("ω_{1}")))
+    digit = (_SMALL * 0.7 + 1.5) * (_SMALL + 1.5)
+    out += [
+        Name(at(mech.crank_pin, k), digit)
+        for k, position in enumerate(solution.positions)
+        if position.index is not None
+    ]
+    places = np.array([at(p, k) for p in named for k in drawn], dtype=float).reshape(-1, 2)
+    return out, places[np.all(np.isfinite(places), axis=1)]
+
+
+def mechanism_details(
+    solution: Solution, mu_l: float, crowded: np.ndarray, letters: str
+) -> tuple[Detail, ...]:
+    """The detail views the mechanism at `mu_l` needs where the names standing
+    for `crowded` (mm, `crowded_names` of the mechanism drawn without details)
+    found no place near (`choose_details`): at most _MECHANISM_DETAILS discs
+    round a point of the mechanism or such a point, the smallest that holds
+    most of the crowd, drawn at the ratio of the series that sets its points
+    _MECHANISM_APART_MM apart and leaves its names room, lettered by `letters`.
+    Each crowded name stands for the point of the mechanism nearest what it
+    names (an ω or ε for a joint of its link, beside which its arc is drawn):
+    the disc goes round the knot of joints, not round the arcs' heads."""
+    names, points = _mechanism_names(solution, mu_l)
+    if not len(points):
+        return ()
+    gap = np.hypot(*(crowded[:, None, :] - points[None, :, :]).transpose(2, 0, 1))
+    knot = points[np.argmin(gap, axis=1)] if len(crowded) else crowded
+    return choose_details(
+        names,
+        knot,
+        list(points),
+        mu_l,
+        letters,
+        _MECHANISM_DETAILS,
+        points=points,
+        spacing=_MECHANISM_APART_MM,
+        widest=_MECHANISM_DETAIL_MM,
+        tightest=_MECHANISM_CORE,
+        radii=_MECHANISM_RADII,
+        fewest=_MECHANISM_CROWD,
+    )
 
 
 def sketch_formula(solution: Solution, look: Any, lang: Language) -> Sketch:
@@ -2070,6 +2289,7 @@ def _order(sketches: Mapping[str, Sketch], stacked: bool) -> list[str]:
         "table-check",
         "mechanism",
         "structural-formula",
+        *(n for n in sketches if n.startswith("mechanism-detail")),
     ] + [n for n in sketches if n.startswith("velocity-plan") or n.startswith("acceleration-plan")]
 
 
@@ -2211,7 +2431,7 @@ def _may_fit(
         try:
             _try_layout(page, sketches, order, gap, True, tables_width, corner, extents)
         except LayoutError as err:
-            in_field = in_field or not str(err).startswith("mechanism")
+            in_field = in_field or not str(err).startswith("mechanism:")
             continue
         return True, in_field
     return False, in_field
@@ -2424,6 +2644,32 @@ def _with_diagrams(layout: SheetLayout, page: Page, gap: float, rect: Rect) -> S
     return out
 
 
+def _mechanism_options(
+    sketches: Mapping[str, Sketch], plain: Sketch, detailed: tuple[Sketch, list[Sketch]] | None
+) -> Iterator[dict[str, Sketch]]:
+    """The sheet's drawings with the mechanism lettered: with its detail
+    views ("mechanism-detail", `sketch_mechanism_details`) where it has
+    them, then (where the sheet has no room for them) as drawn plain."""
+    if detailed is not None:
+        sk, views = detailed
+        out = {**sketches, "mechanism": sk}
+        for k, view in enumerate(views):
+            out["mechanism-detail" + (f"-{k + 1}" if k else "")] = view
+        yield out
+    yield {**sketches, "mechanism": plain}
+
+
+def _detail_letters(sketches: Mapping[str, Sketch]) -> set[str]:
+    """The letters the detail views among `sketches` take (their titles, "A (4:1)")."""
+    return {
+        c.content[0]
+        for name, sk in sketches.items()
+        if "-detail" in name
+        for c in sk.calls
+        if isinstance(c, Text) and re.match(r"[A-Z] \(", c.content)
+    }
+
+
 def compose_sheet1(
     solution: Solution, backend: Backend, lang: Language = "en", *, page: Page | None = None
 ) -> Sheet1:
@@ -2460,6 +2706,21 @@ def compose_sheet1(
             cache[("mechanism", mu_l)] = sketch_mechanism(solution, mu_l, look, lang)
         return cast(Sketch, cache[("mechanism", mu_l)])
 
+    used = {n[:1].upper() for n in solution.mechanism.point_owners}
+
+    def detailed(mu_l: float, sketches: Mapping[str, Sketch]) -> tuple[Sketch, list[Sketch]] | None:
+        # lettered by the first letter that names no point and no plan's detail
+        taken = _detail_letters(sketches)
+        letters = "".join(x for x in DETAIL_LETTERS if x not in used and x not in taken)
+        if not letters:
+            return None
+        key = ("mechanism-details " + letters, mu_l)
+        if key not in cache:
+            cache[key] = sketch_mechanism_details(
+                solution, mu_l, look, lang, letters, mechanism(mu_l)
+            )
+        return cast("tuple[Sketch, list[Sketch]] | None", cache[key])
+
     def unlettered(mu_l: float) -> Sketch:
         if ("unlettered", mu_l) not in cache:
             cache[("unlettered", mu_l)] = _unlettered_mechanism(solution, mu_l, look, lang)
@@ -2492,70 +2753,83 @@ def compose_sheet1(
             sketches["mechanism"] = unlettered(mu_l)
             if _past_field(page, sketches, order, arrangements, extents):
                 break
-            sketches["mechanism"] = mechanism(mu_l)
             in_field = False
-            best: tuple[float, dict[str, Sketch], dict[str, Rect], Sheet1] | None = None
-            # every arrangement with μ_S from μ_l; then, where none fills the
-            # field, again with S drawn finer than μ_l (_grown_diagrams)
-            trials = itertools.product((False, True), (8.0, 5.0), arrangements)
-            for finer, gap, (tables_width, corner) in trials:
-                try:
-                    layout, placed, field = _try_layout(
-                        page, sketches, order, gap, True, tables_width, corner, extents
-                    )
-                except LayoutError as err:
-                    last = err
-                    in_field = in_field or not str(err).startswith("mechanism")
-                    placed_field = placed_field or in_field
-                    continue
-                done, done_drawn, done_scales = sketches, drawn, {**scales, "mu_l": mu_l}
-                for again in (False, True):
-                    if again:
-                        # the sheet laid out again round the grown diagrams, their
-                        # column kept as high as it was: the plans then stay out
-                        # of the room above it, which they may grow into
-                        column, wide = extents(sketches["diagrams"]), extents(done["diagrams"])
-                        keep = {"diagrams": (wide.width, max(wide.height, column.height))}
-                        try:
-                            layout, placed, field = _try_layout(
-                                page, done, order, gap, True, tables_width, corner, extents, keep
-                            )
-                        except LayoutError:
-                            break
-                    # grown from the calculation's column (every time axis tried again)
-                    grown = _grown_diagrams(
-                        solution,
-                        look,
-                        lang,
-                        layout,
-                        sketches,
-                        placed,
-                        drawn,
-                        mu_l,
-                        gap,
-                        extents,
-                        finer,
-                    )
-                    if grown is not None:  # the diagrams take the room that is left
-                        done, done_drawn = {**done, "diagrams": grown[0]}, grown[2]
-                        placed = {**placed, "diagrams": grown[1]}
-                        layout = _with_diagrams(layout, page, gap, grown[1])
-                        done_scales = {**done_scales, **_diagram_scales(done_drawn)}
-                    empty = laid_out_empty_share(page, done, placed, extents)
-                    if best is None or empty < best[0] - 1e-9:
-                        result = Sheet1(
-                            layout, done_scales, shrink=shrink, field=field, diagrams=done_drawn
+            # with the mechanism's detail views where its names crowd, then without
+            base = sketches
+            for sketches in _mechanism_options(base, mechanism(mu_l), detailed(mu_l, base)):
+                order = _order(sketches, True)
+                best: tuple[float, dict[str, Sketch], dict[str, Rect], Sheet1] | None = None
+                # every arrangement with μ_S from μ_l; then, where none fills the
+                # field, again with S drawn finer than μ_l (_grown_diagrams)
+                trials = itertools.product((False, True), (8.0, 5.0), arrangements)
+                for finer, gap, (tables_width, corner) in trials:
+                    try:
+                        layout, placed, field = _try_layout(
+                            page, sketches, order, gap, True, tables_width, corner, extents
                         )
-                        best = (empty, done, placed, result)
-                    if empty <= EMPTY_MAX or grown is None:
-                        break
-                if best is not None and best[0] <= EMPTY_MAX:
-                    break  # the first arrangement that fills the field
-            if best is not None:
-                # of the arrangements that fit, the first to fill the field
-                # (the linter's field-filled rule), else the one filling most
-                _, done, placed, result = best
-                return _draw(solution, backend, page, lang, done, order, placed, result, extents)
+                    except LayoutError as err:
+                        last = err
+                        in_field = in_field or not str(err).startswith("mechanism:")
+                        placed_field = placed_field or in_field
+                        continue
+                    done, done_drawn, done_scales = sketches, drawn, {**scales, "mu_l": mu_l}
+                    for again in (False, True):
+                        if again:
+                            # the sheet laid out again round the grown diagrams, their
+                            # column kept as high as it was: the plans then stay out
+                            # of the room above it, which they may grow into
+                            column, wide = extents(sketches["diagrams"]), extents(done["diagrams"])
+                            keep = {"diagrams": (wide.width, max(wide.height, column.height))}
+                            try:
+                                layout, placed, field = _try_layout(
+                                    page,
+                                    done,
+                                    order,
+                                    gap,
+                                    True,
+                                    tables_width,
+                                    corner,
+                                    extents,
+                                    keep,
+                                )
+                            except LayoutError:
+                                break
+                        # grown from the calculation's column (every time axis tried again)
+                        grown = _grown_diagrams(
+                            solution,
+                            look,
+                            lang,
+                            layout,
+                            sketches,
+                            placed,
+                            drawn,
+                            mu_l,
+                            gap,
+                            extents,
+                            finer,
+                        )
+                        if grown is not None:  # the diagrams take the room that is left
+                            done, done_drawn = {**done, "diagrams": grown[0]}, grown[2]
+                            placed = {**placed, "diagrams": grown[1]}
+                            layout = _with_diagrams(layout, page, gap, grown[1])
+                            done_scales = {**done_scales, **_diagram_scales(done_drawn)}
+                        empty = laid_out_empty_share(page, done, placed, extents)
+                        if best is None or empty < best[0] - 1e-9:
+                            result = Sheet1(
+                                layout, done_scales, shrink=shrink, field=field, diagrams=done_drawn
+                            )
+                            best = (empty, done, placed, result)
+                        if empty <= EMPTY_MAX or grown is None:
+                            break
+                    if best is not None and best[0] <= EMPTY_MAX:
+                        break  # the first arrangement that fills the field
+                if best is not None:
+                    # of the arrangements that fit, the first to fill the field
+                    # (the linter's field-filled rule), else the one filling most
+                    _, done, placed, result = best
+                    return _draw(
+                        solution, backend, page, lang, done, order, placed, result, extents
+                    )
             if not in_field:
                 # the mechanism larger than its field in every arrangement: the
                 # field is set by the diagrams and the tables, placed before it
