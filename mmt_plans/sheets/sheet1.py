@@ -2163,6 +2163,8 @@ def _try_layout(
                     f"its field {field.width:.0f} x {field.height:.0f} mm"
                 )
             within = field
+        # a plan's detail view beside its plan
+        near = placed.get(name.split("-detail")[0]) if "-detail" in name else None
         placed[name] = layout.place(
             name,
             ext.width,
@@ -2170,6 +2172,7 @@ def _try_layout(
             kind=kind,  # type: ignore[arg-type]
             corner=corner,  # type: ignore[arg-type]
             within=within,
+            near=near,
         )
     return layout, placed, field
 
