@@ -24,6 +24,7 @@ from .page import Page, Rect
 
 __all__ = [
     "first_free",
+    "nearest_free",
     "pack",
     "ElementKind",
     "Corner",
@@ -203,6 +204,41 @@ def first_free(
     return float(xs[col]), float(ys[row])
 
 
+def nearest_free(
+    region: Rect, boxes: np.ndarray, width: float, height: float, gap: float, near: Rect
+) -> tuple[float, float] | None:
+    """As `first_free` (the same candidates, `gap` mm from every box), the
+    free one nearest the rectangle `near` (a detail view beside the drawing
+    it details), the first of them in `first_free`'s order (from `near`'s
+    corner nearest the region's middle) on a tie; None when none is free."""
+    mid_x = (region.left + region.right) / 2
+    mid_y = (region.bottom + region.top) / 2
+    corner = ("top" if (near.bottom + near.top) / 2 < mid_y else "bottom") + (
+        "-right" if (near.left + near.right) / 2 < mid_x else "-left"
+    )
+    at = _candidates(region, boxes, width, height, gap, corner)
+    if not len(at):
+        return None
+    X, Y = at[:, 0], at[:, 1]
+    if len(boxes):
+        dx = np.maximum(boxes[None, :, 0] - (X[:, None] + width), X[:, None] - boxes[None, :, 2])
+        dy = np.maximum(boxes[None, :, 1] - (Y[:, None] + height), Y[:, None] - boxes[None, :, 3])
+        ex, ey = np.maximum(dx, 0.0), np.maximum(dy, 0.0)
+        g = gap - _EPS
+        clash = (
+            ((ex * ex + ey * ey) < g * g).any(axis=1)
+            if g > 0
+            else ((dx < 0) & (dy < 0)).any(axis=1)
+        )
+        X, Y = X[~clash], Y[~clash]
+    if not X.size:
+        return None
+    gx = np.maximum.reduce([near.left - (X + width), X - near.right, np.zeros_like(X)])
+    gy = np.maximum.reduce([near.bottom - (Y + height), Y - near.top, np.zeros_like(Y)])
+    k = int(np.argmin(np.round(np.hypot(gx, gy), 6)))
+    return float(X[k]), float(Y[k])
+
+
 class SheetLayout:
     """The elements of one sheet and the free space left for more.
 
@@ -259,13 +295,14 @@ class SheetLayout:
         corner: Corner = "top-left",
         within: Rect | None = None,
         gap: float | None = None,
+        near: Rect | None = None,
     ) -> Rect:
         """Find room for a width × height rectangle, register it, return it.
 
         Candidate positions line up with the region's edges and with the edges
         of placed elements (a gap away); the one nearest `corner` wins, rows
         first: "top-left" fills the top of the sheet from the left, then goes
-        down.
+        down. With `near`, the one nearest that rectangle (`nearest_free`).
         """
         if not (width > 0 and height > 0):
             raise ValueError(f"{name}: a drawing needs a positive size, got {width} x {height}")
@@ -273,7 +310,11 @@ class SheetLayout:
         region = within if within is not None else self.region
         boxes = np.array([e.footprint.bounds for e in self._elements.values()]).reshape(-1, 4)
         if all(_is_box(e.footprint) for e in self._elements.values()):
-            at = first_free(region, boxes, width, height, gap, corner)
+            at = (
+                first_free(region, boxes, width, height, gap, corner)
+                if near is None
+                else nearest_free(region, boxes, width, height, gap, near)
+            )
             if at is not None:
                 rect = Rect(at[0], at[1], width, height)
                 self.register(name, rect, kind)

@@ -69,7 +69,7 @@ from ..scales import (
 from ..solution import Solution
 from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, title_fields
 from .common import next_scale as _next_scale
-from .crowd import crowded_names
+from .crowd import crowded_ends, crowded_names
 from .scales_record import Sheet1Scales
 
 __all__ = ["Sheet1", "compose_sheet1", "GROUPS"]
@@ -1340,28 +1340,40 @@ def sketch_plan_details(
     circle and a letter, its detail views (a sketch each): the crowd drawn
     again at a larger scale of the standard series, lettered there
     (`plan_details`, by the first of `letters` that name no point), and the
-    letters it took.
-    None where fewer than _PLAN_CROWD of its names find no place near what
-    they name (`crowded_names`), or where the detail views letter them no better.
+    letters it took. Where the plan with its crowd marked leaves other names
+    crowded (a name it moved), the details are chosen again for both, up to
+    _PLAN_ROUNDS times: those that leave fewest crowded kept.
+    None where none of its names is crowded (`crowded_names`: far from what
+    they name, or on something), or where the detail views letter them no better.
     `plain`: the plan as `sketch_plan` drew it, where it was."""
     if plain is None:
         plain, _ = _plan_view(solution, index, mu, kind, look, lang, note)
     crowd = crowded_names(plain, lang)
-    if len(crowd) < _PLAN_CROWD:
-        return None
-    details = plan_details(solution, index, mu, kind, crowd, letters)
-    if not details:
-        return None
-    sk, _ = _plan_view(solution, index, mu, kind, look, lang, note, details)
-    views = [
-        _plan_view(solution, index, mu, kind, look, lang, note, details, d)[0] for d in details
-    ]
-    if sum(len(crowded_names(s, lang)) for s in (sk, *views)) >= len(crowd):
+    first = len(crowd)
+    best: tuple[int, Sketch, list[Sketch], str] | None = None
+    for _ in range(_PLAN_ROUNDS if first else 0):
+        details = plan_details(solution, index, mu, kind, crowd, letters)
+        if not details:
+            break
+        sk, _ = _plan_view(solution, index, mu, kind, look, lang, note, details)
+        views = [
+            _plan_view(solution, index, mu, kind, look, lang, note, details, d)[0] for d in details
+        ]
+        # (a component is named in the view whose disc holds its head)
+        moved = crowded_ends(sk, lang)[:, 2:]
+        left = len(moved) + sum(len(crowded_names(v, lang)) for v in views)
+        if best is None or left < best[0]:
+            best = (left, sk, views, "".join(d.letter for d in details))
+        if not len(moved):
+            break
+        crowd = np.vstack([crowd, moved])
+    if best is None or best[0] >= first:
         return None  # the details letter the crowd no better
-    return sk, views, "".join(d.letter for d in details)
+    return best[1], best[2], best[3]
 
 
-_PLAN_CROWD = 3  # a plan's names found far or on something: this many make a crowd
+_PLAN_CROWD = 3  # a plan's detail past its first holds this many crowded names (a crowd of its own)
+_PLAN_ROUNDS = 2  # how many times a plan's details are chosen (sketch_plan_details)
 _PLAN_DETAILS = 2  # the most detail views of one plan
 _PLAN_DETAIL_MM = 30.0  # the largest radius of a plan detail's disc, mm
 _PLAN_APART_MM = 7.0  # a plan's detail sets its images this far apart
@@ -2383,6 +2395,8 @@ def _try_layout(
                     f"its field {field.width:.0f} x {field.height:.0f} mm"
                 )
             within = field
+        # a plan's detail view beside its plan
+        near = placed.get(name.split("-detail")[0]) if "-detail" in name else None
         placed[name] = layout.place(
             name,
             ext.width,
@@ -2390,6 +2404,7 @@ def _try_layout(
             kind=kind,  # type: ignore[arg-type]
             corner=corner,  # type: ignore[arg-type]
             within=within,
+            near=near,
         )
     return layout, placed, field
 

@@ -94,3 +94,37 @@ def test_placed_drawings_never_overlap(sizes, corner):
         assert layout.region.contains(r, tol=1e-6)
     assert layout.overlaps() == []
     assert layout.outside() == []
+
+
+def test_place_near_puts_a_detail_beside_its_drawing(layout):
+    # a plan in the middle of the sheet: its detail view goes beside it, one
+    # gap away, not to the top-left corner the packer fills first
+    plan = layout.place("plan", 200, 150)
+    layout.register("middle-plan", Rect(400, 250, 180, 120))
+    layout.place("tables", 150, 300, corner="top-right")
+    middle = layout["middle-plan"].bounds
+    detail = layout.place("detail", 60, 60, near=middle)
+    gap_x = max(detail.left - middle.right, middle.left - detail.right, 0.0)
+    gap_y = max(detail.bottom - middle.top, middle.bottom - detail.top, 0.0)
+    assert max(gap_x, gap_y) == pytest.approx(layout.gap)
+    assert detail.left > plan.right
+    assert layout.overlaps(clearance=layout.gap - 1e-6) == []
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.floats(20, 300), st.floats(20, 250)), min_size=1, max_size=8),
+       st.floats(20, 120), st.floats(20, 120))
+def test_placed_near_never_overlaps(sizes, w, h):
+    layout = SheetLayout(Page.of("A1"))
+    for i, (a, b) in enumerate(sizes):
+        try:
+            layout.place(f"d{i}", a, b)
+        except LayoutError:
+            continue
+    target = layout.elements[-1].bounds
+    try:
+        r = layout.place("detail", w, h, near=target)
+    except LayoutError:
+        return
+    assert layout.region.contains(r, tol=1e-6)
+    assert layout.overlaps(clearance=layout.gap - 1e-6) == []
