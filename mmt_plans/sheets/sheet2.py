@@ -21,6 +21,7 @@ with its groups, the lever, each group, the polygons within their 150 …
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import random
 import re
@@ -1165,6 +1166,8 @@ def lever_details(
     mu_V: float,
     crowded: np.ndarray,
     crowding: Callable[[tuple[LeverDetail, ...]], int] | None = None,
+    *,
+    enlarge: bool = False,
 ) -> tuple[LeverDetail, ...]:
     """The detail views the lever at `mu_V` needs where the names of what
     `crowded` names (mm, `crowded_ends` of the lever drawn without details)
@@ -1184,7 +1187,9 @@ def lever_details(
     one leaving fewest names crowded taken, of as few the view drawn largest.
     The wide disc's low ratio may leave a tight crowd of images as tight as
     it was (gen 141: ten images within 2 mm of p, 4:1); the small disc's high
-    ratio may leave the long arms round it crowding on the lever (gen 91)."""
+    ratio may leave the long arms round it crowding on the lever (gen 91).
+    With `enlarge` (and `crowding`), each view taken is drawn at the next
+    ratios of the series while that leaves fewer names crowded (`_enlarged`)."""
     names = _lever_names(fa, mu_V)
     where = np.array([n.at for n in names], dtype=float).reshape(-1, 2)
     areas = np.array([n.area for n in names])
@@ -1270,8 +1275,41 @@ def lever_details(
         k = min(range(len(views)), key=lambda i: (crowds[i], -views[i].ratio * views[i].radius))
         (_, r), c, _ = options[k]
         left &= ~(holds(c, r) | covers(c, r))
-        out.append(views[k])
+        view = views[k]
+        if crowding is not None and enlarge:
+            view = _enlarged(view, r, tuple(out), crowding, crowds[k] if len(views) > 1 else None)
+        out.append(view)
     return tuple(out)
+
+
+def _enlarged(
+    view: LeverDetail,
+    r: float,
+    before: tuple[LeverDetail, ...],
+    crowding: Callable[[tuple[LeverDetail, ...]], int],
+    crowd: int | None = None,
+) -> LeverDetail:
+    """The detail view `view` (its disc `r` mm in radius on the lever, after
+    the views `before`) drawn at the next ratios of the series, a step at a
+    time while that leaves fewer names crowded (`crowding`; `crowd`: what it
+    leaves as it is, where known) and the view stays DETAIL_MM in radius at
+    most. A disc's ratio is chosen by the room its names take, as if they
+    spread over it; a crowd packed in part of it (the images of points at
+    rest round p, the arms along one line from p) wants more (gen 176: C at
+    5:1 left 9 names crowded, at 10:1 3)."""
+    larger = [k for k in _LEVER_RATIOS if k > view.ratio and k * r <= DETAIL_MM]
+    if not larger:
+        return view
+    best = crowding((*before, view)) if crowd is None else crowd
+    for ratio in larger:
+        if not best:
+            break
+        bigger = dataclasses.replace(view, ratio=ratio)
+        n = crowding((*before, bigger))
+        if n >= best:
+            break
+        view, best = bigger, n
+    return view
 
 
 def lever_crowding(
@@ -2550,8 +2588,11 @@ def _with_lever_details(
     """Where the lever reached the sheet at another scale than its textbook
     one and names crowd there, with no detail view (none crowded at its
     textbook scale: five_dyads, 3 steps smaller, 'h15,…' 26 mm from its arm)
-    or with those chosen at the textbook scale (gen 112: 'h…' 10–20 mm off):
-    its detail views found on the lever at the scale it reached
+    or with those chosen at the textbook scale (gen 112: 'h…' 10–20 mm off),
+    or where names crowd in those views drawn at their ratios of the lever at
+    that scale (gen 176: C, 5:1, 9 names 8-15 mm off):
+    its detail views found on the lever at the scale it reached, each drawn
+    larger while that letters it better
     (`lever_details`), the sheet fitted again with them; kept where it fits
     and fewer labels of all its drawings stand far or found no free place;
     else as it was."""
@@ -2564,14 +2605,18 @@ def _with_lever_details(
     # scale; nothing letters it again once made)
     drawn = composer.lever(mu_V)[0]
     crowd = crowded_ends(drawn, lang)
-    if not len(crowd):
+    # its detail views drawn at their ratios of the lever at that scale (gen
+    # 176: C, 5:1 of the lever a step smaller, its names 8–15 mm off)
+    views = composer.lever_details(mu_V)
+    if not len(crowd) and not any(len(crowded_ends(v, lang)) for _, v in views):
         return composer, steps
     if composer.details:
         # its details, chosen at the textbook scale, leave names crowded at
         # this one (gen 68: 'h5' … 'h19' 10–23 mm off): chosen again here,
         # on the lever drawn without them
         crowd = crowded_ends(sketch_lever(fa, mu_V, composer.look, lang, []), lang)
-    found = lever_details(fa, mu_V, crowd, lever_crowding(fa, mu_V, composer.look, lang))
+    crowding = lever_crowding(fa, mu_V, composer.look, lang)
+    found = lever_details(fa, mu_V, crowd, crowding, enlarge=True)
     if not found or found == composer.details:
         return composer, steps
     detailed = _Composer(
