@@ -148,6 +148,45 @@ def test_the_lever_at_the_scale_it_reached_is_sketched_once(
     assert len(drawn) == len(set(drawn))
 
 
+def test_a_sheet_fitted_again_draws_no_polygon_or_loaded_mechanism_twice(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # five_dyads' sheet 2 is fitted again with the lever's detail views found
+    # at the scale it reached (_refitted): the force polygons and the loaded
+    # mechanism already drawn at a scale are taken from the first composer
+    # (as compact as it), each drawn once
+    from mmt_plans.render.recording import RecordingBackend as Backend
+    from mmt_plans.sheets import sheet2
+
+    polygons: list[tuple[str, float, bool]] = []
+    loaded: list[tuple[float, tuple[object, ...], bool]] = []
+    refitted: list[bool] = []
+    sketch_force_polygons = sheet2.sketch_force_polygons
+    sketch_loaded_mechanism = sheet2.sketch_loaded_mechanism
+    refit = sheet2._refitted
+
+    def counted_polygons(polys, mu_F, look, lang, gid, *args, **kw):  # noqa: ANN001, ANN002, ANN003, ANN202
+        polygons.append((gid, mu_F, kw.get("grow", False)))  # (lettered again to grow)
+        return sketch_force_polygons(polys, mu_F, look, lang, gid, *args, **kw)
+
+    def counted_loaded(fa, mu_l, look, lang, compact=False, **kw):  # noqa: ANN001, ANN003, ANN202
+        loaded.append((mu_l, tuple(kw.get("details", ())), kw.get("grow", False)))
+        return sketch_loaded_mechanism(fa, mu_l, look, lang, compact, **kw)
+
+    def counted_refit(*args):  # noqa: ANN002, ANN202
+        refitted.append(True)
+        return refit(*args)
+
+    monkeypatch.setattr(sheet2, "sketch_force_polygons", counted_polygons)
+    monkeypatch.setattr(sheet2, "sketch_loaded_mechanism", counted_loaded)
+    monkeypatch.setattr(sheet2, "_refitted", counted_refit)
+    sol = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "five_dyads.toml"))
+    sheet2.compose_sheet2(sol, Backend(841.0, 594.0), "en")
+    assert refitted
+    assert polygons and len(polygons) == len(set(polygons))
+    assert loaded and len(loaded) == len(set(loaded))
+
+
 def _boxes_clear_plain(index: mod._ObstacleIndex, x0, y0, x1, y1) -> np.ndarray:  # noqa: ANN001
     """boxes_clear as it read: every piece's grown box compared with every
     query (or the tree asked), the segments' ends measured as one 2-row
