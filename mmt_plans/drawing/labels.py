@@ -121,6 +121,10 @@ _FOOT_CLEAR = 0.15
 # what touches a leader's foot lies within 0.05 mm of it: only what has its box
 # this near the foot (rounding kept) is measured
 _AT_FOOT = 0.05 + 1e-9
+# a distance measured in numpy is taken as shapely's where it is this far (mm)
+# from the one it is compared with: nearer, shapely is asked (both are exact
+# to far less: the same answer)
+_ROUNDING = 1e-6
 # names that read alike (O and 0, o and 0, l and 1) stand at least this far
 # apart, mm, box to box (the sheet linter's names-unique)
 LOOKALIKE_MM = 15.0
@@ -235,9 +239,9 @@ class Labels:
         # the last ring it is written where it covers least
         self.rings = np.array(rings, dtype=float)
         self.boxes: list[BaseGeometry] = []
-        # the bounds of `boxes` and a tree of them, made once per change of them (`_boxes_changed`)
+        # the bounds of `boxes` and an array of them, made once per change of them (`_boxes_changed`)
         self._boxes_bounds: np.ndarray | None = None
-        self._boxes_tree: STRtree | None = None
+        self._boxes_array: np.ndarray | None = None
         self._texts: list[str] = []  # the markup of each of `boxes`
         self._obstacles: list[BaseGeometry] = []  # shapes, each kept its `_clearance` mm off
         self._clearance: list[float] = []
@@ -246,6 +250,9 @@ class Labels:
         self._outlines: list[BaseGeometry] = []  # filled polygons drawn (blocks): see `enclosing`
         self._tree: _ObstacleIndex | None = None
         self._grown: BaseGeometry | None = None
+        self._covered: dict[
+            bytes, float
+        ] = {}  # `covered` of each shape asked, while `_grown` holds
         self.unsettled = 0  # labels written where they cover something: no place was free
         self.far = 0  # labels written far from what they name with no leader: none reached
         self.grows = False  # LabelCounts.grows: what `grow` would have written otherwise
@@ -321,7 +328,12 @@ class Labels:
             shapes = np.asarray(self._obstacles, dtype=object)
             self._grown = shapely.unary_union(shapely.buffer(shapes, np.array(self._clearance)))
             shapely.prepare(self._grown)
-        return float(shape.intersection(self._grown).area) if self._grown.intersects(shape) else 0.0
+            self._covered = {}  # (a plan's images are asked about twice: measured once)
+        key = shape.wkb
+        if key not in self._covered:
+            inside = self._grown.intersects(shape)
+            self._covered[key] = float(shape.intersection(self._grown).area) if inside else 0.0
+        return self._covered[key]
 
     def free(self, bounds: tuple[float, float, float, float]) -> bool:
         """Whether a box (x0, y0, x1, y1) comes within the clearance of nothing
@@ -673,9 +685,9 @@ class Labels:
         self._counts_back(leaders, unsettled, far)
 
     def _boxes_changed(self) -> None:
-        """`boxes` written or undone: their bounds and tree made again when asked."""
+        """`boxes` written or undone: their bounds and array made again when asked."""
         self._boxes_bounds = None
-        self._boxes_tree = None
+        self._boxes_array = None
 
     def _written_bounds(self) -> np.ndarray:
         """The bounds of the labels written (x0, y0, x1, y1 rows)."""
@@ -683,11 +695,42 @@ class Labels:
             self._boxes_bounds = shapely.bounds(self.boxes).reshape(-1, 4)
         return self._boxes_bounds
 
-    def _written_tree(self) -> STRtree:
-        """A tree of the labels written (leaders keep off them)."""
-        if self._boxes_tree is None:
-            self._boxes_tree = STRtree(np.asarray(self.boxes, dtype=object))
-        return self._boxes_tree
+    def _near_written(
+        self, lines: np.ndarray, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray
+    ) -> np.ndarray:
+        """Which of the two-point `lines` (from x0, y0 to x1, y1) come within
+        _FOOT_CLEAR of a label written, as a tree of the labels asks it
+        (`STRtree.query` with "dwithin"): the pairs whose boxes meet so grown
+        measured in numpy (`_segment_box`), shapely asked only about those
+        within rounding of _FOOT_CLEAR."""
+        b = self._written_bounds()
+        grown = _FOOT_CLEAR + _ROUNDING  # (more pairs than the tree's, never fewer)
+        lx, hx = np.minimum(x0, x1) - grown, np.maximum(x0, x1) + grown
+        ly, hy = np.minimum(y0, y1) - grown, np.maximum(y0, y1) + grown
+        li, bi = np.nonzero(
+            (lx[:, None] <= b[:, 2])
+            & (hx[:, None] >= b[:, 0])
+            & (ly[:, None] <= b[:, 3])
+            & (hy[:, None] >= b[:, 1])
+        )
+        near = np.zeros(len(lines), dtype=bool)
+        if not li.size:
+            return near
+        gap = _segment_box(np.c_[x0[li], y0[li], x1[li], y1[li]], b[bi])
+        near[li[gap <= _FOOT_CLEAR - _ROUNDING]] = True
+        ask = (np.abs(gap - _FOOT_CLEAR) < _ROUNDING) & ~near[li]
+        if ask.any():
+            li, bi = li[ask], bi[ask]
+            shapely.prepare(lines[li])
+            hit = shapely.dwithin(lines[li], self._written_boxes()[bi], _FOOT_CLEAR)
+            near[li[hit]] = True
+        return near
+
+    def _written_boxes(self) -> np.ndarray:
+        """The labels written as an array (leaders keep off them)."""
+        if self._boxes_array is None:
+            self._boxes_array = np.asarray(self.boxes, dtype=object)
+        return self._boxes_array
 
     def _counts_back(self, leaders: set[Any], unsettled: int, far: int) -> None:
         """After the written labels' lists were cut or extended: the leaders
@@ -1293,10 +1336,10 @@ class Labels:
             )
         )
         if self.boxes:  # never through lettering (passing it by a hair is not through)
-            near = self._written_tree().query(clear, predicate="dwithin", distance=_FOOT_CLEAR)
             # (no leader is taken there: what the others cross is measured alone)
-            off = np.ones(len(clear), dtype=bool)
-            off[near[0]] = False
+            off = ~self._near_written(
+                clear, ax + _LEADER_START * ux, ay + _LEADER_START * uy, ex, ey
+            )
             if not off.all():
                 free, ax, ay, ex, ey, clear = (v[off] for v in (free, ax, ay, ex, ey, clear))
                 if not free.size:
@@ -1575,6 +1618,9 @@ class _ObstacleIndex:
         self.piece_reach = self.reach[self.owner] if len(self.owner) else np.zeros(0)
         self.piece_upright = np.concatenate([np.zeros(self.n_segs, dtype=bool), self.upright])
         self._grown_columns = tuple(np.ascontiguousarray(c) for c in self.grown.T)
+        # the segments' ends as columns ((x0, y0), (x1, y1)): gathered by `_segments_clear`
+        cols = [np.ascontiguousarray(c) for c in self.segs.T]
+        self._seg_ends = ((cols[0], cols[1]), (cols[2], cols[3]))
 
     @property
     def lines_bounds(self) -> tuple[np.ndarray, np.ndarray]:
@@ -1597,16 +1643,25 @@ class _ObstacleIndex:
         """(query, piece) pairs whose boxes meet (edges touching count), for
         query boxes from `lo` (x, y rows) to `hi`, as the tree gives them:
         few pieces and queries are compared all at once, many asked of the tree."""
-        g = self.grown
-        if len(lo) * len(g) > _BRUTE_PAIRS:
-            return np.asarray(self.tree.query(shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1])))
-        meet = (
-            (lo[:, 0, None] <= g[:, 2])
-            & (hi[:, 0, None] >= g[:, 0])
-            & (lo[:, 1, None] <= g[:, 3])
-            & (hi[:, 1, None] >= g[:, 1])
+        if not len(lo):
+            return np.zeros((2, 0), dtype=np.intp)
+        g0, g1, g2, g3 = self._grown_columns
+        # (only the pieces near all the queries compared: the others meet none)
+        (near,) = np.nonzero(
+            (g2 >= lo[:, 0].min())
+            & (g0 <= hi[:, 0].max())
+            & (g3 >= lo[:, 1].min())
+            & (g1 <= hi[:, 1].max())
         )
-        return np.array(np.nonzero(meet), dtype=np.intp).reshape(2, -1)
+        if len(lo) * near.size > _BRUTE_PAIRS:
+            return np.asarray(self.tree.query(shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1])))
+        qi, k = np.nonzero(
+            (lo[:, 0, None] <= g2[near])
+            & (hi[:, 0, None] >= g0[near])
+            & (lo[:, 1, None] <= g3[near])
+            & (hi[:, 1, None] >= g1[near])
+        )
+        return np.array([qi, near[k]], dtype=np.intp).reshape(2, -1)
 
     def _pairs(self, near: np.ndarray, gap: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         owner = self.owner[near[1]]
@@ -1669,21 +1724,24 @@ class _ObstacleIndex:
         clear = np.ones(x0.size, dtype=bool)
         lx, hx = np.minimum(x0, x1), np.maximum(x0, x1)
         ly, hy = np.minimum(y0, y1), np.maximum(y0, y1)
-        g = self.grown
-        if lx.size * len(g) > _BRUTE_PAIRS:
+        g0, g1, g2, g3 = self._grown_columns
+        # the pieces whose grown boxes meet the box round all the queries (a
+        # label's candidates lie round one anchor): the others meet none
+        (near,) = np.nonzero(
+            (g2 >= lx.min()) & (g0 <= hx.max()) & (g3 >= ly.min()) & (g1 <= hy.max())
+        )
+        if lx.size * near.size > _BRUTE_PAIRS:
             qi, pi = np.asarray(self.tree.query(shapely.box(lx, ly, hx, hy)))
+        elif lx.size == 1:  # one box: the pieces it meets, as one row
+            pi, qi = near, np.zeros(near.size, dtype=np.intp)
         else:
-            g0, g1, g2, g3 = self._grown_columns
-            if lx.size == 1:  # one box: the pieces it meets, as one row
-                (pi,) = np.nonzero((g2 >= lx[0]) & (g0 <= hx[0]) & (g3 >= ly[0]) & (g1 <= hy[0]))
-                qi = np.zeros(pi.size, dtype=np.intp)
-            else:
-                qi, pi = np.nonzero(
-                    (lx[:, None] <= g2)
-                    & (hx[:, None] >= g0)
-                    & (ly[:, None] <= g3)
-                    & (hy[:, None] >= g1)
-                )
+            qi, k = np.nonzero(
+                (lx[:, None] <= g2[near])
+                & (hx[:, None] >= g0[near])
+                & (ly[:, None] <= g3[near])
+                & (hy[:, None] >= g1[near])
+            )
+            pi = near[k]
         if not qi.size:
             return clear
         reach = self.piece_reach[pi]
@@ -1723,21 +1781,28 @@ class _ObstacleIndex:
         ask = clear[qi]
         if not ask.all():
             qi, pi, reach = qi[ask], pi[ask], reach[ask]
-        s = self.segs[pi]
         bx0, by0, bx1, by1 = x0[qi], y0[qi], x1[qi], y1[qi]
-        ex, ey = s[:, [0, 2]].T, s[:, [1, 3]].T
-        dx = np.maximum(np.maximum(bx0 - ex, ex - bx1), 0.0)
-        dy = np.maximum(np.maximum(by0 - ey, ey - by1), 0.0)
-        hit = np.hypot(dx, dy).min(axis=0) < reach
+        end = None
+        for ex, ey in ((c[pi] for c in pair) for pair in self._seg_ends):
+            dx = np.maximum(np.maximum(bx0 - ex, ex - bx1), 0.0)
+            dy = np.maximum(np.maximum(by0 - ey, ey - by1), 0.0)
+            end = np.hypot(dx, dy) if end is None else np.minimum(end, np.hypot(dx, dy))
+        hit = end < reach
         clear[qi[hit]] = False
         rest = ~hit & clear[qi]
+        if not rest.any():
+            return
+        # (the ends are out of reach here: met, else a corner within reach)
+        qi, pi, reach = qi[rest], pi[rest], reach[rest]
+        s = self.segs[pi]
+        b = np.stack([x0[qi], y0[qi], x1[qi], y1[qi]], axis=1)
+        meets = segments_meet_boxes(s, b) & (reach > 0.0)  # (at a distance of 0)
+        clear[qi[meets]] = False
+        rest = ~meets & clear[qi]  # (the corners measured only where still asked)
         if rest.any():
-            # (the ends are out of reach here: met, or a corner within reach)
-            qi, reach, s = qi[rest], reach[rest], s[rest]
-            b = np.stack([x0[qi], y0[qi], x1[qi], y1[qi]], axis=1)
+            qi, reach, s, b = qi[rest], reach[rest], s[rest], b[rest]
             corners = _point_segment(b[:, [0, 2, 2, 0]].T, b[:, [1, 1, 3, 3]].T, s).min(axis=0)
-            gap = np.where(segments_meet_boxes(s, b), 0.0, corners)
-            clear[qi[gap < reach]] = False
+            clear[qi[corners < reach]] = False
 
     def lines_near(self, lines: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(line, obstacle) pairs for two-point `lines`: those within each

@@ -1929,14 +1929,27 @@ class _Composer:
             del self.cache[key]
         self.packed = {}
 
-    def shared_drawings(self) -> dict[tuple[Any, ...], Any]:
+    def shared_drawings(self, other: _Composer | None = None) -> dict[tuple[Any, ...], Any]:
         """The drawings of links made so far, which a compact sheet draws the
-        same (its polygons, tables and the sketches holding them differ)."""
-        return {
-            k: v
-            for k, v in self.cache.items()
-            if k[0] in ("group", "driving-link") or (k[0] == "noted" and isinstance(k[1], int))
-        }
+        same (its polygons, tables and the sketches holding them differ); for
+        `other`, as compact as this one, the polygons, the table of loads and
+        the loaded mechanism too (keyed by its details), and the lever with
+        its tables and detail views where it has the same ones."""
+
+        def same(k: tuple[Any, ...]) -> bool:
+            if k[0] in ("group", "driving-link") or (k[0] == "noted" and isinstance(k[1], int)):
+                return True
+            if other is None or other.compact != self.compact:
+                return False
+            if k[0] in ("lever", "lever-detail"):
+                return other.details == self.details
+            return (
+                k[0].startswith("force-polygon-")
+                or k[0] in ("noted", "table-loads", "force-mechanism")
+                or (k[0] == "head" and other.page is self.page)
+            )
+
+        return {k: v for k, v in self.cache.items() if same(k)}
 
     def _pin_points(self, lids: set[int]) -> np.ndarray:
         """The points (m) of the revolute pairs that _Drawing.links draws for `lids`."""
@@ -2678,7 +2691,7 @@ def _refitted(
     """The sheet fitted again by `detailed` (sharing `composer`'s drawings of
     links), filled: kept where it fits and fewer than `was` labels of all its
     drawings stand far or found no free place."""
-    detailed.cache.update(composer.shared_drawings())
+    detailed.cache.update(composer.shared_drawings(detailed))
     refit = detailed.first_fit()
     if refit is None:
         return None

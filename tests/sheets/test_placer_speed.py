@@ -65,12 +65,21 @@ def test_written_boxes_index_follows_every_change_of_them() -> None:
     # are those of the boxes as they stand
     labels, rng = _crowd(7)
 
+    probes = np.random.default_rng(8)
+
     def agrees() -> None:
         assert np.array_equal(labels._written_bounds(), shapely.bounds(labels.boxes).reshape(-1, 4))
-        probe = shapely.box(0.0, 0.0, 30.0, 30.0)
-        got = labels._written_tree().query(probe, predicate="dwithin", distance=0.15)
-        want = [i for i, b in enumerate(labels.boxes) if shapely.dwithin(b, probe, 0.15)]
-        assert sorted(got.tolist()) == want
+        assert list(labels._written_boxes()) == labels.boxes
+        # leaders from round the middle out: near a label written exactly
+        # where one of the boxes is within 0.15 mm of it (as a tree asks it)
+        x0, y0 = probes.uniform(20.0, 40.0, size=(2, 60))
+        x1, y1 = probes.uniform(0.0, 60.0, size=(2, 60))
+        lines = shapely.linestrings(np.stack([np.c_[x0, y0], np.c_[x1, y1]], axis=1))
+        got = labels._near_written(lines, x0, y0, x1, y1)
+        tree = shapely.STRtree(labels.boxes)
+        want = np.zeros(len(lines), dtype=bool)
+        want[tree.query(lines, predicate="dwithin", distance=0.15)[0]] = True
+        assert np.array_equal(got, want) and want.any() and not want.all()
 
     for k in range(4):
         labels.place(tuple(rng.uniform(0.0, 60.0, size=2)), f"A_{{{k}}}")
@@ -137,3 +146,120 @@ def test_the_lever_at_the_scale_it_reached_is_sketched_once(
     result = sheet2.compose_sheet2(sol, Backend(841.0, 594.0), "en")
     assert result.details  # found at the scale reached
     assert len(drawn) == len(set(drawn))
+
+
+def test_a_sheet_fitted_again_draws_no_polygon_or_loaded_mechanism_twice(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # five_dyads' sheet 2 is fitted again with the lever's detail views found
+    # at the scale it reached (_refitted): the force polygons and the loaded
+    # mechanism already drawn at a scale are taken from the first composer
+    # (as compact as it), each drawn once
+    from mmt_plans.render.recording import RecordingBackend as Backend
+    from mmt_plans.sheets import sheet2
+
+    polygons: list[tuple[str, float, bool]] = []
+    loaded: list[tuple[float, tuple[object, ...], bool]] = []
+    refitted: list[bool] = []
+    sketch_force_polygons = sheet2.sketch_force_polygons
+    sketch_loaded_mechanism = sheet2.sketch_loaded_mechanism
+    refit = sheet2._refitted
+
+    def counted_polygons(polys, mu_F, look, lang, gid, *args, **kw):  # noqa: ANN001, ANN002, ANN003, ANN202
+        polygons.append((gid, mu_F, kw.get("grow", False)))  # (lettered again to grow)
+        return sketch_force_polygons(polys, mu_F, look, lang, gid, *args, **kw)
+
+    def counted_loaded(fa, mu_l, look, lang, compact=False, **kw):  # noqa: ANN001, ANN003, ANN202
+        loaded.append((mu_l, tuple(kw.get("details", ())), kw.get("grow", False)))
+        return sketch_loaded_mechanism(fa, mu_l, look, lang, compact, **kw)
+
+    def counted_refit(*args):  # noqa: ANN002, ANN202
+        refitted.append(True)
+        return refit(*args)
+
+    monkeypatch.setattr(sheet2, "sketch_force_polygons", counted_polygons)
+    monkeypatch.setattr(sheet2, "sketch_loaded_mechanism", counted_loaded)
+    monkeypatch.setattr(sheet2, "_refitted", counted_refit)
+    sol = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "five_dyads.toml"))
+    sheet2.compose_sheet2(sol, Backend(841.0, 594.0), "en")
+    assert refitted
+    assert polygons and len(polygons) == len(set(polygons))
+    assert loaded and len(loaded) == len(set(loaded))
+
+
+def _boxes_clear_plain(index: mod._ObstacleIndex, x0, y0, x1, y1) -> np.ndarray:  # noqa: ANN001
+    """boxes_clear as it read: every piece's grown box compared with every
+    query (or the tree asked), the segments' ends measured as one 2-row
+    array, the rest by their corners and Liang-Barsky at once."""
+    clear = np.ones(x0.size, dtype=bool)
+    lx, hx, ly, hy = np.minimum(x0, x1), np.maximum(x0, x1), np.minimum(y0, y1), np.maximum(y0, y1)
+    g = index.grown
+    if lx.size * len(g) > mod._BRUTE_PAIRS:
+        qi, pi = np.asarray(index.tree.query(shapely.box(lx, ly, hx, hy)))
+    else:
+        qi, pi = np.nonzero(
+            (lx[:, None] <= g[:, 2])
+            & (hx[:, None] >= g[:, 0])
+            & (ly[:, None] <= g[:, 3])
+            & (hy[:, None] >= g[:, 1])
+        )
+    reach = index.piece_reach[pi]
+    seg, solid, upright = pi < index.n_segs, pi - index.n_segs, index.piece_upright[pi]
+    b = np.stack([x0, y0, x1, y1], axis=1)[qi[upright]]
+    gap = mod._box_box(b, index.whole_bounds[solid[upright]])
+    clear[qi[upright][gap < reach[upright]]] = False
+    sq, sp, sr = qi[seg], pi[seg], reach[seg]
+    ask = clear[sq]
+    sq, sp, sr = sq[ask], sp[ask], sr[ask]
+    s = index.segs[sp]
+    ex, ey = s[:, [0, 2]].T, s[:, [1, 3]].T
+    dx = np.maximum(np.maximum(x0[sq] - ex, ex - x1[sq]), 0.0)
+    dy = np.maximum(np.maximum(y0[sq] - ey, ey - y1[sq]), 0.0)
+    hit = np.hypot(dx, dy).min(axis=0) < sr
+    clear[sq[hit]] = False
+    rest = ~hit & clear[sq]
+    sq, sr, s = sq[rest], sr[rest], s[rest]
+    bb = np.stack([x0[sq], y0[sq], x1[sq], y1[sq]], axis=1)
+    corners = mod._point_segment(bb[:, [0, 2, 2, 0]].T, bb[:, [1, 1, 3, 3]].T, s).min(axis=0)
+    gap = np.where(mod.segments_meet_boxes(s, bb), 0.0, corners)
+    clear[sq[gap < sr]] = False
+    ask = ~seg & ~upright & clear[qi]
+    rq = qi[ask]
+    gap = shapely.distance(shapely.box(x0[rq], y0[rq], x1[rq], y1[rq]), index.whole[solid[ask]])
+    clear[rq[gap < reach[ask]]] = False
+    return clear
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_boxes_clear_is_its_plain_form(seed: int) -> None:
+    # the pieces first cut to those near all the queries, the segments' ends
+    # gathered by column, the corners measured only for boxes no segment
+    # runs through: the same boxes clear as the plain form, on crowds of
+    # lines, points, rings, text boxes and arrowheads (clearances of 0 and
+    # coordinates rounded, so that boxes touch lines), one box, a few, many
+    rng = np.random.default_rng(seed)
+    shapes, clearance = [], []
+    for _ in range(int(rng.integers(20, 160))):
+        x, y = np.round(rng.uniform(0.0, 80.0, size=2), 1)
+        kind = rng.integers(5)
+        if kind == 0:
+            shapes.append(
+                shapely.LineString(np.round(rng.uniform(-9.0, 9.0, size=(3, 2)), 1) + (x, y))
+            )
+        elif kind == 1:
+            shapes.append(shapely.box(x, y, x + 4.0, y + 2.5))
+        elif kind == 2:
+            shapes.append(shapely.Polygon(rng.uniform(-3.0, 3.0, size=(3, 2)) + (x, y)))
+        elif kind == 3:
+            shapes.append(shapely.Point(x, y))
+        else:
+            shapes.append(shapely.Point(x, y).buffer(float(rng.uniform(0.5, 5.0)), 16).exterior)
+        clearance.append(float(rng.choice([0.0, 0.3, 0.4, rng.uniform(0.0, 2.0)])))
+    index = mod._ObstacleIndex(shapes, clearance)
+    for n in (1, 1, 5, 16, 120, 600):
+        cx, cy = np.round(rng.uniform(0.0, 80.0, size=2), 1)
+        x0 = np.round(cx + rng.uniform(-15.0, 15.0, size=n), 1)
+        y0 = np.round(cy + rng.uniform(-15.0, 15.0, size=n), 1)
+        x1, y1 = x0 + rng.uniform(0.5, 8.0, size=n), y0 + rng.uniform(0.5, 4.0, size=n)
+        got = index.boxes_clear(x0, y0, x1, y1)
+        assert np.array_equal(got, _boxes_clear_plain(index, x0, y0, x1, y1))
