@@ -633,6 +633,10 @@ _LOADED_DETAILS = 2  # the most detail views of the loaded mechanism
 # something that the first leaves at least (gen 5 uk: six round its crank; gen
 # 63's two left over get none, a leader serves them)
 _SECOND_CROWD = 3
+# or for a pair of them, weighed on the sheet against the first alone: kept
+# where fewer names stand far (five_dyads uk: 'S5', 'Fi5' in the knot at G where
+# blocks 5 and 6 sit on guide T, 9-11 mm off, beside the first detail's L)
+_SECOND_PAIR = 2
 _POINTS_APART_MM = 7.0  # a detail of the loaded mechanism sets its points this far apart
 _LOADED_DETAIL_MM = 45.0  # the largest radius of its disc, mm
 _LOADED_RADII = (4.0, 6.0, 8.0, 12.0, 16.0)  # the radii of its discs tried, mm
@@ -681,13 +685,17 @@ def _loaded_names(fa: ForceAnalysis, mu_l: float) -> tuple[list[Name], np.ndarra
 
 
 def loaded_details(
-    fa: ForceAnalysis, mu_l: float, crowded: np.ndarray, taken: Iterable[str] = ()
+    fa: ForceAnalysis,
+    mu_l: float,
+    crowded: np.ndarray,
+    taken: Iterable[str] = (),
+    fewest: int = _SECOND_CROWD,
 ) -> tuple[Detail, ...]:
     """The detail views the loaded mechanism at `mu_l` needs where the names
     standing for the points `crowded` (mm, `crowded_names` of the mechanism
     drawn without details) found no place near (`choose_details`): at most
     _LOADED_DETAILS discs apart round a point of the mechanism or such a
-    point, one past the first only for a crowd of _SECOND_CROWD names or more,
+    point, one past the first only for a crowd of `fewest` names or more,
     lettered by capitals that name no point and are not in `taken` (the
     lever's details' letters)."""
     names, points = _loaded_names(fa, mu_l)
@@ -705,7 +713,7 @@ def loaded_details(
         widest=_LOADED_DETAIL_MM,
         tightest=_CORE_SHARE,
         radii=_LOADED_RADII,
-        fewest=_SECOND_CROWD,
+        fewest=fewest,
     )
 
 
@@ -2101,7 +2109,7 @@ class _Composer:
             yield (
                 loaded_detail_gid(self.mechanism_details, d),
                 self.memo(
-                    ("force-mechanism-detail", d.letter, mu_l),
+                    ("force-mechanism-detail", d, mu_l),
                     lambda d=d: sketch_loaded_detail(fa, mu_l, look, lang, d, self.compact),
                 ),
             )
@@ -2649,11 +2657,10 @@ def _with_mechanism_details(
 ) -> tuple[_Composer, dict[str, int]]:
     """Where names of the loaded mechanism as it reaches the sheet (at
     `steps`) stand far or on something, a detail view of their crowd
-    (`loaded_details`), decided once on that drawing: the sheet at the same
-    steps with it, else with the mechanism a step or two smaller (the
-    detail holds its crowd), else the sheet fitted again with it (the filled
-    sheet has no room left); kept where it fits and fewer labels of all its
-    drawings stand far or found no free place; else as it was."""
+    (`loaded_details`), decided once on that drawing (`_detailed`); where a
+    second disc would hold a pair of them left over (_SECOND_PAIR), those
+    views with it weighed against those without: the one kept where fewer
+    labels of all the sheet's drawings stand far or found no free place."""
     fa, lang = composer.fa, composer.lang
     scales = composer.scales(steps)
     mechanism = composer.sketches(scales)[0]["force-mechanism"]
@@ -2661,16 +2668,41 @@ def _with_mechanism_details(
     if not len(crowd):
         return composer, steps
     taken = [d.letter for d in composer.details]
-    found = loaded_details(fa, scales["mu_l"], crowd, taken)
-    if not found:
-        return composer, steps
-    was = sum(composer.lettered(steps))
+    kept, was = (composer, steps), sum(composer.lettered(steps))
+    tried: list[tuple[Detail, ...]] = []
+    for fewest in (_SECOND_CROWD, _SECOND_PAIR):
+        found = loaded_details(fa, scales["mu_l"], crowd, taken, fewest)
+        if not found or found in tried:
+            continue
+        tried.append(found)
+        better = _detailed(composer, steps, solution, found, was)
+        if better is not None:
+            kept, was = better[:2], better[2]
+    return kept
+
+
+def _detailed(
+    composer: _Composer,
+    steps: dict[str, int],
+    solution: Solution,
+    found: tuple[Detail, ...],
+    was: int,
+) -> tuple[_Composer, dict[str, int], int] | None:
+    """The sheet with the loaded mechanism's detail views `found`: at the same
+    steps, else with the mechanism a step or two smaller (the detail holds
+    its crowd), else fitted again with them (the filled sheet has no room
+    left); with how many labels of all its drawings stand far or found no
+    free place, where fewer than `was`; else None, `composer` as it was."""
+    fa, lang = composer.fa, composer.lang
+    before = composer.mechanism_details
     composer.with_mechanism_details(found)
     for by in (0, 1, 2):
         trial = {**steps, "mech": steps["mech"] + by}
-        if composer.fits(trial) and sum(composer.lettered(trial)) < was:
-            return composer, trial
-    composer.with_mechanism_details(())
+        if composer.fits(trial):
+            now = sum(composer.lettered(trial))
+            if now < was:
+                return composer, trial, now
+    composer.with_mechanism_details(before)
     # the filled sheet has no room for it: the sheet fitted again with it
     detailed = _Composer(
         fa,
@@ -2682,7 +2714,8 @@ def _with_mechanism_details(
         details=bool(composer.details),
         mechanism_details=found,
     )
-    return _refitted(composer, detailed, was) or (composer, steps)
+    refit = _refitted(composer, detailed, was)
+    return None if refit is None else (*refit, sum(refit[0].lettered(refit[1])))
 
 
 def _refitted(

@@ -81,3 +81,28 @@ def test_gen_5s_loaded_mechanism_is_lettered_with_one_name_far_at_most(lang):
     sheet, found = _mechanism_findings(5, lang)
     assert len(sheet.mechanism_details) >= 1
     assert len(found) <= 1, found
+
+
+# five_dyads uk: the first detail (L, the slider of links 9 and 10 on its
+# guide) left 'S5' 11.0 mm and 'Fi5' 8.8 mm off in the knot at G, where blocks 5
+# and 6 sit on guide T: a pair, no crowd of _SECOND_CROWD. A second disc round
+# them, weighed on the sheet against the first alone (_SECOND_PAIR), letters
+# the whole sheet with no name far or on something.
+def test_five_dyads_uk_sheet_2_takes_a_second_detail_for_a_pair_left_over():
+    from pathlib import Path
+
+    import mmt_plans
+
+    root = Path(__file__).resolve().parents[2]
+    solution = mmt_plans.solve(mmt_plans.load(root / "samples" / "five_dyads.toml"))
+    backend = RecordingBackend(841.0, 594.0)
+    sheet = compose_sheet2(solution, backend, "uk")
+    assert len(sheet.mechanism_details) == 2
+    view = SheetView.of(backend, "uk", "five_dyads")
+    assert [str(f) for f in lint(view) if f.rule in NEAR_RULES] == []
+
+
+def test_a_pair_gets_a_second_disc_only_where_asked_for():
+    crowded = _crowds(((0.0, 0.0), 5), ((100.0, 0.0), 2))
+    assert len(_details(crowded, fewest=2)) == 2
+    assert len(_details(crowded, fewest=3)) == 1
