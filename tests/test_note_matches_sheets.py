@@ -96,6 +96,51 @@ def drawn_lengths(rec: RecordingBackend, group: str, kinds=("line", "arrow")) ->
     ]
 
 
+def _discs(rec: RecordingBackend, group: str) -> list[tuple[tuple[float, float], float]]:
+    """The thin open circles of `group`: a detail's disc (centre, radius)."""
+    return [
+        (c["center"], c["radius"])
+        for c in rec.in_group(group)
+        if c.name == "circle" and c["line"] == "thin" and c["fill"] == "none"
+    ]
+
+
+def detailed_lengths(rec: RecordingBackend, group: str) -> list[float]:
+    """The vectors of plan `group` whose heads lie in a detail's disc, read back
+    at the plan's scale: one wholly in the disc is drawn in the detail view
+    alone (`group`-detail…, at its ratio); one from outside is drawn on the
+    plan up to the disc's edge and on from there in the view, and is read as
+    the plan's segment joined to the view's one that starts where it stops."""
+    segments = [(c["start"], c["end"]) for c in rec.in_group(group) if c.name in ("line", "arrow")]
+    views = sorted({g for c in rec.calls for g in c.groups if g.startswith(f"{group}-detail")})
+    out = []
+    for view in views:
+        inner = [(c["start"], c["end"]) for c in rec.in_group(view) if c.name in ("line", "arrow")]
+        (big_c, big_r) = max(_discs(rec, view), key=lambda d: d[1])
+        for centre, radius in _discs(rec, group):
+            ratio = big_r / radius
+
+            def back(q, centre=centre, ratio=ratio):
+                return (
+                    centre[0] + (q[0] - big_c[0]) / ratio,
+                    centre[1] + (q[1] - big_c[1]) / ratio,
+                )
+
+            # a vector wholly in the disc: drawn in the view alone
+            out += [
+                math.dist(s, e) / ratio
+                for s, e in inner
+                if max(math.dist(s, big_c), math.dist(e, big_c)) < big_r - 0.01
+            ]
+            for a, b in segments:
+                if abs(math.dist(b, centre) - radius) > 0.01:
+                    continue  # not cut at this disc
+                for s, e in inner:
+                    if math.dist(back(s), b) < 0.01:
+                        out.append(math.dist(a, back(e)))
+    return out
+
+
 def thin_lines(rec: RecordingBackend, group: str) -> list[float]:
     return [
         math.dist(c["start"], c["end"])
@@ -133,7 +178,7 @@ def test_note_mm_are_the_sheets_mm(case):
         plan = index in ("V", "a") and sheet == 1 and ".groups[" in num
         side = index == "F" and num.startswith("hyp(") and ".vectors[" in num
         if (plan or side) and mm >= 1.0:
-            lengths = drawn_lengths(rec, group)
+            lengths = drawn_lengths(rec, group) + (detailed_lengths(rec, group) if plan else [])
             best = min((abs(x - mm) for x in lengths), default=math.inf)
             assert best <= 0.1 + half, (p.text, group, p.source, sorted(lengths))
             checked["plan" if plan else "side"] += 1
