@@ -234,15 +234,18 @@ def outline_in_disc(c: Polyline, disc: Any) -> list[Call]:
     return kept
 
 
-def cut_to_disc(calls: Sequence[Call], centre: np.ndarray, radius: float) -> list[Call]:
+def cut_to_disc(
+    calls: Sequence[Call], centre: np.ndarray, radius: float, arrows: bool = True
+) -> list[Call]:
     """A detail view's `calls` cut at its disc's edge: lines and outlines
     clipped; an arrow clipped, its head kept where its end lies in the disc (a
-    plain line of its kind where it does not); circles and arcs kept where
-    their centre is in it; the rest (lettering) kept."""
+    plain line of its kind where it does not), or kept whole without `arrows`
+    (a load applied in the view); circles and arcs kept where their centre is
+    in it; the rest (lettering) kept."""
     disc = shapely.Point(*map(float, centre)).buffer(radius, 64)
     kept: list[Call] = []
     for c in calls:
-        if isinstance(c, (Line, Arrow)):
+        if isinstance(c, Line) or (arrows and isinstance(c, Arrow)):
             part = clipped(np.asarray(c.start, float), np.asarray(c.end, float), centre, radius)
             if part is None:
                 continue

@@ -41,8 +41,8 @@ from ..drawing.detail import (
     Name,
     choose_details,
     clipped,
+    cut_to_disc,
     name_area,
-    outline_in_disc,
     roomy_ratio,
 )
 from ..drawing.labels import NEAR_MM, LabelCounts, Labels, arc_line
@@ -61,10 +61,6 @@ from ..i18n import Language, catalogue, check_language
 from ..model import FRAME
 from ..render.backend import Backend
 from ..render.look import LineType
-from ..render.recording import Arc as RecArc
-from ..render.recording import Circle as RecCircle
-from ..render.recording import Line as RecLine
-from ..render.recording import Polyline as RecPolyline
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
 from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, scale_step, title_fields
@@ -296,27 +292,11 @@ class _Drawing:
         self.sk.line(a, b, kind)
 
     def _cut(self, first: int) -> None:
-        """A detail view's calls from `first` on cut at its disc's edge: lines
-        and outlines clipped, circles and arcs kept where their centre is in it."""
+        """A detail view's calls from `first` on cut at its disc's edge
+        (`cut_to_disc`; its loads' arrows kept whole)."""
         if not self.in_detail:
             return
-        centre, radius = self.discs[0]
-        disc = shapely.Point(*centre).buffer(radius, 64)
-        kept: list[Any] = []
-        for c in self.sk.calls[first:]:
-            if isinstance(c, RecLine):
-                part = clipped(np.asarray(c.start), np.asarray(c.end), centre, radius)
-                if part is not None:
-                    kept.append(c.with_changes(start=tuple(part[0]), end=tuple(part[1])))
-            elif isinstance(c, RecPolyline):
-                kept += outline_in_disc(c, disc)
-            elif isinstance(c, (RecCircle, RecArc)):
-                if math.dist(c.center, centre) <= radius:
-                    kept.append(c)
-            else:
-                kept.append(c)
-        del self.sk.calls[first:]
-        self.sk.calls.extend(kept)
+        self.sk.calls[first:] = cut_to_disc(self.sk.calls[first:], *self.discs[0], arrows=False)
 
     def marks(self, details: Sequence[Detail], lang: Language) -> None:
         """The discs of `details` as thin circles, each with its letter."""
