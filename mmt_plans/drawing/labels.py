@@ -187,6 +187,7 @@ class Labels:
         words: Callable[[str], str] | None = None,
         fine: bool = True,
         fine_far: bool = False,
+        fine_kept: bool = False,
         wide_leaders: bool = False,
         smaller: float | None = None,
         short_ends: bool = False,
@@ -222,6 +223,11 @@ class Labels:
         # labels `write_later(retry=True)` found no place near at first: the
         # crowded ones, written first with it, the easy ones as before
         self.fine_far = fine_far
+        # with `fine_kept` too, a label that went far in any order written is
+        # on the fine grid in every order after it, not in the next alone: one
+        # walled in by another that went far before it may find room only on
+        # the grid (task09_v2's G5 and F_in5, two short sides of one column)
+        self.fine_kept = fine_kept
         # with `wide_leaders`, a label no leader of `leader_rings` reaches a
         # place from is led once more, on the finer rings (FINE_LEADER_RINGS,
         # FINE_LEADER_DIRS directions), before it stands far with no leader
@@ -516,11 +522,18 @@ class Labels:
         # further out) is not kept, so more orders never make a drawing
         # larger (a sheet that held its drawings holds them still)
         slot = self.lettered_bounds()
+        went: set[int] = set()  # (with `fine_kept`) every label that went far so far
+        fine: set[int] = set()
         for n in range(retries):
             # those that went far, first (already first: the same order writes the same)
             again = [*(order[i] for i in far), *(j for k, j in enumerate(order) if k not in far)]
-            fine = set(range(len(far))) if self.fine_far else set()
-            if again == order and not fine:
+            last = fine
+            if self.fine_far and self.fine_kept:
+                went |= {order[i] for i in far}
+                fine = {k for k, j in enumerate(again) if j in went}
+            else:
+                fine = set(range(len(far))) if self.fine_far else set()
+            if again == order and (not fine or self.fine_kept and fine == last):
                 break
             order = again
             self._restore(saved)

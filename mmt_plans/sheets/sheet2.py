@@ -84,6 +84,10 @@ _ARM_ALONG = (0.5, 0.65, 0.35, 0.8, 0.2, 0.9, 0.1, 0.75, 0.25, 0.95, 0.05, 0.55,
 _LABELLING: dict[str, Any] = dict(
     spacing=None, leaders=True, fine=False, fine_far=True, wide_leaders=True
 )
+# the force polygons and the groups: a name that stood far in any order on the
+# fine grid in every order after (Labels.fine_kept): the names of a polygon's
+# short sides along one column go far in turn (task09_v2's G5 and F_in5)
+_FORCE_LABELLING: dict[str, Any] = dict(_LABELLING, fine_kept=True)
 # how many times a drawing's labels are written again, those that stood far
 # in the last order first (Labels.write_later); an order kept only where it
 # letters the drawing within the box the first order did (its leaders no
@@ -255,6 +259,7 @@ class _Drawing:
         grow: bool = False,
         details: Sequence[Detail] = (),
         detail: Detail | None = None,
+        labelling: dict[str, Any] = _LABELLING,
     ) -> None:
         self.sk = Sketch(look)
         # `details` (their discs in m): what stands in a disc is drawn but
@@ -266,7 +271,7 @@ class _Drawing:
         # whatever box it takes (Labels.write_later): the drawing given the
         # room round it on the laid-out sheet (_Composer.regrown)
         self.grow = grow
-        self.labels = Labels(self.sk, _TEXT, **_LABELLING, words=_index_words(lang))
+        self.labels = Labels(self.sk, _TEXT, **labelling, words=_index_words(lang))
         self.state = state
         self.mu_l = mu_l
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
@@ -759,7 +764,7 @@ def sketch_group(
 ) -> Sketch:
     state = fa.loads.state
     mech = state.mech
-    d = _Drawing(look, state, mu_l, lang, grow=grow)
+    d = _Drawing(look, state, mu_l, lang, grow=grow, labelling=_FORCE_LABELLING)
     gid = f"group-{g.name}"
     with d.sk.group(gid, "assur-group"):
         d.links(g.links, frame=False)
@@ -810,7 +815,7 @@ def sketch_driving_link(
 ) -> Sketch:
     state = fa.loads.state
     dl = fa.driving_link
-    d = _Drawing(look, state, mu_l, lang, grow=grow)
+    d = _Drawing(look, state, mu_l, lang, grow=grow, labelling=_FORCE_LABELLING)
     with d.sk.group("driving-link", "driving-link"):
         d.links([dl.link], frame=False)
         forces = [
@@ -961,7 +966,7 @@ def sketch_force_polygons(
     polygons are drawn again with the captions written first
     (`captions_first`), kept where that letters them better."""
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
+    labels = Labels(sk, _TEXT, **_FORCE_LABELLING, words=_index_words(lang))
     drawn: dict[tuple[str, int, int], bool] = {}
     short: list[str] = []
     offset = np.zeros(2)

@@ -93,10 +93,14 @@ def test_regression_seed_tasks_cleared_by_more_orders_and_captions(task, lang):
     assert found == []
 
 
-def _polygons_4_5(lang, monkeypatch, orders, grow):
+def _polygons_4_5(lang, monkeypatch, orders, grow, fine_kept=False):
     """task09_v2's polygon of group 4-5 at the scale its sheet 2 draws it (uk),
-    its labels written in `orders` orders."""
+    its labels written in `orders` orders (the names that stood far in an
+    order on the fine grid in the next order alone, as before
+    Labels.fine_kept, unless `fine_kept`)."""
     monkeypatch.setattr(sheet2, "_RETRY_ORDERS", orders)
+    if not fine_kept:
+        monkeypatch.setattr(sheet2, "_FORCE_LABELLING", sheet2._LABELLING)
     solution = mmt_plans.solve(mmt_plans.load(TASKS / "seed003" / "task09_v2.toml"))
     fa = solution.require_forces()
     (g,) = [g for g in fa.groups if g.name == "4-5"]
