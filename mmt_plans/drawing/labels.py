@@ -257,6 +257,12 @@ class Labels:
         self.far = 0  # labels written far from what they name with no leader: none reached
         self.grows = False  # LabelCounts.grows: what `grow` would have written otherwise
         self._later: list[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]] = []
+        # while `write_later` tries its orders: what each label wrote, by the
+        # label, with the region its writing read and what stood there (_Memo)
+        self._memo: dict[Any, list[_Memo]] | None = None
+        self._memo_base = 0  # the obstacles before the labels (the drawing's own)
+        # the box (x0, y0, x1, y1) the label being written has asked about so far
+        self._reads: list[float] | None = None
 
     def avoid(self, shape: BaseGeometry, clearance: float, *, heavy: bool = False) -> None:
         """Keep labels `clearance` mm off any shape (a filled polygon is avoided
@@ -503,6 +509,20 @@ class Labels:
             self._write_all(todo)
             return
         saved = self._state()
+        self._memo, self._memo_base = {}, len(self._obstacles)
+        try:
+            self._write_orders(todo, saved, retries, grow)
+        finally:
+            self._memo = None
+
+    def _write_orders(
+        self,
+        todo: list[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]],
+        saved: tuple[Any, ...],
+        retries: int,
+        grow: bool,
+    ) -> None:
+        """`write_later`'s orders of `todo` (`saved`: the state before the first)."""
         far = self._write_all(todo)
         # the better order: fewer written on something, then fewer far
         best: tuple[tuple[int, int], list[int]] = (
@@ -611,23 +631,149 @@ class Labels:
         fine grid); which of them (their places in it) went far."""
         far: list[int] = []
         plain = self.fine
-        for k, (kind, anchor, markup, other, first) in enumerate(todo):
+        for k, item in enumerate(todo):
             before = self.far
             self.fine = plain or k in fine
-            if kind == "along":  # `first` holds the fractions along it, if any
-                assert other is not None
-                along = None if first is None else [float(t) for t in first]
-                self.place_along(anchor, other, markup, around=True, along=along)
-            elif kind == "arrow":  # `first` holds the fractions along its shaft, if any
-                assert other is not None
-                along = None if first is None else [float(t) for t in first]
-                self.place_arrow(anchor, other, markup, along=along)
-            else:
-                self.place(anchor, markup, towards=other, first=first)
+            if self._memo is None:
+                self._write_one(*item)
+            else:  # (the same label, written as before where what it asks about stands as then)
+                self._memo_write((id(item), self.fine, self.size), item)
             if self.far > before:
                 far.append(k)
         self.fine = plain
         return far
+
+    def _write_one(
+        self,
+        kind: str,
+        anchor: Sequence[float],
+        markup: str,
+        other: PointLike | None,
+        first: PointLike | None,
+    ) -> None:
+        """Write one label kept by `later`, `later_along` or `later_arrow`."""
+        if kind == "along":  # `first` holds the fractions along it, if any
+            assert other is not None
+            along = None if first is None else [float(t) for t in first]
+            self.place_along(anchor, other, markup, around=True, along=along)
+        elif kind == "arrow":  # `first` holds the fractions along its shaft, if any
+            assert other is not None
+            along = None if first is None else [float(t) for t in first]
+            self.place_arrow(anchor, other, markup, along=along)
+        else:
+            self.place(anchor, markup, towards=other, first=first)
+
+    def _memo_write(
+        self,
+        key: tuple[Any, ...],
+        item: tuple[str, Sequence[float], str, PointLike | None, PointLike | None],
+    ) -> None:
+        """`_write_one(*item)`, or what it wrote in an order before where the
+        labels and leaders written since the drawing, within reach of the
+        region that writing asked about, stand as they stood then: the
+        placer's every answer reads only those (and the drawing, the same in
+        every order), so it writes the same again (a retry order moves the
+        labels of a crowded place and leaves the others as they were)."""
+        assert self._memo is not None
+        markup = item[2]
+        boxes, obstacles = len(self.boxes), len(self._obstacles)
+        for memo in self._memo.get(key, ()):
+            if self._standing(memo.region, markup, boxes, obstacles) == memo.standing:
+                self._write_again(memo)
+                return
+        state = self._state()
+        self._reads = [math.inf, math.inf, -math.inf, -math.inf]
+        try:
+            self._write_one(*item)
+            region = tuple(self._reads)
+        finally:
+            self._reads = None
+        calls, boxes, obstacles, outlines = state[:4]
+        self._memo.setdefault(key, []).append(
+            _Memo(
+                region,
+                self._standing(region, markup, boxes, obstacles),
+                tuple(self.sketch.calls[calls:]),
+                tuple(self.boxes[boxes:]),
+                tuple(self._texts[boxes:]),
+                tuple(self._obstacles[obstacles:]),
+                tuple(self._clearance[obstacles:]),
+                tuple(self._heavy[obstacles:]),
+                tuple(self._outlines[outlines:]),
+                tuple(sorted(i - obstacles for i in self._leaders - state[4])),
+                self.unsettled - state[5],
+                self.far - state[6],
+            )
+        )
+
+    def _read(self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray) -> None:
+        """The boxes (or two-point lines) from x0, y0 to x1, y1 are asked
+        about: the region `_memo_write` compares grown round them."""
+        reads = self._reads
+        if reads is not None and x0.size:
+            reads[0] = min(reads[0], float(np.minimum(x0, x1).min()))
+            reads[1] = min(reads[1], float(np.minimum(y0, y1).min()))
+            reads[2] = max(reads[2], float(np.maximum(x0, x1).max()))
+            reads[3] = max(reads[3], float(np.maximum(y0, y1).max()))
+
+    def _standing(
+        self, region: tuple[float, ...], markup: str, boxes: int, obstacles: int
+    ) -> tuple[Any, ...]:
+        """What of the first `boxes` labels and of the obstacles from the
+        drawing's own to the first `obstacles` (leaders) stands within reach
+        of `region` (x0, y0, x1, y1): within any distance the placer measures
+        from a box or a leader it asks about (spacing, clearances, a line run
+        along), lettering that reads like `markup` within LOOKALIKE_MM."""
+        x0, y0, x1, y1 = region
+        if x0 > x1:  # nothing asked about
+            return ()
+        grown = max(self.spacing, self.clearance, _FOOT_CLEAR, _LEADER_ALONG[0]) + 1.0
+        alike = LOOKALIKE_MM + 1.0
+        b = self._written_bounds()[:boxes] if boxes else np.zeros((0, 4))
+        reach = np.array(
+            [alike if {t, markup} in LOOKALIKE else grown for t in self._texts[:boxes]]
+        )
+        near = np.flatnonzero(
+            (b[:, 0] <= x1 + reach)
+            & (b[:, 2] >= x0 - reach)
+            & (b[:, 1] <= y1 + reach)
+            & (b[:, 3] >= y0 - reach)
+        )
+        drawn = self._obstacles[self._memo_base : obstacles]
+        ob = shapely.bounds(np.asarray(drawn, dtype=object)).reshape(-1, 4)
+        led = self._memo_base + np.flatnonzero(
+            (ob[:, 0] <= x1 + grown)
+            & (ob[:, 2] >= x0 - grown)
+            & (ob[:, 1] <= y1 + grown)
+            & (ob[:, 3] >= y0 - grown)
+        )
+        return (
+            b[near].tobytes(),
+            tuple(self._texts[i] for i in near),
+            tuple(
+                (self._obstacles[i].wkb, self._clearance[i], self._heavy[i], i in self._leaders)
+                for i in led.tolist()
+            ),
+        )
+
+    def _write_again(self, memo: _Memo) -> None:
+        """What `memo` keeps a label wrote, written again as it was."""
+        obstacles = len(self._obstacles)
+        self.sketch.calls.extend(memo.calls)
+        self.boxes.extend(memo.boxes)
+        self._boxes_changed()
+        self._texts.extend(memo.texts)
+        self._obstacles.extend(memo.obstacles)
+        self._clearance.extend(memo.clearance)
+        self._heavy.extend(memo.heavy)
+        self._outlines.extend(memo.outlines)
+        self._leaders.update(obstacles + i for i in memo.leaders)
+        self.unsettled += memo.unsettled
+        self.far += memo.far
+        if self.follow:
+            self._seen = len(self.sketch.calls)
+        self._tree = None
+        self._grown = None
 
     def _state(self) -> tuple[Any, ...]:
         """What writing labels changes, to go back to (`_restore`)."""
@@ -1065,6 +1211,9 @@ class Labels:
                 if free.size:
                     k = int(free[0])
                     break
+        # what the place hangs on: the candidates up to it (all where none is free)
+        upto = cx.size if k < 0 else k + 1
+        self._read(x0[:upto], y0[:upto], x1[:upto], y1[:upto])
         line: tuple[tuple[float, float], tuple[float, float]] | None = None
         if k < 0 and names is not None and self.fine:
             # between the compass's places: every place near it on a fine grid,
@@ -1174,10 +1323,11 @@ class Labels:
         x0, x1, y0, y1 = x0[keep], x1[keep], y0[keep], y1[keep]
         cost = self._label_cost(x0, y0, x1, y1) + self._lookalike_cost(markup, x0, y0, x1, y1)
         ok = np.flatnonzero(cost <= 1e-9)
-        if not ok.size:
-            return None
         # asked about in blocks, nearest first: the first free one ends it
-        first = self._first_clear(x0[ok], y0[ok], x1[ok], y1[ok], _FINE_BLOCK)
+        first = self._first_clear(x0[ok], y0[ok], x1[ok], y1[ok], _FINE_BLOCK) if ok.size else None
+        # what the place hangs on: the boxes up to it (all where none is free)
+        upto = keep.size if first is None else int(ok[first]) + 1
+        self._read(x0[:upto], y0[:upto], x1[:upto], y1[:upto])
         if first is None:
             return None
         k = keep[ok[first]]
@@ -1313,6 +1463,7 @@ class Labels:
         """The free boxes of those centred at cx, cy (led from ax, ay) that a
         leader reaches, with what each leader crosses; None if none is."""
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+        self._read(x0, y0, x1, y1)
         cost = self._label_cost(x0, y0, x1, y1) + self._lookalike_cost(markup, x0, y0, x1, y1)
         free = np.flatnonzero(cost <= 1e-9)
         free = free[self._clear(x0[free], y0[free], x1[free], y1[free])]  # and off the obstacles
@@ -1326,6 +1477,7 @@ class Labels:
             return None
         ux, uy = (px - ax) / length, (py - ay) / length
         ex, ey = px - 0.4 * ux, py - 0.4 * uy
+        self._read(ax, ay, ex, ey)  # the leaders, from their feet
         clear = shapely.linestrings(
             np.stack(
                 [
@@ -1513,6 +1665,28 @@ def _segment_segment(s: np.ndarray, t: np.ndarray) -> np.ndarray:
         np.minimum(_point_segment(s[:, 0], s[:, 1], t), _point_segment(s[:, 2], s[:, 3], t)),
     )
     return np.where(crossing, 0.0, d)
+
+
+@dataclass(frozen=True)
+class _Memo:
+    """What a label wrote in one of `write_later`'s orders (`_memo_write`):
+    the region its writing asked about (x0, y0, x1, y1), what stood within
+    reach of it then (`_standing`), what it added to the sketch and the
+    placer's lists (its leaders by their places past the obstacles before
+    it), and by how much the counts grew."""
+
+    region: tuple[float, ...]
+    standing: tuple[Any, ...]
+    calls: tuple[Call, ...]
+    boxes: tuple[BaseGeometry, ...]
+    texts: tuple[str, ...]
+    obstacles: tuple[BaseGeometry, ...]
+    clearance: tuple[float, ...]
+    heavy: tuple[bool, ...]
+    outlines: tuple[BaseGeometry, ...]
+    leaders: tuple[int, ...]
+    unsettled: int
+    far: int
 
 
 @dataclass(frozen=True)
