@@ -261,6 +261,8 @@ class Labels:
         # label, with the region its writing read and what stood there (_Memo)
         self._memo: dict[Any, list[_Memo]] | None = None
         self._memo_base = 0  # the obstacles before the labels (the drawing's own)
+        # the bounds and WKB of the obstacles past `_memo_base` (leaders), by their id
+        self._memo_shapes: dict[int, tuple[BaseGeometry, tuple[float, ...], bytes]] = {}
         # the box (x0, y0, x1, y1) the label being written has asked about so far
         self._reads: list[float] | None = None
 
@@ -514,6 +516,7 @@ class Labels:
             self._write_orders(todo, saved, retries, grow)
         finally:
             self._memo = None
+            self._memo_shapes = {}
 
     def _write_orders(
         self,
@@ -716,6 +719,16 @@ class Labels:
             reads[2] = max(reads[2], float(np.maximum(x0, x1).max()))
             reads[3] = max(reads[3], float(np.maximum(y0, y1).max()))
 
+    def _read_led(
+        self, cx: np.ndarray, cy: np.ndarray, ax: np.ndarray, ay: np.ndarray, *extent: float
+    ) -> None:
+        """`_read` of the boxes centred at cx, cy (width, height, drop
+        `extent`) led from ax, ay: of them and their feet (their leaders between)."""
+        if self._reads is not None:
+            w, h, drop = extent
+            self._read(cx - w / 2, cy - h / 2 - drop, cx + w / 2, cy + h / 2)
+            self._read(ax, ay, ax, ay)
+
     def _standing(
         self, region: tuple[float, ...], markup: str, boxes: int, obstacles: int
     ) -> tuple[Any, ...]:
@@ -730,31 +743,27 @@ class Labels:
         grown = max(self.spacing, self.clearance, _FOOT_CLEAR, _LEADER_ALONG[0]) + 1.0
         alike = LOOKALIKE_MM + 1.0
         b = self._written_bounds()[:boxes] if boxes else np.zeros((0, 4))
-        reach = np.array(
-            [alike if {t, markup} in LOOKALIKE else grown for t in self._texts[:boxes]]
-        )
+        reach: float | np.ndarray = grown
+        if any(markup in alikes for alikes in LOOKALIKE):
+            reach = np.array(
+                [alike if {t, markup} in LOOKALIKE else grown for t in self._texts[:boxes]]
+            )
         near = np.flatnonzero(
             (b[:, 0] <= x1 + reach)
             & (b[:, 2] >= x0 - reach)
             & (b[:, 1] <= y1 + reach)
             & (b[:, 3] >= y0 - reach)
         )
-        drawn = self._obstacles[self._memo_base : obstacles]
-        ob = shapely.bounds(np.asarray(drawn, dtype=object)).reshape(-1, 4)
-        led = self._memo_base + np.flatnonzero(
-            (ob[:, 0] <= x1 + grown)
-            & (ob[:, 2] >= x0 - grown)
-            & (ob[:, 1] <= y1 + grown)
-            & (ob[:, 3] >= y0 - grown)
-        )
-        return (
-            b[near].tobytes(),
-            tuple(self._texts[i] for i in near),
-            tuple(
-                (self._obstacles[i].wkb, self._clearance[i], self._heavy[i], i in self._leaders)
-                for i in led.tolist()
-            ),
-        )
+        led = []
+        for i in range(self._memo_base, obstacles):
+            shape = self._obstacles[i]
+            kept = self._memo_shapes.get(id(shape))
+            if kept is None or kept[0] is not shape:  # (an id is kept with its shape)
+                kept = self._memo_shapes[id(shape)] = (shape, shape.bounds, shape.wkb)
+            bx0, by0, bx1, by1 = kept[1]
+            if bx0 <= x1 + grown and bx1 >= x0 - grown and by0 <= y1 + grown and by1 >= y0 - grown:
+                led.append((kept[2], self._clearance[i], self._heavy[i], i in self._leaders))
+        return b[near].tobytes(), tuple(self._texts[i] for i in near), tuple(led)
 
     def _write_again(self, memo: _Memo) -> None:
         """What `memo` keeps a label wrote, written again as it was."""
@@ -1193,8 +1202,12 @@ class Labels:
         # a point inside a block is named beside the block
         outline = enclosing(names[1], self._outlines) if names and names[2] is None else None
         # the one rule: written within NEAR_MM of what it names, or led to it
-        near = (
-            _gap(names, x0, y0, x1, y1, outline) <= _NEAR_KEPT if names is not None else cost >= 0.0
+        # (measured of those off the lettering: the others only where no place is free)
+        off = np.flatnonzero(cost <= 1e-9)
+        off_near = (
+            _gap(names, x0[off], y0[off], x1[off], y1[off], outline) <= _NEAR_KEPT
+            if names is not None
+            else np.ones(off.size, dtype=bool)
         )
         # The obstacles are asked about the first ring of candidates with any
         # to ask, then about all the rest at once: most labels find room in the
@@ -1202,7 +1215,7 @@ class Labels:
         # candidates are in order of preference; a query costs more than its boxes).
         per_ring = max(1, cx.size // len(self.rings))
         # (only those near and off the lettering are asked, and only whether any is met)
-        asked = np.flatnonzero((cost <= 1e-9) & near)
+        asked = off[off_near]
         k = -1
         if asked.size:
             first_ring = np.searchsorted(asked, (asked[0] // per_ring + 1) * per_ring)
@@ -1257,12 +1270,22 @@ class Labels:
         if k < 0:
             # No place near it and none a leader reaches: a free place further
             # out (a label on a line or a label reads as neither), else the
-            # place near it that covers least, lettering first.
-            cost += self._obstacle_cost(x0, y0, x1, y1)
-            free = np.flatnonzero(cost <= 1e-9)
-            if free.size:
-                k = int(free[0])
+            # place near it that covers least, lettering first. (The first
+            # free: of those off the lettering and not near, the near ones
+            # were asked above and met something.)
+            further = off[~off_near]
+            first = self._first_clear(
+                x0[further], y0[further], x1[further], y1[further], _FINE_BLOCK
+            )
+            if first is not None:
+                k = int(further[first])
             else:
+                near = (
+                    _gap(names, x0, y0, x1, y1, outline) <= _NEAR_KEPT
+                    if names is not None
+                    else cost >= 0.0
+                )
+                cost += self._obstacle_cost(x0, y0, x1, y1)
                 cost += 100.0 * self._label_cost(x0, y0, x1, y1)
                 k = int(np.argmin(np.where(near, cost, np.inf) if near.any() else cost))
                 self.unsettled += 1
@@ -1434,13 +1457,19 @@ class Labels:
         while start < cx.size:
             part = slice(start, start + size)
             led = self._leaders_of(cx[part], cy[part], ax[part], ay[part], w, h, drop, markup)
+            if led is not None:
+                found = led.first(0, self._runs_along)
+                if found is not None:
+                    # what the pick hangs on: the boxes up to it (the first
+                    # such box and foot: one the same before it is picked as well)
+                    (fx, fy), ((sx, sy), _) = found
+                    at = (cx[part] == fx) & (cy[part] == fy) & (ax[part] == sx) & (ay[part] == sy)
+                    upto = slice(start, start + int(np.flatnonzero(at)[0]) + 1)
+                    self._read_led(cx[upto], cy[upto], ax[upto], ay[upto], w, h, drop)
+                    return found
+                kept.append(led)
+            self._read_led(cx[part], cy[part], ax[part], ay[part], w, h, drop)
             start, size = start + size, 4 * size
-            if led is None:
-                continue
-            found = led.first(0, self._runs_along)
-            if found is not None:
-                return found
-            kept.append(led)
         # the first that crosses a few thin lines
         for most in _LEADER_CROSSINGS:
             for led in kept:
@@ -1463,7 +1492,6 @@ class Labels:
         """The free boxes of those centred at cx, cy (led from ax, ay) that a
         leader reaches, with what each leader crosses; None if none is."""
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
-        self._read(x0, y0, x1, y1)
         cost = self._label_cost(x0, y0, x1, y1) + self._lookalike_cost(markup, x0, y0, x1, y1)
         free = np.flatnonzero(cost <= 1e-9)
         free = free[self._clear(x0[free], y0[free], x1[free], y1[free])]  # and off the obstacles
@@ -1477,7 +1505,6 @@ class Labels:
             return None
         ux, uy = (px - ax) / length, (py - ay) / length
         ex, ey = px - 0.4 * ux, py - 0.4 * uy
-        self._read(ax, ay, ex, ey)  # the leaders, from their feet
         clear = shapely.linestrings(
             np.stack(
                 [
