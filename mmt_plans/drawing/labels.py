@@ -591,8 +591,26 @@ class Labels:
         far in it first (as `write_later` with `retry`), until none goes far;
         the order that leaves fewest written on something, then fewest far,
         kept; where more than `most` went far in the first, it is kept (too
-        crowded for another order to help)."""
+        crowded for another order to help). Each of `writes` writes the same
+        label whenever it is called in the same state: one is written again
+        in another order as it was before where what it asks about stands as
+        then (`_memo_write`)."""
         saved = self._state()
+        self._memo, self._memo_base = {}, len(self._obstacles)
+        try:
+            self._write_each_orders(writes, orders, most, saved)
+        finally:
+            self._memo = None
+            self._memo_shapes = {}
+
+    def _write_each_orders(
+        self,
+        writes: Sequence[Callable[[], object]],
+        orders: Sequence[Sequence[int]],
+        most: int | None,
+        saved: tuple[Any, ...],
+    ) -> None:
+        """`write_each`'s orders of `writes` (`saved`: the state before the first)."""
         tries: list[list[int] | None] = [list(range(len(writes))), *map(list, orders), None]
         best: tuple[tuple[int, int], list[int], list[int], tuple[Any, ...]] | None = None
         last: list[int] = []
@@ -620,7 +638,10 @@ class Labels:
         far: list[int] = []
         for k, write in enumerate(writes):
             before = self.far
-            write()
+            if self._memo is None:
+                write()
+            else:
+                self._memo_write((id(write), self.fine, self.size), None, write)
             if self.far > before:
                 far.append(k)
         return far
@@ -640,7 +661,9 @@ class Labels:
             if self._memo is None:
                 self._write_one(*item)
             else:  # (the same label, written as before where what it asks about stands as then)
-                self._memo_write((id(item), self.fine, self.size), item)
+                self._memo_write(
+                    (id(item), self.fine, self.size), item[2], lambda: self._write_one(*item)
+                )
             if self.far > before:
                 far.append(k)
         self.fine = plain
@@ -667,18 +690,16 @@ class Labels:
             self.place(anchor, markup, towards=other, first=first)
 
     def _memo_write(
-        self,
-        key: tuple[Any, ...],
-        item: tuple[str, Sequence[float], str, PointLike | None, PointLike | None],
+        self, key: tuple[Any, ...], markup: str | None, write: Callable[[], object]
     ) -> None:
-        """`_write_one(*item)`, or what it wrote in an order before where the
+        """`write()` (that writes the label `markup`, None: not known
+        beforehand), or what it wrote in an order before where the
         labels and leaders written since the drawing, within reach of the
         region that writing asked about, stand as they stood then: the
         placer's every answer reads only those (and the drawing, the same in
         every order), so it writes the same again (a retry order moves the
         labels of a crowded place and leaves the others as they were)."""
         assert self._memo is not None
-        markup = item[2]
         boxes, obstacles = len(self.boxes), len(self._obstacles)
         for memo in self._memo.get(key, ()):
             if self._standing(memo.region, markup, boxes, obstacles) == memo.standing:
@@ -687,7 +708,7 @@ class Labels:
         state = self._state()
         self._reads = [math.inf, math.inf, -math.inf, -math.inf]
         try:
-            self._write_one(*item)
+            write()
             region = tuple(self._reads)
         finally:
             self._reads = None
@@ -706,6 +727,7 @@ class Labels:
                 tuple(sorted(i - obstacles for i in self._leaders - state[4])),
                 self.unsettled - state[5],
                 self.far - state[6],
+                len(self.sketch.calls) - self._seen if self.follow else 0,
             )
         )
 
@@ -730,13 +752,14 @@ class Labels:
             self._read(ax, ay, ax, ay)
 
     def _standing(
-        self, region: tuple[float, ...], markup: str, boxes: int, obstacles: int
+        self, region: tuple[float, ...], markup: str | None, boxes: int, obstacles: int
     ) -> tuple[Any, ...]:
         """What of the first `boxes` labels and of the obstacles from the
         drawing's own to the first `obstacles` (leaders) stands within reach
         of `region` (x0, y0, x1, y1): within any distance the placer measures
         from a box or a leader it asks about (spacing, clearances, a line run
-        along), lettering that reads like `markup` within LOOKALIKE_MM."""
+        along), lettering that reads like `markup` (any that reads like
+        another, where it is None) within LOOKALIKE_MM."""
         x0, y0, x1, y1 = region
         if x0 > x1:  # nothing asked about
             return ()
@@ -744,7 +767,14 @@ class Labels:
         alike = LOOKALIKE_MM + 1.0
         b = self._written_bounds()[:boxes] if boxes else np.zeros((0, 4))
         reach: float | np.ndarray = grown
-        if any(markup in alikes for alikes in LOOKALIKE):
+        if markup is None:
+            reach = np.array(
+                [
+                    alike if any(t in alikes for alikes in LOOKALIKE) else grown
+                    for t in self._texts[:boxes]
+                ]
+            )
+        elif any(markup in alikes for alikes in LOOKALIKE):
             reach = np.array(
                 [alike if {t, markup} in LOOKALIKE else grown for t in self._texts[:boxes]]
             )
@@ -779,8 +809,8 @@ class Labels:
         self._leaders.update(obstacles + i for i in memo.leaders)
         self.unsettled += memo.unsettled
         self.far += memo.far
-        if self.follow:
-            self._seen = len(self.sketch.calls)
+        if self.follow:  # (what it drew past its last label is still to be avoided)
+            self._seen = len(self.sketch.calls) - memo.unseen
         self._tree = None
         self._grown = None
 
@@ -1714,6 +1744,7 @@ class _Memo:
     leaders: tuple[int, ...]
     unsettled: int
     far: int
+    unseen: int  # of its calls, how many the placer had not yet looked at (the last)
 
 
 @dataclass(frozen=True)

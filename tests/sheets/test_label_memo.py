@@ -1,7 +1,7 @@
-"""`Labels.write_later` with retries writes a label again as an order before
-wrote it where what its writing asked about stands as it stood then
-(drawing/labels.py `_memo_write`): the sheet drawn so is the sheet drawn
-writing every label anew, record for record."""
+"""`Labels.write_later` with retries and `Labels.write_each` write a label
+again as an order before wrote it where what its writing asked about stands
+as it stood then (drawing/labels.py `_memo_write`): the drawing made so is
+the one made writing every label anew, record for record."""
 
 from __future__ import annotations
 
@@ -9,10 +9,12 @@ import dataclasses
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
 
 import mmt_plans
 from mmt_plans.drawing.labels import Labels
+from mmt_plans.drawing.sketch import Sketch
 from mmt_plans.render.recording import RecordingBackend
 from mmt_plans.sheets.sheet2 import compose_sheet2
 
@@ -58,8 +60,60 @@ def test_labels_written_again_from_the_memo_give_the_same_sheet(
     with_memo = _records(_sheet2("shaper"))
     assert again > 0
 
-    def anew(self: Labels, key: Any, item: Any) -> None:
-        self._write_one(*item)
+    def anew(self: Labels, key: Any, markup: Any, write: Any) -> None:
+        write()
 
     monkeypatch.setattr(Labels, "_memo_write", anew)
     assert with_memo == _records(_sheet2("shaper"))
+
+
+def _walled_and_free() -> tuple[Sketch, Labels, list[Any]]:
+    """A point walled in by a square of main lines hatched inside (its name
+    finds no free place near nor a leader: it stands far), and 100 mm off
+    three points with room round them; `write_each`'s writes, the walled one last."""
+    sk = Sketch(RecordingBackend().look)
+    square = [(-8.0, -8.0), (8.0, -8.0), (8.0, 8.0), (-8.0, 8.0), (-8.0, -8.0)]
+    for a, b in zip(square, square[1:]):
+        sk.line(a, b, "main")
+    for y in np.arange(-7.0, 7.5, 1.5):
+        sk.line((-7.5, float(y)), (7.5, float(y)), "thin")
+    points = [(100.0, 0.0), (110.0, 5.0), (120.0, 0.0)]
+    for p in points:
+        sk.circle(p, 0.5, fill="black")
+    labels = Labels(sk, 3.5)
+    writes: list[Any] = [
+        (lambda p=p, name=name: labels.place(p, name)) for p, name in zip(points, "ABD")
+    ]
+    writes.append(lambda: labels.place((0.0, 0.0), "C", towards=(0.0, 1.0)))
+    return sk, labels, writes
+
+
+def test_write_each_writes_again_from_the_memo_what_the_walled_name_leaves_as_it_was(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The walled name stands far, so all are written once more with it
+    first: each finds what stands within reach of what it asks about as in
+    the first order (none is near another), so all four are written again
+    from the memo, and the drawing is the one written anew."""
+    again = 0
+    write_again = Labels._write_again
+
+    def counted(self: Labels, memo: Any) -> None:
+        nonlocal again
+        again += 1
+        write_again(self, memo)
+
+    monkeypatch.setattr(Labels, "_write_again", counted)
+    sk, labels, writes = _walled_and_free()
+    labels.write_each(writes)
+    assert labels.far == 1 and again == 4
+    with_memo = _records(sk)
+
+    def anew(self: Labels, key: Any, markup: Any, write: Any) -> None:
+        write()
+
+    monkeypatch.setattr(Labels, "_memo_write", anew)
+    sk, labels, writes = _walled_and_free()
+    labels.write_each(writes)
+    assert labels.far == 1
+    assert with_memo == _records(sk)
