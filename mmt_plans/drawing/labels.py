@@ -547,7 +547,12 @@ class Labels:
                 break
             order = again
             self._restore(saved)
-            far = self._write_all([todo[j] for j in order], fine)
+            # (an order that cannot letter better than the best is cut short
+            # where nothing reads its far ones: the last, or one the loop ends after)
+            last = n + 1 == retries or (n + 1 >= _RETRIES and best[0][1] > _FEW_FAR and not grow)
+            far = self._write_all(
+                [todo[j] for j in order], fine, (saved[-2], best[0]) if last else None
+            )
             if (self.unsettled - saved[-2], len(far)) < best[0]:
                 bounds = self.lettered_bounds()
                 if grow or n < _RETRIES or _within(bounds, slot):
@@ -621,7 +626,10 @@ class Labels:
                 order = [*went, *(k for k in kept if k not in went)]
             if best is not None:
                 self._restore(saved)
-            far = [order[i] for i in self._each([writes[k] for k in order])]
+            # (an order that cannot letter better than the best is cut short:
+            # it is not kept, and the next reads the best's far ones)
+            bound = None if best is None else (saved[-2], best[0])
+            far = [order[i] for i in self._each([writes[k] for k in order], bound)]
             score = (self.unsettled - saved[-2], len(far))
             last = order
             if best is None or score < best[0]:
@@ -633,8 +641,13 @@ class Labels:
             self._restore(saved)
             self._put_back(best[3])
 
-    def _each(self, writes: Sequence[Callable[[], object]]) -> list[int]:
-        """Call `writes` in turn; which of them (their places in it) went far."""
+    def _each(
+        self,
+        writes: Sequence[Callable[[], object]],
+        bound: tuple[int, tuple[int, int]] | None = None,
+    ) -> list[int]:
+        """Call `writes` in turn; which of them (their places in it) went far
+        (where it cannot beat `bound`, cut short: `_beaten`)."""
         far: list[int] = []
         for k, write in enumerate(writes):
             before = self.far
@@ -644,15 +657,29 @@ class Labels:
                 self._memo_write((id(write), self.fine, self.size), None, write)
             if self.far > before:
                 far.append(k)
+                if self._beaten(bound, len(far)):
+                    break
         return far
+
+    def _beaten(self, bound: tuple[int, tuple[int, int]] | None, far: int) -> bool:
+        """Whether an order whose writing has left `far` labels far can no
+        longer letter better than `bound` (the unsettled count before it and
+        the best order's (unsettled, far)): its counts only grow."""
+        if bound is None:
+            return False
+        base, (unsettled, most) = bound
+        now = self.unsettled - base
+        return now > unsettled or (now == unsettled and far >= most)
 
     def _write_all(
         self,
         todo: Sequence[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]],
         fine: Collection[int] = (),
+        bound: tuple[int, tuple[int, int]] | None = None,
     ) -> list[int]:
         """Write `todo` in order (those at the places `fine` in it with the
-        fine grid); which of them (their places in it) went far."""
+        fine grid); which of them (their places in it) went far (where it
+        cannot beat `bound`, cut short: `_beaten`)."""
         far: list[int] = []
         plain = self.fine
         for k, item in enumerate(todo):
@@ -666,6 +693,8 @@ class Labels:
                 )
             if self.far > before:
                 far.append(k)
+                if self._beaten(bound, len(far)):
+                    break
         self.fine = plain
         return far
 

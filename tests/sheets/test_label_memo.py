@@ -1,7 +1,9 @@
 """`Labels.write_later` with retries and `Labels.write_each` write a label
 again as an order before wrote it where what its writing asked about stands
-as it stood then (drawing/labels.py `_memo_write`): the drawing made so is
-the one made writing every label anew, record for record."""
+as it stood then (drawing/labels.py `_memo_write`), and cut an order short
+where it can no longer letter better than the best (`_beaten`): the drawing
+made so is the one made writing every label anew in every order, record for
+record."""
 
 from __future__ import annotations
 
@@ -60,11 +62,18 @@ def test_labels_written_again_from_the_memo_give_the_same_sheet(
     with_memo = _records(_sheet2("shaper"))
     assert again > 0
 
+    _anew(monkeypatch)
+    assert with_memo == _records(_sheet2("shaper"))
+
+
+def _anew(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every label written anew, every order to its end."""
+
     def anew(self: Labels, key: Any, markup: Any, write: Any) -> None:
         write()
 
     monkeypatch.setattr(Labels, "_memo_write", anew)
-    assert with_memo == _records(_sheet2("shaper"))
+    monkeypatch.setattr(Labels, "_beaten", lambda self, bound, far: False)
 
 
 def _walled_and_free() -> tuple[Sketch, Labels, list[Any]]:
@@ -91,10 +100,12 @@ def _walled_and_free() -> tuple[Sketch, Labels, list[Any]]:
 def test_write_each_writes_again_from_the_memo_what_the_walled_name_leaves_as_it_was(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    """The walled name stands far, so all are written once more with it
-    first: each finds what stands within reach of what it asks about as in
-    the first order (none is near another), so all four are written again
-    from the memo, and the drawing is the one written anew."""
+    """The walled name stands far, so all are written once more in the
+    order asked (the same), each finding what stands within reach of what
+    it asks about as in the first (none is near another): all four written
+    again from the memo; then with the walled one first, again from the
+    memo, and cut short there (one far already, as many as the best). The
+    drawing is the one written anew in every order."""
     again = 0
     write_again = Labels._write_again
 
@@ -105,15 +116,11 @@ def test_write_each_writes_again_from_the_memo_what_the_walled_name_leaves_as_it
 
     monkeypatch.setattr(Labels, "_write_again", counted)
     sk, labels, writes = _walled_and_free()
-    labels.write_each(writes)
-    assert labels.far == 1 and again == 4
+    labels.write_each(writes, [[0, 1, 2, 3]])
+    assert labels.far == 1 and again == 5
     with_memo = _records(sk)
-
-    def anew(self: Labels, key: Any, markup: Any, write: Any) -> None:
-        write()
-
-    monkeypatch.setattr(Labels, "_memo_write", anew)
+    _anew(monkeypatch)
     sk, labels, writes = _walled_and_free()
-    labels.write_each(writes)
+    labels.write_each(writes, [[0, 1, 2, 3]])
     assert labels.far == 1
     assert with_memo == _records(sk)
