@@ -263,6 +263,14 @@ class Labels:
         self.far = 0  # labels written far from what they name with no leader: none reached
         self.grows = False  # LabelCounts.grows: what `grow` would have written otherwise
         self._later: list[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]] = []
+        # while `write_later` tries its orders: what each label wrote, by the
+        # label, with the region its writing read and what stood there (_Memo)
+        self._memo: dict[Any, list[_Memo]] | None = None
+        self._memo_base = 0  # the obstacles before the labels (the drawing's own)
+        # the bounds and WKB of the obstacles past `_memo_base` (leaders), by their id
+        self._memo_shapes: dict[int, tuple[BaseGeometry, tuple[float, ...], bytes]] = {}
+        # the box (x0, y0, x1, y1) the label being written has asked about so far
+        self._reads: list[float] | None = None
 
     def avoid(self, shape: BaseGeometry, clearance: float, *, heavy: bool = False) -> None:
         """Keep labels `clearance` mm off any shape (a filled polygon is avoided
@@ -509,6 +517,21 @@ class Labels:
             self._write_all(todo)
             return
         saved = self._state()
+        self._memo, self._memo_base = {}, len(self._obstacles)
+        try:
+            self._write_orders(todo, saved, retries, grow)
+        finally:
+            self._memo = None
+            self._memo_shapes = {}
+
+    def _write_orders(
+        self,
+        todo: list[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]],
+        saved: tuple[Any, ...],
+        retries: int,
+        grow: bool,
+    ) -> None:
+        """`write_later`'s orders of `todo` (`saved`: the state before the first)."""
         far = self._write_all(todo)
         # the better order: fewer written on something, then fewer far
         best: tuple[tuple[int, int], list[int]] = (
@@ -537,7 +560,12 @@ class Labels:
                 break
             order = again
             self._restore(saved)
-            far = self._write_all([todo[j] for j in order], fine)
+            # (an order that cannot letter better than the best is cut short
+            # where nothing reads its far ones: the last, or one the loop ends after)
+            last = n + 1 == retries or (n + 1 >= _RETRIES and best[0][1] > _FEW_FAR and not grow)
+            far = self._write_all(
+                [todo[j] for j in order], fine, (saved[-2], best[0]) if last else None
+            )
             if (self.unsettled - saved[-2], len(far)) < best[0]:
                 bounds = self.lettered_bounds()
                 if grow or n < _RETRIES or _within(bounds, slot):
@@ -581,8 +609,26 @@ class Labels:
         far in it first (as `write_later` with `retry`), until none goes far;
         the order that leaves fewest written on something, then fewest far,
         kept; where more than `most` went far in the first, it is kept (too
-        crowded for another order to help)."""
+        crowded for another order to help). Each of `writes` writes the same
+        label whenever it is called in the same state: one is written again
+        in another order as it was before where what it asks about stands as
+        then (`_memo_write`)."""
         saved = self._state()
+        self._memo, self._memo_base = {}, len(self._obstacles)
+        try:
+            self._write_each_orders(writes, orders, most, saved)
+        finally:
+            self._memo = None
+            self._memo_shapes = {}
+
+    def _write_each_orders(
+        self,
+        writes: Sequence[Callable[[], object]],
+        orders: Sequence[Sequence[int]],
+        most: int | None,
+        saved: tuple[Any, ...],
+    ) -> None:
+        """`write_each`'s orders of `writes` (`saved`: the state before the first)."""
         tries: list[list[int] | None] = [list(range(len(writes))), *map(list, orders), None]
         best: tuple[tuple[int, int], list[int], list[int], tuple[Any, ...]] | None = None
         last: list[int] = []
@@ -593,7 +639,10 @@ class Labels:
                 order = [*went, *(k for k in kept if k not in went)]
             if best is not None:
                 self._restore(saved)
-            far = [order[i] for i in self._each([writes[k] for k in order])]
+            # (an order that cannot letter better than the best is cut short:
+            # it is not kept, and the next reads the best's far ones)
+            bound = None if best is None else (saved[-2], best[0])
+            far = [order[i] for i in self._each([writes[k] for k in order], bound)]
             score = (self.unsettled - saved[-2], len(far))
             last = order
             if best is None or score < best[0]:
@@ -605,42 +654,207 @@ class Labels:
             self._restore(saved)
             self._put_back(best[3])
 
-    def _each(self, writes: Sequence[Callable[[], object]]) -> list[int]:
-        """Call `writes` in turn; which of them (their places in it) went far."""
+    def _each(
+        self,
+        writes: Sequence[Callable[[], object]],
+        bound: tuple[int, tuple[int, int]] | None = None,
+    ) -> list[int]:
+        """Call `writes` in turn; which of them (their places in it) went far
+        (where it cannot beat `bound`, cut short: `_beaten`)."""
         far: list[int] = []
         for k, write in enumerate(writes):
             before = self.far
-            write()
+            if self._memo is None:
+                write()
+            else:
+                self._memo_write((id(write), self.fine, self.size), None, write)
             if self.far > before:
                 far.append(k)
+                if self._beaten(bound, len(far)):
+                    break
         return far
+
+    def _beaten(self, bound: tuple[int, tuple[int, int]] | None, far: int) -> bool:
+        """Whether an order whose writing has left `far` labels far can no
+        longer letter better than `bound` (the unsettled count before it and
+        the best order's (unsettled, far)): its counts only grow."""
+        if bound is None:
+            return False
+        base, (unsettled, most) = bound
+        now = self.unsettled - base
+        return now > unsettled or (now == unsettled and far >= most)
 
     def _write_all(
         self,
         todo: Sequence[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]],
         fine: Collection[int] = (),
+        bound: tuple[int, tuple[int, int]] | None = None,
     ) -> list[int]:
         """Write `todo` in order (those at the places `fine` in it with the
-        fine grid); which of them (their places in it) went far."""
+        fine grid); which of them (their places in it) went far (where it
+        cannot beat `bound`, cut short: `_beaten`)."""
         far: list[int] = []
         plain = self.fine
-        for k, (kind, anchor, markup, other, first) in enumerate(todo):
+        for k, item in enumerate(todo):
             before = self.far
             self.fine = plain or k in fine
-            if kind == "along":  # `first` holds the fractions along it, if any
-                assert other is not None
-                along = None if first is None else [float(t) for t in first]
-                self.place_along(anchor, other, markup, around=True, along=along)
-            elif kind == "arrow":  # `first` holds the fractions along its shaft, if any
-                assert other is not None
-                along = None if first is None else [float(t) for t in first]
-                self.place_arrow(anchor, other, markup, along=along)
-            else:
-                self.place(anchor, markup, towards=other, first=first)
+            if self._memo is None:
+                self._write_one(*item)
+            else:  # (the same label, written as before where what it asks about stands as then)
+                self._memo_write(
+                    (id(item), self.fine, self.size), item[2], lambda: self._write_one(*item)
+                )
             if self.far > before:
                 far.append(k)
+                if self._beaten(bound, len(far)):
+                    break
         self.fine = plain
         return far
+
+    def _write_one(
+        self,
+        kind: str,
+        anchor: Sequence[float],
+        markup: str,
+        other: PointLike | None,
+        first: PointLike | None,
+    ) -> None:
+        """Write one label kept by `later`, `later_along` or `later_arrow`."""
+        if kind == "along":  # `first` holds the fractions along it, if any
+            assert other is not None
+            along = None if first is None else [float(t) for t in first]
+            self.place_along(anchor, other, markup, around=True, along=along)
+        elif kind == "arrow":  # `first` holds the fractions along its shaft, if any
+            assert other is not None
+            along = None if first is None else [float(t) for t in first]
+            self.place_arrow(anchor, other, markup, along=along)
+        else:
+            self.place(anchor, markup, towards=other, first=first)
+
+    def _memo_write(
+        self, key: tuple[Any, ...], markup: str | None, write: Callable[[], object]
+    ) -> None:
+        """`write()` (that writes the label `markup`, None: not known
+        beforehand), or what it wrote in an order before where the
+        labels and leaders written since the drawing, within reach of the
+        region that writing asked about, stand as they stood then: the
+        placer's every answer reads only those (and the drawing, the same in
+        every order), so it writes the same again (a retry order moves the
+        labels of a crowded place and leaves the others as they were)."""
+        assert self._memo is not None
+        boxes, obstacles = len(self.boxes), len(self._obstacles)
+        for memo in self._memo.get(key, ()):
+            if self._standing(memo.region, markup, boxes, obstacles) == memo.standing:
+                self._write_again(memo)
+                return
+        state = self._state()
+        self._reads = [math.inf, math.inf, -math.inf, -math.inf]
+        try:
+            write()
+            region = tuple(self._reads)
+        finally:
+            self._reads = None
+        calls, boxes, obstacles, outlines = state[:4]
+        self._memo.setdefault(key, []).append(
+            _Memo(
+                region,
+                self._standing(region, markup, boxes, obstacles),
+                tuple(self.sketch.calls[calls:]),
+                tuple(self.boxes[boxes:]),
+                tuple(self._texts[boxes:]),
+                tuple(self._obstacles[obstacles:]),
+                tuple(self._clearance[obstacles:]),
+                tuple(self._heavy[obstacles:]),
+                tuple(self._outlines[outlines:]),
+                tuple(sorted(i - obstacles for i in self._leaders - state[4])),
+                self.unsettled - state[5],
+                self.far - state[6],
+                len(self.sketch.calls) - self._seen if self.follow else 0,
+            )
+        )
+
+    def _read(self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray) -> None:
+        """The boxes (or two-point lines) from x0, y0 to x1, y1 are asked
+        about: the region `_memo_write` compares grown round them."""
+        reads = self._reads
+        if reads is not None and x0.size:
+            reads[0] = min(reads[0], float(np.minimum(x0, x1).min()))
+            reads[1] = min(reads[1], float(np.minimum(y0, y1).min()))
+            reads[2] = max(reads[2], float(np.maximum(x0, x1).max()))
+            reads[3] = max(reads[3], float(np.maximum(y0, y1).max()))
+
+    def _read_led(
+        self, cx: np.ndarray, cy: np.ndarray, ax: np.ndarray, ay: np.ndarray, *extent: float
+    ) -> None:
+        """`_read` of the boxes centred at cx, cy (width, height, drop
+        `extent`) led from ax, ay: of them and their feet (their leaders between)."""
+        if self._reads is not None:
+            w, h, drop = extent
+            self._read(cx - w / 2, cy - h / 2 - drop, cx + w / 2, cy + h / 2)
+            self._read(ax, ay, ax, ay)
+
+    def _standing(
+        self, region: tuple[float, ...], markup: str | None, boxes: int, obstacles: int
+    ) -> tuple[Any, ...]:
+        """What of the first `boxes` labels and of the obstacles from the
+        drawing's own to the first `obstacles` (leaders) stands within reach
+        of `region` (x0, y0, x1, y1): within any distance the placer measures
+        from a box or a leader it asks about (spacing, clearances, a line run
+        along), lettering that reads like `markup` (any that reads like
+        another, where it is None) within LOOKALIKE_MM."""
+        x0, y0, x1, y1 = region
+        if x0 > x1:  # nothing asked about
+            return ()
+        grown = max(self.spacing, self.clearance, _FOOT_CLEAR, _LEADER_ALONG[0]) + 1.0
+        alike = LOOKALIKE_MM + 1.0
+        b = self._written_bounds()[:boxes] if boxes else np.zeros((0, 4))
+        reach: float | np.ndarray = grown
+        if markup is None:
+            reach = np.array(
+                [
+                    alike if any(t in alikes for alikes in LOOKALIKE) else grown
+                    for t in self._texts[:boxes]
+                ]
+            )
+        elif any(markup in alikes for alikes in LOOKALIKE):
+            reach = np.array(
+                [alike if {t, markup} in LOOKALIKE else grown for t in self._texts[:boxes]]
+            )
+        near = np.flatnonzero(
+            (b[:, 0] <= x1 + reach)
+            & (b[:, 2] >= x0 - reach)
+            & (b[:, 1] <= y1 + reach)
+            & (b[:, 3] >= y0 - reach)
+        )
+        led = []
+        for i in range(self._memo_base, obstacles):
+            shape = self._obstacles[i]
+            kept = self._memo_shapes.get(id(shape))
+            if kept is None or kept[0] is not shape:  # (an id is kept with its shape)
+                kept = self._memo_shapes[id(shape)] = (shape, shape.bounds, shape.wkb)
+            bx0, by0, bx1, by1 = kept[1]
+            if bx0 <= x1 + grown and bx1 >= x0 - grown and by0 <= y1 + grown and by1 >= y0 - grown:
+                led.append((kept[2], self._clearance[i], self._heavy[i], i in self._leaders))
+        return b[near].tobytes(), tuple(self._texts[i] for i in near), tuple(led)
+
+    def _write_again(self, memo: _Memo) -> None:
+        """What `memo` keeps a label wrote, written again as it was."""
+        obstacles = len(self._obstacles)
+        self.sketch.calls.extend(memo.calls)
+        self.boxes.extend(memo.boxes)
+        self._boxes_changed()
+        self._texts.extend(memo.texts)
+        self._obstacles.extend(memo.obstacles)
+        self._clearance.extend(memo.clearance)
+        self._heavy.extend(memo.heavy)
+        self._outlines.extend(memo.outlines)
+        self._leaders.update(obstacles + i for i in memo.leaders)
+        self.unsettled += memo.unsettled
+        self.far += memo.far
+        if self.follow:  # (what it drew past its last label is still to be avoided)
+            self._seen = len(self.sketch.calls) - memo.unseen
+        self._tree = None
+        self._grown = None
 
     def _state(self) -> tuple[Any, ...]:
         """What writing labels changes, to go back to (`_restore`)."""
@@ -1060,8 +1274,12 @@ class Labels:
         # a point inside a block is named beside the block
         outline = enclosing(names[1], self._outlines) if names and names[2] is None else None
         # the one rule: written within NEAR_MM of what it names, or led to it
-        near = (
-            _gap(names, x0, y0, x1, y1, outline) <= _NEAR_KEPT if names is not None else cost >= 0.0
+        # (measured of those off the lettering: the others only where no place is free)
+        off = np.flatnonzero(cost <= 1e-9)
+        off_near = (
+            _gap(names, x0[off], y0[off], x1[off], y1[off], outline) <= _NEAR_KEPT
+            if names is not None
+            else np.ones(off.size, dtype=bool)
         )
         # The obstacles are asked about the first ring of candidates with any
         # to ask, then about all the rest at once: most labels find room in the
@@ -1069,7 +1287,7 @@ class Labels:
         # candidates are in order of preference; a query costs more than its boxes).
         per_ring = max(1, cx.size // len(self.rings))
         # (only those near and off the lettering are asked, and only whether any is met)
-        asked = np.flatnonzero((cost <= 1e-9) & near)
+        asked = off[off_near]
         k = -1
         if asked.size:
             first_ring = np.searchsorted(asked, (asked[0] // per_ring + 1) * per_ring)
@@ -1078,6 +1296,9 @@ class Labels:
                 if free.size:
                     k = int(free[0])
                     break
+        # what the place hangs on: the candidates up to it (all where none is free)
+        upto = cx.size if k < 0 else k + 1
+        self._read(x0[:upto], y0[:upto], x1[:upto], y1[:upto])
         line: tuple[tuple[float, float], tuple[float, float]] | None = None
         if k < 0 and names is not None and self.fine:
             # between the compass's places: every place near it on a fine grid,
@@ -1121,12 +1342,22 @@ class Labels:
         if k < 0:
             # No place near it and none a leader reaches: a free place further
             # out (a label on a line or a label reads as neither), else the
-            # place near it that covers least, lettering first.
-            cost += self._obstacle_cost(x0, y0, x1, y1)
-            free = np.flatnonzero(cost <= 1e-9)
-            if free.size:
-                k = int(free[0])
+            # place near it that covers least, lettering first. (The first
+            # free: of those off the lettering and not near, the near ones
+            # were asked above and met something.)
+            further = off[~off_near]
+            first = self._first_clear(
+                x0[further], y0[further], x1[further], y1[further], _FINE_BLOCK
+            )
+            if first is not None:
+                k = int(further[first])
             else:
+                near = (
+                    _gap(names, x0, y0, x1, y1, outline) <= _NEAR_KEPT
+                    if names is not None
+                    else cost >= 0.0
+                )
+                cost += self._obstacle_cost(x0, y0, x1, y1)
                 cost += 100.0 * self._label_cost(x0, y0, x1, y1)
                 k = int(np.argmin(np.where(near, cost, np.inf) if near.any() else cost))
                 self.unsettled += 1
@@ -1187,10 +1418,11 @@ class Labels:
         x0, x1, y0, y1 = x0[keep], x1[keep], y0[keep], y1[keep]
         cost = self._label_cost(x0, y0, x1, y1) + self._lookalike_cost(markup, x0, y0, x1, y1)
         ok = np.flatnonzero(cost <= 1e-9)
-        if not ok.size:
-            return None
         # asked about in blocks, nearest first: the first free one ends it
-        first = self._first_clear(x0[ok], y0[ok], x1[ok], y1[ok], _FINE_BLOCK)
+        first = self._first_clear(x0[ok], y0[ok], x1[ok], y1[ok], _FINE_BLOCK) if ok.size else None
+        # what the place hangs on: the boxes up to it (all where none is free)
+        upto = keep.size if first is None else int(ok[first]) + 1
+        self._read(x0[:upto], y0[:upto], x1[:upto], y1[:upto])
         if first is None:
             return None
         k = keep[ok[first]]
@@ -1297,13 +1529,19 @@ class Labels:
         while start < cx.size:
             part = slice(start, start + size)
             led = self._leaders_of(cx[part], cy[part], ax[part], ay[part], w, h, drop, markup)
+            if led is not None:
+                found = led.first(0, self._runs_along)
+                if found is not None:
+                    # what the pick hangs on: the boxes up to it (the first
+                    # such box and foot: one the same before it is picked as well)
+                    (fx, fy), ((sx, sy), _) = found
+                    at = (cx[part] == fx) & (cy[part] == fy) & (ax[part] == sx) & (ay[part] == sy)
+                    upto = slice(start, start + int(np.flatnonzero(at)[0]) + 1)
+                    self._read_led(cx[upto], cy[upto], ax[upto], ay[upto], w, h, drop)
+                    return found
+                kept.append(led)
+            self._read_led(cx[part], cy[part], ax[part], ay[part], w, h, drop)
             start, size = start + size, 4 * size
-            if led is None:
-                continue
-            found = led.first(0, self._runs_along)
-            if found is not None:
-                return found
-            kept.append(led)
         # the first that crosses a few thin lines
         for most in _LEADER_CROSSINGS:
             for led in kept:
@@ -1526,6 +1764,29 @@ def _segment_segment(s: np.ndarray, t: np.ndarray) -> np.ndarray:
         np.minimum(_point_segment(s[:, 0], s[:, 1], t), _point_segment(s[:, 2], s[:, 3], t)),
     )
     return np.where(crossing, 0.0, d)
+
+
+@dataclass(frozen=True)
+class _Memo:
+    """What a label wrote in one of `write_later`'s orders (`_memo_write`):
+    the region its writing asked about (x0, y0, x1, y1), what stood within
+    reach of it then (`_standing`), what it added to the sketch and the
+    placer's lists (its leaders by their places past the obstacles before
+    it), and by how much the counts grew."""
+
+    region: tuple[float, ...]
+    standing: tuple[Any, ...]
+    calls: tuple[Call, ...]
+    boxes: tuple[BaseGeometry, ...]
+    texts: tuple[str, ...]
+    obstacles: tuple[BaseGeometry, ...]
+    clearance: tuple[float, ...]
+    heavy: tuple[bool, ...]
+    outlines: tuple[BaseGeometry, ...]
+    leaders: tuple[int, ...]
+    unsettled: int
+    far: int
+    unseen: int  # of its calls, how many the placer had not yet looked at (the last)
 
 
 @dataclass(frozen=True)
