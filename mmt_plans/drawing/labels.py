@@ -550,13 +550,13 @@ class Labels:
         for n in range(retries):
             # those that went far, first (already first: the same order writes the same)
             again = [*(order[i] for i in far), *(j for k, j in enumerate(order) if k not in far)]
-            last = fine
+            fine_before = fine
             if self.fine_far and self.fine_kept:
                 went |= {order[i] for i in far}
                 fine = {k for k, j in enumerate(again) if j in went}
             else:
                 fine = set(range(len(far))) if self.fine_far else set()
-            if again == order and (not fine or self.fine_kept and fine == last):
+            if again == order and (not fine or self.fine_kept and fine == fine_before):
                 break
             order = again
             self._restore(saved)
