@@ -69,7 +69,7 @@ from ..scales import (
 from ..solution import Solution
 from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, title_fields
 from .common import next_scale as _next_scale
-from .crowd import crowded_ends, crowded_names
+from .crowd import crowded, crowded_ends, crowded_names
 from .scales_record import Sheet1Scales
 
 __all__ = ["Sheet1", "compose_sheet1", "GROUPS"]
@@ -1192,20 +1192,41 @@ def sketch_mechanism_details(
     names crowd, with its crowd marked by a circle and a letter, and its
     detail views (a sketch each): the crowd drawn again at a larger scale of
     the standard series, lettered there (`mechanism_details`, by the first of
-    `letters`). None where fewer than _MECHANISM_CROWD of its names stand
-    far or on something (`crowded_names`: leaders serve a name or two), or
-    where the detail views letter them no better."""
+    `letters`), where _MECHANISM_CROWD of its names at least stand far or
+    on something (`crowded_names`); else, or where that view letters the
+    drawing no better, round the joints' names among them alone
+    (`_crowded_joints`: a joint walled in by lines, the crank's pivot in the
+    fan of its positions, that no leader reaches without crossing a main
+    line). None where no name crowds so, or where no detail view letters
+    the drawing better."""
     crowd = crowded_names(plain, lang)
-    if len(crowd) < _MECHANISM_CROWD:
-        return None
-    details = mechanism_details(solution, mu_l, crowd, letters)
-    if not details:
-        return None
-    sk = sketch_mechanism(solution, mu_l, look, lang, details)
-    views = [sketch_mechanism(solution, mu_l, look, lang, details, d) for d in details]
-    if sum(len(crowded_names(v, lang)) for v in (sk, *views)) >= len(crowd):
-        return None  # the details letter the crowd no better
-    return sk, views
+    lettered_badly = len(crowd)
+
+    def crowds() -> Iterator[np.ndarray]:
+        if lettered_badly >= _MECHANISM_CROWD:
+            yield crowd
+        joints = _crowded_joints(solution, plain, lang) if lettered_badly else crowd
+        if len(joints) and (lettered_badly < _MECHANISM_CROWD or len(joints) < lettered_badly):
+            yield joints  # (not the whole crowd again)
+
+    for knot in crowds():
+        details = mechanism_details(solution, mu_l, knot, letters)
+        if not details:
+            continue
+        sk = sketch_mechanism(solution, mu_l, look, lang, details)
+        views = [sketch_mechanism(solution, mu_l, look, lang, details, d) for d in details]
+        if sum(len(crowded_names(v, lang)) for v in (sk, *views)) < lettered_badly:
+            return sk, views
+    return None  # no detail view letters the drawing better
+
+
+def _crowded_joints(solution: Solution, plain: Sketch, lang: Language) -> np.ndarray:
+    """Where the joints' names of the mechanism `plain` that stand far or on
+    something stand for (mm, one row each: the joint), as `crowded_names`."""
+    joints = {point_markup(p) for p in solution.mechanism.point_owners}
+    return np.array(
+        [n.anchor for n in crowded(plain, lang) if n.markup in joints], dtype=float
+    ).reshape(-1, 2)
 
 
 _MECHANISM_CROWD = 3  # the mechanism's names far or on something: this many make a crowd
