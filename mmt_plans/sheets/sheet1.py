@@ -259,11 +259,20 @@ class _ArcPlacer:
     """Where the ω/ε arcs of a link go: round a point of the link, on one side
     of it, crossing as little of what is drawn as it can (a main line of a link
     or block counts 1, a thin line of another position or a trajectory 0.2, an
-    arc or the room kept for a label 3, a label or its leader written 50: an
-    arc over it puts a label on a line; made `far`, a block's outline or a pin
-    10), with a free box for each label next to its arrowhead."""
+    arc 3, the room kept for a link's ω/ε label 50: an arc over it leaves that
+    label on a line or far from its own arc, unless it finds another place; a
+    label or its leader written 100: an arc over it puts that label on a line;
+    made `far`, a block's outline or a pin 10), with a free box for each label
+    next to its arrowhead."""
 
-    _WEIGHT = {"main": 1.0, "thin": 0.2, "arc": 3.0, "label": 50.0, "symbol": 10.0}
+    _WEIGHT = {
+        "main": 1.0,
+        "thin": 0.2,
+        "arc": 3.0,
+        "room": 50.0,
+        "label": 100.0,
+        "symbol": 10.0,
+    }
 
     def __init__(self, sk: Sketch, far: bool = False) -> None:
         self.sk = sk
@@ -424,7 +433,9 @@ class _ArcPlacer:
         assert best is not None
         _, centre, start, picked, wider, span = best
         self.lacking |= any(p is None for p in picked)
-        self.reserve([_room_box(*p) for p in picked if p is not None])
+        # (another position's arcs of the link, drawn round the same place, go
+        # round these rooms: the label is written in its room later)
+        self._add([_room_box(*p) for p in picked if p is not None], "room")
         return centre, start, picked, wider, span
 
     def _beside(
