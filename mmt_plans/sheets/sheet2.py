@@ -1310,8 +1310,8 @@ def lever_crowding(
     the detail views given (`lever_details`' weighing of two discs)."""
 
     def crowding(details: tuple[LeverDetail, ...]) -> int:
-        views = [sketch_lever(fa, mu_V, look, lang, [], details)]
-        views += [sketch_lever_detail(fa, mu_V, look, lang, d) for d in details]
+        views = [sketch_lever(fa, mu_V, look, lang, [], details, one_per_line=False)]
+        views += [sketch_lever_detail(fa, mu_V, look, lang, d, one_per_line=False) for d in details]
         return sum(len(list(crowded(v, lang))) for v in views)
 
     return crowding
@@ -1333,22 +1333,36 @@ def sketch_lever(
     lang: Language,
     arms: list[tuple[str, float]],
     details: Sequence[LeverDetail] = (),
+    *,
+    one_per_line: bool = True,
 ) -> Sketch:
     """The turned velocity plan to μV, every force at the image of its point
     and its arm about the pole p; `arms` receives (label, h mm) in order.
     With `details`, what lies in a detail's disc is drawn but lettered only in
     its detail view (`sketch_lever_detail`): there the forces at its images,
     their arms and the images' names; the disc is marked by a thin circle and
-    its letter."""
+    its letter. Without `one_per_line`, every arm named on its own: the
+    lever as its detail views are chosen by (`_lever_lettered`)."""
+    if not one_per_line:
+        return _lever_view(fa, mu_V, look, lang, arms, details, None)
     return _lever_lettered(fa, mu_V, look, lang, arms, details, None)
 
 
 def sketch_lever_detail(
-    fa: ForceAnalysis, mu_V: float, look: Any, lang: Language, detail: LeverDetail
+    fa: ForceAnalysis,
+    mu_V: float,
+    look: Any,
+    lang: Language,
+    detail: LeverDetail,
+    *,
+    one_per_line: bool = True,
 ) -> Sketch:
     """The detail view `detail` of the lever drawn at `mu_V`: its disc at
     μV / ratio, titled "A (4:1)", the lines cut at the disc's edge, the forces
-    at the images inside it with their arms, and every name there."""
+    at the images inside it with their arms, and every name there (without
+    `one_per_line`, every arm named on its own, as `sketch_lever`)."""
+    if not one_per_line:
+        return _lever_view(fa, mu_V, look, lang, [], (detail,), detail)
     return _lever_lettered(fa, mu_V, look, lang, [], (detail,), detail)
 
 
@@ -1368,7 +1382,9 @@ def _lever_lettered(
     (gen 88: the arms of G_2, G_3, G_13 and G_15 all run left from p along
     the horizontal, their names stacked under it far from it), and where its
     box is no wider nor taller than the lever's drawn so: the sheet is laid
-    out by it."""
+    out by it. Only the drawings the sheet draws: the detail views are chosen
+    by the lever with every arm named on its own (gen 222: chosen by the
+    lever so lettered, a view round other images crowded more)."""
     own: list[tuple[str, float]] = []
     lines: list[int] = []  # how many arms' labels one per line would save
     sk = _lever_view(fa, mu_V, look, lang, own, details, detail, lines=lines)
@@ -1937,7 +1953,7 @@ class _Composer:
         if lever_views:
             self.details = lever_views
         else:
-            plain = sketch_lever(fa, self.lever_mu, look, lang, arms)
+            plain = sketch_lever(fa, self.lever_mu, look, lang, arms, one_per_line=False)
             self.details = (
                 lever_details(
                     fa,
@@ -2675,7 +2691,8 @@ def _with_lever_details(
         # its details, chosen at the textbook scale, leave names crowded at
         # this one (gen 68: 'h5' … 'h19' 10–23 mm off): chosen again here,
         # on the lever drawn without them
-        crowd = crowded_ends(sketch_lever(fa, mu_V, composer.look, lang, []), lang)
+        plain = sketch_lever(fa, mu_V, composer.look, lang, [], one_per_line=False)
+        crowd = crowded_ends(plain, lang)
     crowding = lever_crowding(fa, mu_V, composer.look, lang)
     found = lever_details(fa, mu_V, crowd, crowding, enlarge=True)
     if not found or found == composer.details:
