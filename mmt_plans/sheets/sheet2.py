@@ -1410,7 +1410,10 @@ def _one_per_line(
     for foot, numbers in sorted(feet.values(), key=lambda fn: -float(np.hypot(*fn[0]))):
         for far, names in out:
             u = far / float(np.hypot(*far))
-            if float(np.dot(foot, u)) > 0.0 and abs(float(np.cross(u, foot))) <= _ON_LINE_MM:
+            if (
+                float(np.dot(foot, u)) > 0.0
+                and abs(float(u[0] * foot[1] - u[1] * foot[0])) <= _ON_LINE_MM
+            ):
                 names += numbers
                 break
         else:
