@@ -1092,6 +1092,8 @@ def sketch_force_polygons(
 # a lever's detail view (drawing/detail.py)
 LeverDetail = Detail
 _DETAILS = 2  # the most detail views of one lever
+# arms whose feet lie this near one line from p are named by one label (mm)
+_ON_LINE_MM = 0.5
 # the series of a lever detail's scales (GOST 2.302's enlargements, 2:1 … 100:1)
 # and the radii (mm at the lever's scale) of the discs tried round its crowd:
 # a lever's images may crowd within a millimetre of p (gen 30)
@@ -1338,8 +1340,8 @@ def lever_crowding(
     the detail views given (`lever_details`' weighing of two discs)."""
 
     def crowding(details: tuple[LeverDetail, ...]) -> int:
-        views = [sketch_lever(fa, mu_V, look, lang, [], details)]
-        views += [sketch_lever_detail(fa, mu_V, look, lang, d) for d in details]
+        views = [sketch_lever(fa, mu_V, look, lang, [], details, one_per_line=False)]
+        views += [sketch_lever_detail(fa, mu_V, look, lang, d, one_per_line=False) for d in details]
         return sum(len(list(crowded(v, lang))) for v in views)
 
     return crowding
@@ -1361,23 +1363,92 @@ def sketch_lever(
     lang: Language,
     arms: list[tuple[str, float]],
     details: Sequence[LeverDetail] = (),
+    *,
+    one_per_line: bool = True,
 ) -> Sketch:
     """The turned velocity plan to μV, every force at the image of its point
     and its arm about the pole p; `arms` receives (label, h mm) in order.
     With `details`, what lies in a detail's disc is drawn but lettered only in
     its detail view (`sketch_lever_detail`): there the forces at its images,
     their arms and the images' names; the disc is marked by a thin circle and
-    its letter."""
-    return _lever_view(fa, mu_V, look, lang, arms, details, None)
+    its letter. Without `one_per_line`, every arm named on its own: the
+    lever as its detail views are chosen by (`_lever_lettered`)."""
+    if not one_per_line:
+        return _lever_view(fa, mu_V, look, lang, arms, details, None)
+    return _lever_lettered(fa, mu_V, look, lang, arms, details, None)
 
 
 def sketch_lever_detail(
-    fa: ForceAnalysis, mu_V: float, look: Any, lang: Language, detail: LeverDetail
+    fa: ForceAnalysis,
+    mu_V: float,
+    look: Any,
+    lang: Language,
+    detail: LeverDetail,
+    *,
+    one_per_line: bool = True,
 ) -> Sketch:
     """The detail view `detail` of the lever drawn at `mu_V`: its disc at
     μV / ratio, titled "A (4:1)", the lines cut at the disc's edge, the forces
-    at the images inside it with their arms, and every name there."""
-    return _lever_view(fa, mu_V, look, lang, [], (detail,), detail)
+    at the images inside it with their arms, and every name there (without
+    `one_per_line`, every arm named on its own, as `sketch_lever`)."""
+    if not one_per_line:
+        return _lever_view(fa, mu_V, look, lang, [], (detail,), detail)
+    return _lever_lettered(fa, mu_V, look, lang, [], (detail,), detail)
+
+
+def _lever_lettered(
+    fa: ForceAnalysis,
+    mu_V: float,
+    look: Any,
+    lang: Language,
+    arms: list[tuple[str, float]],
+    details: Sequence[LeverDetail],
+    detail: LeverDetail | None,
+) -> Sketch:
+    """The lever or its detail view (`_lever_view`), every arm named on its
+    own; where some name then stands far or on something, drawn again with
+    the arms along one line from p named by one label, "h_{3,13,15}", along
+    the longest (`_one_per_line`), and kept where that leaves fewer crowded
+    (gen 88: the arms of G_2, G_3, G_13 and G_15 all run left from p along
+    the horizontal, their names stacked under it far from it), and where its
+    box is no wider nor taller than the lever's drawn so: the sheet is laid
+    out by it. Only the drawings the sheet draws: the detail views are chosen
+    by the lever with every arm named on its own (gen 222: chosen by the
+    lever so lettered, a view round other images crowded more)."""
+    own: list[tuple[str, float]] = []
+    lines: list[int] = []  # how many arms' labels one per line would save
+    sk = _lever_view(fa, mu_V, look, lang, own, details, detail, lines=lines)
+    arms += own
+    counts = sk.label_counts
+    if counts is None or not (counts.far or counts.unsettled) or not lines[0]:
+        return sk
+    merged = _lever_view(fa, mu_V, look, lang, [], details, detail, one_per_line=True)
+    grown, box = merged.extent(), sk.extent()
+    if grown.width > box.width + 1e-6 or grown.height > box.height + 1e-6:
+        return sk  # a drawing is fitted on the sheet by its box (gen 153: 6 mm taller)
+    before = len(list(crowded(sk, lang)))
+    return merged if len(list(crowded(merged, lang))) < before else sk
+
+
+def _one_per_line(
+    feet: dict[tuple[int, int], tuple[np.ndarray, list[str]]],
+) -> list[tuple[np.ndarray, list[str]]]:
+    """The arms' feet (mm from p) with their numbers, those along one line
+    from p (each foot within _ON_LINE_MM of the line to the farthest) as
+    one: the farthest foot with all their numbers, in order."""
+    out: list[tuple[np.ndarray, list[str]]] = []
+    for foot, numbers in sorted(feet.values(), key=lambda fn: -float(np.hypot(*fn[0]))):
+        for far, names in out:
+            u = far / float(np.hypot(*far))
+            if (
+                float(np.dot(foot, u)) > 0.0
+                and abs(float(u[0] * foot[1] - u[1] * foot[0])) <= _ON_LINE_MM
+            ):
+                names += numbers
+                break
+        else:
+            out.append((foot, list(numbers)))
+    return [(foot, sorted(names, key=int)) for foot, names in out]
 
 
 def _lever_view(
@@ -1388,8 +1459,13 @@ def _lever_view(
     arms: list[tuple[str, float]],
     details: Sequence[LeverDetail],
     detail: LeverDetail | None,
+    *,
+    one_per_line: bool = False,
+    lines: list[int] | None = None,
 ) -> Sketch:
-    """The lever with `details` marked (`detail` None), or the detail view `detail`."""
+    """The lever with `details` marked (`detail` None), or the detail view
+    `detail`; with `one_per_line`, the arms along one line from p named by
+    one label (`_one_per_line`); `lines` receives how many labels that saves."""
     in_detail = detail is not None
     lever = fa.lever
     mech = fa.loads.state.mech
@@ -1509,7 +1585,10 @@ def _lever_view(
             sk.arrow(start, end, "main", **_ARROW)  # type: ignore[arg-type]
             markup = ", ".join(force_markup(n) for n in names)
             labels.later_arrow(start, end, markup, _SHAFT_ALONG)
-        for foot, numbers in feet.values():
+        merged = _one_per_line(feet)
+        if lines is not None:
+            lines.append(len(feet) - len(merged))
+        for foot, numbers in merged if one_per_line else feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
         labels.write_later(retry=_RETRY_ORDERS)
         sk.label_counts = labels.counts()
@@ -1907,7 +1986,7 @@ class _Composer:
         if lever_views:
             self.details = lever_views
         else:
-            plain = sketch_lever(fa, self.lever_mu, look, lang, arms)
+            plain = sketch_lever(fa, self.lever_mu, look, lang, arms, one_per_line=False)
             self.details = (
                 lever_details(
                     fa,
@@ -2645,7 +2724,8 @@ def _with_lever_details(
         # its details, chosen at the textbook scale, leave names crowded at
         # this one (gen 68: 'h5' … 'h19' 10–23 mm off): chosen again here,
         # on the lever drawn without them
-        crowd = crowded_ends(sketch_lever(fa, mu_V, composer.look, lang, []), lang)
+        plain = sketch_lever(fa, mu_V, composer.look, lang, [], one_per_line=False)
+        crowd = crowded_ends(plain, lang)
     crowding = lever_crowding(fa, mu_V, composer.look, lang)
     found = lever_details(fa, mu_V, crowd, crowding, enlarge=True)
     if not found or found == composer.details:

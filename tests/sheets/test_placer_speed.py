@@ -137,9 +137,9 @@ def test_the_lever_at_the_scale_it_reached_is_sketched_once(
     drawn: list[tuple[float, tuple[object, ...]]] = []
     sketch_lever = sheet2.sketch_lever
 
-    def counted(fa, mu_V, look, lang, arms, details=()):  # noqa: ANN001, ANN202
+    def counted(fa, mu_V, look, lang, arms, details=(), **kw):  # noqa: ANN001, ANN003, ANN202
         drawn.append((mu_V, tuple(details)))
-        return sketch_lever(fa, mu_V, look, lang, arms, details)
+        return sketch_lever(fa, mu_V, look, lang, arms, details, **kw)
 
     monkeypatch.setattr(sheet2, "sketch_lever", counted)
     sol = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "five_dyads.toml"))
