@@ -50,20 +50,25 @@ def test_labels_written_again_from_the_memo_give_the_same_sheet(
     """shaper's sheet 2 (its drawings lettered in several orders): some
     labels are written again from an order before, and the sheet is the one
     drawn writing each label anew in every order."""
-    again = 0
-    write_again = Labels._write_again
-
-    def counted(self: Labels, memo: Any) -> None:
-        nonlocal again
-        again += 1
-        write_again(self, memo)
-
-    monkeypatch.setattr(Labels, "_write_again", counted)
+    again = _count_memo_writes(monkeypatch)
     with_memo = _records(_sheet2("shaper"))
-    assert again > 0
+    assert again[0] > 0
 
     _anew(monkeypatch)
     assert with_memo == _records(_sheet2("shaper"))
+
+
+def _count_memo_writes(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    """How many labels are written again from the memo (its one entry, counted as they are)."""
+    again = [0]
+    write_again = Labels._write_again
+
+    def counted(self: Labels, memo: Any) -> None:
+        again[0] += 1
+        write_again(self, memo)
+
+    monkeypatch.setattr(Labels, "_write_again", counted)
+    return again
 
 
 def _anew(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -106,18 +111,10 @@ def test_write_each_writes_again_from_the_memo_what_the_walled_name_leaves_as_it
     again from the memo; then with the walled one first, again from the
     memo, and cut short there (one far already, as many as the best). The
     drawing is the one written anew in every order."""
-    again = 0
-    write_again = Labels._write_again
-
-    def counted(self: Labels, memo: Any) -> None:
-        nonlocal again
-        again += 1
-        write_again(self, memo)
-
-    monkeypatch.setattr(Labels, "_write_again", counted)
+    again = _count_memo_writes(monkeypatch)
     sk, labels, writes = _walled_and_free()
     labels.write_each(writes, [[0, 1, 2, 3]])
-    assert labels.far == 1 and again == 5
+    assert labels.far == 1 and again[0] == 5
     with_memo = _records(sk)
     _anew(monkeypatch)
     sk, labels, writes = _walled_and_free()
