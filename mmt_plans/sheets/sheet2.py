@@ -275,7 +275,6 @@ class _Drawing:
         self.state = state
         self.mu_l = mu_l
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
-        self._named: list[np.ndarray] = []  # the points named so far (`later`)
         # couples' arcs turned to leave their names room (`moment`); a compact
         # sheet's loaded mechanism keeps them at the first start
         self.turn_arcs = turn_arcs
@@ -315,7 +314,6 @@ class _Drawing:
         """A label written after every line, so that it can avoid them all
         (where it is this drawing's: `here`)."""
         if self.here(anchor):
-            self._named.append(np.asarray(anchor, float))
             self.labels.later(anchor, markup, towards)
 
     def later_along(
@@ -373,12 +371,9 @@ class _Drawing:
         name: tuple[str, np.ndarray] | None,
     ) -> float:
         """Where a couple's arc starts, degrees: the first of _ARC_STARTS that
-        leaves room near `centre` for `name` and by the arrowhead for `markup`
-        and walls in no point named inside its circle (`_walled`); else, of
-        those that leave that room, the first that walls in fewest; else the
-        one that leaves most of that room and covers least."""
+        leaves room near `centre` for `name` and by the arrowhead for `markup`,
+        else the one that leaves most of that room and covers least."""
         best: tuple[tuple[int, float], float] | None = None
-        roomy: list[tuple[int, float]] = []  # the starts with room for both: (walled, start)
         for start in _ARC_STARTS:
             arc = arc_line(centre, radius, start, start + _ARC_SPAN)
             t = math.radians(start + _ARC_SPAN if M > 0 else start)
@@ -387,33 +382,13 @@ class _Drawing:
             if name is not None:
                 rooms = self.labels.rooms(centre, name[0], towards=name[1], keep_off=arc)
                 lost += 2 * int(not len(rooms))
-            if not lost:
-                walled = self._walled(centre, radius, start)
-                if not walled:
-                    return start
-                roomy.append((walled, start))
-                continue
+            if not lost:  # room for both: the first such start
+                return start
             score = (lost, round(self.labels.covered(arc.buffer(0.3)), 1))
             if best is None or score < best[0]:
                 best = (score, start)
-        if roomy:  # room for both: the first such start that walls in fewest names
-            return min(roomy, key=lambda ws: ws[0])[1]
         assert best is not None
         return best[1]
-
-    def _walled(self, centre: np.ndarray, radius: float, start: float) -> int:
-        """How many points named so far (but the one at `centre`) stand inside
-        the circle of an arc of _ARC_SPAN from `start`, behind the arc: a name
-        there finds its place or its leader out only through the arc's open
-        side (gen 212: S1 at the middle of a 7 mm crank inside ω1's 9 mm arc
-        stood 9.9 mm off)."""
-        walled = 0
-        for at in self._named:
-            d = at - centre
-            if 0.5 < float(np.hypot(*d)) < radius:
-                behind = (math.degrees(math.atan2(d[1], d[0])) - start) % 360.0
-                walled += int(behind <= _ARC_SPAN)
-        return walled
 
     def arm(self, pivot: np.ndarray, at: np.ndarray, F: np.ndarray, label: str) -> float:
         """The perpendicular from `pivot` to the force's line of action; its length, mm."""
