@@ -25,8 +25,8 @@ drawing has to list its lines by hand.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Collection, Iterable, Sequence
-from contextlib import nullcontext
+from collections.abc import Callable, Collection, Iterable, Iterator, Sequence
+from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass, field
 from typing import Any, cast
 
@@ -517,9 +517,16 @@ class Labels:
             self._write_all(todo)
             return
         saved = self._state()
+        with self._memoised():
+            self._write_orders(todo, saved, retries, grow)
+
+    @contextmanager
+    def _memoised(self) -> Iterator[None]:
+        """While orders of labels are written: each label's writing kept
+        (`_memo_write`), forgotten after."""
         self._memo, self._memo_base = {}, len(self._obstacles)
         try:
-            self._write_orders(todo, saved, retries, grow)
+            yield
         finally:
             self._memo = None
             self._memo_shapes = {}
@@ -614,12 +621,8 @@ class Labels:
         in another order as it was before where what it asks about stands as
         then (`_memo_write`)."""
         saved = self._state()
-        self._memo, self._memo_base = {}, len(self._obstacles)
-        try:
+        with self._memoised():
             self._write_each_orders(writes, orders, most, saved)
-        finally:
-            self._memo = None
-            self._memo_shapes = {}
 
     def _write_each_orders(
         self,
@@ -840,14 +843,15 @@ class Labels:
     def _write_again(self, memo: _Memo) -> None:
         """What `memo` keeps a label wrote, written again as it was."""
         obstacles = len(self._obstacles)
-        self.sketch.calls.extend(memo.calls)
-        self.boxes.extend(memo.boxes)
-        self._boxes_changed()
-        self._texts.extend(memo.texts)
-        self._obstacles.extend(memo.obstacles)
-        self._clearance.extend(memo.clearance)
-        self._heavy.extend(memo.heavy)
-        self._outlines.extend(memo.outlines)
+        self._extend(
+            memo.calls,
+            memo.boxes,
+            memo.texts,
+            memo.obstacles,
+            memo.clearance,
+            memo.heavy,
+            memo.outlines,
+        )
         self._leaders.update(obstacles + i for i in memo.leaders)
         self.unsettled += memo.unsettled
         self.far += memo.far
@@ -891,6 +895,21 @@ class Labels:
         calls, boxes, texts, obstacles, clearance, heavy, outlines, leaders, unsettled, far = (
             written
         )
+        self._extend(calls, boxes, texts, obstacles, clearance, heavy, outlines)
+        self._counts_back(leaders, unsettled, far)
+
+    def _extend(
+        self,
+        calls: Sequence[Call],
+        boxes: Sequence[BaseGeometry],
+        texts: Sequence[str],
+        obstacles: Sequence[BaseGeometry],
+        clearance: Sequence[float],
+        heavy: Sequence[bool],
+        outlines: Sequence[BaseGeometry],
+    ) -> None:
+        """What labels wrote (`_written`, a `_Memo`) added to the sketch and
+        the placer's lists again; the counts and leaders left to the caller."""
         self.sketch.calls.extend(calls)
         self.boxes.extend(boxes)
         self._boxes_changed()
@@ -899,7 +918,6 @@ class Labels:
         self._clearance.extend(clearance)
         self._heavy.extend(heavy)
         self._outlines.extend(outlines)
-        self._counts_back(leaders, unsettled, far)
 
     def _restore(self, state: tuple[Any, ...]) -> None:
         """Undo the labels written since `_state` (their lettering and leaders)."""

@@ -4,7 +4,7 @@ a detail view, `drawing.detail`, is drawn round)."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 
 import numpy as np
 
@@ -13,7 +13,7 @@ from ..i18n import Language
 from ..render.recording import Naming
 from .lint import SheetView, label_clear, label_near
 
-__all__ = ["crowded", "crowded_ends", "crowded_names"]
+__all__ = ["crowded", "crowded_ends", "crowded_names", "stand_for"]
 
 
 def crowded(sketch: Sketch, lang: Language) -> Iterator[Naming]:
@@ -32,8 +32,13 @@ def crowded_names(sketch: Sketch, lang: Language, anchors: bool = False) -> np.n
     they name, or on a line or another name, stand for (mm, one row each: the
     point, or the middle of the segment, they name; with `anchors`, the
     segment's start: where a force is applied)."""
+    return stand_for(crowded(sketch, lang), anchors)
+
+
+def stand_for(namings: Iterable[Naming], anchors: bool = False) -> np.ndarray:
+    """Where `namings` stand for, as `crowded_names`."""
     out = []
-    for n in crowded(sketch, lang):
+    for n in namings:
         end = n.anchor if n.end is None or anchors else n.end
         out.append(((n.anchor[0] + end[0]) / 2.0, (n.anchor[1] + end[1]) / 2.0))
     return np.array(out, dtype=float).reshape(-1, 2)

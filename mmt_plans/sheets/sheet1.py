@@ -58,7 +58,7 @@ from ..errors import shown
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend
 from ..render.look import LineType
-from ..render.recording import RecordingBackend, Text
+from ..render.recording import Naming, RecordingBackend, Text
 from ..scales import (
     LENGTH_MANTISSA_TEXT,
     Quantity,
@@ -69,7 +69,7 @@ from ..scales import (
 from ..solution import Solution
 from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, title_fields
 from .common import next_scale as _next_scale
-from .crowd import crowded, crowded_ends, crowded_names
+from .crowd import crowded, crowded_ends, crowded_names, stand_for
 from .scales_record import Sheet1Scales
 
 __all__ = ["Sheet1", "compose_sheet1", "GROUPS"]
@@ -1210,13 +1210,14 @@ def sketch_mechanism_details(
     fan of its positions, that no leader reaches without crossing a main
     line). None where no name crowds so, or where no detail view letters
     the drawing better."""
-    crowd = crowded_names(plain, lang)
+    namings = list(crowded(plain, lang))
+    crowd = stand_for(namings)
     lettered_badly = len(crowd)
 
     def crowds() -> Iterator[np.ndarray]:
         if lettered_badly >= _MECHANISM_CROWD:
             yield crowd
-        joints = _crowded_joints(solution, plain, lang) if lettered_badly else crowd
+        joints = _crowded_joints(solution, namings)
         if len(joints) and (lettered_badly < _MECHANISM_CROWD or len(joints) < lettered_badly):
             yield joints  # (not the whole crowd again)
 
@@ -1231,13 +1232,11 @@ def sketch_mechanism_details(
     return None  # no detail view letters the drawing better
 
 
-def _crowded_joints(solution: Solution, plain: Sketch, lang: Language) -> np.ndarray:
-    """Where the joints' names of the mechanism `plain` that stand far or on
-    something stand for (mm, one row each: the joint), as `crowded_names`."""
+def _crowded_joints(solution: Solution, namings: Sequence[Naming]) -> np.ndarray:
+    """Where the joints' names among `namings` (those of the mechanism that
+    stand far or on something, `crowded`) stand for (mm, one row each: the joint)."""
     joints = {point_markup(p) for p in solution.mechanism.point_owners}
-    return np.array(
-        [n.anchor for n in crowded(plain, lang) if n.markup in joints], dtype=float
-    ).reshape(-1, 2)
+    return stand_for((n for n in namings if n.markup in joints), anchors=True)
 
 
 _MECHANISM_CROWD = 3  # the mechanism's names far or on something: this many make a crowd
