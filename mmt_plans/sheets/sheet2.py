@@ -1397,7 +1397,7 @@ def _lever_lettered(
     counts = sk.label_counts
     if counts is None or not (counts.far or counts.unsettled) or not lines[0]:
         return sk
-    merged = _lever_view(fa, mu_V, look, lang, [], details, detail, merge_arms=True)
+    merged = _lever_view(fa, mu_V, look, lang, [], details, detail, one_per_line=True)
     grown, box = merged.extent(), sk.extent()
     if grown.width > box.width + 1e-6 or grown.height > box.height + 1e-6:
         return sk  # a drawing is fitted on the sheet by its box (gen 153: 6 mm taller)
@@ -1435,11 +1435,11 @@ def _lever_view(
     details: Sequence[LeverDetail],
     detail: LeverDetail | None,
     *,
-    merge_arms: bool = False,
+    one_per_line: bool = False,
     lines: list[int] | None = None,
 ) -> Sketch:
     """The lever with `details` marked (`detail` None), or the detail view
-    `detail`; with `merge_arms`, the arms along one line from p named by
+    `detail`; with `one_per_line`, the arms along one line from p named by
     one label (`_one_per_line`); `lines` receives how many labels that saves."""
     in_detail = detail is not None
     lever = fa.lever
@@ -1563,7 +1563,7 @@ def _lever_view(
         merged = _one_per_line(feet)
         if lines is not None:
             lines.append(len(feet) - len(merged))
-        for foot, numbers in merged if merge_arms else feet.values():
+        for foot, numbers in merged if one_per_line else feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
         labels.write_later(retry=_RETRY_ORDERS)
         sk.label_counts = labels.counts()
@@ -1906,27 +1906,6 @@ def _counts(sketch: Sketch) -> LabelCounts:
     return sketch.label_counts or LabelCounts(0, 0)
 
 
-def _drawn_at(detail: LeverDetail, mu_V: float, chosen_mu: float) -> LeverDetail:
-    """The detail view `detail`, chosen on the lever at `chosen_mu`, as the
-    lever at `mu_V` draws it: on a lever reaching the sheet smaller, at the
-    first ratio of the series that draws it at its scale of `chosen_mu` or
-    larger (40:1 of 0.008 is 50:1 of 0.01: its names were given room at that
-    scale; gen 30 at 40:1 of 0.01 left 10 of them far or on a line), of
-    those that keep it DETAIL_MM in radius at most; else as chosen."""
-    want = detail.ratio * mu_V / chosen_mu
-    if want <= detail.ratio * (1.0 + 1e-9):
-        return detail
-    fit = [
-        k
-        for k in _LEVER_RATIOS
-        if k > detail.ratio and k * detail.radius / mu_V <= DETAIL_MM * (1.0 + 1e-9)
-    ]
-    if not fit:
-        return detail
-    ratio = next((k for k in fit if k >= want * (1.0 - 1e-9)), fit[-1])
-    return dataclasses.replace(detail, ratio=ratio)
-
-
 def _lever_scale(lever: Any) -> float:
     """The lever's μV at its textbook scale (_LEVER_REACH_MM)."""
     mu = scale_for(lever.pa, VELOCITY_PLAN)
@@ -1951,7 +1930,6 @@ class _Composer:
         details: bool = True,
         mechanism_details: tuple[Detail, ...] = (),
         lever_views: tuple[LeverDetail, ...] | None = None,
-        views_mu: float | None = None,
     ) -> None:
         self.fa, self.look, self.lang, self.page = fa, look, lang, page
         # the loaded mechanism's detail views (compose_sheet2 finds them on
@@ -1982,12 +1960,8 @@ class _Composer:
         self.allows_details = details
         if lever_views:
             self.details = lever_views
-            # the μV of the lever `lever_views` were found on: each is drawn
-            # at its scale of that lever at least (`_drawn_at`)
-            self.details_mu = views_mu or self.lever_mu
         else:
             plain = sketch_lever(fa, self.lever_mu, look, lang, arms, one_per_line=False)
-            self.details_mu = self.lever_mu
             self.details = (
                 lever_details(
                     fa,
@@ -2040,7 +2014,7 @@ class _Composer:
             if other is None or other.compact != self.compact:
                 return False
             if k[0] in ("lever", "lever-detail"):
-                return other.details == self.details and other.details_mu == self.details_mu
+                return other.details == self.details
             return (
                 k[0].startswith("force-polygon-")
                 or k[0] in ("noted", "table-loads", "force-mechanism")
@@ -2072,29 +2046,22 @@ class _Composer:
 
         def make() -> tuple[Sketch, list[tuple[str, float]], dict[str, Sketch]]:
             arms: list[tuple[str, float]] = []
-            details = self.drawn_details(mu_V)
-            sketch = sketch_lever(self.fa, mu_V, self.look, self.lang, arms, details)
+            sketch = sketch_lever(self.fa, mu_V, self.look, self.lang, arms, self.details)
             return sketch, arms, _sketch_tables(self.fa, arms, self.look, self.lang, self.compact)
 
         return self.memo(("lever", mu_V), make)  # type: ignore[no-any-return]
 
-    def drawn_details(self, mu_V: float) -> tuple[LeverDetail, ...]:
-        """The lever's detail views as the lever at `mu_V` draws them: each
-        at its scale of the lever they were chosen on at least (`_drawn_at`)."""
-        return tuple(_drawn_at(d, mu_V, self.details_mu) for d in self.details)
-
     def lever_details(self, mu_V: float) -> list[tuple[str, Sketch]]:
         """The detail views of the lever at `mu_V` (drawing, sketch)."""
-        details = self.drawn_details(mu_V)
         return [
             (
-                detail_gid(details, d),
+                detail_gid(self.details, d),
                 self.memo(
                     ("lever-detail", d.letter, mu_V),
                     lambda d=d: sketch_lever_detail(self.fa, mu_V, self.look, self.lang, d),
                 ),
             )
-            for d in details
+            for d in self.details
         ]
 
     def polygons(
@@ -2746,7 +2713,6 @@ def _with_lever_details(
         composer.page,
         compact=composer.compact,
         lever_views=found,
-        views_mu=mu_V,
     )
     return _refitted(composer, detailed, sum(composer.lettered(steps))) or (composer, steps)
 
@@ -2885,7 +2851,7 @@ def compose_sheet2(
         dict(scales),
         shrink=max(steps.values()),
         arms={"lever": arms},
-        details=composer.drawn_details(scales["mu_V"]),
+        details=composer.details,
         mechanism_details=composer.mechanism_details,
     )
     for name in composer.tables + composer.drawings:
