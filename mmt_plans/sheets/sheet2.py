@@ -1397,7 +1397,7 @@ def _lever_lettered(
     counts = sk.label_counts
     if counts is None or not (counts.far or counts.unsettled) or not lines[0]:
         return sk
-    merged = _lever_view(fa, mu_V, look, lang, [], details, detail, one_per_line=True)
+    merged = _lever_view(fa, mu_V, look, lang, [], details, detail, merge_arms=True)
     grown, box = merged.extent(), sk.extent()
     if grown.width > box.width + 1e-6 or grown.height > box.height + 1e-6:
         return sk  # a drawing is fitted on the sheet by its box (gen 153: 6 mm taller)
@@ -1435,11 +1435,11 @@ def _lever_view(
     details: Sequence[LeverDetail],
     detail: LeverDetail | None,
     *,
-    one_per_line: bool = False,
+    merge_arms: bool = False,
     lines: list[int] | None = None,
 ) -> Sketch:
     """The lever with `details` marked (`detail` None), or the detail view
-    `detail`; with `one_per_line`, the arms along one line from p named by
+    `detail`; with `merge_arms`, the arms along one line from p named by
     one label (`_one_per_line`); `lines` receives how many labels that saves."""
     in_detail = detail is not None
     lever = fa.lever
@@ -1563,7 +1563,7 @@ def _lever_view(
         merged = _one_per_line(feet)
         if lines is not None:
             lines.append(len(feet) - len(merged))
-        for foot, numbers in merged if one_per_line else feet.values():
+        for foot, numbers in merged if merge_arms else feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
         labels.write_later(retry=_RETRY_ORDERS)
         sk.label_counts = labels.counts()
