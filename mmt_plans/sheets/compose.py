@@ -114,6 +114,12 @@ class ComposedSheets:
             raise self.errors.get(n) or SheetNotAvailable(f"sheet {n} was not composed")
         return got
 
+    def holding(self, drawing: str, default: int = 2) -> int:
+        """The number of the composed sheet that holds `drawing` ("group-4-5"
+        on a further sheet of a large force analysis), else `default`."""
+        sheets = [self.first, self.second, *self.further]
+        return next((s.number for s in sheets if s and drawing in s.drawings), default)
+
     @property
     def scales(self) -> tuple[Sheet1Scales | None, Sheet2Scales | None]:
         """The scales of sheets 1 and 2 (None for a sheet not composed); sheet

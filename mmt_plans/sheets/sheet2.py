@@ -2861,7 +2861,7 @@ def compose_sheet2(
             f"{page.name or 'the page'}: {what}, even with every drawing {_COARSEST} scale "
             "steps smaller than the textbook's\n"
             "  fix: draw sheet 1 alone (--sheet 1), or study a mechanism of fewer "
-            "groups (the force analysis of every group goes on one sheet)"
+            "groups (up to five groups go on sheet 2 with the rest of the force analysis)"
         )
     steps = composer.filled(composer.unwall(composer.fill(steps)))
     composer, steps = _with_lever_details(composer, steps, solution)

@@ -84,6 +84,9 @@ def test_chain_25_composes_four_sheets_each_group_once():
         assert sorted(d for d in drawn[n] if d.startswith("force-polygon-")) == sorted(
             f"force-polygon-{g}" for g in mine
         )
+    # the note finds each group's figure on its sheet
+    assert [composed.holding(f"group-{g.name}") for g in fa.groups] == [3] * 6 + [4] * 6
+    assert composed.holding("zhukovsky-lever") == 2
     # the note reads every group's scale (sheet 2's record with the further sheets')
     _, second = composed.scales
     assert second is not None and set(second.mu_l_group) == {g.name for g in fa.groups}
