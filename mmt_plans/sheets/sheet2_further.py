@@ -69,20 +69,21 @@ class FurtherSheet:
 def _sketched(
     fa: ForceAnalysis,
     groups: Sequence[GroupForces],
-    mu_l: float,
+    mus: Sequence[float],
     poly_steps: int,
     look: Any,
     lang: Language,
     before: tuple[str, ...],
     cache: dict[tuple[Any, ...], Any],
 ) -> tuple[dict[str, Sketch], tuple[str, ...], dict[str, float]]:
-    """The drawings of `groups` at `mu_l` and their polygons `poly_steps`
-    steps coarser than the guide's scale (name → sketch, in drawing order),
-    the arm names after them and the scales drawn."""
+    """The drawings of `groups`, each at its μ_l of `mus`, and their polygons
+    `poly_steps` steps coarser than the guide's scale (name → sketch, in
+    drawing order), the arm names after them and the scales drawn ("mu_l":
+    the sheet's, its groups' coarsest)."""
     out: dict[str, Sketch] = {}
-    scales = {"mu_l": mu_l}
+    scales = {"mu_l": max(mus)}
     names = before
-    for g in groups:
+    for g, mu_l in zip(groups, mus):
         key = ("group", g.name, mu_l, names)
         if key not in cache:
             arms = list(names)
@@ -136,16 +137,23 @@ def _one_sheet(
     """One further sheet of `groups`: the polygons at the guide's scale (a
     step coarser at a time where nothing packs), the groups at the finest
     μ_l that packs with them (sought by halving the series steps between
-    _FINEST and _COARSEST of the textbook's)."""
+    _FINEST and _COARSEST of the textbook's); then, while the field is left
+    more than EMPTY_MAX empty (the linter's field-filled rule), the polygons
+    a step larger within the guide's 300 mm, then each group alone a step
+    larger (its own μ_l under it), where the sheet still packs."""
     cache: dict[tuple[Any, ...], Any] = {}
+    steps_of: dict[int, tuple[int, ...]] = {}
 
-    def laid(step: int, poly_steps: int) -> FurtherSheet | None:
-        mu_l = length_scale_step(mu0, step)
-        sketches, names, scales = _sketched(fa, groups, mu_l, poly_steps, look, lang, before, cache)
+    def laid(step: int | tuple[int, ...], poly_steps: int) -> FurtherSheet | None:
+        steps = step if isinstance(step, tuple) else (step,) * len(groups)
+        mus = [length_scale_step(mu0, k) for k in steps]
+        sketches, names, scales = _sketched(fa, groups, mus, poly_steps, look, lang, before, cache)
         placed = _packed(page, sketches)
         if placed is None:
             return None
-        return FurtherSheet(tuple(groups), mu_l, poly_steps, sketches, placed, names, scales)
+        sheet = FurtherSheet(tuple(groups), max(mus), poly_steps, sketches, placed, names, scales)
+        steps_of[id(sheet)] = steps
+        return sheet
 
     def finest(poly_steps: int) -> FurtherSheet | None:
         """The sheet with its groups at the finest μ_l that packs (None: none does)."""
@@ -183,6 +191,17 @@ def _one_sheet(
             trial = finest(larger)
             if trial is not None and empty(trial) < left:
                 best, left = trial, empty(trial)
+        while left > EMPTY_MAX:
+            now = steps_of[id(best)]
+            for k in range(len(groups)):
+                if now[k] <= _FINEST:
+                    continue
+                trial = laid(now[:k] + (now[k] - 1,) + now[k + 1 :], best.poly_steps)
+                if trial is not None and empty(trial) < left:
+                    best, left = trial, empty(trial)
+                    break
+            else:
+                break
         return best
     return None
 
