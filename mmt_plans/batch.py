@@ -494,13 +494,15 @@ def _outputs(
     # the sheets composed once: written as sheets, read by the note (its scales, its figures)
     composed = cast(
         "ComposedSheets | None",
-        stage("sheets", lambda: compose(solution, cast("Language", lang), available_sheets())),
+        stage(
+            "sheets", lambda: compose(solution, cast("Language", lang), available_sheets(solution))
+        ),
     )
 
     def sheets() -> None:
         assert composed is not None
         for name, data in rendered_composed(
-            composed, solution, formats, sorted(available_sheets())
+            composed, solution, formats, sorted(available_sheets(solution))
         ):
             writes.add("sheets", name, data)
 

@@ -10,6 +10,14 @@ from .errors import reports_errors
 from .fields import field_option, with_fields
 
 
+def sheet_choice(ctx: click.Context, param: click.Parameter, value: str) -> str:
+    """ "all" or a sheet's number (1, 2, 3 …: whether the mechanism has it is
+    known once solved)."""
+    if value == "all" or (value.isdigit() and int(value) >= 1):
+        return value
+    raise click.BadParameter(f"{value!r} is not a sheet: expected 1, 2, 3 … or all")
+
+
 def sheet_formats(ctx: click.Context, param: click.Parameter, value: str) -> tuple[str, ...]:
     from ..render.output import FORMATS
 
@@ -40,7 +48,13 @@ def sheet_formats(ctx: click.Context, param: click.Parameter, value: str) -> tup
     help="Comma-separated: svg, pdf, png, dxf.",
 )
 @click.option("--lang", type=click.Choice(["en", "uk"]), default="en", show_default=True)
-@click.option("--sheet", type=click.Choice(["1", "2", "all"]), default="all", show_default=True)
+@click.option(
+    "--sheet",
+    callback=sheet_choice,
+    default="all",
+    show_default=True,
+    help="1, 2, a further sheet of a force analysis too large for sheet 2 (3 …), or all.",
+)
 @click.option(
     "--partial-turn",
     is_flag=True,
@@ -69,8 +83,13 @@ def draw(
         for fmt in formats:
             check_output(out_dir / f"sheet{n}.{fmt}")
     solution = solve(
-        with_fields(load(file), fields), partial_turn=partial_turn, forces=2 in numbers
+        with_fields(load(file), fields), partial_turn=partial_turn, forces=max(numbers) >= 2
     )
+    if sheet == "all":  # and the further sheets of a force analysis too large for sheet 2
+        numbers = sorted(available_sheets(solution))
+        for n in numbers[2:]:
+            for fmt in formats:
+                check_output(out_dir / f"sheet{n}.{fmt}")
     from ..titles import has_title, sheet_title
 
     if not has_title(solution.mechanism, lang):  # type: ignore[arg-type]

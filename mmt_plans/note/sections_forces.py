@@ -312,7 +312,9 @@ def group(wr: Writer, fa: ForceAnalysis, j: int, g: GroupForces, step: str) -> N
         _reaction_line(wr, r, *mu_f)
     _guide_points(wr, fa, j, g, own)
     _guide_couples(wr, fa, j, g)
-    drawings = [(2, (f"group-{g.name}",)), (2, (f"force-polygon-{g.name}",))]
+    # on sheet 2, or on the further sheet that holds the group (sheet2_further)
+    n = wr.composed.holding(f"group-{g.name}")
+    drawings = [(n, (f"group-{g.name}",)), (n, (f"force-polygon-{g.name}",))]
     if wr.has_figure(drawings):
         mu_l, ML = wr.drawn.group(g.name)
         n_fig = wr.next_figure

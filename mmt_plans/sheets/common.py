@@ -23,9 +23,11 @@ __all__ = [
     "laid_out_empty_share",
     "designation_base",
     "drawing_scale",
+    "further_groups",
     "length_scale_step",
     "next_scale",
     "scale_step",
+    "sheet_count",
     "title_fields",
 ]
 
@@ -33,6 +35,34 @@ __all__ = [
 # rule, sheets/lint.py; the composers fill to it): here, where the composers
 # read it without loading the linter.
 EMPTY_MAX = 0.5
+
+# The force analysis on more than one sheet (README, Sheet 2): sheet 2 holds
+# the Assur groups, each drawn apart with its force polygon, of a mechanism of
+# at most SHEET2_GROUPS groups (the generator's five-dyad chains fill it);
+# one of more keeps on sheet 2 the loaded mechanism, the driving link and its
+# polygon, the lever and the tables, and its groups with their polygons go on
+# further sheets, at most FURTHER_GROUPS to a sheet (their polygons at the
+# guide's 150–300 mm), as evenly as their number allows, in the order solved.
+SHEET2_GROUPS = 5
+FURTHER_GROUPS = 6
+
+
+def further_groups(count: int) -> tuple[range, ...]:
+    """The groups (indices in the order solved) of each further sheet of a
+    force analysis of `count` groups: none where sheet 2 holds them all."""
+    if count <= SHEET2_GROUPS:
+        return ()
+    sheets = -(-count // FURTHER_GROUPS)
+    bounds = [round(k * count / sheets) for k in range(sheets + 1)]
+    return tuple(range(a, b) for a, b in zip(bounds, bounds[1:]))
+
+
+def sheet_count(solution: Solution) -> int:
+    """How many sheets the mechanism's drawings take: sheets 1 and 2 and
+    the further sheets of its groups (further_groups; counted on its
+    structure where the force analysis was not made)."""
+    count = len(solution.forces.groups if solution.forces else solution.structure.groups)
+    return 2 + len(further_groups(count))
 
 
 def empty_share(field_: BaseGeometry, boxes: Sequence[BaseGeometry]) -> float:
@@ -105,7 +135,7 @@ def title_fields(
     lang: Language = "en",
     *,
     sheet: int | None = None,
-    sheets: int = 2,
+    sheets: int | None = None,
 ) -> dict[str, str]:
     """The title block's fields: the file's [sheet] entries (and --field), its
     title, the sheet's number, the scale of the mechanism's drawing (μ_l)
@@ -125,7 +155,7 @@ def title_fields(
         fields.setdefault("scale", catalogue(lang).localise(drawing_scale(mu_l)))  # 1:2,5
     fields.setdefault("title", sheet_title(mech, lang))
     fields["sheet"] = str(sheet) if sheet is not None else fields.get("sheet", "1")
-    fields.setdefault("sheets", str(sheets))
+    fields.setdefault("sheets", str(sheets if sheets is not None else sheet_count(solution)))
     fields.setdefault("designation_base", designation_base(solution, lang))
     return {k: v for k, v in fields.items() if v}
 

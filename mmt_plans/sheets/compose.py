@@ -15,7 +15,8 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from functools import partial
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any
@@ -28,9 +29,11 @@ from ..render.look import Look
 from ..render.output import FORMATS, render
 from ..render.recording import Call, RecordingBackend
 from ..solution import Solution
+from .common import sheet_count
 from .scales_record import Sheet1Scales, Sheet2Scales
 from .sheet1 import compose_sheet1
 from .sheet2 import compose_sheet2
+from .sheet2_further import compose_sheet2_further
 
 __all__ = [
     "FORMATS",
@@ -49,9 +52,14 @@ class SheetNotAvailable(MmtError, ValueError):
     """A sheet this version cannot compose yet."""
 
 
-def available_sheets() -> dict[int, Callable[..., Any]]:
-    """Sheet number → compose function."""
-    return {1: compose_sheet1, 2: compose_sheet2}
+def available_sheets(solution: Solution | None = None) -> dict[int, Callable[..., Any]]:
+    """Sheet number → compose function: sheets 1 and 2, and for `solution`
+    the further sheets of a force analysis too large for sheet 2 (3, 4 …:
+    common.further_groups; their number is the title blocks' "sheets")."""
+    out: dict[int, Callable[..., Any]] = {1: compose_sheet1, 2: compose_sheet2}
+    for n in range(3, sheet_count(solution) + 1 if solution is not None else 3):
+        out[n] = partial(compose_sheet2_further, number=n)
+    return out
 
 
 @dataclass(frozen=True)
@@ -87,39 +95,60 @@ class ComposedSheet:
 
 @dataclass(frozen=True)
 class ComposedSheets:
-    """Sheets 1 and 2 of one Solution in one language, each composed once.
-    A sheet not asked for, or one that cannot be composed (no plans, no force
-    analysis, a layout that does not fit), is None with its error in `errors`."""
+    """Sheets 1 and 2 of one Solution in one language, each composed once,
+    and the further sheets (3, 4 …) of a force analysis too large for sheet
+    2. A sheet not asked for, or one that cannot be composed (no plans, no
+    force analysis, a layout that does not fit), is None (not in `further`)
+    with its error in `errors`."""
 
     lang: Language
     first: ComposedSheet | None
     second: ComposedSheet | None
     errors: Mapping[int, MmtError] = field(default_factory=lambda: MappingProxyType({}))
+    further: tuple[ComposedSheet, ...] = ()
 
     def sheet(self, n: int) -> ComposedSheet:
         """Sheet `n`, or the error that kept it from being composed."""
-        got = {1: self.first, 2: self.second}.get(n)
+        got = {1: self.first, 2: self.second, **{s.number: s for s in self.further}}.get(n)
         if got is None:
             raise self.errors.get(n) or SheetNotAvailable(f"sheet {n} was not composed")
         return got
 
+    def holding(self, drawing: str, default: int = 2) -> int:
+        """The number of the composed sheet that holds `drawing` ("group-4-5"
+        on a further sheet of a large force analysis), else `default`."""
+        sheets = [self.first, self.second, *self.further]
+        return next((s.number for s in sheets if s and drawing in s.drawings), default)
+
     @property
     def scales(self) -> tuple[Sheet1Scales | None, Sheet2Scales | None]:
-        """The scales of sheets 1 and 2 (None for a sheet not composed)."""
+        """The scales of sheets 1 and 2 (None for a sheet not composed); sheet
+        2's with those of the groups drawn on the further sheets."""
         first = self.first.scales if self.first is not None else None
         second = self.second.scales if self.second is not None else None
         assert first is None or isinstance(first, Sheet1Scales)
         assert second is None or isinstance(second, Sheet2Scales)
+        for sheet in self.further:
+            more = sheet.scales
+            assert isinstance(more, Sheet2Scales)
+            if second is None:
+                break
+            second = replace(
+                second,
+                mu_l_group=MappingProxyType({**second.mu_l_group, **more.mu_l_group}),
+                mu_F=MappingProxyType({**second.mu_F, **more.mu_F}),
+            )
         return first, second
 
 
 def compose(
-    solution: Solution, lang: Language = "en", sheets: Iterable[int] = (1, 2)
+    solution: Solution, lang: Language = "en", sheets: Iterable[int] | None = None
 ) -> ComposedSheets:
-    """Compose the sheets `sheets` of `solution` once each, in `lang`. Sheet 2
-    is left out (without an error) where the Solution has no force analysis."""
-    composers = available_sheets()
-    wanted = list(sheets)
+    """Compose the sheets `sheets` of `solution` (all of them: None) once
+    each, in `lang`. Sheet 2 is left out (without an error) where the
+    Solution has no force analysis."""
+    composers = available_sheets(solution)
+    wanted = list(sheets) if sheets is not None else sorted(composers)
     missing = [n for n in wanted if n not in composers]
     if missing:
         raise SheetNotAvailable(
@@ -146,7 +175,8 @@ def compose(
             MappingProxyType(dict(drawn.placed)),
             drawn.record,
         )
-    return ComposedSheets(lang, done.get(1), done.get(2), MappingProxyType(errors))
+    further = tuple(done[n] for n in sorted(done) if n > 2)
+    return ComposedSheets(lang, done.get(1), done.get(2), MappingProxyType(errors), further)
 
 
 def write_composed(

@@ -26,14 +26,13 @@ class Case:
 
 
 def lint_case(case: Case) -> tuple[Case, list[Finding], set[str]]:
-    """Both sheets of one mechanism in en and uk: its findings, and the rules
+    """Every sheet of one mechanism in en and uk: its findings, and the rules
     that were checked (a sheet that cannot be composed is a finding of
     ``composes``)."""
     from ..errors import MmtError
     from ..solution import solve
     from ..spec import loads
-    from .sheet1 import compose_sheet1
-    from .sheet2 import compose_sheet2
+    from .compose import available_sheets
 
     findings: list[Finding] = []
     checked: set[str] = {"composes"}
@@ -41,7 +40,8 @@ def lint_case(case: Case) -> tuple[Case, list[Finding], set[str]]:
         solution = solve(loads(case.toml, case.path or case.name))
     except MmtError as err:
         return case, [Finding("composes", f"not solved: {err}", (0.0, 0.0), case.name)], checked
-    for n, compose in ((1, compose_sheet1), (2, compose_sheet2)):
+    # sheets 1 and 2, and the further sheets of a force analysis too large for sheet 2
+    for n, compose in sorted(available_sheets(solution).items()):
         views: dict[str, SheetView] = {}
         for lang in ("en", "uk"):
             name = f"{case.name} sheet {n} {lang}"

@@ -18,6 +18,7 @@ recorded drawings (`ComposedSheets.scales`).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -95,4 +96,16 @@ class Sheet2Scales:
             mu_l_driving=float(s[f"mu_l {d}"]),
             mu_F=MappingProxyType(force),
             mu_V=float(s["mu_V"]),
+        )
+
+    @classmethod
+    def further(cls, s: Mapping[str, float], groups: Sequence[str]) -> Sheet2Scales:
+        """A further sheet's (sheet2_further.py): μ_l its groups share ("mu_l")
+        and μF of their polygons; no driving link, no lever (NaN)."""
+        return cls(
+            mu_l=float(s["mu_l"]),
+            mu_l_group=MappingProxyType({g: float(s[f"mu_l {g}"]) for g in groups}),
+            mu_l_driving=math.nan,
+            mu_F=MappingProxyType({f"group {g}": float(s[f"mu_F {g}"]) for g in groups}),
+            mu_V=math.nan,
         )

@@ -55,7 +55,7 @@ from ..drawing.sketch import PAD, Sketch
 from ..drawing.symbols import sense_arc, unit_vector
 from ..drawing.table import TABLE_PART_MM, table_sketch
 from ..errors import shown
-from ..forces import ForceAnalysis, ForcePolygon
+from ..forces import ForceAnalysis, ForcePolygon, GroupForces
 from ..forces.state import PositionState
 from ..i18n import Language, catalogue, check_language
 from ..model import FRAME
@@ -63,7 +63,14 @@ from ..render.backend import Backend
 from ..render.look import LineType
 from ..scales import FORCE_PLAN, VELOCITY_PLAN, scale_for, scale_label, series
 from ..solution import Solution
-from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, scale_step, title_fields
+from .common import (
+    EMPTY_MAX,
+    further_groups,
+    laid_out_empty_share,
+    length_scale_step,
+    scale_step,
+    title_fields,
+)
 from .crowd import crowded, crowded_ends, crowded_names
 from .scales_record import Sheet2Scales
 
@@ -134,12 +141,17 @@ class Sheet2:
     details: tuple[LeverDetail, ...] = ()
     # the loaded mechanism's (drawings "force-mechanism-detail", "…-detail-2")
     mechanism_details: tuple[Detail, ...] = ()
+    # the groups drawn here (None: every one; none where they continue on further sheets)
+    groups: tuple[str, ...] | None = None
 
     @property
     def record(self) -> Sheet2Scales:
         """The scales drawn, as a typed record (scales_record.py)."""
         fa = self.forces
-        return Sheet2Scales.of(self.scales, [g.name for g in fa.groups], fa.driving_link.link)
+        names = [g.name for g in fa.groups] if self.groups is None else list(self.groups)
+        if "mu_V" not in self.scales:  # a further sheet: its groups alone
+            return Sheet2Scales.further(self.scales, names)
+        return Sheet2Scales.of(self.scales, names, fa.driving_link.link)
 
 
 def _words(lang: Language):
@@ -1930,8 +1942,12 @@ class _Composer:
         details: bool = True,
         mechanism_details: tuple[Detail, ...] = (),
         lever_views: tuple[LeverDetail, ...] | None = None,
+        groups: Sequence[GroupForces] | None = None,
     ) -> None:
         self.fa, self.look, self.lang, self.page = fa, look, lang, page
+        # the groups drawn here with their polygons: every one, or none where
+        # they continue on further sheets (further_groups)
+        self.groups = tuple(fa.groups if groups is None else groups)
         # the loaded mechanism's detail views (compose_sheet2 finds them on
         # the mechanism that reached the sheet without)
         self.mechanism_details = mechanism_details
@@ -1945,12 +1961,12 @@ class _Composer:
         self._extents: dict[int, Rect] = {}
         dl = fa.driving_link
         self.polygon_sets: list[tuple[str, Sequence[ForcePolygon], str]] = [
-            *((g.name, g.polygons, f"group {g.name}") for g in fa.groups),
+            *((g.name, g.polygons, f"group {g.name}") for g in self.groups),
             (str(dl.link), (dl.polygon,), f"link {dl.link}"),
         ]
         self.tables = ["table-balancing", "table-reactions", "table-loads", "table-lever"]
         self.drawings = ["force-mechanism", "zhukovsky-lever"]
-        for g in fa.groups:
+        for g in self.groups:
             self.drawings += [f"group-{g.name}", f"force-polygon-{g.name}"]
         self.drawings += ["driving-link", f"force-polygon-{dl.link}"]
         # where the lever's names crowd at its textbook scale, a detail view of them
@@ -1986,7 +2002,7 @@ class _Composer:
         mech = fa.loads.state.mech
         self._pins: list[tuple[str, np.ndarray]] = [
             ("mu_l", self._pin_points(set(mech.links) - {FRAME})),
-            *((f"mu_l {g.name}", self._pin_points(set(g.links))) for g in fa.groups),
+            *((f"mu_l {g.name}", self._pin_points(set(g.links))) for g in self.groups),
             (f"mu_l {dl.link}", self._pin_points({dl.link})),
         ]
 
@@ -2096,7 +2112,7 @@ class _Composer:
         """μ of every drawing at `steps` series steps from its textbook scale
         (negative: finer, the drawing larger)."""
         out: dict[str, float] = {}
-        for g in self.fa.groups:
+        for g in self.groups:
             out[f"mu_l {g.name}"] = length_scale_step(self.mu0, steps[f"group {g.name}"])
         out[f"mu_l {self.fa.driving_link.link}"] = length_scale_step(self.mu0, steps["driving"])
         for name, polygons, _ in self.polygon_sets:
@@ -2119,7 +2135,7 @@ class _Composer:
         fa, look, lang = self.fa, self.look, self.lang
         mu_l, mu_V = scales["mu_l"], scales["mu_V"]
 
-        group_mu = tuple(scales[f"mu_l {g.name}"] for g in fa.groups)
+        group_mu = tuple(scales[f"mu_l {g.name}"] for g in self.groups)
         mu_d = scales[f"mu_l {fa.driving_link.link}"]
 
         def group_at(g: Any, mu: float, before: tuple[str, ...]) -> tuple[Sketch, tuple[str, ...]]:
@@ -2137,7 +2153,7 @@ class _Composer:
             return self.memo(("noted", id(plain), mu_l), lambda: _with_note(plain, other))
 
         arm_names: tuple[str, ...] = ()  # the arms are numbered on through the groups
-        for g, mu in zip(fa.groups, group_mu):
+        for g, mu in zip(self.groups, group_mu):
             before = arm_names
             plain, arm_names = self.memo(
                 ("group", g.name, mu, before), lambda: group_at(g, mu, before)
@@ -2255,7 +2271,7 @@ class _Composer:
             mu_d = scales[f"mu_l {fa.driving_link.link}"]
             return self._noted(sketch_driving_link(fa, mu_d, look, lang, grow=True), mu_d, mu_l)
         before: tuple[str, ...] = ()  # the arms are numbered on through the groups
-        for g in fa.groups:
+        for g in self.groups:
             mu = scales[f"mu_l {g.name}"]
             if name == f"group-{g.name}":
                 plain = sketch_group(fa, g, mu, look, lang, list(before), grow=True)
@@ -2474,7 +2490,7 @@ class _Composer:
         """The drawings of links at `scales`, each as the box (mm) of its pins
         with PAD round it, no larger than its extent; with `empty` those of no pin too."""
         owner = {"mu_l": "force-mechanism", f"mu_l {self.fa.driving_link.link}": "driving-link"}
-        owner.update({f"mu_l {g.name}": f"group-{g.name}" for g in self.fa.groups})
+        owner.update({f"mu_l {g.name}": f"group-{g.name}" for g in self.groups})
         for key, pts in self._pins:
             if len(pts) or empty:
                 w, h = (np.ptp(pts, axis=0) / scales[key] if len(pts) else np.zeros(2)) + 2.0 * PAD
@@ -2485,7 +2501,7 @@ class _Composer:
         mechanism `mech`, the groups within _PARTS_FINER of it."""
         parts = min(shrink, mech + _PARTS_FINER)  # the groups near the mechanism's scale
         steps = {"mech": mech, "lever": max(0, shrink)}
-        steps.update({f"group {g.name}": parts for g in self.fa.groups})
+        steps.update({f"group {g.name}": parts for g in self.groups})
         steps["driving"] = parts
         steps.update({f"poly {name}": max(0, shrink) for name, _, _ in self.polygon_sets})
         return steps
@@ -2495,7 +2511,7 @@ class _Composer:
         turn: the mechanism with its groups, the groups, the lever, the
         mechanism, each group, the driving link, the polygons, each polygon."""
         polys = [f"poly {name}" for name, _, _ in self.polygon_sets]
-        groups = [f"group {g.name}" for g in self.fa.groups]
+        groups = [f"group {g.name}" for g in self.groups]
         return [
             ["mech", *groups, "driving"],
             [*groups, "driving"],
@@ -2554,7 +2570,7 @@ class _Composer:
         larger (a group with the mechanism and the other parts where alone it
         would leave their scales), if the sheet holds it and no more
         lettering then finds no free place: kept where fewer names stand far."""
-        groups = [f"group {g.name}" for g in self.fa.groups]
+        groups = [f"group {g.name}" for g in self.groups]
         parts = ["mech", *groups, "driving"]
         keys: dict[str, list[list[str]]] = {
             "force-mechanism": [["mech"], parts],
@@ -2566,7 +2582,7 @@ class _Composer:
             **{detail_gid(self.details, d): [["lever"]] for d in self.details},
             "driving-link": [["driving"], parts],
         }
-        keys.update({f"group-{g.name}": [[f"group {g.name}"], parts] for g in self.fa.groups})
+        keys.update({f"group-{g.name}": [[f"group {g.name}"], parts] for g in self.groups})
         keys.update({f"force-polygon-{n}": [[f"poly {n}"]] for n, _, _ in self.polygon_sets})
         polys = [f"poly {n}" for n, _, _ in self.polygon_sets]
         for _ in range(_UNWALL_PASSES):
@@ -2713,6 +2729,7 @@ def _with_lever_details(
         composer.page,
         compact=composer.compact,
         lever_views=found,
+        groups=composer.groups,
     )
     return _refitted(composer, detailed, sum(composer.lettered(steps))) or (composer, steps)
 
@@ -2778,6 +2795,7 @@ def _detailed(
         compact=composer.compact,
         details=bool(composer.details),
         mechanism_details=found,
+        groups=composer.groups,
     )
     refit = _refitted(composer, detailed, was)
     return None if refit is None else (*refit, sum(refit[0].lettered(refit[1])))
@@ -2811,18 +2829,26 @@ def compose_sheet2(
     page = page if page is not None else Page.of("A1")
     check_language(lang)
     fa = forces if forces is not None else solution.require_forces()
-    composer = _Composer(fa, solution, backend.look, lang, page)
+    # a mechanism of many groups: they go on further sheets (further_groups),
+    # sheet 2 laid out compact (its tables of every pair, every force, long)
+    further = further_groups(len(fa.groups))
+    groups = () if further else fa.groups
+    composer = _Composer(
+        fa, solution, backend.look, lang, page, compact=bool(further), groups=groups
+    )
     steps = composer.first_fit()
-    if steps is None:
+    if steps is None and not composer.compact:
         # many groups: the equations in short lines, the tables in parts
         plain = composer
-        composer = _Composer(fa, solution, backend.look, lang, page, compact=True)
+        composer = _Composer(fa, solution, backend.look, lang, page, compact=True, groups=groups)
         composer.cache.update(plain.shared_drawings())
         steps = composer.first_fit()
     if steps is None and composer.details:
-        # no room for the lever's detail views either (chain_25): the lever alone
+        # no room for the lever's detail views either: the lever alone
         plain = composer
-        composer = _Composer(fa, solution, backend.look, lang, page, compact=True, details=False)
+        composer = _Composer(
+            fa, solution, backend.look, lang, page, compact=True, details=False, groups=groups
+        )
         composer.cache.update(plain.shared_drawings())
         steps = composer.first_fit()
     if steps is None:
@@ -2835,7 +2861,7 @@ def compose_sheet2(
             f"{page.name or 'the page'}: {what}, even with every drawing {_COARSEST} scale "
             "steps smaller than the textbook's\n"
             "  fix: draw sheet 1 alone (--sheet 1), or study a mechanism of fewer "
-            "groups (the force analysis of every group goes on one sheet)"
+            "groups (up to five groups go on sheet 2 with the rest of the force analysis)"
         )
     steps = composer.filled(composer.unwall(composer.fill(steps)))
     composer, steps = _with_lever_details(composer, steps, solution)
@@ -2853,6 +2879,7 @@ def compose_sheet2(
         arms={"lever": arms},
         details=composer.details,
         mechanism_details=composer.mechanism_details,
+        groups=tuple(g.name for g in composer.groups) if further else None,
     )
     for name in composer.tables + composer.drawings:
         ext, rect = composer.extent(sketches[name]), placed[name]
@@ -2862,5 +2889,10 @@ def compose_sheet2(
         result.placed[name] = rect
     fields = title_fields(solution, scales["mu_l"], lang)
     fields["sheet"] = "2"
+    if further:  # the sheet says where its groups went
+        fields.setdefault(
+            "sheet_name",
+            _words(lang)["groups_further"].format(first=3, last=2 + len(further)),
+        )
     draw_page(backend, page, fields, lang)
     return result
