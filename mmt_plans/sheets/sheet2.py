@@ -987,8 +987,9 @@ def sketch_force_polygons(
                     continue
                 drawn[key] = True
                 if v is inner:
-                    entry = names[_reversed(v.label)]
-                    entry[1] = f"{entry[1]} = -{force_markup(v.label)}"
+                    entry = names.get(_reversed(v.label))
+                    if entry is not None:  # (a side listed under the polygon has none)
+                        entry[1] = f"{entry[1]} = -{force_markup(v.label)}"
                     continue
                 s = offset + np.asarray(v.start, float) / mu_F
                 e = s + np.asarray(v.vector, float) / mu_F
@@ -1077,7 +1078,7 @@ def sketch_force_polygons(
             polygons, mu_F, look, lang, gid, title, equation_width, grow, True, unnamed
         )
         if len(crowded_names(again, lang)) < len(crowded_names(sk, lang)):
-            sk = again
+            sk, captions_first = again, True
     tiny = {
         force_markup(label): label
         for label, (s, e) in sides.items()
