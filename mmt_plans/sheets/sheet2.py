@@ -73,6 +73,9 @@ _TEXT = 3.5
 _TITLE = 5.0
 _PAD = 2.0
 _ARROW = dict(head_length=3.5, head_width=1.2)
+# a force polygon's side shorter than this (mm: its arrowhead) whose name
+# finds no place by it is drawn as a plain line, named under the polygon
+_UNNAMED_BELOW = _ARROW["head_length"]
 _FAR_MM = 40.0  # a reaction applied farther than this from its group's points moves to them
 # where along an arm h its name is tried, in turn: the middle first, then out to
 # both ends (the arms of a lever all leave the pole, where their names crowd)
@@ -1063,7 +1066,7 @@ def sketch_force_polygons(
             sk.rich_text((ext.left + _PAD, y), note.format(names=", ".join(short)), _TEXT)
             y -= 6.0
         if listed:
-            mm = catalogue(lang).plain_number(_ARROW["head_length"])
+            mm = catalogue(lang).plain_number(_UNNAMED_BELOW)
             note = _words(lang)["unnamed"].format(mm=mm, names=", ".join(listed))
             sk.rich_text((ext.left + _PAD, y), note, _TEXT)
             y -= 6.0
@@ -1082,7 +1085,7 @@ def sketch_force_polygons(
     tiny = {
         force_markup(label): label
         for label, (s, e) in sides.items()
-        if float(np.hypot(*(e - s))) < _ARROW["head_length"] and label not in unnamed
+        if float(np.hypot(*(e - s))) < _UNNAMED_BELOW and label not in unnamed
     }
     if tiny:
         # (the linter asked only where a side is that short: most polygons have none)
