@@ -80,6 +80,9 @@ _TEXT = 3.5
 _TITLE = 5.0
 _PAD = 2.0
 _ARROW = dict(head_length=3.5, head_width=1.2)
+# a force polygon's side shorter than this (mm: its arrowhead) whose name
+# finds no place by it is drawn as a plain line, named under the polygon
+_UNNAMED_BELOW = _ARROW["head_length"]
 _FAR_MM = 40.0  # a reaction applied farther than this from its group's points moves to them
 # where along an arm h its name is tried, in turn: the middle first, then out to
 # both ends (the arms of a lever all leave the pole, where their names crowd)
@@ -768,7 +771,9 @@ def sketch_group(
                 q = near[int(np.argmin(gap))]
                 arm = (at - q) * mu_l
                 if line == "main":
-                    d.moment(q, float(arm[0] * F[1] - arm[1] * F[0]), "M" + label[1:], radius=8.0)
+                    # named as the reaction it carries: M_{0,11} of R_{0,11} (not "M0_11")
+                    couple = "M" + force_markup(label)[1:]
+                    d.moment(q, float(arm[0] * F[1] - arm[1] * F[0]), couple, radius=8.0)
                 at = q
             d.force(at, F, label, largest, line)
         # the arms of ΣM_B(L1) = 0, the equation of R^t: the groups whose first
@@ -942,6 +947,7 @@ def sketch_force_polygons(
     equation_width: float | None = None,
     grow: bool = False,
     captions_first: bool = False,
+    unnamed: frozenset[str] = frozenset(),
 ) -> Sketch:
     """The polygons of one group (or of the driving link) to μF, head to tail
     from their origin. A polygon that starts with the sides of one already
@@ -951,11 +957,16 @@ def sketch_force_polygons(
     named after the sides' names, by it; where the sides' names leave it no
     place by it (task5_v04's link 2, 2 mm across, walled in by arrows), the
     polygons are drawn again with the captions written first
-    (`captions_first`), kept where that letters them better."""
+    (`captions_first`), kept where that letters them better. A side shorter
+    than its arrowhead whose name finds no place by it (gen 165's R^τ_{9,10},
+    1.9 mm between two long sides) is drawn again as a plain line closing
+    the chain, its name listed under the polygon (`unnamed`: their labels),
+    kept where that letters the polygons better."""
     sk = Sketch(look)
     labels = Labels(sk, _TEXT, **_FORCE_LABELLING, words=_index_words(lang))
     drawn: dict[tuple[str, int, int], bool] = {}
     short: list[str] = []
+    listed: list[str] = []  # the names of the sides in `unnamed`
     offset = np.zeros(2)
     sides: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # label → exact start, end
     arrows: list[tuple[np.ndarray, np.ndarray]] = []  # as drawn, some beside their line
@@ -991,8 +1002,9 @@ def sketch_force_polygons(
                     continue
                 drawn[key] = True
                 if v is inner:
-                    entry = names[_reversed(v.label)]
-                    entry[1] = f"{entry[1]} = -{force_markup(v.label)}"
+                    entry = names.get(_reversed(v.label))
+                    if entry is not None:  # (a side listed under the polygon has none)
+                        entry[1] = f"{entry[1]} = -{force_markup(v.label)}"
                     continue
                 s = offset + np.asarray(v.start, float) / mu_F
                 e = s + np.asarray(v.vector, float) / mu_F
@@ -1003,6 +1015,10 @@ def sketch_force_polygons(
                 component = "^" in v.label
                 sides[v.label] = (s, e)
                 s, e = _side_by_side(sk, labels, arrows, s, e)
+                if v.label in unnamed:
+                    sk.line(s, e, "dashed" if component else "main")
+                    listed.append(force_markup(v.label))
+                    continue
                 sk.arrow(s, e, "dashed" if component else "main", **_ARROW)  # type: ignore[arg-type]
                 # named beside its side, anywhere along it (as the textbook writes R12 by its side)
                 names[v.label] = [s, force_markup(v.label), e]
@@ -1061,6 +1077,11 @@ def sketch_force_polygons(
             note = _words(lang)["zero_polygon" if zero else "short"]
             sk.rich_text((ext.left + _PAD, y), note.format(names=", ".join(short)), _TEXT)
             y -= 6.0
+        if listed:
+            mm = catalogue(lang).plain_number(_UNNAMED_BELOW)
+            note = _words(lang)["unnamed"].format(mm=mm, names=", ".join(listed))
+            sk.rich_text((ext.left + _PAD, y), note, _TEXT)
+            y -= 6.0
         sk.rich_text((ext.left + _PAD, y), scale_label(mu_F, "force", lang).markup(), _TEXT)
         sk.text(
             (ext.left + _PAD, ext.top + 3.0),
@@ -1069,10 +1090,25 @@ def sketch_force_polygons(
         )
     if walled:
         again = sketch_force_polygons(
-            polygons, mu_F, look, lang, gid, title, equation_width, grow, captions_first=True
+            polygons, mu_F, look, lang, gid, title, equation_width, grow, True, unnamed
         )
         if len(crowded_names(again, lang)) < len(crowded_names(sk, lang)):
-            return again
+            sk, captions_first = again, True
+    tiny = {
+        force_markup(label): label
+        for label, (s, e) in sides.items()
+        if float(np.hypot(*(e - s))) < _UNNAMED_BELOW and label not in unnamed
+    }
+    if tiny:
+        # (the linter asked only where a side is that short: most polygons have none)
+        far = [n.markup for n in crowded(sk, lang) if n.markup in tiny]
+        if far:
+            more = unnamed | {tiny[markup] for markup in far}
+            again = sketch_force_polygons(
+                polygons, mu_F, look, lang, gid, title, equation_width, grow, captions_first, more
+            )
+            if len(crowded_names(again, lang)) < len(crowded_names(sk, lang)):
+                return again
     return sk
 
 

@@ -33,6 +33,8 @@ def _polygon_4_5(monkeypatch, orders: int, fine_kept: bool):
     """task09_v2's polygon of group 4-5 (uk) at the scale its sheet draws
     it, its labels written in `orders` orders, with or without fine_kept."""
     monkeypatch.setattr(sheet2, "_RETRY_ORDERS", orders)
+    # the lettering alone: no short side drawn as a line and named under the polygon
+    monkeypatch.setattr(sheet2, "_UNNAMED_BELOW", 0.0)
     monkeypatch.setattr(sheet2, "_FORCE_LABELLING", dict(sheet2._LABELLING, fine_kept=fine_kept))
     fa = _solution().require_forces()
     (g,) = [g for g in fa.groups if g.name == "4-5"]

@@ -99,6 +99,8 @@ def _polygons_4_5(lang, monkeypatch, orders, grow, fine_kept=False):
     order on the fine grid in the next order alone, as before
     Labels.fine_kept, unless `fine_kept`)."""
     monkeypatch.setattr(sheet2, "_RETRY_ORDERS", orders)
+    # the lettering alone: no short side drawn as a line and named under the polygon
+    monkeypatch.setattr(sheet2, "_UNNAMED_BELOW", 0.0)
     if not fine_kept:
         monkeypatch.setattr(sheet2, "_FORCE_LABELLING", sheet2._LABELLING)
     solution = mmt_plans.solve(mmt_plans.load(TASKS / "seed003" / "task09_v2.toml"))
