@@ -176,6 +176,12 @@ _SHORT_WIDER = (0.0, 3.0)
 # the drawing, kept where it letters it better (sketch_mechanism): the usual
 # arcs larger still, their arrowheads out of that bundle
 _FAR_WIDER = (9.0, 12.0)
+# and where none of those leaves it room either (a link in a dense bundle of
+# its positions' lines, its arrowheads 15° off the link in that bundle):
+# the usual arcs turned round their centre by these angles (deg), so that an
+# arrowhead stands further out of the bundle, at the usual radii and _WIDER
+_TURNS = (-30.0, 30.0, -60.0, 60.0, -90.0, 90.0)
+_TURNED_WIDER = (0.0, *_WIDER)
 # a mechanism of more links than this (a long chain, every drawing of it
 # crowded) keeps the usual arcs and letter heights: the shorter arcs and the
 # smaller figures are not tried (their cost, a pass more for each link and
@@ -412,19 +418,25 @@ class _ArcPlacer:
         no room near its arrowhead there, at radii _WIDER mm larger in turn
         (an arrowhead out of a bundle of lines), then (with `short`) the arcs
         shorter (_SHORT_SPAN, tried further along the link, at the usual radii
-        and 3 mm larger), then (a placer made `far`) _FAR_WIDER mm larger: the arcs
-        whose labels find room, crossing least. The centre, start angle, the
+        and 3 mm larger), then turned round their centres (_TURNS, at the
+        usual radii and _WIDER: an arrowhead further out of a bundle of the
+        positions' lines, the arc over the link where it must), then (a
+        placer made `far`) _FAR_WIDER mm larger: the arcs whose labels find
+        room, crossing least. The centre, start angle, the
         labels' places, how much larger the radii are, mm, and the span, deg."""
         best: tuple[float, np.ndarray, float, list[np.ndarray | None], float, float] | None = None
-        tries = [(_SPAN, _ALONG_LINK, 0.0)]
+        # (span, fractions along, mm larger, turns)
+        tries: list[tuple[float, Sequence[float], float, Sequence[float]]]
+        tries = [(_SPAN, _ALONG_LINK, 0.0, (0.0,))]
         if labels is not None:
-            tries += [(_SPAN, _ALONG_LINK, w) for w in _WIDER]
-            tries += [(_SHORT_SPAN, _ALONG_SHORT, w) for w in _SHORT_WIDER if short]
-            tries += [(_SPAN, _ALONG_LINK, w) for w in _FAR_WIDER if self.far]
-        for span, along, wider in tries:
+            tries += [(_SPAN, _ALONG_LINK, w, (0.0,)) for w in _WIDER]
+            tries += [(_SHORT_SPAN, _ALONG_SHORT, w, (0.0,)) for w in _SHORT_WIDER if short]
+            tries += [(_SPAN, _ALONG_LINK, w, _TURNS) for w in _TURNED_WIDER if short]
+            tries += [(_SPAN, _ALONG_LINK, w, (0.0,)) for w in _FAR_WIDER if self.far]
+        for span, along, wider, turns in tries:
             wide = [(radius + wider, sense) for radius, sense in spins]
             centre, start, picked, cost = self._beside(
-                segments, wide, labels, markups, wider, span, along
+                segments, wide, labels, markups, wider, span, along, turns
             )
             if best is None or cost < best[0]:
                 best = (cost, centre, start, picked, wider, span)
@@ -447,10 +459,11 @@ class _ArcPlacer:
         wider: float,
         span: float = _SPAN,
         along: Sequence[float] = _ALONG_LINK,
+        turns: Sequence[float] = (0.0,),
     ) -> tuple[np.ndarray, float, list[np.ndarray | None], float]:
         """Centre and start angle (deg) of the arcs (radius, sense) of a link
         beside one of its segments (at the fractions `along` of it), spanning
-        `span` degrees on one side of it,
+        `span` degrees on one side of it (turned by each of `turns`, deg),
         and the free place of each one's label (its box's centre; None: asked
         of `labels`, none is free near its arrowhead).
 
@@ -476,8 +489,9 @@ class _ArcPlacer:
             theta = math.degrees(math.atan2(*(b - a)[::-1]))
             for t in along:
                 for side in (0.0, 180.0):
-                    centres.append(a + t * (b - a))
-                    starts.append(theta + side + (180.0 - span) / 2)
+                    for turn in turns:
+                        centres.append(a + t * (b - a))
+                        starts.append(theta + side + (180.0 - span) / 2 + turn)
         assert centres, "a link with no segment of length"
         cs = np.asarray(centres, dtype=float)
         st = np.asarray(starts, dtype=float)

@@ -33,3 +33,23 @@ def test_each_position_names_its_own_arcs_nearby(lang):
         if f.message[1:2] in "ωε" or " arc" in f.message
     ]
     assert bad == []
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_turned_arcs_name_a_link_in_a_bundle(lang):
+    """Seed 88 (five groups): link 4 at its second plan position lies in the
+    bundle of its positions' lines; no arc 15° off the link, at any radius
+    or span tried, left "ω4" a place near its arrowhead (it stood 9.1 mm
+    off). Its arcs turned round their centre (_TURNS) take the arrowhead
+    out of the bundle, and every ω/ε name stands near its own."""
+    g = generate_one(88)
+    solution = solve(loads(g.toml, f"{g.name}.toml"))
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet1(solution, backend, lang)
+    view = SheetView.of(backend, lang, g.name)
+    bad = [
+        str(f)
+        for f in lint(view, ["label-near", "label-clear"])
+        if f.message[1:2] in "ωε" or " arc" in f.message
+    ]
+    assert bad == []
