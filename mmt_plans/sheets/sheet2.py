@@ -1856,15 +1856,16 @@ def guide_side(polygons: Sequence[ForcePolygon]) -> float:
     return largest
 
 
-def _force_scale(polygons: Sequence[ForcePolygon], steps: int = 0) -> float:
+def _force_scale(polygons: Sequence[ForcePolygon], steps: int = 0, held: bool = True) -> float:
     """μF so that the guide's side (guide_side) is 150 … 300 mm, `steps` series
     values coarser to fit the sheet (finer, negative, to fill it), but never so
-    coarse that F_PR falls under 150 mm."""
+    coarse that F_PR falls under 150 mm while `held` (compose_sheet2 lets it go
+    only where the sheet has no arrangement with it held)."""
     side = guide_side(polygons)
     if side <= 0:
         return 1.0
     mu = scale_for(side, FORCE_PLAN)
-    if not any(v.label.startswith("F_PR") for p in polygons for v in p.vectors):
+    if not held or not any(v.label.startswith("F_PR") for p in polygons for v in p.vectors):
         # the guide is the production resistance's: the other groups' polygons
         # may go coarser with the rest of the sheet
         return scale_step(mu, steps)
@@ -1881,7 +1882,8 @@ def _force_scale(polygons: Sequence[ForcePolygon], steps: int = 0) -> float:
 def _polygon_note(polygons: Sequence[ForcePolygon], mu_F: float, lang: Language) -> str:
     """Why a force polygon is drawn with its longest side below the guide's
     150 mm (empty when it is not)."""
-    drawn = max((p.largest for p in polygons), default=0.0) / mu_F
+    # the guide's measure: |F_PR| where it sizes the polygon (guide_side)
+    drawn = guide_side(polygons) / mu_F
     if drawn <= 0.0 or drawn >= FORCE_PLAN.low * (1 - 1e-9):
         return ""
     return str(_words(lang)["polygon_reduced"]).format(
@@ -1979,8 +1981,11 @@ class _Composer:
         mechanism_details: tuple[Detail, ...] = (),
         lever_views: tuple[LeverDetail, ...] | None = None,
         groups: Sequence[GroupForces] | None = None,
+        held: bool = True,
     ) -> None:
         self.fa, self.look, self.lang, self.page = fa, look, lang, page
+        # the polygon that carries F_PR kept at |F_PR| >= 150 mm (_force_scale)
+        self.held = held
         # the groups drawn here with their polygons: every one, or none where
         # they continue on further sheets (further_groups)
         self.groups = tuple(fa.groups if groups is None else groups)
@@ -2152,7 +2157,7 @@ class _Composer:
             out[f"mu_l {g.name}"] = length_scale_step(self.mu0, steps[f"group {g.name}"])
         out[f"mu_l {self.fa.driving_link.link}"] = length_scale_step(self.mu0, steps["driving"])
         for name, polygons, _ in self.polygon_sets:
-            out[f"mu_F {name}"] = _force_scale(polygons, steps[f"poly {name}"])
+            out[f"mu_F {name}"] = _force_scale(polygons, steps[f"poly {name}"], self.held)
         out["mu_V"] = scale_step(self.lever_mu, steps["lever"])
         out["mu_l"] = length_scale_step(self.mu0, steps["mech"])
         return out
@@ -2712,7 +2717,7 @@ class _Composer:
             # a polygon enlarged no further than the guide's 300 mm
             if steps[f"poly {name}"] != 0 and guide_side(polygons) <= 0.0:
                 return False  # an all-zero polygon is a point at any scale: never enlarged
-            mu_F = _force_scale(polygons, steps[f"poly {name}"])
+            mu_F = _force_scale(polygons, steps[f"poly {name}"], self.held)
             if steps[f"poly {name}"] < 0 and guide_side(polygons) / mu_F > FORCE_PLAN.high:
                 return False
         mu_V = scale_step(self.lever_mu, steps["lever"])
@@ -2766,6 +2771,7 @@ def _with_lever_details(
         compact=composer.compact,
         lever_views=found,
         groups=composer.groups,
+        held=composer.held,
     )
     return _refitted(composer, detailed, sum(composer.lettered(steps))) or (composer, steps)
 
@@ -2832,6 +2838,7 @@ def _detailed(
         details=bool(composer.details),
         mechanism_details=found,
         groups=composer.groups,
+        held=composer.held,
     )
     refit = _refitted(composer, detailed, was)
     return None if refit is None else (*refit, sum(refit[0].lettered(refit[1])))
@@ -2884,6 +2891,24 @@ def compose_sheet2(
         plain = composer
         composer = _Composer(
             fa, solution, backend.look, lang, page, compact=True, details=False, groups=groups
+        )
+        composer.cache.update(plain.shared_drawings())
+        steps = composer.first_fit()
+    if steps is None:
+        # a polygon of F_PR whose other sides run far past it (reactions
+        # many times the resistance near a dead centre): it too goes coarser,
+        # under 150 mm with the note that says so (_polygon_note)
+        plain = composer
+        composer = _Composer(
+            fa,
+            solution,
+            backend.look,
+            lang,
+            page,
+            compact=True,
+            details=False,
+            groups=groups,
+            held=False,
         )
         composer.cache.update(plain.shared_drawings())
         steps = composer.first_fit()
