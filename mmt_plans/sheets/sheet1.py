@@ -2428,6 +2428,17 @@ def _try_layout(
             within = field
         # a plan's detail view beside its plan
         near = placed.get(name.split("-detail")[0]) if "-detail" in name else None
+        if name.startswith("mechanism-detail") and field is not None:
+            # the mechanism's detail view in its own field where the drawing
+            # leaves room, from the field's bottom left: the sheet's middle,
+            # beside it, is the plans'
+            try:
+                placed[name] = layout.place(
+                    name, ext.width, ext.height, corner="bottom-left", within=field
+                )
+                continue
+            except LayoutError:
+                pass  # no room there: beside the drawing, as a plan's detail view
         placed[name] = layout.place(
             name,
             ext.width,
