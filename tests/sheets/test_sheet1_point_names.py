@@ -81,6 +81,9 @@ def test_the_pivot_is_named_once_in_a_detail_view_round_it(seed, lang):
 # (the name 10-16 mm off, or its leader across a main line). In the
 # mechanism's own field, where the drawing leaves room, it takes none of theirs.
 ROOMLESS = (22, 106)
+# gen 115 (RPR-RPR-RPP): two walled-in joints 35 mm apart, the crank's pivot
+# 'P' and 'R' (11 mm off), which no one disc holds: a view round each.
+APART = 115
 
 
 @functools.cache
@@ -114,3 +117,23 @@ def test_every_point_name_stands_near_its_point_with_the_view_in_the_field(seed,
         and any(f"'{p.replace('_{', '').replace('}', '')}'" in f.message for p in points)
     ]
     assert not bad, bad
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_two_walled_in_joints_apart_each_in_a_view_of_its_own(lang):
+    view, drawn = _composed(APART, lang)
+    views = [n for n in drawn.placed if n.startswith("mechanism-detail")]
+    assert len(views) == 2
+    named = {
+        lab.naming.markup: lab.runs[0].groups
+        for lab in view.labels
+        if lab.naming is not None and lab.naming.markup in ("P", "R")
+    }
+    assert set(named) == {"P", "R"}
+    assert all(any(g.startswith("mechanism-detail") for g in groups) for groups in named.values())
+    far = [
+        f
+        for f in lint(view)
+        if f.rule == "label-near" and ("'P'" in f.message or "'R'" in f.message)
+    ]
+    assert not far, far
