@@ -26,6 +26,9 @@ class Sketch(RecordingBackend):
         # how well its labels found room, once they are written (Labels.counts):
         # what a composer weighs when it chooses the drawing's scale
         self.label_counts: LabelCounts | None = None
+        # a detail view: where what it details stands in the drawing it
+        # details (that drawing's local mm), which the layout keeps it near
+        self.detail_of: tuple[float, float] | None = None
 
     def _call_bounds(self, c: Any) -> tuple[float, float, float, float] | None:
         hit = self._bounds.get(id(c))

@@ -1228,19 +1228,23 @@ def sketch_mechanism_details(
     crowd = stand_for(namings)
     lettered_badly = len(crowd)
 
-    def crowds() -> Iterator[np.ndarray]:
+    def crowds() -> Iterator[tuple[np.ndarray, int]]:
         if lettered_badly >= _MECHANISM_CROWD:
-            yield crowd
+            yield crowd, 1
         joints = _crowded_joints(solution, namings)
         if len(joints) and (lettered_badly < _MECHANISM_CROWD or len(joints) < lettered_badly):
-            yield joints  # (not the whole crowd again)
+            # (not the whole crowd again) a view round each walled-in joint
+            # apart: no leader reaches it, however few they are
+            yield joints, _MECHANISM_DETAILS
 
-    for knot in crowds():
-        details = mechanism_details(solution, mu_l, knot, letters)
+    for knot, most in crowds():
+        details = mechanism_details(solution, mu_l, knot, letters, most)
         if not details:
             continue
         sk = sketch_mechanism(solution, mu_l, look, lang, details)
         views = [sketch_mechanism(solution, mu_l, look, lang, details, d) for d in details]
+        for view, d in zip(views, details):
+            view.detail_of = (d.centre[0] / mu_l, d.centre[1] / mu_l)
         if sum(len(crowded_names(v, lang)) for v in (sk, *views)) < lettered_badly:
             return sk, views
     return None  # no detail view letters the drawing better
@@ -1254,7 +1258,7 @@ def _crowded_joints(solution: Solution, namings: Sequence[Naming]) -> np.ndarray
 
 
 _MECHANISM_CROWD = 3  # the mechanism's names far or on something: this many make a crowd
-_MECHANISM_DETAILS = 1  # the most detail views of the mechanism
+_MECHANISM_DETAILS = 2  # the most detail views of the mechanism (round its walled-in joints)
 _MECHANISM_DETAIL_MM = 45.0  # the largest radius of its detail's disc, mm
 _MECHANISM_APART_MM = 7.0  # its detail sets the points this far apart
 _MECHANISM_RADII = (4.0, 6.0, 8.0, 12.0, 16.0)  # the radii of its discs tried, mm
@@ -1293,14 +1297,16 @@ def _mechanism_names(solution: Solution, mu_l: float) -> tuple[list[Name], np.nd
 
 
 def mechanism_details(
-    solution: Solution, mu_l: float, crowded: np.ndarray, letters: str
+    solution: Solution, mu_l: float, crowded: np.ndarray, letters: str, most: int = 1
 ) -> tuple[Detail, ...]:
     """The detail views the mechanism at `mu_l` needs where the names standing
     for `crowded` (mm, `crowded_names` of the mechanism drawn without details)
-    found no place near (`choose_details`): at most _MECHANISM_DETAILS discs
+    found no place near (`choose_details`): at most `most` discs apart, each
     round a point of the mechanism or such a point, the smallest that holds
-    most of the crowd, drawn at the ratio of the series that sets its points
-    _MECHANISM_APART_MM apart and leaves its names room, lettered by `letters`.
+    most of the crowd left, drawn at the ratio of the series that sets its
+    points _MECHANISM_APART_MM apart and leaves its names room, lettered by
+    `letters` (a disc past the first may hold one name: a walled-in joint's,
+    which no leader reaches).
     Each crowded name stands for the point of the mechanism nearest what it
     names (an ω or ε for a joint of its link, beside which its arc is drawn):
     the disc goes round the knot of joints, not round the arcs' heads."""
@@ -1315,13 +1321,13 @@ def mechanism_details(
         list(points),
         mu_l,
         letters,
-        _MECHANISM_DETAILS,
+        most,
         points=points,
         spacing=_MECHANISM_APART_MM,
         widest=_MECHANISM_DETAIL_MM,
         tightest=_MECHANISM_CORE,
         radii=_MECHANISM_RADII,
-        fewest=_MECHANISM_CROWD,
+        fewest=1,
     )
 
 
@@ -2442,6 +2448,18 @@ def _try_layout(
             within = field
         # a plan's detail view beside its plan
         near = placed.get(name.split("-detail")[0]) if "-detail" in name else None
+        if name.startswith("mechanism-detail") and field is not None:
+            # the mechanism's detail view in its own field where the drawing
+            # leaves room, nearest the knot it details: the sheet's middle,
+            # beside the drawing, is the plans'
+            knot = _detail_place(sketches[name], extent(sketches["mechanism"]), placed["mechanism"])
+            try:
+                placed[name] = layout.place(
+                    name, ext.width, ext.height, corner="bottom-left", within=field, near=knot
+                )
+                continue
+            except LayoutError:
+                pass  # no room there: beside the drawing, as a plan's detail view
         placed[name] = layout.place(
             name,
             ext.width,
@@ -2452,6 +2470,15 @@ def _try_layout(
             near=near,
         )
     return layout, placed, field
+
+
+def _detail_place(view: Sketch, drawn: Rect, placed: Rect) -> Rect | None:
+    """Where on the sheet (a point, as a Rect) what the detail `view` details
+    stands, its drawing `drawn` (its extent) placed at `placed`."""
+    if view.detail_of is None:
+        return None
+    x, y = view.detail_of
+    return Rect(x + placed.x - drawn.x, y + placed.y - drawn.y, 0.0, 0.0)
 
 
 def _bare_mechanism(solution: Solution, mu_l: float, look: Any) -> Sketch:
