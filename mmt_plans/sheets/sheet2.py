@@ -290,6 +290,12 @@ class _Drawing:
         self.state = state
         self.mu_l = mu_l
         self._arrows: list[tuple[np.ndarray, np.ndarray]] = []  # (start, end) drawn
+        # the names written near a point so far (its anchor, markup, side): a
+        # couple's arc may wall in those round the point it turns round
+        self._named: list[tuple[np.ndarray, str, np.ndarray | None]] = []
+        # whether a couple's arc turned for the names inside its circle
+        # (`moment`, `enclosed`) starts elsewhere than turned for its own and its point's
+        self.turned_for_enclosed = False
         # couples' arcs turned to leave their names room (`moment`); a compact
         # sheet's loaded mechanism keeps them at the first start
         self.turn_arcs = turn_arcs
@@ -330,6 +336,7 @@ class _Drawing:
         (where it is this drawing's: `here`)."""
         if self.here(anchor):
             self.labels.later(anchor, markup, towards)
+            self._named.append((np.asarray(anchor, float), markup, towards))
 
     def later_along(
         self, start: np.ndarray, end: np.ndarray, markup: str, along: Sequence[float] | None = None
@@ -360,20 +367,22 @@ class _Drawing:
         label: str,
         radius: float = 6.0,
         name: tuple[str, np.ndarray] | None = None,
+        enclosed: bool = False,
     ) -> None:
         """A couple as an arc with its arrowhead in the sense of M (ccw
         positive), turned where it leaves room for its label by the arrowhead
         and for `name` (the name of the point at `centre`, the side it is
-        written first), and crosses least."""
+        written first), with `enclosed` for every name written so far inside
+        its circle too, and crosses least."""
         if M == 0.0 or not self.here(centre):
             return
         # the arc is avoided as drawn (the labels follow the sketch), not as a
         # disc: the points inside it (the pivot it turns round) are named there
-        start = (
-            self._arc_start(centre, M, force_markup(label), radius, name)
-            if self.turn_arcs
-            else _ARC_STARTS[0]
-        )
+        start = _ARC_STARTS[0]
+        if self.turn_arcs:
+            start = self._arc_start(centre, M, force_markup(label), radius, name, enclosed)
+            if enclosed and start != self._arc_start(centre, M, force_markup(label), radius, name):
+                self.turned_for_enclosed = True
         tip = sense_arc(self.sk, centre, radius, M, start, start + _ARC_SPAN)
         self.later(tip, force_markup(label), unit_vector(tip - centre))
 
@@ -384,10 +393,20 @@ class _Drawing:
         markup: str,
         radius: float,
         name: tuple[str, np.ndarray] | None,
+        enclosed: bool = False,
     ) -> float:
         """Where a couple's arc starts, degrees: the first of _ARC_STARTS that
-        leaves room near `centre` for `name` and by the arrowhead for `markup`,
-        else the one that leaves most of that room and covers least."""
+        leaves room near `centre` for `name` and by the arrowhead for `markup`
+        (with `enclosed`, near its point for each name inside the arc's circle:
+        a short crank's centre of mass, its pin), else the one that leaves most
+        of that room and covers least."""
+        inside = [
+            (at, markup_, side)
+            for at, markup_, side in self._named
+            if enclosed
+            and float(np.hypot(*(at - centre))) <= radius
+            and (name is None or markup_ != name[0] or float(np.hypot(*(at - centre))) > 1e-6)
+        ]
         best: tuple[tuple[int, float], float] | None = None
         for start in _ARC_STARTS:
             arc = arc_line(centre, radius, start, start + _ARC_SPAN)
@@ -397,6 +416,8 @@ class _Drawing:
             if name is not None:
                 rooms = self.labels.rooms(centre, name[0], towards=name[1], keep_off=arc)
                 lost += 2 * int(not len(rooms))
+            for at, inner, side in inside:
+                lost += int(not len(self.labels.rooms(at, inner, towards=side, keep_off=arc)))
             if not lost:  # room for both: the first such start
                 return start
             score = (lost, round(self.labels.covered(arc.buffer(0.3)), 1))
@@ -600,7 +621,34 @@ def _loaded_view(
     details: Sequence[Detail],
     detail: Detail | None,
 ) -> Sketch:
-    """The loaded mechanism with `details` marked (`detail` None), or the detail view `detail`."""
+    """The loaded mechanism with `details` marked (`detail` None), or the detail
+    view `detail`: ω1's arc turned where it leaves room for the names inside its
+    circle too (a short crank's S1 and pin, gen 141), kept so where that
+    letters the drawing better than the arc turned for ω1 and the pivot's name
+    alone (gen 165's detail: S3, ω1 and h5 then went far)."""
+    sk, turned = _loaded_drawing(fa, mu_l, look, lang, compact, grow, details, detail, True)
+    if not turned:
+        return sk
+    plain, _ = _loaded_drawing(fa, mu_l, look, lang, compact, grow, details, detail, False)
+    assert sk.label_counts is not None and plain.label_counts is not None
+    counts, plain_counts = sk.label_counts, plain.label_counts
+    better = (counts.unsettled, counts.far) < (plain_counts.unsettled, plain_counts.far)
+    return sk if better else plain
+
+
+def _loaded_drawing(
+    fa: ForceAnalysis,
+    mu_l: float,
+    look: Any,
+    lang: Language,
+    compact: bool,
+    grow: bool,
+    details: Sequence[Detail],
+    detail: Detail | None,
+    enclosed: bool,
+) -> tuple[Sketch, bool]:
+    """`_loaded_view`'s drawing, ω1's arc turned with `enclosed` as
+    _Drawing.moment's; and whether `enclosed` turned it elsewhere."""
     state = fa.loads.state
     mech = state.mech
     mu = mu_l / detail.ratio if detail is not None else mu_l
@@ -616,16 +664,17 @@ def _loaded_view(
         d.force(A, fa.driving_link.balancing_vector, "F_bal", largest)
         O = d.mm(state.point(mech.drive.link, mech.crank_pivot))
         name = (point_markup(mech.crank_pivot), _PIN_SIDE)
-        d.moment(O, state.omega1, "ω_{1}", radius=9.0, name=name)
+        d.moment(O, state.omega1, "ω_{1}", radius=9.0, name=name, enclosed=enclosed)
         if detail is not None:
             ratio = catalogue(lang).plain_number(detail.ratio)
-            return d.finish(_words(lang)["lever_detail"].format(letter=detail.letter, ratio=ratio))
+            title = _words(lang)["lever_detail"].format(letter=detail.letter, ratio=ratio)
+            return d.finish(title), d.turned_for_enclosed
         d.marks(details, lang)
         label = scale_label(mu_l, "length", lang).markup()
         sk = d.finish(
             _words(lang)["mechanism"].format(i=fa.index), [label, _words(lang)["not_to_scale"]]
         )
-    return sk
+    return sk, d.turned_for_enclosed
 
 
 _LOADED_DETAILS = 2  # the most detail views of the loaded mechanism

@@ -1,0 +1,78 @@
+"""The names on sheet 2's loaded mechanism (#21): ω1's arc, 9 mm round the
+crank's pivot, turned where it leaves room for every name inside its circle
+(a short crank's centre of mass, its pin), not only for the pivot's name and
+its own."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from lettering import label_boxes, solved_seed
+
+from mmt_plans.drawing.labels import arc_line
+from mmt_plans.render.recording import RecordingBackend
+from mmt_plans.sheets.lint import SheetView, lint
+from mmt_plans.sheets.sheet2 import _ARC_SPAN, _Drawing, compose_sheet2
+
+NEAR_RULES = {"label-near", "label-clear"}
+
+
+def _loaded_findings(seed: int, lang: str) -> list[str]:
+    """Sheet 2's loaded mechanism (and its details): its names far or on something."""
+    backend = RecordingBackend(841.0, 594.0)
+    sheet = compose_sheet2(solved_seed(seed), backend, lang)  # type: ignore[arg-type]
+    view = SheetView.of(backend, lang, f"gen {seed} {lang}")  # type: ignore[arg-type]
+    found = []
+    for f in lint(view):
+        x, y = f.where
+        placed = [
+            name
+            for name, r in sheet.placed.items()
+            if r.x - 1 <= x <= r.x + r.width + 1 and r.y - 1 <= y <= r.y + r.height + 1
+        ]
+        if f.rule in NEAR_RULES and any(n.startswith("force-mechanism") for n in placed):
+            found.append(str(f))
+    return found
+
+
+# gen 141 (RRR-RRR-PRP-RRR): the crank is short on the loaded mechanism,
+# its centre of mass S1 inside ω1's circle (9 mm round the pivot). The arc, turned for
+# 'ω1' and the pivot's name alone, walled S1 in: 'S1' stood 9.5 mm off (en
+# and uk). Turned where S1's name finds room too, it is lettered near.
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_gen_141s_crank_centre_of_mass_is_named_near_inside_the_arc(lang):
+    found = _loaded_findings(141, lang)
+    assert not [f for f in found if "'S1'" in f], found
+
+
+def _walled_name(enclosed: bool) -> tuple[_Drawing, np.ndarray, float]:
+    """A pivot at the origin inside a ring of thin lines 13 mm round, 'S1'
+    6.5 mm above it, ω1's arc (9 mm) turned with or without `enclosed`:
+    the drawing, S1 and the arc's start."""
+    d = _Drawing(RecordingBackend().look, None, 1.0)  # type: ignore[arg-type]
+    t = np.radians(np.arange(0.0, 361.0, 10.0))
+    ring = np.c_[13.0 * np.cos(t), 13.0 * np.sin(t)]
+    for a, b in zip(ring[:-1], ring[1:]):
+        d.sk.line(a, b, "thin")
+    centre = np.zeros(2)
+    d.labels.avoid_circle(centre, 2.0)
+    S = np.array([0.0, 6.5])
+    d.later(S, "S_{1}", np.array([-0.8, -0.6]))
+    return d, S, d._arc_start(centre, 1.0, "ω_{1}", 9.0, None, enclosed)
+
+
+def test_the_arc_leaves_room_for_a_name_inside_its_circle():
+    def room(d: _Drawing, S: np.ndarray, start: float) -> bool:
+        arc = arc_line((0.0, 0.0), 9.0, start, start + _ARC_SPAN)
+        return bool(len(d.labels.rooms(S, "S_{1}", towards=(-0.8, -0.6), keep_off=arc)))
+
+    d, S, start = _walled_name(enclosed=False)
+    assert not room(d, S, start)  # turned for ω1's name alone, it walls S1 in
+    d, S, start = _walled_name(enclosed=True)
+    assert room(d, S, start)
+    d.moment(np.zeros(2), 1.0, "ω_{1}", radius=9.0, enclosed=True)
+    d.labels.write_later()
+    (_, box), *_ = [(t, b) for t, b in label_boxes(d.sk) if t.startswith("S")]
+    assert math.dist((box.centroid.x, box.centroid.y), S) <= 6.0
