@@ -951,10 +951,15 @@ def _view_name(index: int) -> str:
 def _unlettered_view(
     solution: Solution, mu_l: float, look: Any, lang: Language, index: int
 ) -> Sketch:
-    """A stand-in for plan position `index`'s view no larger than it: its
-    lines and its captions without the lettering (as `_unlettered_mechanism`)."""
+    """A stand-in for plan position `index`'s view, about as large as it: its
+    lines, the room its arcs and names take round them (_ARC_REACH) and its
+    captions, no lettering (the view is lettered only where this fits the sheet)."""
     sk = Sketch(look)
     _pose_lines(sk, solution, mu_l, solution.entry(index))
+    ext = sk.extent()
+    r = _ARC_REACH
+    corners = [(ext.left - r, ext.bottom - r), (ext.right + r, ext.bottom - r)]
+    sk.polygon([*corners, (ext.right + r, ext.top + r), (ext.left - r, ext.top + r)], "thin")
     _view_captions(sk, mu_l, lang, index)
     return sk
 
@@ -1086,7 +1091,7 @@ def sketch_mechanism(
         solution, mu_l, look, lang, False, details, detail, views
     )
     # (a long chain keeps the one lettering: see _SHORT_LINKS)
-    short = len(solution.mechanism.links) <= _SHORT_LINKS
+    short = len(solution.mechanism.links) <= _SHORT_LINKS or isinstance(views, int)
     if short and lacking and (counts.unsettled or counts.far):
         again, counts_again, _ = _lettered_mechanism(
             solution, mu_l, look, lang, True, details, detail, views
@@ -1124,6 +1129,8 @@ def _lettered_mechanism(
         [views] if isinstance(views, int) else [] if views == "apart" else solution.plan_positions
     )
     shown = [alone] if alone is not None else list(range(n))
+    # a position's view, one pose, is lettered as a short mechanism's drawing
+    short = len(mech.links) <= _SHORT_LINKS or alone is not None
     sk = Sketch(look)
     ratio = detail.ratio if detail is not None else 1.0
     mu_l = mu_l / ratio
@@ -1166,7 +1173,7 @@ def _lettered_mechanism(
             leader_rings=FINE_LEADER_RINGS,
             leader_dirs=FINE_LEADER_DIRS,
             leader_group=FINE_LEADER_GROUP,
-            smaller=_SMALL if len(mech.links) <= _SHORT_LINKS else None,
+            smaller=_SMALL if short else None,
         )
         labels.avoid_drawn(sk.calls)
         for d, (middle, r) in zip(details, discs) if detail is None else ():
@@ -1239,7 +1246,7 @@ def _lettered_mechanism(
                     [(r, v) for v, r, _, _ in spins],
                     labels,
                     [f"{sym}_{{{lid}}}" for _, _, sym, _ in spins],
-                    len(mech.links) <= _SHORT_LINKS,  # the shorter arcs tried
+                    short,  # the shorter arcs tried
                 )
                 for (value, radius, sym, line), room in zip(spins, rooms):
                     inset = _inset(radius + wider, _OMEGA_R + wider)
@@ -1279,7 +1286,7 @@ def _lettered_mechanism(
             labels.later(tip, markup, towards, first=kept)
         # where some stand far, all once more with those first (Labels.write_later;
         # a long chain keeps the one order: see _SHORT_LINKS)
-        labels.write_later(retry=len(mech.links) <= _SHORT_LINKS)
+        labels.write_later(retry=short)
         if alone is None:
             _position_numbers(labels, solution, mu_l, here if discs else None, in_no_disc)
         if alone is not None:
@@ -2967,7 +2974,7 @@ def compose_sheet1(
         for mu_v in _view_scales(solution, mu_l):
             stand = {**sketches, **position_views(mu_v, lettered=False)}
             order = _order(stand, True)
-            if mu_v == mu_l or _may_fit(page, stand, order, arrangements, extents)[0]:
+            if _may_fit(page, stand, order, arrangements, extents)[0]:
                 yield position_views(mu_v)
 
     used = {n[:1].upper() for n in solution.mechanism.point_owners}
