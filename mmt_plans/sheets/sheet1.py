@@ -13,7 +13,7 @@ import math
 import re
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any, cast
+from typing import Any, Literal, cast
 
 import numpy as np
 import shapely
@@ -862,6 +862,123 @@ def _mechanism_lines(sk: Sketch, solution: Solution, mu_l: float) -> None:
     draw_poses(sk, poses)
 
 
+def _pose_lines(sk: Sketch, solution: Solution, mu_l: float, k: int) -> None:
+    """The line work of entry `k` of the sweep alone (a plan position's view,
+    `sketch_mechanism` with `alone`): its links in main lines, its joints,
+    sliders and guides, and the frame's pivots; no other position, no trajectory."""
+    pts = solution.sweep.points
+
+    def at(name: str, j: int) -> np.ndarray:
+        return np.asarray(pts[name][j], dtype=float) / mu_l
+
+    pose = _position(solution, k, mu_l, {k})
+    frame = [p for p, o in solution.mechanism.point_owners.items() if 0 in o and p in pts]
+    guides, blocks = _sliders(solution, mu_l, {k}, at)
+    own = (*guides[None], *guides[k])
+    draw_poses(sk, [dataclasses.replace(pose, pivots=frame, guides=own, blocks=blocks[k])])
+
+
+# the paper (mm²) round a link (within _ARC_REACH of its lines) that its ω
+# and ε arcs at one position take with their names. Where the plan positions'
+# links drawn in all the positions have less than _ARC_CROWD of it each, the
+# n-position drawing cannot hold their arcs (chain_25 at 1:20: 174 mm², ~120
+# of its 140 findings ω/ε names 9–20 mm off; the samples, 1380 mm² and more;
+# the generated seeds 0–299 at the scale that fills the field, 500 and more):
+# each plan position is drawn in a view of its own, at the coarsest scale of
+# the series that leaves its links _ARC_VIEW each (chain_25: 1:10, 707 mm²)
+_ARC_CROWD = 320.0
+_ARC_VIEW = 600.0
+_ARC_REACH = 12.0  # how far from a link its arcs and their names go, mm
+
+
+def _arc_room(solution: Solution, mu_l: float, entries: Sequence[int]) -> float:
+    """The paper (mm²) within _ARC_REACH of the links drawn at the sweep's
+    `entries` at `mu_l`, for each of the links at the plan positions among
+    them whose ω or ε is drawn (inf where none is)."""
+    mech = solution.mechanism
+    pts = solution.sweep.points
+    sw = solution.sweep
+    w1 = abs(float(mech.drive.signed_omega))
+    planned = {solution.entry(i) for i in solution.plan_positions}
+    lines = []
+    spinning = 0
+    for k in sorted(set(entries)):
+        for lid, link in mech.links.items():
+            ends = [np.asarray(pts[p][k], dtype=float) / mu_l for p in link.points if p in pts]
+            ends = [e for e in ends if np.all(np.isfinite(e))]
+            if len(ends) < 2:
+                continue
+            lines += [shapely.LineString([a, b]) for a, b in itertools.combinations(ends, 2)]
+            if lid != mech.drive.link and k in planned:
+                w, e = float(sw.omega[lid][k]), float(sw.eps[lid][k])
+                spinning += abs(w) >= 1e-9 * w1 or abs(e) >= 1e-9 * w1 * w1
+    if not spinning or not lines:
+        return math.inf
+    return float(shapely.union_all([g.buffer(_ARC_REACH, 8) for g in lines]).area) / spinning
+
+
+def _arcs_crowd(solution: Solution, mu_l: float) -> bool:
+    """Whether the mechanism drawn at `mu_l` in all its positions has too little
+    room for its links' ω/ε arcs at the plan positions (_ARC_CROWD)."""
+    entries = [0, *(solution.entry(i) for i in solution.plan_positions)]
+    return _arc_room(solution, mu_l, entries) < _ARC_CROWD
+
+
+def _view_scales(solution: Solution, mu_l: float) -> list[float]:
+    """The scales the plan positions' views of a mechanism drawn at `mu_l` are
+    tried at, in turn: from the coarsest of the series (at most 4 steps finer
+    than `mu_l`) at which every plan position alone leaves its links
+    _ARC_VIEW each, up to `mu_l` itself (where the sheet has no room for them larger)."""
+    finer = list(series(mu_l * 1e-4, mu_l * (1 + 1e-6), LENGTH_MANTISSA_TEXT))[::-1][:5]
+    for n, mu in enumerate(finer):
+        alone = [_arc_room(solution, mu, [solution.entry(i)]) for i in solution.plan_positions]
+        if min(alone) >= _ARC_VIEW:
+            return finer[: n + 1][::-1]
+    return finer[::-1]
+
+
+# how sketch_mechanism draws the mechanism: None, in all its positions with
+# every arc; "apart", so but for the links' ω/ε arcs, drawn in the plan
+# positions' views; a plan position (its index), that position's view
+Views = int | Literal["apart"] | None
+
+
+def _view_name(index: int) -> str:
+    """The drawing of sheet 1 that holds plan position `index` alone."""
+    return f"mechanism-position-{index}"
+
+
+def _unlettered_view(
+    solution: Solution, mu_l: float, look: Any, lang: Language, index: int
+) -> Sketch:
+    """A stand-in for plan position `index`'s view, about as large as it: its
+    lines, the room its arcs and names take round them (_ARC_REACH) and its
+    captions, no lettering (the view is lettered only where this fits the sheet)."""
+    sk = Sketch(look)
+    _pose_lines(sk, solution, mu_l, solution.entry(index))
+    ext = sk.extent()
+    r = _ARC_REACH
+    corners = [(ext.left - r, ext.bottom - r), (ext.right + r, ext.bottom - r)]
+    sk.polygon([*corners, (ext.right + r, ext.top + r), (ext.left - r, ext.top + r)], "thin")
+    _view_captions(sk, mu_l, lang, index)
+    return sk
+
+
+def _view_captions(sk: Sketch, mu_l: float, lang: Language, index: int) -> None:
+    """A plan position's view: its title over it, its scale under it."""
+    ext = sk.extent()
+    label = scale_label(mu_l, "length", lang)
+    sk.rich_text((ext.x + _PAD, ext.bottom - 6.0), label.markup(), _TEXT)
+    sk.text((ext.x + _PAD, ext.top + 3.0), _words(lang)["position_view"].format(i=index), _TITLE)
+
+
+def _apart_note(sk: Sketch, solution: Solution, lang: Language) -> None:
+    """Under the drawing whose links' ω/ε arcs are drawn in the plan positions' views: where."""
+    ext = sk.extent()
+    listed = ", ".join(str(i) for i in solution.plan_positions)
+    sk.text((ext.x + _PAD, ext.bottom - 5.0), _words(lang)["arcs_apart"].format(i=listed), _SMALL)
+
+
 def _mechanism_captions(sk: Sketch, mu_l: float, lang: Language) -> None:
     """The scale under the drawn mechanism, its title over it."""
     ext = sk.extent()
@@ -957,6 +1074,7 @@ def sketch_mechanism(
     lang: Language,
     details: Sequence[Detail] = (),
     detail: Detail | None = None,
+    views: Views = None,
 ) -> Sketch:
     """The mechanism in all its positions, lettered; where some link's ω/ε
     names found no room near their arcs and some name stands far or on
@@ -966,13 +1084,17 @@ def sketch_mechanism(
     fewer far; the first on a tie: a drawing not crowded is drawn as before).
     With `details`, what stands in a detail's disc is drawn but lettered only
     in its detail view, the disc marked by a thin circle and its letter; with
-    `detail` too, the drawing is that view (`_lettered_mechanism`)."""
-    sk, counts, lacking = _lettered_mechanism(solution, mu_l, look, lang, False, details, detail)
+    `detail` too, the drawing is that view (`_lettered_mechanism`). With
+    `views` (`Views`), the drawing without its links' ω/ε arcs, or one plan
+    position's view."""
+    sk, counts, lacking = _lettered_mechanism(
+        solution, mu_l, look, lang, False, details, detail, views
+    )
     # (a long chain keeps the one lettering: see _SHORT_LINKS)
-    short = len(solution.mechanism.links) <= _SHORT_LINKS
+    short = len(solution.mechanism.links) <= _SHORT_LINKS or isinstance(views, int)
     if short and lacking and (counts.unsettled or counts.far):
         again, counts_again, _ = _lettered_mechanism(
-            solution, mu_l, look, lang, True, details, detail
+            solution, mu_l, look, lang, True, details, detail, views
         )
         if (counts_again.unsettled, counts_again.far) < (counts.unsettled, counts.far):
             return again
@@ -987,6 +1109,7 @@ def _lettered_mechanism(
     far: bool,
     details: Sequence[Detail] = (),
     detail: Detail | None = None,
+    views: Views = None,
 ) -> tuple[Sketch, LabelCounts, bool]:
     """The mechanism lettered, its links' ω/ε arcs tried `far` (_ArcPlacer):
     the drawing, how well its labels found room, and whether some link's
@@ -994,11 +1117,20 @@ def _lettered_mechanism(
     a point is named, a position numbered and a link's arcs drawn in the view
     that holds its place (`_arc_parts`): this drawing, its discs marked, or
     with `detail` that detail view, its disc at μl / ratio, the lines cut at
-    the disc's edge."""
+    the disc's edge. With `views` (`Views`): "apart", the drawing whose
+    plan positions' ω/ε arcs are drawn in views of their own (it says so
+    under it); a plan position, that position's view (`_view_of`)."""
     mech = solution.mechanism
     pts = solution.sweep.points
     owners = {p: (0 if 0 in o else o[0], o) for p, o in mech.point_owners.items()}
     n = len(solution.positions)
+    alone = solution.entry(views) if isinstance(views, int) else None
+    arcs_at: Sequence[int] = (
+        [views] if isinstance(views, int) else [] if views == "apart" else solution.plan_positions
+    )
+    shown = [alone] if alone is not None else list(range(n))
+    # a position's view, one pose, is lettered as a short mechanism's drawing
+    short = len(mech.links) <= _SHORT_LINKS or alone is not None
     sk = Sketch(look)
     ratio = detail.ratio if detail is not None else 1.0
     mu_l = mu_l / ratio
@@ -1019,9 +1151,13 @@ def _lettered_mechanism(
         return in_no_disc(p)
 
     gid = "mechanism" if detail is None else _mechanism_detail_name(details, detail)
+    gid = gid if alone is None else _view_name(cast(int, views))
     with sk.group(gid, "mechanism"):
         begun = len(sk.calls)
-        _mechanism_lines(sk, solution, mu_l)
+        if alone is None:
+            _mechanism_lines(sk, solution, mu_l)
+        else:
+            _pose_lines(sk, solution, mu_l, alone)
         if own is not None:
             sk.calls[begun:] = cut_to_disc(sk.calls[begun:], *own)
         for middle, r in [own] if own is not None else discs:
@@ -1037,7 +1173,7 @@ def _lettered_mechanism(
             leader_rings=FINE_LEADER_RINGS,
             leader_dirs=FINE_LEADER_DIRS,
             leader_group=FINE_LEADER_GROUP,
-            smaller=_SMALL if len(mech.links) <= _SHORT_LINKS else None,
+            smaller=_SMALL if short else None,
         )
         labels.avoid_drawn(sk.calls)
         for d, (middle, r) in zip(details, discs) if detail is None else ():
@@ -1046,16 +1182,17 @@ def _lettered_mechanism(
             labels.place_first([(rim, rim - middle) for rim in rims], d.letter)
         # the crank's pivot named on the side away from the pin at position 0,
         # so that its "O" stands far from the position number "0"
-        opposite = -unit_vector(at(mech.crank_pin, 0) - pivot)
+        opposite = -unit_vector(at(mech.crank_pin, shown[0]) - pivot)
         # each joint named at position 0, else (walled in there by the lines
         # of the other positions) at the first plan position where its name
         # stands near it: a point drawn in main lines there too (a long chain
         # at position 0 alone: see _SHORT_LINKS)
         drawn_at = [0, *sorted({solution.entry(i) for i in solution.plan_positions} - {0})]
         drawn_at = drawn_at if len(mech.links) <= _SHORT_LINKS else [0]
+        drawn_at = drawn_at if alone is None else [alone]
         for name in owners:
             # (named in the view that holds its place at position 0)
-            if name in pts and here(at(name, 0)):
+            if name in pts and here(at(name, shown[0])):
                 anchors: list[tuple[np.ndarray, np.ndarray]] = []
                 for k in drawn_at:
                     p = at(name, k)
@@ -1084,7 +1221,7 @@ def _lettered_mechanism(
         queued: list[tuple[np.ndarray, str, np.ndarray, np.ndarray | None]] = []
         sw = solution.sweep
         w1 = abs(float(mech.drive.signed_omega))
-        for i in solution.plan_positions:
+        for i in arcs_at:
             k = solution.entry(i)
             for lid, link in mech.links.items():
                 w, e = float(sw.omega[lid][k]), float(sw.eps[lid][k])
@@ -1109,7 +1246,7 @@ def _lettered_mechanism(
                     [(r, v) for v, r, _, _ in spins],
                     labels,
                     [f"{sym}_{{{lid}}}" for _, _, sym, _ in spins],
-                    len(mech.links) <= _SHORT_LINKS,  # the shorter arcs tried
+                    short,  # the shorter arcs tried
                 )
                 for (value, radius, sym, line), room in zip(spins, rooms):
                     inset = _inset(radius + wider, _OMEGA_R + wider)
@@ -1126,7 +1263,7 @@ def _lettered_mechanism(
                     queued.append((tip, f"{sym}_{{{lid}}}", towards, room))
         centre = pivot
         sense = float(mech.drive.signed_omega)
-        crank = [at(mech.crank_pin, k) - centre for k in range(n)]
+        crank = [at(mech.crank_pin, k) - centre for k in shown]
         reach = max(float(np.hypot(*v)) for v in crank)
         found = _crank_arc(arcs, labels, centre, sense, reach) if here(centre) else None
         if found is None and here(centre):  # walled in by the spokes: outside the crank's circle
@@ -1149,10 +1286,15 @@ def _lettered_mechanism(
             labels.later(tip, markup, towards, first=kept)
         # where some stand far, all once more with those first (Labels.write_later;
         # a long chain keeps the one order: see _SHORT_LINKS)
-        labels.write_later(retry=len(mech.links) <= _SHORT_LINKS)
-        _position_numbers(labels, solution, mu_l, here if discs else None, in_no_disc)
-        if detail is None:
+        labels.write_later(retry=short)
+        if alone is None:
+            _position_numbers(labels, solution, mu_l, here if discs else None, in_no_disc)
+        if alone is not None:
+            _view_captions(sk, mu_l, lang, cast(int, views))
+        elif detail is None:
             _mechanism_captions(sk, mu_l, lang)
+            if views == "apart":
+                _apart_note(sk, solution, lang)
         else:
             ext = sk.extent()
             number = catalogue(lang).plain_number(detail.ratio)
@@ -1212,6 +1354,7 @@ def sketch_mechanism_details(
     lang: Language,
     letters: str,
     plain: Sketch,
+    views: Views = None,
 ) -> tuple[Sketch, list[Sketch]] | None:
     """The mechanism (`plain`: as `sketch_mechanism` drew it at `mu_l`) whose
     names crowd, with its crowd marked by a circle and a letter, and its
@@ -1241,12 +1384,12 @@ def sketch_mechanism_details(
         details = mechanism_details(solution, mu_l, knot, letters, most)
         if not details:
             continue
-        sk = sketch_mechanism(solution, mu_l, look, lang, details)
-        views = [sketch_mechanism(solution, mu_l, look, lang, details, d) for d in details]
-        for view, d in zip(views, details):
+        sk = sketch_mechanism(solution, mu_l, look, lang, details, views=views)
+        drawn = [sketch_mechanism(solution, mu_l, look, lang, details, d, views) for d in details]
+        for view, d in zip(drawn, details):
             view.detail_of = (d.centre[0] / mu_l, d.centre[1] / mu_l)
-        if sum(len(crowded_names(v, lang)) for v in (sk, *views)) < lettered_badly:
-            return sk, views
+        if sum(len(crowded_names(v, lang)) for v in (sk, *drawn)) < lettered_badly:
+            return sk, drawn
     return None  # no detail view letters the drawing better
 
 
@@ -2353,6 +2496,7 @@ def _order(sketches: Mapping[str, Sketch], stacked: bool) -> list[str]:
         "mechanism",
         "structural-formula",
         *(n for n in sketches if n.startswith("mechanism-detail")),
+        *(n for n in sketches if n.startswith("mechanism-position")),
     ] + [n for n in sketches if n.startswith("velocity-plan") or n.startswith("acceleration-plan")]
 
 
@@ -2460,6 +2604,13 @@ def _try_layout(
                 continue
             except LayoutError:
                 pass  # no room there: beside the drawing, as a plan's detail view
+        if name.startswith("mechanism-position") and field is not None:
+            # a plan position's view in the mechanism's field, under its drawing
+            try:
+                placed[name] = layout.place(name, ext.width, ext.height, within=field)
+                continue
+            except LayoutError:
+                pass  # no room there: where the plans go
         placed[name] = layout.place(
             name,
             ext.width,
@@ -2788,10 +2939,43 @@ def compose_sheet1(
     start = max(width_m / region.width, height_m / region.height, 1e-9)
     candidates = list(series(start * (1 - 1e-9), start * 1e4, LENGTH_MANTISSA_TEXT))[:16]
 
+    def apart(mu_l: float) -> Views:
+        # the links' ω/ε arcs in the plan positions' views where the drawing has no room for them
+        return "apart" if _arcs_crowd(solution, mu_l) else None
+
     def mechanism(mu_l: float) -> Sketch:
         if ("mechanism", mu_l) not in cache:
-            cache[("mechanism", mu_l)] = sketch_mechanism(solution, mu_l, look, lang)
+            cache[("mechanism", mu_l)] = sketch_mechanism(
+                solution, mu_l, look, lang, views=apart(mu_l)
+            )
         return cast(Sketch, cache[("mechanism", mu_l)])
+
+    def position_views(mu_v: float, lettered: bool = True) -> dict[str, Sketch]:
+        key = ("position views" if lettered else "unlettered views", mu_v)
+        if key not in cache:
+            cache[key] = {
+                _view_name(i): sketch_mechanism(solution, mu_v, look, lang, views=i)
+                if lettered
+                else _unlettered_view(solution, mu_v, look, lang, i)
+                for i in solution.plan_positions
+            }
+        return cast("dict[str, Sketch]", cache[key])
+
+    def view_options(
+        mu_l: float,
+        sketches: Mapping[str, Sketch],
+        arrangements: Sequence[tuple[float | None, str]],
+    ) -> Iterator[dict[str, Sketch]]:
+        # the plan positions' views where the drawing cannot hold their
+        # links' arcs (none else), the largest first whose stand-ins fit the sheet
+        if not apart(mu_l):
+            yield {}
+            return
+        for mu_v in _view_scales(solution, mu_l):
+            stand = {**sketches, **position_views(mu_v, lettered=False)}
+            order = _order(stand, True)
+            if _may_fit(page, stand, order, arrangements, extents)[0]:
+                yield position_views(mu_v)
 
     used = {n[:1].upper() for n in solution.mechanism.point_owners}
 
@@ -2804,7 +2988,7 @@ def compose_sheet1(
         key = ("mechanism-details " + letters, mu_l)
         if key not in cache:
             cache[key] = sketch_mechanism_details(
-                solution, mu_l, look, lang, letters, mechanism(mu_l)
+                solution, mu_l, look, lang, letters, mechanism(mu_l), apart(mu_l)
             )
         return cast("tuple[Sketch, list[Sketch]] | None", cache[key])
 
@@ -2843,7 +3027,14 @@ def compose_sheet1(
             in_field = False
             # with the mechanism's detail views where its names crowd, then without
             base = sketches
-            for sketches in _mechanism_options(base, mechanism(mu_l), detailed(mu_l, base)):
+            options = (
+                option
+                for views in view_options(mu_l, base, arrangements)
+                for option in _mechanism_options(
+                    {**base, **views}, mechanism(mu_l), detailed(mu_l, base)
+                )
+            )
+            for sketches in options:
                 order = _order(sketches, True)
                 best: tuple[float, dict[str, Sketch], dict[str, Rect], Sheet1] | None = None
                 # every arrangement with μ_S from μ_l; then, where none fills the
