@@ -162,6 +162,9 @@ _MAX_SEGMENTS = 6  # a link of many points: its arcs are tried beside its longes
 # what an arc whose label finds no free place near its arrowhead costs (as
 # much as crossing 20 main lines: its label would stand far or on a line)
 _NO_ROOM = 20.0
+# the disc (radius, mm) round the arrowhead of a label with no room near it
+# that later arcs keep off (as off a room kept for a label)
+_WALLED = 8.0
 # how much larger (mm) the ω and ε arcs of a link are tried, in turn, where a
 # label finds no room near its arrowhead at the usual radii
 _WIDER = (3.0, 6.0)
@@ -197,6 +200,15 @@ _ROOM_TRIES = 16
 # the box an ω/ε label keeps free round its centre, mm: left/right, down, up (the
 # placer's box of "ω_{10}" at _TEXT, its index hanging below, and its 0.4 mm clearance)
 _ROOM_X, _ROOM_DOWN, _ROOM_UP = 3.7, 3.45, 2.4
+
+
+def _arc_tip(
+    centre: np.ndarray, radius: float, sense: float, start: float, span: float, inset: float
+) -> np.ndarray:
+    """The arrowhead of an arc of `span` deg from `start` (deg), `inset` deg
+    short at each end, in the sense of `sense` (as sense_arc draws it)."""
+    t = math.radians(start + span - inset if sense > 0 else start + inset)
+    return np.asarray(centre, dtype=float) + radius * np.array([math.cos(t), math.sin(t)])
 
 
 def _room_box(x: float, y: float) -> Any:
@@ -448,6 +460,17 @@ class _ArcPlacer:
         # (another position's arcs of the link, drawn round the same place, go
         # round these rooms: the label is written in its room later)
         self._add([_room_box(*p) for p in picked if p is not None], "room")
+        # and round the arrowhead of a label with no room near it: a later arc
+        # drawn round it (another position's of the link, at the same place)
+        # walls it in, and no leader reaches it past that arc's main line
+        tips = [
+            _arc_tip(
+                centre, radius + wider, sense, start, span, _inset(radius + wider, _OMEGA_R + wider)
+            )
+            for (radius, sense), p in zip(spins, picked)
+            if p is None
+        ]
+        self._add([shapely.Point(*tip).buffer(_WALLED) for tip in tips], "room")
         return centre, start, picked, wider, span
 
     def _beside(

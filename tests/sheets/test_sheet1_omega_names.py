@@ -53,3 +53,27 @@ def test_turned_arcs_name_a_link_in_a_bundle(lang):
         if f.message[1:2] in "ωε" or " arc" in f.message
     ]
     assert bad == []
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_no_later_arc_walls_in_an_arrowhead_without_room(lang):
+    """Seed 51 (four groups, RPR-RRP-RRR-PRP): link 6 stands at nearly one
+    place at both plan positions. Its first arcs leave "ω6" no free place
+    near their arrowhead; the second position's arcs, drawn round the same
+    place, then passed 5 mm from that arrowhead, and with the link's own
+    main lines below it no leader reached it: "ω6" stood 14.6 mm off. The
+    disc round such an arrowhead (_WALLED) is kept like a label's room, and
+    every ω/ε name stands near its own arc."""
+    g = generate_one(51)
+    solution = solve(loads(g.toml, f"{g.name}.toml"))
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet1(solution, backend, lang)
+    view = SheetView.of(backend, lang, g.name)
+    names = [lab.text for lab in view.labels if lab.text[:1] in "ωε"]
+    assert names.count("ω6") == 2 and names.count("ε6") == 2
+    bad = [
+        str(f)
+        for f in lint(view, ["label-near", "label-clear"])
+        if f.message[1:2] in "ωε" or " arc" in f.message
+    ]
+    assert bad == []
