@@ -25,7 +25,7 @@ import dataclasses
 import math
 import random
 import re
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -426,18 +426,18 @@ class _Drawing:
         assert best is not None
         return best[1]
 
-    def arm(self, pivot: np.ndarray, at: np.ndarray, F: np.ndarray, label: str) -> float:
-        """The perpendicular from `pivot` to the force's line of action; its length, mm."""
+    def arm(self, pivot: np.ndarray, at: np.ndarray, F: np.ndarray) -> np.ndarray | None:
+        """The perpendicular from `pivot` to the force's line of action, drawn
+        thin where it is 1 mm long at least: its foot (None where it is not)."""
         u = unit_vector(np.asarray(F, float))
         r = at - pivot
         foot = pivot + r - float(np.dot(r, u)) * u
-        h = float(np.hypot(*(foot - pivot)))
-        if h >= 1.0:
-            self.line(pivot, foot, "thin")
-            # the line of action carried on to the foot, thin
-            self.line(at, foot, "thin")
-            self.later_along(pivot, foot, label, _ARM_ALONG)
-        return h
+        if float(np.hypot(*(foot - pivot))) < 1.0:
+            return None
+        self.line(pivot, foot, "thin")
+        # the line of action carried on to the foot, thin
+        self.line(at, foot, "thin")
+        return foot
 
     # the mechanism's links -----------------------------------------------------------
 
@@ -801,6 +801,44 @@ def sketch_group(
     arm_names: list[str],
     grow: bool = False,
 ) -> Sketch:
+    """A group's drawing, its arms h'_i numbered on from `arm_names` (which
+    receives the forces they are the arms of). Every arm is named on its own;
+    where some name then stands far or on something and arms from the inner
+    pin run along one line (gen 15's h'_1 and h'_2 of group 10-11, 0.3 mm
+    apart, their names crowding each other past the slider's block), drawn
+    again with those named by one label, "h'_{1,2}", along the longest
+    (`_one_per_line`), and kept where that leaves fewer crowded and its box
+    is no wider nor taller (the sheet is laid out by it)."""
+    own: list[str] = []
+    lines: list[int] = []  # how many arms' labels one per line would save
+    sk = _group_view(fa, g, mu_l, look, lang, len(arm_names), own, grow, lines=lines)
+    arm_names += own
+    counts = sk.label_counts
+    if counts is None or not (counts.far or counts.unsettled) or not lines or not lines[0]:
+        return sk
+    merged = _group_view(fa, g, mu_l, look, lang, len(arm_names) - len(own), [], grow, True)
+    grown, box = merged.extent(), sk.extent()
+    if grown.width > box.width + 1e-6 or grown.height > box.height + 1e-6:
+        return sk
+    before = len(list(crowded(sk, lang)))
+    return merged if len(list(crowded(merged, lang))) < before else sk
+
+
+def _group_view(
+    fa: ForceAnalysis,
+    g: Any,
+    mu_l: float,
+    look: Any,
+    lang: Language,
+    first: int,
+    arm_names: list[str],
+    grow: bool = False,
+    merge_arms: bool = False,
+    lines: list[int] | None = None,
+) -> Sketch:
+    """A group's drawing (`sketch_group`), its arms numbered on from `first`;
+    with `merge_arms`, the arms along one line from the inner pin named by
+    one label; `lines` receives how many labels that saves."""
     state = fa.loads.state
     mech = state.mech
     d = _Drawing(look, state, mu_l, lang, grow=grow, labelling=_FORCE_LABELLING)
@@ -841,11 +879,19 @@ def sketch_group(
                 if line == "main" and label in {f.label for f in g.free_bodies[L1]}:
                     if not any(r.name == label and r.components for r in g.reactions[:2]):
                         moments.append((F, P, label))
+            feet: dict[int, tuple[np.ndarray, list[str]]] = {}  # (foot - B, numbers)
             for F, P, label in moments:
                 if float(np.hypot(*F)) > 0.0:
-                    name = f"h'_{{{len(arm_names) + 1}}}"  # h_i is the shift of F_in.i
-                    if d.arm(B, d.mm(P), np.asarray(F, float), name) >= 1.0:
+                    foot = d.arm(B, d.mm(P), np.asarray(F, float))
+                    if foot is not None:
                         arm_names.append(label)
+                        # h_i is the shift of F_in.i: the arms are h'_i
+                        feet[len(feet)] = (foot - B, [str(first + len(arm_names))])
+            merged = _one_per_line(feet)
+            if lines is not None:
+                lines.append(len(feet) - len(merged))
+            for foot, numbers in merged if merge_arms else feet.values():
+                d.later_along(B, B + foot, f"h'_{{{','.join(numbers)}}}", _ARM_ALONG)
         title = _words(lang)["group"].format(name=g.name, kind=g.kind)
         sk = d.finish(title, [scale_label(mu_l, "length", lang).markup()])
     return sk
@@ -1503,7 +1549,7 @@ def _lever_lettered(
 
 
 def _one_per_line(
-    feet: dict[tuple[int, int], tuple[np.ndarray, list[str]]],
+    feet: Mapping[Any, tuple[np.ndarray, list[str]]],
 ) -> list[tuple[np.ndarray, list[str]]]:
     """The arms' feet (mm from p) with their numbers, those along one line
     from p (each foot within _ON_LINE_MM of the line to the farthest) as
