@@ -292,8 +292,12 @@ class _ArcPlacer:
         "symbol": 10.0,
     }
 
-    def __init__(self, sk: Sketch, far: bool = False) -> None:
+    def __init__(self, sk: Sketch, far: bool = False, walled: bool = True) -> None:
         self.sk = sk
+        # with `walled`, the arrowhead of an arc whose label finds no room is
+        # kept free of later arcs (_WALLED): where arcs of the same link at
+        # another plan position are drawn round the same place
+        self.walled = walled
         # with `far`, the arcs of a link whose names find no room at the usual
         # radii are tried larger still (_FAR_WIDER), and every arc keeps off
         # the blocks and the pins (an outline or a circle counts 10: a large
@@ -468,7 +472,7 @@ class _ArcPlacer:
                 centre, radius + wider, sense, start, span, _inset(radius + wider, _OMEGA_R + wider)
             )
             for (radius, sense), p in zip(spins, picked)
-            if p is None
+            if p is None and self.walled
         ]
         self._add([shapely.Point(*tip).buffer(_WALLED) for tip in tips], "room")
         return centre, start, picked, wider, span
@@ -1232,7 +1236,8 @@ def _lettered_mechanism(
         # ω and ε of every rotating link at the planned positions (seed 003
         # §1.6), each beside its own link on the side freest of the others and
         # of the joints' names; all drawn before their labels are written.
-        arcs = _ArcPlacer(sk, far)
+        # (one position's arcs alone: no other position's arcs of a link to wall them in)
+        arcs = _ArcPlacer(sk, far, walled=len(arcs_at) > 1)
         # the frame's pivots: no arc over a hatched base
         arcs.reserve(
             [
