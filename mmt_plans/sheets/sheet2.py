@@ -102,6 +102,14 @@ _LABELLING: dict[str, Any] = dict(
 # fine grid in every order after (Labels.fine_kept): the names of a polygon's
 # short sides along one column go far in turn (task09_v2's G5 and F_in5)
 _FORCE_LABELLING: dict[str, Any] = dict(_LABELLING, fine_kept=True)
+# the loaded mechanism and its detail views lettered again on the laid-out
+# sheet (`_Composer.given_room`): a name that finds no place near nor a
+# leader at _TEXT is tried once more at GOST's 2.5 mm before it stands far,
+# as on sheet 1's mechanism (the forces' names at a slider's block, where G,
+# F_in and F_PR stand side by side: gen 3's 'Fin9' stood 15.7 mm off). Not
+# while the sheet is laid out: its scales and detail views are chosen on
+# names at _TEXT (five_dyads: lettered so, the mechanism went a step coarser)
+_LOADED_AGAIN: dict[str, Any] = dict(_LABELLING, smaller=2.5)
 # how many times a drawing's labels are written again, those that stood far
 # in the last order first (Labels.write_later); an order kept only where it
 # letters the drawing within the box the first order did (its leaders no
@@ -600,19 +608,27 @@ def sketch_loaded_mechanism(
     (`_Composer`, many groups: every drawing near its coarsest scale) its
     couples' arcs at their first start, not turned to leave their names room
     (a turned arc's name may stand where such a sheet has no room left);
-    `grow` as _Drawing's. With `details`, what stands in a detail's disc (its
+    `grow` as _Drawing's, its names tried at 2.5 mm too (_LOADED_AGAIN).
+    With `details`, what stands in a detail's disc (its
     points' names, the loads applied there) is drawn only in its detail view
     (`sketch_loaded_detail`); the disc is marked by a thin circle and its letter."""
     return _loaded_view(fa, mu_l, look, lang, compact, grow, details, None)
 
 
 def sketch_loaded_detail(
-    fa: ForceAnalysis, mu_l: float, look: Any, lang: Language, detail: Detail, compact: bool = False
+    fa: ForceAnalysis,
+    mu_l: float,
+    look: Any,
+    lang: Language,
+    detail: Detail,
+    compact: bool = False,
+    grow: bool = False,
 ) -> Sketch:
     """The detail view `detail` of the loaded mechanism drawn at `mu_l`: its
     disc at μl / ratio, titled "A (4:1)", the links cut at the disc's edge, the
-    loads applied inside it (to direction, as on the mechanism) and every name there."""
-    return _loaded_view(fa, mu_l, look, lang, compact, False, (detail,), detail)
+    loads applied inside it (to direction, as on the mechanism) and every name
+    there; `grow` as `sketch_loaded_mechanism`'s."""
+    return _loaded_view(fa, mu_l, look, lang, compact, grow, (detail,), detail)
 
 
 def _loaded_view(
@@ -657,7 +673,15 @@ def _loaded_drawing(
     mech = state.mech
     mu = mu_l / detail.ratio if detail is not None else mu_l
     d = _Drawing(
-        look, state, mu, lang, turn_arcs=not compact, grow=grow, details=details, detail=detail
+        look,
+        state,
+        mu,
+        lang,
+        turn_arcs=not compact,
+        grow=grow,
+        details=details,
+        detail=detail,
+        labelling=_LOADED_AGAIN if grow else _LABELLING,
     )
     gid = loaded_detail_gid(details, detail) if detail is not None else "force-mechanism"
     with d.sk.group(gid, "mechanism"):
@@ -2427,8 +2451,10 @@ class _Composer:
         for name in self.drawings:
             was = _counts(sketches[name])
             # lettered again only where `grow` letters it otherwise (no order
-            # was kept from it by its box or cut short): else the same drawing
-            grown = self.regrown(name, scales) if was.far and was.grows else None
+            # was kept from it by its box or cut short, or the loaded
+            # mechanism's names tried at 2.5 mm): else the same drawing
+            again = was.grows or name.startswith("force-mechanism")
+            grown = self.regrown(name, scales) if was.far and again else None
             if grown is None:
                 continue
             now = _counts(grown)
@@ -2472,6 +2498,9 @@ class _Composer:
             return sketch_loaded_mechanism(
                 fa, mu_l, look, lang, self.compact, grow=True, details=self.mechanism_details
             )
+        for d in self.mechanism_details:
+            if name == loaded_detail_gid(self.mechanism_details, d):
+                return sketch_loaded_detail(fa, mu_l, look, lang, d, self.compact, grow=True)
         if name == "driving-link":
             mu_d = scales[f"mu_l {fa.driving_link.link}"]
             return self._noted(sketch_driving_link(fa, mu_d, look, lang, grow=True), mu_d, mu_l)

@@ -47,6 +47,27 @@ def test_gen_141s_crank_centre_of_mass_is_named_near_inside_the_arc(lang):
     assert not [f for f in found if "'S1'" in f], found
 
 
+# gen 3 (RPR-RPR-RRR-PRP): F_in8, F_PR and F_in9 stand side by side at the
+# blocks of links 8 and 9; 'Fin9' found no place near them at 3.5 mm nor a
+# leader to one and stood 15.7 mm off (en). The loaded mechanism lettered again
+# on the laid-out sheet tries such a name at 2.5 mm before it stands far: led
+# to its arrow at 2.5 mm, the sheet's layout as it was.
+def test_gen_3s_force_name_at_a_crowded_block_is_tried_smaller_before_it_stands_far():
+    backend = RecordingBackend(841.0, 594.0)
+    sheet = compose_sheet2(solved_seed(3), backend, "en")
+    assert sheet.scales["mu_l"] == 0.01  # the scale the sheet took before
+    assert not _loaded_findings(3, "en")
+    runs = [
+        c
+        for c in backend.calls
+        if c.name == "text"
+        and "force-mechanism" in c.groups
+        and c.naming is not None
+        and c.naming.markup.endswith("in9}")
+    ]
+    assert runs and all(c.size == 2.5 for c in runs)
+
+
 def _walled_name(enclosed: bool) -> tuple[_Drawing, np.ndarray, float]:
     """A pivot at the origin inside a ring of thin lines 13 mm round, 'S1'
     6.5 mm above it, ω1's arc (9 mm) turned with or without `enclosed`:
