@@ -2065,8 +2065,9 @@ def _force_scale(polygons: Sequence[ForcePolygon], steps: int = 0, held: bool = 
 
 
 def _polygon_note(polygons: Sequence[ForcePolygon], mu_F: float, lang: Language) -> str:
-    """Why a force polygon is drawn with its longest side below the guide's
-    150 mm (empty when it is not)."""
+    """Why the force polygons are drawn below the guide's 150 mm: their
+    guide side (guide_side: |F_PR| where the guide sizes by it, else the
+    largest side) drawn shorter (empty when it is not)."""
     # the guide's measure: |F_PR| where it sizes the polygon (guide_side)
     drawn = guide_side(polygons) / mu_F
     if drawn <= 0.0 or drawn >= FORCE_PLAN.low * (1 - 1e-9):
