@@ -2968,8 +2968,11 @@ def compose_sheet1(
     candidates = list(series(start * (1 - 1e-9), start * 1e4, LENGTH_MANTISSA_TEXT))[:16]
 
     def apart(mu_l: float) -> Views:
-        # the links' ω/ε arcs in the plan positions' views where the drawing has no room for them
-        return "apart" if _arcs_crowd(solution, mu_l) else None
+        # the links' ω/ε arcs in the plan positions' views where the drawing
+        # has no room for them (measured once a scale: asked at every trial)
+        if ("apart", mu_l) not in cache:
+            cache[("apart", mu_l)] = "apart" if _arcs_crowd(solution, mu_l) else None
+        return cast(Views, cache[("apart", mu_l)])
 
     def mechanism(mu_l: float) -> Sketch:
         if ("mechanism", mu_l) not in cache:
