@@ -506,3 +506,16 @@ def test_a_labels_width_kept_is_the_width_measured_at_its_size() -> None:
             labels.size = size
             assert labels.width(markup) == fresh(markup, size)
     assert fresh("F_{in4}", 2.5) < fresh("F_{in4}", 3.5)
+
+
+def test_unique_ints_is_numpys_unique() -> None:
+    # the placers' queries key their (query, obstacle) pairs once each by
+    # unique_ints: np.unique's answer (sorted, each once), empty and repeated too
+    from mmt_plans.drawing.labels import unique_ints
+
+    rng = np.random.default_rng(21)
+    for n in (0, 1, 2, 7, 100, 5000):
+        for high in (1, 3, 50, 10**9):
+            keys = rng.integers(0, high, size=n)
+            got = unique_ints(keys)
+            assert got.dtype == np.unique(keys).dtype and np.array_equal(got, np.unique(keys))
