@@ -1613,7 +1613,11 @@ class Labels:
                 free, ax, ay, ex, ey, clear = (v[off] for v in (free, ax, ay, ex, ey, clear))
                 if not free.size:
                     return None
-        crossed = self._met_at_feet(clear, self._crossings(clear), ax, ay)
+        # (a leader that crosses more than any of _LEADER_CROSSINGS allows is
+        # never picked: what meets at its foot is not measured)
+        crossed = self._met_at_feet(
+            clear, self._crossings(clear), ax, ay, most=_LEADER_CROSSINGS[-1]
+        )
         return _Leaders(cx[free], cy[free], ax, ay, ex, ey, clear, crossed)
 
     def _crossings(self, lines: np.ndarray) -> np.ndarray:
@@ -1628,25 +1632,38 @@ class Labels:
         if not line.size:
             return out
         # a polygon (arrowhead, dot) or another leader: never
-        weight = np.where(index.uncrossable[owner], 10**6, 1)
-        weight[np.isin(owner, list(self._leaders))] = 10**6
+        weight = np.where(self._never(index)[owner], 10**6, 1)
         np.add.at(out, line, weight)
         return out
 
+    def _never(self, index: _ObstacleIndex) -> np.ndarray:
+        """Which obstacles of `index` no leader crosses (each counts as very
+        many): its uncrossable ones and the leaders."""
+        never = np.array(index.uncrossable, dtype=bool)
+        never[list(self._leaders)] = True
+        return never
+
     def _met_at_feet(
-        self, clear: np.ndarray, crossed: np.ndarray, ax: np.ndarray, ay: np.ndarray
+        self,
+        clear: np.ndarray,
+        crossed: np.ndarray,
+        ax: np.ndarray,
+        ay: np.ndarray,
+        most: int | None = None,
     ) -> np.ndarray:
         """`crossed` (`_crossings` of the leaders `clear`, whose feet are ax, ay)
         with what touches a leader's foot (the arc and the arrowhead of the ω
         it names, the links meeting at a joint) counted only where the leader
         comes within _FOOT_CLEAR of it: it leaves them there, and only a leader
-        that runs over one of them crosses it."""
+        that runs over one of them crosses it. With `most`, a leader that would
+        cross more than `most` even if all at its foot were left keeps its
+        count (more than `most` too), not measured."""
         if not self._obstacles or not len(clear):
             return crossed
         index = self._index()
         shapes, lines, lb = index.shapes, *index.lines_bounds  # a point keeps its clearance
         crossed = crossed.copy()
-        leaders = list(self._leaders)
+        never = self._never(index)
         for fx, fy in set(zip(ax.tolist(), ay.tolist())):  # each foot once (in any order)
             at = index.at_foot.get((fx, fy))
             if at is None:
@@ -1662,7 +1679,11 @@ class Labels:
             if not at.size:
                 continue
             mine = np.flatnonzero((ax == fx) & (ay == fy))
-            weight = np.where(index.uncrossable[at] | np.isin(at, leaders), 10**6, 1)
+            weight = np.where(never[at], 10**6, 1)
+            if most is not None:  # (no count falls by more than all at the foot weigh)
+                mine = mine[crossed[mine] - int(weight.sum()) <= most]
+                if not mine.size:
+                    continue
             gap = shapely.distance(clear[mine][:, None], shapes[at][None, :])
             reach = index.reach[at]
             kept = ((gap < reach) * weight).sum(axis=1)
@@ -1697,6 +1718,19 @@ class Labels:
         d = _point_segment(px, py, np.tile(segs, (n, 1))).reshape(n, len(segs))
         step = math.hypot(x1 - x0, y1 - y0) / (n - 1)
         return bool((((d <= reach).sum(axis=0) - 1) * step > most).any())
+
+
+def unique_ints(keys: np.ndarray) -> np.ndarray:
+    """np.unique of a 1-D integer array (its values sorted, each once), found
+    by sorting: numpy's own hashes the values first, several times slower on
+    the few thousand (query, obstacle) keys a query gives."""
+    if not keys.size:
+        return keys.copy()
+    ordered = np.sort(keys)
+    first = np.empty(ordered.size, dtype=bool)
+    first[0] = True
+    np.not_equal(ordered[1:], ordered[:-1], out=first[1:])
+    return ordered[first]
 
 
 def _within(bounds: np.ndarray, slot: np.ndarray) -> bool:
@@ -1958,7 +1992,7 @@ class _ObstacleIndex:
     def _pairs(self, near: np.ndarray, gap: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         owner = self.owner[near[1]]
         hit = gap < self.reach[owner]
-        keyed = np.unique(near[0][hit] * self.n + owner[hit])
+        keyed = unique_ints(near[0][hit] * self.n + owner[hit])
         return keyed // self.n, keyed % self.n
 
     def boxes_near(

@@ -45,6 +45,7 @@ from ..drawing.labels import (
     arc_line,
     drawn_shapes,
     segments_meet_boxes,
+    unique_ints,
 )
 from ..drawing.layout import LayoutError, SheetLayout
 from ..drawing.markup import component_markup, image_markup, point_markup
@@ -360,10 +361,10 @@ class _ArcPlacer:
         else:
             pairs = self._touching(geoms)
         if pairs.ndim == 1:
-            return np.unique(self._owner[pairs])
+            return unique_ints(self._owner[pairs])
         if pairs.shape[1] == 0:
             return pairs
-        keyed = np.unique(pairs[0] * len(self._shapes) + self._owner[pairs[1]])
+        keyed = unique_ints(pairs[0] * len(self._shapes) + self._owner[pairs[1]])
         return np.stack([keyed // len(self._shapes), keyed % len(self._shapes)])
 
     def _touching(self, boxes: np.ndarray) -> np.ndarray:
@@ -373,16 +374,15 @@ class _ArcPlacer:
         pairs = np.asarray(self._tree.query(boxes))
         if pairs.shape[-1] == 0:
             return pairs.reshape(2, 0)
-        bx = shapely.bounds(np.asarray(boxes, dtype=object)[pairs[0]])
+        boxes = np.asarray(boxes, dtype=object)
+        bx = shapely.bounds(boxes)[pairs[0]]  # (each box's once)
         sg = self._segs[pairs[1]]
         seg = ~np.isnan(sg[:, 0])
         keep = np.zeros(len(sg), dtype=bool)
         keep[seg] = segments_meet_boxes(sg[seg], bx[seg])
         other = ~seg
         if other.any():
-            keep[other] = shapely.intersects(
-                np.asarray(boxes, dtype=object)[pairs[0][other]], self._parts[pairs[1][other]]
-            )
+            keep[other] = shapely.intersects(boxes[pairs[0][other]], self._parts[pairs[1][other]])
         return pairs[:, keep]
 
     def _near(self, geom: Any, distance: float) -> np.ndarray:

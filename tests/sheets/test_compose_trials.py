@@ -438,6 +438,40 @@ def test_what_touches_a_leaders_foot_is_found_by_its_box_first(seed: int) -> Non
     assert np.array_equal(got, want) and not np.array_equal(want, crossed)
 
 
+@pytest.mark.parametrize("seed", [4, 5])
+def test_leaders_past_what_a_pick_allows_keep_their_count_unmeasured_at_feet(seed: int) -> None:
+    # _leaders_of asks _met_at_feet with most=_LEADER_CROSSINGS[-1]: a leader
+    # whose count less all that meets its foot is still past it is left as it
+    # was. Every count a pick reads (at most `most`) is the measured one, the
+    # others stay past `most`, and some are left so
+    import shapely
+
+    from mmt_plans.drawing.labels import _LEADER_CROSSINGS
+
+    labels, rng = _crowded_labels(seed)
+    shapes = np.asarray(labels._obstacles, dtype=object)
+    ends = shapely.get_coordinates(shapes[shapely.get_type_id(shapes) != 0])
+    feet = np.concatenate([ends[rng.integers(len(ends), size=30)], rng.uniform(0, 60, (10, 2))])
+    ax, ay = np.repeat(feet[:, 0], 8), np.repeat(feet[:, 1], 8)
+    turn = np.tile(np.radians(45.0 * np.arange(8)), len(feet))
+    leaders = shapely.linestrings(
+        np.stack(
+            [
+                np.c_[ax, ay] + 1.8 * np.c_[np.cos(turn), np.sin(turn)],
+                np.c_[ax, ay] + 9.0 * np.c_[np.cos(turn), np.sin(turn)],
+            ],
+            axis=1,
+        )
+    )
+    most = _LEADER_CROSSINGS[-1]
+    crossed = labels._crossings(leaders)
+    want = labels._met_at_feet(leaders, crossed, ax, ay)
+    got = labels._met_at_feet(leaders, crossed, ax, ay, most=most)
+    picked = want <= most
+    assert np.array_equal(got[picked], want[picked]) and (got[~picked] > most).all()
+    assert picked.any() and not np.array_equal(got, want)
+
+
 def test_distance_outside_a_polygon_is_shapelys_within_rounding() -> None:
     # _caption_place takes the distance of the grid's points outside a link's
     # polygon in numpy: shapely's own to 1e-9 mm (it decides nothing closer
@@ -472,3 +506,16 @@ def test_a_labels_width_kept_is_the_width_measured_at_its_size() -> None:
             labels.size = size
             assert labels.width(markup) == fresh(markup, size)
     assert fresh("F_{in4}", 2.5) < fresh("F_{in4}", 3.5)
+
+
+def test_unique_ints_is_numpys_unique() -> None:
+    # the placers' queries key their (query, obstacle) pairs once each by
+    # unique_ints: np.unique's answer (sorted, each once), empty and repeated too
+    from mmt_plans.drawing.labels import unique_ints
+
+    rng = np.random.default_rng(21)
+    for n in (0, 1, 2, 7, 100, 5000):
+        for high in (1, 3, 50, 10**9):
+            keys = rng.integers(0, high, size=n)
+            got = unique_ints(keys)
+            assert got.dtype == np.unique(keys).dtype and np.array_equal(got, np.unique(keys))
