@@ -503,12 +503,20 @@ class Labels:
         the lettering written there within _NEAR_WRITTEN (the label-near rule
         measures the lettering; at a corner of the box it lies further in than
         the margin between the two)."""
-        near = _gap(names, *kept, outline) <= _NEAR_KEPT
+        gap = _gap(names, *kept, outline)
+        near = gap <= _NEAR_KEPT
         if near.any():
             lx0, ly0, lx1, ly1 = self._lettering(markup)
-            k = np.flatnonzero(near)
-            written = _gap(names, cx[k] + lx0, cy[k] + ly0, cx[k] + lx1, cy[k] + ly1, outline)
-            near[k] = written <= _NEAR_WRITTEN
+            x0, y0, x1, y1 = kept
+            # the lettering lies at most this far further (it is inside the box):
+            # measured again only where that may take it past _NEAR_WRITTEN
+            inset = np.hypot(
+                np.maximum(cx + lx0 - x0, x1 - cx - lx1), np.maximum(cy + ly0 - y0, y1 - cy - ly1)
+            )
+            k = np.flatnonzero(near & (gap + inset > _NEAR_WRITTEN))
+            if k.size:
+                written = _gap(names, cx[k] + lx0, cy[k] + ly0, cx[k] + lx1, cy[k] + ly1, outline)
+                near[k] = written <= _NEAR_WRITTEN
         return near
 
     def later(
