@@ -37,7 +37,7 @@ from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
 from ..render.backend import PointLike
-from ..render.recording import Call, NamingKind, RecordingBackend
+from ..render.recording import Call, NamingKind, RecordingBackend, Text
 
 __all__ = [
     "BLOCK_MM",
@@ -61,6 +61,12 @@ NEAR_MM = 6.0
 # what a candidate box may be from what it names: the box written is the
 # lettering's, up to 0.2 mm inside the box the placer keeps free
 _NEAR_KEPT = NEAR_MM - 0.5
+# and what the lettering itself may be from it (as the sheet linter measures
+# it): its runs' boxes lie up to 0.5 mm inside the box kept free (an index's
+# box short of its advance and the italic lean), and 0.5 mm inset at a corner
+# either way is past NEAR_MM - _NEAR_KEPT; less a hair the sheet's layout may
+# round off
+_NEAR_WRITTEN = NEAR_MM - 0.01
 # a filled outline no wider or taller than this (mm) that holds a named point
 # is a symbol drawn round it (a slider's block, 12 × 7 mm): the point's name
 # is near when it is near the outline
@@ -208,6 +214,8 @@ class Labels:
         # Ukrainian sheet): measured and written so, where it is placed
         self._say = words or (lambda markup: markup)
         self._widths: dict[tuple[str, float], float] = {}  # `width` of (markup, size)
+        # `_lettering` of (markup, size)
+        self._letterings: dict[tuple[str, float], tuple[float, float, float, float]] = {}
         # labels side by side keep `spacing` mm apart; None: a word space (else they read as one)
         self.spacing = (
             sketch.look.lettering.advance_width(" ", size) + 0.2 if spacing is None else spacing
@@ -435,7 +443,7 @@ class Labels:
         x, y = anchor
         w, h, drop = self._extent(markup)
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
-        near = _gap(("point", (x, y), None), x0, y0, x1, y1) <= _NEAR_KEPT
+        near = self._near(("point", (x, y), None), markup, cx, cy, (x0, y0, x1, y1))
         idx = np.flatnonzero(near)
         if not idx.size:
             return np.zeros((0, 2))
@@ -460,6 +468,56 @@ class Labels:
             lines = self._say(markup).split("\n")
             self._widths[key] = max(probe.rich_text((0.0, 0.0), line, self.size) for line in lines)
         return self._widths[key]
+
+    def _lettering(self, markup: str) -> tuple[float, float, float, float]:
+        """The box (x0, y0, x1, y1) of the runs `markup` writes centred at
+        (0, 0), as the recording keeps them (and the sheet linter reads them):
+        measured once a markup and letter height."""
+        key = (markup, self.size)
+        if key not in self._letterings:
+            probe = RecordingBackend(look=self.sketch.look)
+            lines = self._say(markup).split("\n")
+            for i, text in enumerate(lines):
+                y = ((len(lines) - 1) / 2 - i) * self._pitch
+                probe.rich_text((0.0, y), text, self.size, anchor="center", valign="middle")
+            runs = np.array([c.box() for c in probe.calls if isinstance(c, Text)])
+            self._letterings[key] = (
+                float(runs[:, 0].min()),
+                float(runs[:, 1].min()),
+                float(runs[:, 2].max()),
+                float(runs[:, 3].max()),
+            )
+        return self._letterings[key]
+
+    def _near(
+        self,
+        names: tuple[NamingKind, PointLike, PointLike | None],
+        markup: str,
+        cx: np.ndarray,
+        cy: np.ndarray,
+        kept: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray],
+        outline: BaseGeometry | None = None,
+    ) -> np.ndarray:
+        """Which of the boxes `kept` (x0, y0, x1, y1) of `markup` centred at
+        cx, cy stand near what it names: the box within _NEAR_KEPT of it, and
+        the lettering written there within _NEAR_WRITTEN (the label-near rule
+        measures the lettering; at a corner of the box it lies further in than
+        the margin between the two)."""
+        gap = _gap(names, *kept, outline)
+        near = gap <= _NEAR_KEPT
+        if near.any():
+            lx0, ly0, lx1, ly1 = self._lettering(markup)
+            x0, y0, x1, y1 = kept
+            # the lettering lies at most this far further (it is inside the box):
+            # measured again only where that may take it past _NEAR_WRITTEN
+            inset = np.hypot(
+                np.maximum(cx + lx0 - x0, x1 - cx - lx1), np.maximum(cy + ly0 - y0, y1 - cy - ly1)
+            )
+            k = np.flatnonzero(near & (gap + inset > _NEAR_WRITTEN))
+            if k.size:
+                written = _gap(names, cx[k] + lx0, cy[k] + ly0, cx[k] + lx1, cy[k] + ly1, outline)
+                near[k] = written <= _NEAR_WRITTEN
+        return near
 
     def later(
         self,
@@ -1295,7 +1353,9 @@ class Labels:
         # (measured of those off the lettering: the others only where no place is free)
         off = np.flatnonzero(cost <= 1e-9)
         off_near = (
-            _gap(names, x0[off], y0[off], x1[off], y1[off], outline) <= _NEAR_KEPT
+            self._near(
+                names, markup, cx[off], cy[off], (x0[off], y0[off], x1[off], y1[off]), outline
+            )
             if names is not None
             else np.ones(off.size, dtype=bool)
         )
@@ -1371,7 +1431,7 @@ class Labels:
                 k = int(further[first])
             else:
                 near = (
-                    _gap(names, x0, y0, x1, y1, outline) <= _NEAR_KEPT
+                    self._near(names, markup, cx, cy, (x0, y0, x1, y1), outline)
                     if names is not None
                     else cost >= 0.0
                 )
@@ -1429,7 +1489,8 @@ class Labels:
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
         gap = _gap(names, x0, y0, x1, y1, outline)
         # not on what it names: as far off it as the compass's nearest ring
-        keep = np.flatnonzero((gap <= _NEAR_KEPT) & (gap >= _FINE_OFF))
+        near = self._near(names, markup, cx, cy, (x0, y0, x1, y1), outline)
+        keep = np.flatnonzero(near & (gap >= _FINE_OFF))
         keep = keep[np.argsort(gap[keep], kind="stable")]
         if not keep.size:
             return None
