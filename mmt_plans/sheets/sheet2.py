@@ -28,7 +28,7 @@ import random
 import re
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any, ParamSpec, TypeVar
+from typing import Any, Literal, ParamSpec, TypeVar
 
 import numpy as np
 import shapely
@@ -110,6 +110,14 @@ _FORCE_LABELLING: dict[str, Any] = dict(_LABELLING, fine_kept=True)
 # while the sheet is laid out: its scales and detail views are chosen on
 # names at _TEXT (five_dyads: lettered so, the mechanism went a step coarser)
 _LOADED_AGAIN: dict[str, Any] = dict(_LABELLING, smaller=2.5)
+# the lever and its detail views lettered so again on the laid-out sheet
+# (`_Composer.given_room`): the names walled in round p by the lines that
+# leave it (gen 30 uk, view A at 40:1: 'k10' and 'G9' go between the images'
+# lines 3 mm apart at 2.5 mm, 14 mm off at 3.5 mm)
+_LEVER_AGAIN: dict[str, Any] = dict(_LABELLING, smaller=2.5)
+# how the lever is lettered so: in the order that letters it best whatever box
+# that takes, or in those that keep its box (where the sheet has no more room)
+Again = Literal["grow", "box"]
 # how many times a drawing's labels are written again, those that stood far
 # in the last order first (Labels.write_later); an order kept only where it
 # letters the drawing within the box the first order did (its leaders no
@@ -1511,6 +1519,7 @@ def sketch_lever(
     details: Sequence[LeverDetail] = (),
     *,
     one_per_line: bool = True,
+    again: Again | None = None,
 ) -> Sketch:
     """The turned velocity plan to μV, every force at the image of its point
     and its arm about the pole p; `arms` receives (label, h mm) in order.
@@ -1518,10 +1527,11 @@ def sketch_lever(
     its detail view (`sketch_lever_detail`): there the forces at its images,
     their arms and the images' names; the disc is marked by a thin circle and
     its letter. Without `one_per_line`, every arm named on its own: the
-    lever as its detail views are chosen by (`_lever_lettered`)."""
+    lever as its detail views are chosen by (`_lever_lettered`). With
+    `again`, lettered as on the laid-out sheet (_LEVER_AGAIN)."""
     if not one_per_line:
-        return _lever_view(fa, mu_V, look, lang, arms, details, None)
-    return _lever_lettered(fa, mu_V, look, lang, arms, details, None)
+        return _lever_view(fa, mu_V, look, lang, arms, details, None, again=again)
+    return _lever_lettered(fa, mu_V, look, lang, arms, details, None, again=again)
 
 
 def sketch_lever_detail(
@@ -1532,14 +1542,16 @@ def sketch_lever_detail(
     detail: LeverDetail,
     *,
     one_per_line: bool = True,
+    again: Again | None = None,
 ) -> Sketch:
     """The detail view `detail` of the lever drawn at `mu_V`: its disc at
     μV / ratio, titled "A (4:1)", the lines cut at the disc's edge, the forces
     at the images inside it with their arms, and every name there (without
-    `one_per_line`, every arm named on its own, as `sketch_lever`)."""
+    `one_per_line`, every arm named on its own; with `again`, as on the
+    laid-out sheet: as `sketch_lever`)."""
     if not one_per_line:
-        return _lever_view(fa, mu_V, look, lang, [], (detail,), detail)
-    return _lever_lettered(fa, mu_V, look, lang, [], (detail,), detail)
+        return _lever_view(fa, mu_V, look, lang, [], (detail,), detail, again=again)
+    return _lever_lettered(fa, mu_V, look, lang, [], (detail,), detail, again=again)
 
 
 def _lever_lettered(
@@ -1550,6 +1562,8 @@ def _lever_lettered(
     arms: list[tuple[str, float]],
     details: Sequence[LeverDetail],
     detail: LeverDetail | None,
+    *,
+    again: Again | None = None,
 ) -> Sketch:
     """The lever or its detail view (`_lever_view`), every arm named on its
     own; where some name then stands far or on something, drawn again with
@@ -1563,12 +1577,12 @@ def _lever_lettered(
     lever so lettered, a view round other images crowded more)."""
     own: list[tuple[str, float]] = []
     lines: list[int] = []  # how many arms' labels one per line would save
-    sk = _lever_view(fa, mu_V, look, lang, own, details, detail, lines=lines)
+    sk = _lever_view(fa, mu_V, look, lang, own, details, detail, lines=lines, again=again)
     arms += own
     counts = sk.label_counts
     if counts is None or not (counts.far or counts.unsettled) or not lines[0]:
         return sk
-    merged = _lever_view(fa, mu_V, look, lang, [], details, detail, merge_arms=True)
+    merged = _lever_view(fa, mu_V, look, lang, [], details, detail, merge_arms=True, again=again)
     grown, box = merged.extent(), sk.extent()
     if grown.width > box.width + 1e-6 or grown.height > box.height + 1e-6:
         return sk  # a drawing is fitted on the sheet by its box (gen 153: 6 mm taller)
@@ -1637,17 +1651,15 @@ def _view_kept(draw: Callable[..., Sketch]) -> Callable[..., Sketch]:
         *,
         merge_arms: bool = False,
         lines: list[int] | None = None,
+        again: Again | None = None,
     ) -> Sketch:
+        kw = dict(merge_arms=merge_arms, again=again)
         if _VIEWS is None or arms:
-            return draw(
-                fa, mu_V, look, lang, arms, details, detail, merge_arms=merge_arms, lines=lines
-            )
-        key = (id(fa), id(look), lang, mu_V, tuple(details), detail, merge_arms)
+            return draw(fa, mu_V, look, lang, arms, details, detail, lines=lines, **kw)
+        key = (id(fa), id(look), lang, mu_V, tuple(details), detail, merge_arms, again)
         if key not in _VIEWS:
             own: tuple[list[tuple[str, float]], list[int]] = ([], [])
-            sketch = draw(
-                fa, mu_V, look, lang, own[0], details, detail, merge_arms=merge_arms, lines=own[1]
-            )
+            sketch = draw(fa, mu_V, look, lang, own[0], details, detail, lines=own[1], **kw)
             _VIEWS[key] = (sketch, *own)
         sketch, own_arms, own_lines = _VIEWS[key]
         arms += own_arms
@@ -1670,15 +1682,18 @@ def _lever_view(
     *,
     merge_arms: bool = False,
     lines: list[int] | None = None,
+    again: Again | None = None,
 ) -> Sketch:
     """The lever with `details` marked (`detail` None), or the detail view
     `detail`; with `merge_arms`, the arms along one line from p named by
-    one label (`_one_per_line`); `lines` receives how many labels that saves."""
+    one label (`_one_per_line`); `lines` receives how many labels that saves;
+    with `again`, lettered as on the laid-out sheet (_LEVER_AGAIN)."""
     in_detail = detail is not None
     lever = fa.lever
     mech = fa.loads.state.mech
     sk = Sketch(look)
-    labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
+    labelling = _LEVER_AGAIN if again is not None else _LABELLING
+    labels = Labels(sk, _TEXT, **labelling, words=_index_words(lang))
     mu = mu_V / detail.ratio if detail is not None else mu_V
     img = {n: np.asarray(v, float) / mu for n, v in lever.images.items()}
     discs = [(np.asarray(d.centre, float) / mu, d.radius / mu) for d in details]
@@ -1798,7 +1813,7 @@ def _lever_view(
             lines.append(len(feet) - len(merged))
         for foot, numbers in merged if merge_arms else feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
-        labels.write_later(retry=_RETRY_ORDERS)
+        labels.write_later(retry=_RETRY_ORDERS, grow=again == "grow")
         sk.label_counts = labels.counts()
         ext = sk.extent()
         if detail is not None:
@@ -2442,46 +2457,39 @@ class _Composer:
         placed: dict[str, Rect],
         scales: dict[str, float],
     ) -> tuple[SheetLayout, dict[str, Rect]]:
-        """The laid-out sheet with each drawing whose names stand far (but
-        the lever) lettered again in the order that letters them best
+        """The laid-out sheet with each drawing whose names stand far
+        lettered again in the order that letters them best
         whatever box that takes (`regrown`): kept where fewer names stand
         far, none more finds no free place, and its box, the drawing where it
         was placed, lies in the field and keeps the layout's gap from every
-        other drawing and table. `sketches` takes the drawings kept."""
+        other drawing and table; the lever and its detail views, where so
+        lettered they find no room, lettered so within their box (gen 30 uk:
+        view A's names far 10 -> 4, 4 mm taller grown). `sketches` takes the
+        drawings kept."""
         placed = dict(placed)
         for name in self.drawings:
             was = _counts(sketches[name])
             # lettered again only where `grow` letters it otherwise (no order
             # was kept from it by its box or cut short, or the loaded
-            # mechanism's names tried at 2.5 mm): else the same drawing
-            again = was.grows or name.startswith("force-mechanism")
-            grown = self.regrown(name, scales) if was.far and again else None
-            if grown is None:
+            # mechanism's and the lever's names tried at 2.5 mm): else the same drawing
+            lever = name.startswith("zhukovsky-lever")
+            again = was.grows or lever or name.startswith("force-mechanism")
+            hows: tuple[Again, ...] = ("grow", "box") if lever else ("grow",)
+            chosen: tuple[Sketch, Rect] | None = None
+            for how in hows if was.far and again else ():
+                grown = self.regrown(name, scales, how)
+                if grown is None:
+                    break
+                now = _counts(grown)
+                if now.far >= was.far or now.unsettled > was.unsettled:
+                    continue
+                moved = self._room_for(name, sketches[name], grown, layout, placed[name])
+                if moved is not None:
+                    chosen = (grown, moved)
+                    break
+            if chosen is None:
                 continue
-            now = _counts(grown)
-            if now.far >= was.far or now.unsettled > was.unsettled:
-                continue
-            old, ext, rect = self.extent(sketches[name]), self.extent(grown), placed[name]
-            # where it was, else moved by as much as it grew past a side (the
-            # title over a drawing rises with a name written above it)
-            x, y = ext.x + rect.x - old.x, ext.y + rect.y - old.y
-            xs = (x, rect.x, rect.right - ext.width)
-            ys = (y, rect.y, rect.top - ext.height)
-            others = SheetLayout(self.page, gap=layout.gap)
-            for e in layout.elements:
-                if e.name not in ("title-block", name):
-                    others.register(e.name, e.footprint, e.kind)
-            moved = next(
-                (
-                    at
-                    for at in (Rect(x, y, ext.width, ext.height) for x in xs for y in ys)
-                    if others.fits(at)
-                ),
-                None,
-            )
-            if moved is None:
-                continue
-            sketches[name], placed[name] = grown, moved
+            sketches[name], placed[name] = chosen
             kept = layout
             layout = SheetLayout(self.page, gap=kept.gap)
             for e in kept.elements:
@@ -2489,12 +2497,43 @@ class _Composer:
                     layout.register(e.name, placed.get(e.name, e.footprint), e.kind)
         return layout, placed
 
-    def regrown(self, name: str, scales: dict[str, float]) -> Sketch | None:
+    def _room_for(
+        self, name: str, sketch: Sketch, grown: Sketch, layout: SheetLayout, rect: Rect
+    ) -> Rect | None:
+        """Where the drawing `name`, `sketch` placed at `rect`, goes lettered
+        again (`grown`): where it was, else moved by as much as it grew past
+        a side (the title over a drawing rises with a name written above
+        it), in the field and the layout's gap from the rest; None if not."""
+        old, ext = self.extent(sketch), self.extent(grown)
+        x, y = ext.x + rect.x - old.x, ext.y + rect.y - old.y
+        xs = (x, rect.x, rect.right - ext.width)
+        ys = (y, rect.y, rect.top - ext.height)
+        others = SheetLayout(self.page, gap=layout.gap)
+        for e in layout.elements:
+            if e.name not in ("title-block", name):
+                others.register(e.name, e.footprint, e.kind)
+        return next(
+            (
+                at
+                for at in (Rect(x, y, ext.width, ext.height) for x in xs for y in ys)
+                if others.fits(at)
+            ),
+            None,
+        )
+
+    def regrown(self, name: str, scales: dict[str, float], how: Again = "grow") -> Sketch | None:
         """The drawing `name` at `scales` with its labels written in the
         order that letters them best whatever box it takes (`grow`), noted as
-        in `sketches`; None for the lever (its own labelling)."""
+        in `sketches`; the lever and its detail views with their names tried
+        at 2.5 mm too (_LEVER_AGAIN), with `how` "box" in the orders that
+        keep their box."""
         fa, look, lang = self.fa, self.look, self.lang
-        mu_l = scales["mu_l"]
+        mu_l, mu_V = scales["mu_l"], scales["mu_V"]
+        if name == "zhukovsky-lever":
+            return sketch_lever(fa, mu_V, look, lang, [], self.details, again=how)
+        for v in self.details:
+            if name == detail_gid(self.details, v):
+                return sketch_lever_detail(fa, mu_V, look, lang, v, again=how)
         if name == "force-mechanism":
             return sketch_loaded_mechanism(
                 fa, mu_l, look, lang, self.compact, grow=True, details=self.mechanism_details

@@ -32,9 +32,12 @@ def _drawn(monkeypatch, kept: bool) -> tuple[RecordingBackend, Counter[tuple]]:
     solution = _solution()
     drawn: Counter[tuple] = Counter()
 
-    def counting(fa, mu_V, look, lang, arms, details, detail, *, merge_arms=False, lines=None):
-        drawn[(mu_V, lang, tuple(details), detail, merge_arms, len(arms))] += 1
-        return _RAW(fa, mu_V, look, lang, arms, details, detail, merge_arms=merge_arms, lines=lines)
+    def counting(
+        fa, mu_V, look, lang, arms, details, detail, *, merge_arms=False, lines=None, again=None
+    ):
+        drawn[(mu_V, lang, tuple(details), detail, merge_arms, again, len(arms))] += 1
+        kw = dict(merge_arms=merge_arms, lines=lines, again=again)
+        return _RAW(fa, mu_V, look, lang, arms, details, detail, **kw)
 
     view = sheet2_module._view_kept(counting) if kept else counting
     monkeypatch.setattr(sheet2_module, "_lever_view", view)
