@@ -446,8 +446,10 @@ class _ArcPlacer:
         usual radii and _WIDER: an arrowhead further out of a bundle of the
         positions' lines, the arc over the link where it must), then (a
         placer made `far`) _FAR_WIDER mm larger: the arcs whose labels find
-        room, crossing least. The centre, start angle, the
-        labels' places, how much larger the radii are, mm, and the span, deg."""
+        room, crossing least; where none leaves a label room, the first of
+        the cheapest where it finds a place all the same (`_led`). The
+        centre, start angle, the labels' places, how much larger the radii
+        are, mm, and the span, deg."""
         # (span, fractions along, mm larger, turns)
         tries: list[tuple[float, Sequence[float], float, Sequence[float]]]
         tries = [(_SPAN, _ALONG_LINK, 0.0, (0.0,))]
@@ -568,7 +570,8 @@ class _ArcPlacer:
         writes them) and the labels' `markups`, the candidates are then asked
         in that order whether each label finds a free place near its
         arrowhead (`_label_rooms`): the first where all do wins, unless one
-        scored better by more than a label without room costs."""
+        scored better by more than a label without room costs. Last, every
+        candidate so asked: its cost, centre, start angle and labels' places."""
         centres: list[np.ndarray] = []
         starts: list[float] = []
         # the cost bounded for a link of many points: its longest segments only
@@ -723,7 +726,8 @@ class _ArcPlacer:
         `kept` for it by `_beside` first, where free), out of the
         rooms kept for other labels and apart from each other; a label without
         room costs _NO_ROOM; the best _ROOM_TRIES are asked. The candidate, its
-        labels' places (None: no room near) and its cost."""
+        labels' places (None: no room near), its cost, and every candidate
+        asked (cost, index, labels' places)."""
         options: list[tuple[float, int, list[np.ndarray | None]]] = []
         for c in np.argsort(score, kind="stable")[:_ROOM_TRIES]:
             if options and score[c] >= min(o[0] for o in options):
