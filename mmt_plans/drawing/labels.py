@@ -37,7 +37,7 @@ from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
 from ..render.backend import PointLike
-from ..render.recording import Call, NamingKind, RecordingBackend, Text
+from ..render.recording import Call, Line, NamingKind, RecordingBackend, Text
 
 __all__ = [
     "BLOCK_MM",
@@ -1108,6 +1108,31 @@ class Labels:
             self._restore(saved)
         anchor, towards = anchors[0]
         return self.place(anchor, markup, towards=towards, distance=distance)
+
+    @contextmanager
+    def trial(self) -> Iterator[None]:
+        """What is drawn on the sketch and written inside, undone after: a
+        symbol drawn for a trial of where its labels find places."""
+        saved = self._state()
+        try:
+            yield
+        finally:
+            self._restore(saved)
+
+    def finds_place(
+        self, anchor: PointLike, markup: str, *, towards: PointLike | None = None
+    ) -> list[BaseGeometry] | None:
+        """Whether `place` would write `markup` near `anchor` or led to it:
+        the box it would take and its leader, if any (None: it would stand
+        far). Asking writes nothing: a drawing chooses where its symbol goes
+        by where its label finds a place."""
+        before, drawn = self.far, len(self.sketch.calls)
+        with self.trial():
+            footprint = self.place(anchor, markup, towards=towards)
+            led = [c for c in self.sketch.calls[drawn:] if isinstance(c, Line)]
+            if self.far != before:
+                return None
+            return [footprint, *(LineString([c.start, c.end]) for c in led)]
 
     def _at_sizes(self, write: Callable[[bool], BaseGeometry | None]) -> BaseGeometry:
         """`write(settle)` at the letter height `size`; where that finds no

@@ -201,6 +201,13 @@ _ROOM_TRIES = 16
 # the box an ω/ε label keeps free round its centre, mm: left/right, down, up (the
 # placer's box of "ω_{10}" at _TEXT, its index hanging below, and its 0.4 mm clearance)
 _ROOM_X, _ROOM_DOWN, _ROOM_UP = 3.7, 3.45, 2.4
+# where a link's best arcs leave a label no room near its arrowhead: how many
+# of the arcs tried, cheapest first, are drawn for a trial of whether that
+# label finds a place all the same (on the fine grid, or led past the lines)
+_LED_TRIES = 6
+# a link's arcs as `_ArcPlacer.beside` tries them: their cost, centre, start
+# angle (deg), the labels' rooms (None: none near), mm larger and span (deg)
+_Arcs = tuple[float, np.ndarray, float, list["np.ndarray | None"], float, float]
 
 
 def _arc_tip(
@@ -429,6 +436,7 @@ class _ArcPlacer:
         labels: Labels | None = None,
         markups: Sequence[str] = (),
         short: bool = True,
+        lines: Sequence[LineType] = (),
     ) -> tuple[np.ndarray, float, list[np.ndarray | None], float, float]:
         """`_beside` at the usual radii; with `labels`, where a label finds
         no room near its arrowhead there, at radii _WIDER mm larger in turn
@@ -438,9 +446,10 @@ class _ArcPlacer:
         usual radii and _WIDER: an arrowhead further out of a bundle of the
         positions' lines, the arc over the link where it must), then (a
         placer made `far`) _FAR_WIDER mm larger: the arcs whose labels find
-        room, crossing least. The centre, start angle, the
-        labels' places, how much larger the radii are, mm, and the span, deg."""
-        best: tuple[float, np.ndarray, float, list[np.ndarray | None], float, float] | None = None
+        room, crossing least; where none leaves a label room, the first of
+        the cheapest where it finds a place all the same (`_led`). The
+        centre, start angle, the labels' places, how much larger the radii
+        are, mm, and the span, deg."""
         # (span, fractions along, mm larger, turns)
         tries: list[tuple[float, Sequence[float], float, Sequence[float]]]
         tries = [(_SPAN, _ALONG_LINK, 0.0, (0.0,))]
@@ -449,16 +458,18 @@ class _ArcPlacer:
             tries += [(_SHORT_SPAN, _ALONG_SHORT, w, (0.0,)) for w in _SHORT_WIDER if short]
             tries += [(_SPAN, _ALONG_LINK, w, _TURNS) for w in _TURNED_WIDER if short]
             tries += [(_SPAN, _ALONG_LINK, w, (0.0,)) for w in _FAR_WIDER if self.far]
+        tried: list[_Arcs] = []  # every candidate asked, in the order asked
         for span, along, wider, turns in tries:
             wide = [(radius + wider, sense) for radius, sense in spins]
-            centre, start, picked, cost = self._beside(
+            _, _, picked, _, asked = self._beside(
                 segments, wide, labels, markups, wider, span, along, turns
             )
-            if best is None or cost < best[0]:
-                best = (cost, centre, start, picked, wider, span)
+            tried += [(c, cs, st, rooms, wider, span) for c, cs, st, rooms in asked]
             if all(p is not None for p in picked):
                 break
-        assert best is not None
+        best = min(tried, key=lambda a: a[0])  # (the first of equal cost)
+        if labels is not None and any(p is None for p in best[3]):
+            best = self._led(best, tried, spins, labels, markups, lines)
         _, centre, start, picked, wider, span = best
         self.lacking |= any(p is None for p in picked)
         # (another position's arcs of the link, drawn round the same place, go
@@ -477,6 +488,57 @@ class _ArcPlacer:
         self._add([shapely.Point(*tip).buffer(_WALLED) for tip in tips], "room")
         return centre, start, picked, wider, span
 
+    def _led(
+        self,
+        best: _Arcs,
+        tried: Sequence[_Arcs],
+        spins: Sequence[tuple[float, float]],
+        labels: Labels,
+        markups: Sequence[str],
+        lines: Sequence[LineType],
+    ) -> _Arcs:
+        """Where the `best` arcs of a link leave a label no room near its
+        arrowhead: of the arcs `tried` (every candidate asked in each try of
+        `beside`), the cheapest _LED_TRIES drawn in turn for a trial, the
+        first where every such label finds a place all the same (on the
+        placer's fine grid near it, or led to it past the lines round it:
+        `Labels.finds_place`); `best` where none does (its label then stands
+        far). Arcs other than `best` keep their labels' places (box and
+        leader) free of the arcs drawn after them."""
+        # (a place out of the drawing's box would grow it: a drawing is fitted
+        # on its sheet by its box)
+        ext = self.sk.extent()
+        inside = shapely.box(ext.left, ext.bottom, ext.right, ext.top)
+        for arcs in sorted(tried, key=lambda a: a[0])[:_LED_TRIES]:
+            _, centre, start, picked, wider, span = arcs
+            kept: list[Any] | None = []
+            with labels.trial():  # (the arcs drawn by the caller once chosen)
+                tips = [
+                    sense_arc(
+                        self.sk,
+                        centre,
+                        radius + wider,
+                        sense,
+                        start + _inset(radius + wider, _OMEGA_R + wider),
+                        start + span - _inset(radius + wider, _OMEGA_R + wider),
+                        line,
+                    )
+                    for (radius, sense), line in zip(spins, lines)
+                ]
+                # (arcs other than the best, drawn anyway, do not grow it either)
+                grown = arcs is not best and self.sk.extent() != ext
+                for tip, markup, room in zip(tips, markups, picked):
+                    if room is None and kept is not None and not grown:
+                        found = labels.finds_place(tip, markup, towards=tip - centre)
+                        out = found is None or not all(inside.covers(f) for f in found)
+                        kept = None if out else kept + cast(list[Any], found)
+                kept = None if grown else kept
+            if kept is not None:
+                if arcs is not best:
+                    self._add(kept, "room")
+                return arcs
+        return best
+
     def _beside(
         self,
         segments: Sequence[tuple[np.ndarray, np.ndarray]],
@@ -487,7 +549,13 @@ class _ArcPlacer:
         span: float = _SPAN,
         along: Sequence[float] = _ALONG_LINK,
         turns: Sequence[float] = (0.0,),
-    ) -> tuple[np.ndarray, float, list[np.ndarray | None], float]:
+    ) -> tuple[
+        np.ndarray,
+        float,
+        list[np.ndarray | None],
+        float,
+        list[tuple[float, np.ndarray, float, list[np.ndarray | None]]],
+    ]:
         """Centre and start angle (deg) of the arcs (radius, sense) of a link
         beside one of its segments (at the fractions `along` of it), spanning
         `span` degrees on one side of it (turned by each of `turns`, deg),
@@ -502,7 +570,8 @@ class _ArcPlacer:
         writes them) and the labels' `markups`, the candidates are then asked
         in that order whether each label finds a free place near its
         arrowhead (`_label_rooms`): the first where all do wins, unless one
-        scored better by more than a label without room costs."""
+        scored better by more than a label without room costs. Last, every
+        candidate so asked: its cost, centre, start angle and labels' places."""
         centres: list[np.ndarray] = []
         starts: list[float] = []
         # the cost bounded for a link of many points: its longest segments only
@@ -630,10 +699,12 @@ class _ArcPlacer:
                 [boxes_xy[c, k // 10_000, k % 10_000] for k in ks]
                 for c, ks in enumerate(chosen_all)
             ]
-            best, picked, cost = self._label_rooms(
+            best, picked, cost, options = self._label_rooms(
                 cs, st, spins, markups, labels, score, wider, kept, span
             )
-        return cs[best], float(st[best]), picked, cost
+            asked = [(o[0], cs[o[1]], float(st[o[1]]), o[2]) for o in options]
+            return cs[best], float(st[best]), picked, cost, asked
+        return cs[best], float(st[best]), picked, cost, [(cost, cs[best], float(st[best]), picked)]
 
     def _label_rooms(
         self,
@@ -646,14 +717,17 @@ class _ArcPlacer:
         wider: float,
         kept: Sequence[Sequence[np.ndarray]],
         span: float = _SPAN,
-    ) -> tuple[int, list[np.ndarray | None], float]:
+    ) -> tuple[
+        int, list[np.ndarray | None], float, list[tuple[float, int, list[np.ndarray | None]]]
+    ]:
         """Of the arcs centred at `cs` starting at `st` (deg), asked best
         `score` first: the first whose every label finds a free place near
         its arrowhead (`Labels.rooms`, the link's arcs kept clear; the place
         `kept` for it by `_beside` first, where free), out of the
         rooms kept for other labels and apart from each other; a label without
         room costs _NO_ROOM; the best _ROOM_TRIES are asked. The candidate, its
-        labels' places (None: no room near) and its cost."""
+        labels' places (None: no room near), its cost, and every candidate
+        asked (cost, index, labels' places)."""
         options: list[tuple[float, int, list[np.ndarray | None]]] = []
         for c in np.argsort(score, kind="stable")[:_ROOM_TRIES]:
             if options and score[c] >= min(o[0] for o in options):
@@ -694,7 +768,7 @@ class _ArcPlacer:
             lacking = sum(r is None for r in rooms)
             options.append((float(score[c]) + _NO_ROOM * lacking, int(c), rooms))
         cost, c, rooms = min(options, key=lambda o: o[0])
-        return c, rooms, cost
+        return c, rooms, cost, options
 
     def round_pivot(self, centre: np.ndarray, radius: float, sense: float) -> float:
         """Start angle (deg) of a 120° arc round a frame pivot crossing least,
@@ -1275,6 +1349,7 @@ def _lettered_mechanism(
                     labels,
                     [f"{sym}_{{{lid}}}" for _, _, sym, _ in spins],
                     short,  # the shorter arcs tried
+                    [line for _, _, _, line in spins],
                 )
                 for (value, radius, sym, line), room in zip(spins, rooms):
                     inset = _inset(radius + wider, _OMEGA_R + wider)

@@ -77,3 +77,28 @@ def test_no_later_arc_walls_in_an_arrowhead_without_room(lang):
         if f.message[1:2] in "ωε" or " arc" in f.message
     ]
     assert bad == []
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_a_label_without_room_is_led_from_other_arcs(lang):
+    """Seed 0 (five groups, RRR-RRR-RPP-RPP-RPP): link 2 at its first plan
+    position lies in a bundle of the positions' main lines; no arc of it
+    tried left "ω2" a free place near its arrowhead, and from the cheapest
+    no leader reached a place either: "ω2" stood 20.1 mm off. The cheapest
+    arcs are now drawn for a trial of whether such a label finds a place all
+    the same (the fine grid near it, or a leader past the lines), and those
+    of the first where it does are drawn: every ω/ε name stands near its own
+    arc or is led to it."""
+    g = generate_one(0)
+    solution = solve(loads(g.toml, f"{g.name}.toml"))
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet1(solution, backend, lang)
+    view = SheetView.of(backend, lang, g.name)
+    names = [lab.text for lab in view.labels if lab.text[:1] in "ωε"]
+    assert names.count("ω2") == 2 and names.count("ε2") == 2  # link 2 at both plan positions
+    bad = [
+        str(f)
+        for f in lint(view, ["label-near", "label-clear"])
+        if f.message[1:2] in "ωε" or " arc" in f.message
+    ]
+    assert bad == []
