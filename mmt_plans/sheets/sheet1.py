@@ -1211,7 +1211,11 @@ def _lettered_mechanism(
             sk.circle(middle, r, "thin")  # the view's edge, or the disc marked
         # Lettering goes where it covers no line, no arc and no other letter:
         # the joints' names first (the arcs are then drawn clear of them), then
-        # ω and ε once every arc is drawn, then the positions' numbers.
+        # ω and ε once every arc is drawn, then the positions' numbers. A plan
+        # position's view (one pose: no other position's lines wall a joint
+        # in) names its joints with ω and ε, round the arcs drawn: named
+        # first, they left a link's arcs no side but over a name (chain_25's
+        # rockers, their joints' names on both sides, 9 a view)
         pivot = at(mech.crank_pivot, 0)
         labels = Labels(
             sk,
@@ -1237,6 +1241,8 @@ def _lettered_mechanism(
         drawn_at = [0, *sorted({solution.entry(i) for i in solution.plan_positions} - {0})]
         drawn_at = drawn_at if len(mech.links) <= _SHORT_LINKS else [0]
         drawn_at = drawn_at if alone is None else [alone]
+        # a view's joints: (anchor, name, towards), named with ω and ε
+        named_later: list[tuple[np.ndarray, str, np.ndarray]] = []
         for name in owners:
             # (named in the view that holds its place at position 0)
             if name in pts and here(at(name, shown[0])):
@@ -1252,7 +1258,10 @@ def _lettered_mechanism(
                     else:
                         towards = unit_vector(unit_vector(p - pivot) + np.array([0.3, 0.6]))
                     anchors.append((p, towards))
-                labels.place_first(anchors, point_markup(name), distance=2.0)
+                if alone is not None and anchors:
+                    named_later += [(p, point_markup(name), towards) for p, towards in anchors]
+                else:
+                    labels.place_first(anchors, point_markup(name), distance=2.0)
         # ω and ε of every rotating link at the planned positions (seed 003
         # §1.6), each beside its own link on the side freest of the others and
         # of the joints' names; all drawn before their labels are written.
@@ -1319,6 +1328,8 @@ def _lettered_mechanism(
             # ω1 names its arc's arrowhead, written towards the gap between the spokes
             anchor = _between_spokes(centre, tip, crank, 7.0)
             queued.append((tip, "ω_{1}", anchor - tip, None))
+        for p, markup, towards in named_later:
+            labels.later(p, markup, towards)
         # those with a room kept first: one with none (no free place near its
         # arrowhead) would take another's
         for tip, markup, towards, kept in sorted(queued, key=lambda q: q[3] is None):
