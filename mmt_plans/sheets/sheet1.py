@@ -54,7 +54,7 @@ from ..drawing.pose import Block, Guide, Pose, draw_poses
 from ..drawing.sketch import PAD as _PAD
 from ..drawing.sketch import Sketch
 from ..drawing.symbols import sense_arc, unit_vector
-from ..drawing.table import TABLE_PART_MM, rows_per_part, table_sketch
+from ..drawing.table import DECIMALS_MAX, TABLE_PART_MM, rows_per_part, table_sketch
 from ..errors import shown
 from ..i18n import Language, catalogue, check_language
 from ..render.backend import Backend
@@ -982,14 +982,37 @@ def _pose_lines(sk: Sketch, solution: Solution, mu_l: float, k: int) -> None:
 # the paper (mm²) round a link (within _ARC_REACH of its lines) that its ω
 # and ε arcs at one position take with their names. Where the plan positions'
 # links drawn in all the positions have less than _ARC_CROWD of it each, the
-# n-position drawing cannot hold their arcs (chain_25 at 1:20: 174 mm², ~120
-# of its 140 findings ω/ε names 9–20 mm off; the samples, 1380 mm² and more;
-# the generated seeds 0–299 at the scale that fills the field, 500 and more):
-# each plan position is drawn in a view of its own, at the coarsest scale of
-# the series that leaves its links _ARC_VIEW each (chain_25: 1:10, 707 mm²)
-_ARC_CROWD = 320.0
+# n-position drawing cannot hold their arcs (chain_25 at 1:20, its 12
+# rockers' arcs: 321 mm², 35 findings, ω/ε names 9–20 mm off; the samples,
+# 1380 mm² and more; the generated seeds 0–299 at the scale that fills the
+# field, 500 and more): each plan position is drawn in a view of its own, at
+# the coarsest scale of the series that leaves its links _ARC_VIEW each
+# (chain_25: 1:20, 625 mm²)
+_ARC_CROWD = 400.0
 _ARC_VIEW = 600.0
 _ARC_REACH = 12.0  # how far from a link its arcs and their names go, mm
+
+
+def _spins(solution: Solution, lid: int, k: int) -> list[tuple[float, float, str, LineType]]:
+    """The arcs link `lid` is drawn with at entry `k` of the sweep: (value,
+    radius, symbol, line) of its ω and of its ε where Table 3 writes that
+    value other than 0 (at DECIMALS_MAX decimals). A link at rest for an
+    instant (ω = 0 at an extreme position) still has its ε; one that moves
+    without turning (the coupler of a parallelogram: chain_25's, ω ~ 2e-6
+    1/s, written 0.0000) has neither: no sense to show."""
+    sw = solution.sweep
+    w, e = float(sw.omega[lid][k]), float(sw.eps[lid][k])
+    spins: list[tuple[float, float, str, LineType]] = []
+    if _written(w):
+        spins.append((w, _OMEGA_R, "ω", "main"))
+    if _written(e):
+        spins.append((e, _EPS_R, "ε", "thin"))
+    return spins
+
+
+def _written(value: float) -> bool:
+    """Whether Table 3 writes `value` other than 0 (table.py: at most DECIMALS_MAX decimals)."""
+    return math.isfinite(value) and float(f"{abs(value):.{DECIMALS_MAX}f}") != 0.0
 
 
 def _arc_room(solution: Solution, mu_l: float, entries: Sequence[int]) -> float:
@@ -998,8 +1021,6 @@ def _arc_room(solution: Solution, mu_l: float, entries: Sequence[int]) -> float:
     them whose ω or ε is drawn (inf where none is)."""
     mech = solution.mechanism
     pts = solution.sweep.points
-    sw = solution.sweep
-    w1 = abs(float(mech.drive.signed_omega))
     planned = {solution.entry(i) for i in solution.plan_positions}
     lines = []
     spinning = 0
@@ -1011,8 +1032,7 @@ def _arc_room(solution: Solution, mu_l: float, entries: Sequence[int]) -> float:
                 continue
             lines += [shapely.LineString([a, b]) for a, b in itertools.combinations(ends, 2)]
             if lid != mech.drive.link and k in planned:
-                w, e = float(sw.omega[lid][k]), float(sw.eps[lid][k])
-                spinning += abs(w) >= 1e-9 * w1 or abs(e) >= 1e-9 * w1 * w1
+                spinning += bool(_spins(solution, lid, k))
     if not spinning or not lines:
         return math.inf
     return float(shapely.union_all([g.buffer(_ARC_REACH, 8) for g in lines]).area) / spinning
@@ -1265,7 +1285,11 @@ def _lettered_mechanism(
             sk.circle(middle, r, "thin")  # the view's edge, or the disc marked
         # Lettering goes where it covers no line, no arc and no other letter:
         # the joints' names first (the arcs are then drawn clear of them), then
-        # ω and ε once every arc is drawn, then the positions' numbers.
+        # ω and ε once every arc is drawn, then the positions' numbers. A plan
+        # position's view (one pose: no other position's lines wall a joint
+        # in) names its joints with ω and ε, round the arcs drawn: named
+        # first, they left a link's arcs no side but over a name (chain_25's
+        # rockers, their joints' names on both sides, 9 a view)
         pivot = at(mech.crank_pivot, 0)
         labels = Labels(
             sk,
@@ -1291,6 +1315,8 @@ def _lettered_mechanism(
         drawn_at = [0, *sorted({solution.entry(i) for i in solution.plan_positions} - {0})]
         drawn_at = drawn_at if len(mech.links) <= _SHORT_LINKS else [0]
         drawn_at = drawn_at if alone is None else [alone]
+        # a view's joints: (anchor, name, towards), named with ω and ε
+        named_later: list[tuple[np.ndarray, str, np.ndarray]] = []
         for name in owners:
             # (named in the view that holds its place at position 0)
             if name in pts and here(at(name, shown[0])):
@@ -1306,7 +1332,10 @@ def _lettered_mechanism(
                     else:
                         towards = unit_vector(unit_vector(p - pivot) + np.array([0.3, 0.6]))
                     anchors.append((p, towards))
-                labels.place_first(anchors, point_markup(name), distance=2.0)
+                if alone is not None and anchors:
+                    named_later += [(p, point_markup(name), towards) for p, towards in anchors]
+                else:
+                    labels.place_first(anchors, point_markup(name), distance=2.0)
         # ω and ε of every rotating link at the planned positions (seed 003
         # §1.6), each beside its own link on the side freest of the others and
         # of the joints' names; all drawn before their labels are written.
@@ -1321,22 +1350,13 @@ def _lettered_mechanism(
         )
         # (tip, label, towards, the room kept for it)
         queued: list[tuple[np.ndarray, str, np.ndarray, np.ndarray | None]] = []
-        sw = solution.sweep
-        w1 = abs(float(mech.drive.signed_omega))
         for i in arcs_at:
             k = solution.entry(i)
             for lid, link in mech.links.items():
-                w, e = float(sw.omega[lid][k]), float(sw.eps[lid][k])
                 names = [p for p in link.points if p in pts]
                 if lid == mech.drive.link or len(names) < 2:
                     continue
-                # a link at rest for an instant (ω = 0 at an extreme position)
-                # still has its ε: the arc of each that is not zero
-                spins: list[tuple[float, float, str, LineType]] = []
-                if abs(w) >= 1e-9 * w1:
-                    spins.append((w, _OMEGA_R, "ω", "main"))
-                if abs(e) >= 1e-9 * w1 * w1:
-                    spins.append((e, _EPS_R, "ε", "thin"))
+                spins = _spins(solution, lid, k)
                 if not spins:
                     continue
                 segments = [(at(a, k), at(b, k)) for a, b in itertools.combinations(names, 2)]
@@ -1383,6 +1403,8 @@ def _lettered_mechanism(
             # ω1 names its arc's arrowhead, written towards the gap between the spokes
             anchor = _between_spokes(centre, tip, crank, 7.0)
             queued.append((tip, "ω_{1}", anchor - tip, None))
+        for p, markup, towards in named_later:
+            labels.later(p, markup, towards)
         # those with a room kept first: one with none (no free place near its
         # arrowhead) would take another's
         for tip, markup, towards, kept in sorted(queued, key=lambda q: q[3] is None):
