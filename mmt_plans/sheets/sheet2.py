@@ -37,6 +37,7 @@ from ..drawing.detail import (
     ARM_NAMED_MM,
     DETAIL_LETTERS,
     DETAIL_MM,
+    DETAIL_RATIOS,
     NAME_SHARE,
     Detail,
     Name,
@@ -3092,6 +3093,158 @@ def _refitted(
     return (detailed, refit) if sum(detailed.lettered(refit)) < was else None
 
 
+def _loaded_crowd(sketches: Mapping[str, Sketch], details: Sequence[Detail], lang: Language) -> int:
+    """How many names of the loaded mechanism and of its detail views (drawn
+    with `details`) in `sketches` the sheet linter finds far or on something."""
+    views = ["force-mechanism", *(loaded_detail_gid(details, d) for d in details)]
+    return sum(len(list(crowded(sketches[n], lang))) for n in views)
+
+
+def _loaded_details_again(
+    composer: _Composer,
+    sketches: dict[str, Sketch],
+    layout: SheetLayout,
+    placed: dict[str, Rect],
+    scales: dict[str, float],
+) -> tuple[SheetLayout, dict[str, Rect]]:
+    """The laid-out sheet with the loaded mechanism's detail views chosen
+    again where its names still stand far or on something: its details
+    were chosen at the scale it had before the sheet was fitted again with
+    them (gen 158: a disc of 6 mm at μl 0.01, the mechanism then drawn at
+    0.025, the knot round the crank's pivot O lettered 10–15 mm off). Chosen
+    again (`loaded_details`) on the mechanism at the scale it reached, drawn
+    without details, and on the names that stand far on the sheet; the
+    mechanism drawn with them at that scale where it was (`_loaded_placed`),
+    each view in the room left nearest it: kept where fewer of their names
+    stand far or on something, no other drawing moved. `sketches` takes the
+    drawings kept, `composer` the details."""
+    fa, lang = composer.fa, composer.lang
+    mu_l, before = scales["mu_l"], composer.mechanism_details
+    was = _loaded_crowd(sketches, before, lang)
+    if not was:
+        return layout, placed
+    plain = composer.memo(
+        ("force-mechanism", mu_l, ()),
+        lambda: sketch_loaded_mechanism(fa, mu_l, composer.look, lang, composer.compact),
+    )
+    crowd = [crowded_names(plain, lang, anchors=True)]
+    crowd.append(crowded_names(sketches["force-mechanism"], lang, anchors=True))
+    for d in before:  # a detail view's mm are the mechanism's times its ratio
+        view = sketches[loaded_detail_gid(before, d)]
+        crowd.append(crowded_names(view, lang, anchors=True) / d.ratio)
+    points = np.concatenate(crowd)
+    taken = [d.letter for d in composer.details]
+    tried = [before]
+    best: tuple[int, tuple[Detail, ...], dict[str, Sketch], SheetLayout] | None = None
+    for fewest in (_SECOND_CROWD, _SECOND_PAIR):
+        found = loaded_details(fa, mu_l, points, taken, fewest)
+        if not found or found in tried:
+            continue
+        tried.append(found)
+        trial = _loaded_placed(composer, found, sketches, layout, placed, mu_l)
+        while trial is None and found != _smaller(found):
+            # no room on the sheet for a view at its ratio: a step smaller
+            found = _smaller(found)
+            trial = _loaded_placed(composer, found, sketches, layout, placed, mu_l)
+        if trial is None:
+            continue
+        now = _loaded_crowd(trial[0], found, lang)
+        if now < (was if best is None else best[0]):
+            best = (now, found, *trial)
+        if not now:
+            break
+    if best is None:
+        return layout, placed
+    _, found, drawn, layout = best
+    for d in before:
+        del sketches[loaded_detail_gid(before, d)]
+    composer.with_mechanism_details(found)
+    sketches.update(drawn)
+    kept = {n: r for n, r in placed.items() if not n.startswith("force-mechanism")}
+    return layout, {**kept, **{n: layout[n].bounds for n in drawn}}
+
+
+def _smaller(details: tuple[Detail, ...]) -> tuple[Detail, ...]:
+    """`details`, each drawn a ratio of the series smaller (none below its first)."""
+    return tuple(
+        dataclasses.replace(
+            d, ratio=max([k for k in DETAIL_RATIOS if k < d.ratio], default=d.ratio)
+        )
+        for d in details
+    )
+
+
+def _loaded_placed(
+    composer: _Composer,
+    details: tuple[Detail, ...],
+    sketches: Mapping[str, Sketch],
+    layout: SheetLayout,
+    placed: Mapping[str, Rect],
+    mu_l: float,
+) -> tuple[dict[str, Sketch], SheetLayout] | None:
+    """The loaded mechanism at `mu_l` with `details` and their views, each
+    lettered as `given_room` letters it where that letters it better
+    (`regrown`), and the laid-out sheet with them: the mechanism where it
+    was placed, else moved by as much as it grew past a side, each view in
+    the room nearest it; None where they find no room (the other drawings stay)."""
+    fa, look, lang, compact = composer.fa, composer.look, composer.lang, composer.compact
+    # the mechanism marks its details' discs whatever their ratios
+    discs = tuple(dataclasses.replace(d, ratio=1.0) for d in details)
+
+    def lettered(draw: Callable[[bool], Sketch]) -> list[Sketch]:
+        """The drawing lettered as it comes, and with `grow` where its names
+        stand far: the one that letters it better first."""
+        sk = draw(False)
+        if not _counts(sk).far:
+            return [sk]
+        grown = draw(True)
+        better = len(list(crowded(grown, lang))) < len(list(crowded(sk, lang)))
+        return [grown, sk] if better else [sk, grown]
+
+    mechanisms = lettered(
+        lambda grow: composer.memo(
+            ("force-mechanism", mu_l, discs) + (("grow",) if grow else ()),
+            lambda: sketch_loaded_mechanism(
+                fa, mu_l, look, lang, compact, grow=grow, details=details
+            ),
+        )
+    )
+    ours = {n for n in placed if n.startswith("force-mechanism")}
+    others = SheetLayout(layout.page, gap=layout.gap)
+    for e in layout.elements:
+        if e.name not in ("title-block", *ours):
+            others.register(e.name, e.footprint, e.kind)
+    old, rect = composer.extent(sketches["force-mechanism"]), placed["force-mechanism"]
+    for mechanism in mechanisms:  # the first that finds room
+        ext = mechanism.extent()
+        xs = (ext.x + rect.x - old.x, rect.x, rect.right - ext.width)
+        ys = (ext.y + rect.y - old.y, rect.y, rect.top - ext.height)
+        boxes = (Rect(x, y, ext.width, ext.height) for x in xs for y in ys)
+        at = next((r for r in boxes if others.fits(r)), None)
+        if at is not None:
+            break
+    if at is None:
+        return None
+    others.register("force-mechanism", at)
+    drawn = {"force-mechanism": mechanism}
+    for d in details:
+
+        def detail_view(grow: bool, d: Detail = d) -> Sketch:
+            return composer.memo(
+                ("force-mechanism-detail", d, mu_l) + (("grow",) if grow else ()),
+                lambda: sketch_loaded_detail(fa, mu_l, look, lang, d, compact, grow=grow),
+            )
+
+        view = lettered(detail_view)[0]
+        name, box = loaded_detail_gid(details, d), view.extent()
+        try:
+            others.place(name, box.width, box.height, near=at)
+        except LayoutError:
+            return None
+        drawn[name] = view
+    return drawn, others
+
+
 @_views_kept
 def compose_sheet2(
     solution: Solution,
@@ -3167,6 +3320,7 @@ def compose_sheet2(
     arranged = composer.arrange(sketches)
     assert arranged is not None  # it fitted before
     layout, placed = composer.given_room(sketches, *arranged, scales)
+    layout, placed = _loaded_details_again(composer, sketches, layout, placed, scales)
     result = Sheet2(
         fa,
         layout,

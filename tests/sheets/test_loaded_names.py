@@ -14,7 +14,7 @@ from lettering import label_boxes, solved_seed
 from mmt_plans.drawing.labels import arc_line
 from mmt_plans.render.recording import RecordingBackend
 from mmt_plans.sheets.lint import SheetView, lint
-from mmt_plans.sheets.sheet2 import _ARC_SPAN, _Drawing, compose_sheet2
+from mmt_plans.sheets.sheet2 import _ARC_SPAN, Sheet2, _c, _Drawing, compose_sheet2
 
 NEAR_RULES = {"label-near", "label-clear"}
 
@@ -23,7 +23,12 @@ def _loaded_findings(seed: int, lang: str) -> list[str]:
     """Sheet 2's loaded mechanism (and its details): its names far or on something."""
     backend = RecordingBackend(841.0, 594.0)
     sheet = compose_sheet2(solved_seed(seed), backend, lang)  # type: ignore[arg-type]
-    view = SheetView.of(backend, lang, f"gen {seed} {lang}")  # type: ignore[arg-type]
+    return _sheet_findings(sheet, backend, lang)
+
+
+def _sheet_findings(sheet: Sheet2, backend: RecordingBackend, lang: str) -> list[str]:
+    """`_loaded_findings` of a sheet drawn on `backend`."""
+    view = SheetView.of(backend, lang, f"sheet 2 {lang}")  # type: ignore[arg-type]
     found = []
     for f in lint(view):
         x, y = f.where
@@ -66,6 +71,27 @@ def test_gen_3s_force_name_at_a_crowded_block_is_tried_smaller_before_it_stands_
         and c.naming.markup.endswith("in9}")
     ]
     assert runs and all(c.size == 2.5 for c in runs)
+
+
+# gen 158 (RPR-RRR-RRP-RPR-RPP) en: the loaded mechanism's detail
+# view was chosen at μl 0.01 (a disc of 6 mm, 2:1, round link 4's block), then
+# the sheet fitted again with it took μl 0.025: the knot round the crank's
+# pivot O (sliders, centres of mass within ~10 mm) was lettered 10-15 mm off
+# ('O', 'ω1', 'S4', 'h5'; 'U' at another block 10.7 mm). Chosen again on the
+# mechanism at the scale it reached, one disc holds the knot at O, at a ratio
+# that gives its names room, and no name of the mechanism stands far; the
+# sheet's drawings still keep apart.
+def test_gen_158s_detail_views_are_chosen_again_at_the_scale_the_mechanism_reached():
+    backend = RecordingBackend(841.0, 594.0)
+    sheet = compose_sheet2(solved_seed(158), backend, "en")
+    assert sheet.scales["mu_l"] == 0.025  # the scale the sheet took before
+    state = sheet.forces.loads.state
+    mech = state.mech
+    O = _c(state.point(mech.drive.link, mech.crank_pivot))
+    knot = [d for d in sheet.mechanism_details if abs(O - complex(*d.centre)) <= d.radius]
+    assert knot and knot[0].ratio >= 4.0
+    assert not _sheet_findings(sheet, backend, "en")
+    assert not sheet.layout.problems()
 
 
 def _walled_name(enclosed: bool) -> tuple[_Drawing, np.ndarray, float]:
