@@ -2505,22 +2505,8 @@ class _Composer:
         again (`grown`): where it was, else moved by as much as it grew past
         a side (the title over a drawing rises with a name written above
         it), in the field and the layout's gap from the rest; None if not."""
-        old, ext = self.extent(sketch), self.extent(grown)
-        x, y = ext.x + rect.x - old.x, ext.y + rect.y - old.y
-        xs = (x, rect.x, rect.right - ext.width)
-        ys = (y, rect.y, rect.top - ext.height)
-        others = SheetLayout(self.page, gap=layout.gap)
-        for e in layout.elements:
-            if e.name not in ("title-block", name):
-                others.register(e.name, e.footprint, e.kind)
-        return next(
-            (
-                at
-                for at in (Rect(x, y, ext.width, ext.height) for x in xs for y in ys)
-                if others.fits(at)
-            ),
-            None,
-        )
+        others = _without(layout, {name})
+        return _moved(self.extent(sketch), self.extent(grown), rect, others)
 
     def regrown(self, name: str, scales: dict[str, float], how: Again = "grow") -> Sketch | None:
         """The drawing `name` at `scales` with its labels written in the
@@ -3093,6 +3079,26 @@ def _refitted(
     return (detailed, refit) if sum(detailed.lettered(refit)) < was else None
 
 
+def _without(layout: SheetLayout, names: set[str]) -> SheetLayout:
+    """The drawings and tables of `layout` but `names` and the title block."""
+    others = SheetLayout(layout.page, gap=layout.gap)
+    for e in layout.elements:
+        if e.name != "title-block" and e.name not in names:
+            others.register(e.name, e.footprint, e.kind)
+    return others
+
+
+def _moved(old: Rect, ext: Rect, rect: Rect, others: SheetLayout) -> Rect | None:
+    """Where a drawing placed at `rect` with the box `old` goes with the box
+    `ext`: where it was, else moved by as much as it grew past a side (the
+    title over a drawing rises with a name written above it), in the field
+    and the layout's gap from `others`; None if it finds no room."""
+    xs = (ext.x + rect.x - old.x, rect.x, rect.right - ext.width)
+    ys = (ext.y + rect.y - old.y, rect.y, rect.top - ext.height)
+    boxes = (Rect(x, y, ext.width, ext.height) for x in xs for y in ys)
+    return next((at for at in boxes if others.fits(at)), None)
+
+
 def _loaded_crowd(sketches: Mapping[str, Sketch], details: Sequence[Detail], lang: Language) -> int:
     """How many names of the loaded mechanism and of its detail views (drawn
     with `details`) in `sketches` the sheet linter finds far or on something."""
@@ -3209,18 +3215,10 @@ def _loaded_placed(
             ),
         )
     )
-    ours = {n for n in placed if n.startswith("force-mechanism")}
-    others = SheetLayout(layout.page, gap=layout.gap)
-    for e in layout.elements:
-        if e.name not in ("title-block", *ours):
-            others.register(e.name, e.footprint, e.kind)
+    others = _without(layout, {n for n in placed if n.startswith("force-mechanism")})
     old, rect = composer.extent(sketches["force-mechanism"]), placed["force-mechanism"]
     for mechanism in mechanisms:  # the first that finds room
-        ext = mechanism.extent()
-        xs = (ext.x + rect.x - old.x, rect.x, rect.right - ext.width)
-        ys = (ext.y + rect.y - old.y, rect.y, rect.top - ext.height)
-        boxes = (Rect(x, y, ext.width, ext.height) for x in xs for y in ys)
-        at = next((r for r in boxes if others.fits(r)), None)
+        at = _moved(old, mechanism.extent(), rect, others)
         if at is not None:
             break
     if at is None:
