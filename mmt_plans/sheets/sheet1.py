@@ -511,7 +511,7 @@ class _ArcPlacer:
         inside = shapely.box(ext.left, ext.bottom, ext.right, ext.top)
         for arcs in sorted(tried, key=lambda a: a[0])[:_LED_TRIES]:
             _, centre, start, picked, wider, span = arcs
-            kept: list[Any] | None = []
+            kept: list[Any] = []  # the places its labels find
             with labels.trial():  # (the arcs drawn by the caller once chosen)
                 tips = [
                     sense_arc(
@@ -526,14 +526,13 @@ class _ArcPlacer:
                     for (radius, sense), line in zip(spins, lines)
                 ]
                 # (arcs other than the best, drawn anyway, do not grow it either)
-                grown = arcs is not best and self.sk.extent() != ext
+                fits = arcs is best or self.sk.extent() == ext
                 for tip, markup, room in zip(tips, markups, picked):
-                    if room is None and kept is not None and not grown:
+                    if fits and room is None:
                         found = labels.finds_place(tip, markup, towards=tip - centre)
-                        out = found is None or not all(inside.covers(f) for f in found)
-                        kept = None if out else kept + cast(list[Any], found)
-                kept = None if grown else kept
-            if kept is not None:
+                        fits = found is not None and all(inside.covers(f) for f in found)
+                        kept += found or []
+            if fits:
                 if arcs is not best:
                     self._add(kept, "room")
                 return arcs
