@@ -2827,6 +2827,13 @@ _STACK_GAP = 6.0  # _stack's gap between the S, V and a diagrams
 # where the field is left too empty, S may be drawn up to this many times
 # larger than the mechanism (μ_S = μ_l/FINER_S): a short stroke then reads
 FINER_S = 10.0
+# where even that leaves the field too empty, the diagrams' scales from the
+# whole series of seed 000 §2.2 (1, 1.25, 2, 2.5, 4, 5, 8 × 10^k; S is no
+# drawing of the mechanism, so not only GOST 2.302's ratios), their poles
+# also at 32 and 64 mm (2^k mm: with μ_t of mantissa 1.25 or 8 they keep μ_V
+# and μ_a series values where the round poles cannot)
+_FILL_S_MANTISSAS = ("1", "1.25", "2", "2.5", "4", "5", "8")
+_FILL_POLES_MM = (*ROUND_POLE_DISTANCES_MM, 32.0, 64.0)
 
 
 def _diagram_rooms(layout: SheetLayout, rect: Rect, gap: float) -> list[Rect]:
@@ -2866,6 +2873,7 @@ def _grown_scales(
     mu_S_range: tuple[float, float],
     budget: float,
     longest_pole: float,
+    fill: bool = False,
 ) -> tuple[float, float, float] | None:
     """μ_S, OH1, OH2 for diagrams over an `L` mm time axis sharing `budget` mm
     of height: μ_S the finest series value of `mu_S_range` (from μ_l, seed 003
@@ -2875,13 +2883,20 @@ def _grown_scales(
     `longest_pole`, making μ_V and μ_a series values, of those the tallest V
     and a (a long axis flattens them: the pole lengthens instead). The
     heights scale as 1/μ_S, OH1/μ_S and OH1·OH2/μ_S (the construction is
-    linear in them); None where no choice keeps μ_V and μ_a series values."""
+    linear in them); None where no choice keeps μ_V and μ_a series values.
+    With `fill` (a field left too empty), μ_S from the whole series and the
+    poles from _FILL_POLES_MM, and of every μ_S that draws S within its third
+    the one whose three diagrams stand tallest (not the finest: the field
+    wants the room covered, and a coarser S leaves V and a more of it)."""
     ref = graphical_differentiation(s, n1=n1, mu_S=mu_S_range[0], L=L, H1=40.0, H2=40.0)
     h_s, h_v, h_a = ref.heights_mm
-    poles = [H for H in ROUND_POLE_DISTANCES_MM if H <= longest_pole]
+    poles = [H for H in (_FILL_POLES_MM if fill else ROUND_POLE_DISTANCES_MM) if H <= longest_pole]
     lo, hi = mu_S_range
     share_s = budget / 3.0 if hi > lo else budget * 0.6
-    for mu_S in itertools.islice(series(lo * (1 - 1e-9), hi, LENGTH_MANTISSA_TEXT), 8):
+    # from μ_l/FINER_S up to 10·μ_l where the whole series is tried (7 a decade)
+    mantissas, tried = (_FILL_S_MANTISSAS, 14) if fill else (LENGTH_MANTISSA_TEXT, 8)
+    tallest: tuple[float, tuple[float, float, float]] | None = None
+    for mu_S in itertools.islice(series(lo * (1 - 1e-9), hi, mantissas), tried):
         k = lo / mu_S
         if h_s * k > share_s * (1 + 1e-9):
             continue
@@ -2899,9 +2914,13 @@ def _grown_scales(
                 key = (min(tall_v, tall_a), tall_v + tall_a)
                 if best is None or key > best[0]:
                     best = (key, (mu_S, H1, H2))
-        if best is not None:
+        if best is not None and not fill:
             return best[1]
-    return None
+        if best is not None:
+            tall = h_s * k + best[0][1]
+            if tallest is None or tall > tallest[0]:
+                tallest = (tall, best[1])
+    return None if tallest is None else tallest[1]
 
 
 def _grown_diagrams(
@@ -2916,6 +2935,7 @@ def _grown_diagrams(
     gap: float,
     extents: _Extents,
     finer: bool = False,
+    fill: bool = False,
 ) -> tuple[Sketch, Rect, KinematicDiagrams] | None:
     """The diagrams' column redrawn into the room left beside and above it
     (_diagram_rooms), or None where it cannot grow. The rule: one turn of
@@ -2930,7 +2950,9 @@ def _grown_diagrams(
     depend on the scales: the 5 % check stands). With `finer` (a field the
     rule above leaves more than EMPTY_MAX empty), μ_S may also be finer than
     μ_l, down to μ_l/FINER_S: S drawn larger than the mechanism, so that a
-    short stroke reads (the line under S says so)."""
+    short stroke reads (the line under S says so). With `fill` (a field that
+    too leaves more than EMPTY_MAX empty) as `finer`, the scales from the
+    whole series (_grown_scales)."""
     if "diagrams" not in placed:
         return None
     rect = placed["diagrams"]
@@ -2940,7 +2962,7 @@ def _grown_diagrams(
     T = 60.0 / drawn.n1
     over_w = base.width - drawn.L - max(drawn.H1, drawn.H2)
     over_h = base.height - sum(drawn.heights_mm)
-    mu_S_range = (mu_l / FINER_S if finer else mu_l, mu_l * 1e4)
+    mu_S_range = (mu_l / FINER_S if finer or fill else mu_l, mu_l * 1e4)
     best: tuple[float, Sketch, Rect, KinematicDiagrams] | None = None
     drawn_parts: dict[tuple[Any, ...], Sketch] = {}
     for room in _diagram_rooms(layout, rect, gap)[:3]:
@@ -2956,7 +2978,7 @@ def _grown_diagrams(
                 break
             for share in (1.0, 0.85, 0.7, 0.55):
                 longest = room.width - over_w - L - 8.0  # the lettering's widths vary
-                chosen = _grown_scales(s, drawn.n1, L, mu_S_range, budget * share, longest)
+                chosen = _grown_scales(s, drawn.n1, L, mu_S_range, budget * share, longest, fill)
                 if chosen is None:
                     continue
                 mu_S, H1, H2 = chosen
@@ -3048,8 +3070,10 @@ def compose_sheet1(
     (_grown_diagrams), and the tables. Of the arrangements that fit, the
     first whose field the linter's field-filled rule finds filled
     (laid_out_empty_share ≤ EMPTY_MAX), where need be with the sheet laid out again
-    round the grown diagrams (their column kept as high as it was); else the
-    one leaving least empty. Where nothing fits, _fallback draws the
+    round the grown diagrams (their column kept as high as it was), the
+    diagrams' scales tried again (S finer than μ_l, then from the whole
+    series) only where no arrangement fills it; else the one leaving least
+    empty. Where nothing fits, _fallback draws the
     mechanism and the plans smaller still.
     """
     page = page if page is not None else Page.of("A1")
@@ -3165,9 +3189,11 @@ def compose_sheet1(
                 order = _order(sketches, True)
                 best: tuple[float, dict[str, Sketch], dict[str, Rect], Sheet1] | None = None
                 # every arrangement with μ_S from μ_l; then, where none fills the
-                # field, again with S drawn finer than μ_l (_grown_diagrams)
-                trials = itertools.product((False, True), (8.0, 5.0), arrangements)
-                for finer, gap, (tables_width, corner) in trials:
+                # field, again with S drawn finer than μ_l, and again with the
+                # diagrams' scales from the whole series (_grown_diagrams)
+                passes = ((False, False), (True, False), (False, True))
+                trials = itertools.product(passes, (8.0, 5.0), arrangements)
+                for (finer, fill), gap, (tables_width, corner) in trials:
                     try:
                         layout, placed, field = _try_layout(
                             page, sketches, order, gap, True, tables_width, corner, extents
@@ -3212,6 +3238,7 @@ def compose_sheet1(
                             gap,
                             extents,
                             finer,
+                            fill,
                         )
                         if grown is not None:  # the diagrams take the room that is left
                             done, done_drawn = {**done, "diagrams": grown[0]}, grown[2]
