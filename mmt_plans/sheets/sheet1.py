@@ -2018,13 +2018,16 @@ def sketch_diagram(
     refinement: int = 1,
     mu_l: float | None = None,
     mu_l_solution: float | None = None,
+    filling: bool = False,
 ) -> Sketch:
     """One of the S, V, a diagrams with its construction. `s_dense` (m, at equal
     crank steps from position 0) draws S as the smooth curve through the
     positions' ordinates, as a draughtsman draws it with a French curve.
     `mu_l` (the mechanism's drawing on this sheet): μ_S other than it is
     explained under S, by the diagrams' height when μ_l is the calculation's
-    `mu_l_solution` (the one μ_S was chosen from), else by the field."""
+    `mu_l_solution` (the one μ_S was chosen from), else by the field; with
+    `filling` (μ_S chosen to fill the field: _grown_scales), a coarser μ_S by
+    the room it leaves V and a."""
     c = construction
     sk = Sketch(look)
     axes = catalogue(lang).words("diagram_axes")
@@ -2143,6 +2146,8 @@ def sketch_diagram(
             reason = (
                 _words(lang)["mu_S_reason_finer"].format(k=k)
                 if c.mu_S < mu_l
+                else _words(lang)["mu_S_reason_fill"].format(k=k)
+                if filling
                 else _words(lang)["mu_S_reason"].format(k=k)
                 if same
                 else _words(lang)["mu_S_reason_field"].format(
@@ -2559,10 +2564,12 @@ def _diagram_sketch(
     look: Any,
     lang: Language,
     mu_l: float,
+    filling: bool = False,
 ) -> Sketch:
     """The diagram `which` ("s", "v", "a") of `construction`; S beside a
     mechanism drawn at μ_l `mu_l`, its μ_S chosen from the calculation's μ_l
-    where it is the calculation's μ_S, else from `mu_l`."""
+    where it is the calculation's μ_S, else from `mu_l` (with `filling`: to
+    fill the field, sketch_diagram)."""
     calculated = solution.require_diagrams()
     same = abs(construction.mu_S / calculated.construction.mu_S - 1.0) <= 1e-9
     return sketch_diagram(
@@ -2574,6 +2581,7 @@ def _diagram_sketch(
         calculated.refinement,
         mu_l=mu_l if which == "s" else None,
         mu_l_solution=float(solution.mu_l) if same else mu_l,
+        filling=filling,
     )
 
 
@@ -2993,7 +3001,9 @@ def _grown_diagrams(
                     ("a", ("a", L, mu_S, H1, H2)),
                 ):
                     if key not in drawn_parts:  # the rooms try the same axes again
-                        drawn_parts[key] = _diagram_sketch(solution, c, which, look, lang, mu_l)
+                        drawn_parts[key] = _diagram_sketch(
+                            solution, c, which, look, lang, mu_l, fill
+                        )
                     parts.append(drawn_parts[key])
                 grown = _stack(parts, look, _STACK_GAP)
                 ext = extents(grown)

@@ -52,6 +52,11 @@ def test_an_under_filled_field_is_filled_by_the_whole_series(seed, lang, monkeyp
     for key in ("H1", "H2"):
         assert s[key] in sheet1._FILL_POLES_MM, (key, s[key])
     assert lint(view, ["guide-sizes", "no-dev-prose", "letter-height", "label-clear"]) == []
+    # the line under S gives this pass's reason, never "to fit the sheet"
+    words = " ".join(t.content for t in view.texts)
+    assert "fit the sheet" not in words and "вмістилися" not in words
+    if s["mu_S"] > s["mu_l"] * (1 + 1e-9):
+        assert ("S drawn smaller" if lang == "en" else "накреслено меншим") in words
 
 
 def test_a_filled_field_never_reaches_the_whole_series(monkeypatch):
