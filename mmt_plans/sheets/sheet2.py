@@ -125,6 +125,11 @@ Again = Literal["grow", "box"]
 # further out), so the drawing's size is the first order's: chain_25_links's
 # sheet 2 fits at the coarsest scales as with one order
 _RETRY_ORDERS = 6
+# the orders the lever at its textbook scale is lettered in to find where its
+# names crowd (the detail views chosen round them): past the third, an order
+# seldom moves a crowd (eleven links: 0.15 s of the lever's 0.36 s, the same
+# views; with two, gen 212's crowd of one name the third order clears)
+_CROWD_ORDERS = 3
 # where along a force's arrow its name is tried beside the shaft (after round
 # its head), in turn: out to near both ends, where other arrows leave room
 _SHAFT_ALONG = (0.5, 0.35, 0.65, 0.2, 0.8, 0.1)
@@ -1521,6 +1526,7 @@ def sketch_lever(
     *,
     one_per_line: bool = True,
     again: Again | None = None,
+    orders: int | None = None,
 ) -> Sketch:
     """The turned velocity plan to μV, every force at the image of its point
     and its arm about the pole p; `arms` receives (label, h mm) in order.
@@ -1528,10 +1534,12 @@ def sketch_lever(
     its detail view (`sketch_lever_detail`): there the forces at its images,
     their arms and the images' names; the disc is marked by a thin circle and
     its letter. Without `one_per_line`, every arm named on its own: the
-    lever as its detail views are chosen by (`_lever_lettered`). With
+    lever as its detail views are chosen by (`_lever_lettered`), its labels
+    written again in `orders` orders at most (`Labels.write_later`; None:
+    _RETRY_ORDERS). With
     `again`, lettered as on the laid-out sheet (_LEVER_AGAIN)."""
     if not one_per_line:
-        return _lever_view(fa, mu_V, look, lang, arms, details, None, again=again)
+        return _lever_view(fa, mu_V, look, lang, arms, details, None, again=again, orders=orders)
     return _lever_lettered(fa, mu_V, look, lang, arms, details, None, again=again)
 
 
@@ -1653,15 +1661,21 @@ def _view_kept(draw: Callable[..., Sketch]) -> Callable[..., Sketch]:
         merge_arms: bool = False,
         lines: list[int] | None = None,
         again: Again | None = None,
+        orders: int | None = None,
     ) -> Sketch:
-        kw = dict(merge_arms=merge_arms, again=again)
+        orders = _RETRY_ORDERS if orders is None else orders
+        kw = dict(merge_arms=merge_arms, again=again, orders=orders)
         if _VIEWS is None or arms:
             return draw(fa, mu_V, look, lang, arms, details, detail, lines=lines, **kw)
-        key = (id(fa), id(look), lang, mu_V, tuple(details), detail, merge_arms, again)
+        key = (id(fa), id(look), lang, mu_V, tuple(details), detail, merge_arms, again, orders)
         if key not in _VIEWS:
             own: tuple[list[tuple[str, float]], list[int]] = ([], [])
             sketch = draw(fa, mu_V, look, lang, own[0], details, detail, lines=own[1], **kw)
             _VIEWS[key] = (sketch, *own)
+            if not _counts(sketch).far:
+                # lettered in fewer orders with none far: in every order the
+                # same (Labels.write_later writes none after one with none far)
+                _VIEWS.setdefault(key[:-1] + (_RETRY_ORDERS,), (sketch, *own))
         sketch, own_arms, own_lines = _VIEWS[key]
         arms += own_arms
         if lines is not None:
@@ -1684,11 +1698,13 @@ def _lever_view(
     merge_arms: bool = False,
     lines: list[int] | None = None,
     again: Again | None = None,
+    orders: int | None = None,
 ) -> Sketch:
     """The lever with `details` marked (`detail` None), or the detail view
     `detail`; with `merge_arms`, the arms along one line from p named by
     one label (`_one_per_line`); `lines` receives how many labels that saves;
-    with `again`, lettered as on the laid-out sheet (_LEVER_AGAIN)."""
+    with `again`, lettered as on the laid-out sheet (_LEVER_AGAIN); its
+    labels written again in `orders` orders at most (None: _RETRY_ORDERS)."""
     in_detail = detail is not None
     lever = fa.lever
     mech = fa.loads.state.mech
@@ -1814,7 +1830,7 @@ def _lever_view(
             lines.append(len(feet) - len(merged))
         for foot, numbers in merged if merge_arms else feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
-        labels.write_later(retry=_RETRY_ORDERS, grow=again == "grow")
+        labels.write_later(retry=_RETRY_ORDERS if orders is None else orders, grow=again == "grow")
         sk.label_counts = labels.counts()
         ext = sk.extent()
         if detail is not None:
@@ -2223,7 +2239,14 @@ class _Composer:
         if lever_views:
             self.details = lever_views
         else:
-            plain = sketch_lever(fa, self.lever_mu, look, lang, arms, one_per_line=False)
+            choose = details and lever_views is None
+            # where its names crowd, asked of the lever lettered in fewer
+            # orders (_CROWD_ORDERS): where none stands far it is the lever
+            # lettered in all of them (no order after one with none far)
+            orders = min(_CROWD_ORDERS, _RETRY_ORDERS) if choose else _RETRY_ORDERS
+            plain = sketch_lever(
+                fa, self.lever_mu, look, lang, arms, one_per_line=False, orders=orders
+            )
             self.details = (
                 lever_details(
                     fa,
@@ -2231,9 +2254,13 @@ class _Composer:
                     crowded_ends(plain, lang),
                     lever_crowding(fa, self.lever_mu, look, lang),
                 )
-                if details and lever_views is None
+                if choose
                 else ()
             )
+            if not self.details and _counts(plain).far and orders != _RETRY_ORDERS:
+                # the lever drawn on the sheet as it is: lettered in every order
+                arms.clear()
+                plain = sketch_lever(fa, self.lever_mu, look, lang, arms, one_per_line=False)
         self.drawings += [detail_gid(self.details, d) for d in self.details]
         self.drawings += [loaded_detail_gid(mechanism_details, d) for d in mechanism_details]
         if not self.details:  # the lever at its textbook scale is drawn: kept

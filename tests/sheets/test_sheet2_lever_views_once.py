@@ -33,10 +33,22 @@ def _drawn(monkeypatch, kept: bool) -> tuple[RecordingBackend, Counter[tuple]]:
     drawn: Counter[tuple] = Counter()
 
     def counting(
-        fa, mu_V, look, lang, arms, details, detail, *, merge_arms=False, lines=None, again=None
+        fa,
+        mu_V,
+        look,
+        lang,
+        arms,
+        details,
+        detail,
+        *,
+        merge_arms=False,
+        lines=None,
+        again=None,
+        orders=None,
     ):
-        drawn[(mu_V, lang, tuple(details), detail, merge_arms, again, len(arms))] += 1
-        kw = dict(merge_arms=merge_arms, lines=lines, again=again)
+        orders = sheet2_module._RETRY_ORDERS if orders is None else orders
+        drawn[(mu_V, lang, tuple(details), detail, merge_arms, again, orders, len(arms))] += 1
+        kw = dict(merge_arms=merge_arms, lines=lines, again=again, orders=orders)
         return _RAW(fa, mu_V, look, lang, arms, details, detail, **kw)
 
     view = sheet2_module._view_kept(counting) if kept else counting
