@@ -99,6 +99,7 @@ def choose_details(
     tightest: float | None = None,
     radii: Sequence[float] = DETAIL_RADII,
     fewest: int = 1,
+    ratios: Sequence[float] = DETAIL_RATIOS,
 ) -> tuple[Detail, ...]:
     """The detail views a drawing at `mu` needs where the names standing for
     the points `crowded` (mm) found no place near: at most `most` discs
@@ -113,7 +114,8 @@ def choose_details(
     share), the smallest disc of `radii` that holds that share of the most
     any holds: the crowd's core, whose loads and names crowd the rest. A disc
     past the first is taken only where it holds `fewest` of those points at
-    least (a crowd of its own, not a name or two a leader serves)."""
+    least (a crowd of its own, not a name or two a leader serves). `ratios`:
+    the series its ratios are taken from."""
     where = np.array([n.at for n in names], dtype=float).reshape(-1, 2)
     areas = np.array([n.area for n in names])
     arms = np.array([math.inf if n.arm_mm is None else n.arm_mm for n in names])
@@ -148,7 +150,9 @@ def choose_details(
         # the arms in the disc long enough, at the ratio, to be named along
         shortest = float(arms[inside].min()) if inside.any() else math.inf
         apart = spread(points[np.hypot(*(points - c).T) <= r]) if points is not None else math.inf
-        ratio = roomy_ratio(demand, r, shortest, widest=widest, apart=apart, spacing=spacing)
+        ratio = roomy_ratio(
+            demand, r, shortest, ratios=ratios, widest=widest, apart=apart, spacing=spacing
+        )
         out.append(Detail(letter, (float(c[0]) * mu, float(c[1]) * mu), r * mu, ratio))
     return tuple(out)
 

@@ -27,6 +27,7 @@ from ..diagrams import (
 )
 from ..drawing.detail import (
     DETAIL_LETTERS,
+    DETAIL_RATIOS,
     Detail,
     Name,
     choose_details,
@@ -34,6 +35,7 @@ from ..drawing.detail import (
     cut_to_disc,
     heads_outside,
     name_area,
+    spread,
 )
 from ..drawing.labels import (
     FINE_LEADER_DIRS,
@@ -1489,8 +1491,11 @@ def sketch_mechanism_details(
     drawing no better, round the joints' names among them alone
     (`_crowded_joints`: a joint walled in by lines, the crank's pivot in the
     fan of its positions, that no leader reaches without crossing a main
-    line). None where no name crowds so, or where no detail view letters
-    the drawing better."""
+    line). Where a view so chosen leaves names crowded and a knot of pivots
+    nearer than _MECHANISM_APART_MM in it, its discs are chosen again at the
+    enlargements past 10:1 (`_knot_details`), and the next crowd tried too:
+    the views leaving fewest names crowded kept. None where no name crowds
+    so, or where no detail view letters the drawing better."""
     namings = list(crowded(plain, lang))
     crowd = stand_for(namings)
     lettered_badly = len(crowd)
@@ -1504,17 +1509,86 @@ def sketch_mechanism_details(
             # apart: no leader reaches it, however few they are
             yield joints, _MECHANISM_DETAILS
 
+    # (left crowded, the drawing, its views, whether a view's points stand too near)
+    best: tuple[int, Sketch, list[Sketch], bool] | None = None
     for knot, most in crowds():
-        details = mechanism_details(solution, mu_l, knot, letters, most)
-        if not details:
-            continue
-        sk = sketch_mechanism(solution, mu_l, look, lang, details, views=views)
-        drawn = [sketch_mechanism(solution, mu_l, look, lang, details, d, views) for d in details]
-        for view, d in zip(drawn, details):
-            view.detail_of = (d.centre[0] / mu_l, d.centre[1] / mu_l)
-        if sum(len(crowded_names(v, lang)) for v in (sk, *drawn)) < lettered_badly:
-            return sk, drawn
-    return None  # no detail view letters the drawing better
+        chosen = mechanism_details(solution, mu_l, knot, letters, most)
+        variants = [chosen]
+        for details in variants:  # (the chosen's variants appended once it is drawn)
+            if not details:
+                continue
+            sk = sketch_mechanism(solution, mu_l, look, lang, details, views=views)
+            drawn = [
+                sketch_mechanism(solution, mu_l, look, lang, details, d, views) for d in details
+            ]
+            for view, d in zip(drawn, details):
+                view.detail_of = (d.centre[0] / mu_l, d.centre[1] / mu_l)
+            left = sum(len(crowded_names(v, lang)) for v in (sk, *drawn))
+            if left < (lettered_badly if best is None else best[0]):
+                best = (left, sk, drawn, left > 0 and _knotted(solution, mu_l, details))
+            if details is chosen and left:
+                if best is None or best[3]:
+                    variants.append(_knot_details(solution, mu_l, knot, letters, most, chosen))
+                variants.append(
+                    _grown_details(solution, mu_l, knot, letters, most, chosen, sk, lang)
+                )
+        if best is not None and not best[3]:
+            break
+    # (none where no detail view letters the drawing better)
+    return None if best is None else (best[1], best[2])
+
+
+def _grown_details(
+    solution: Solution,
+    mu_l: float,
+    knot: np.ndarray,
+    letters: str,
+    most: int,
+    chosen: Sequence[Detail],
+    sk: Sketch,
+    lang: Language,
+) -> tuple[Detail, ...]:
+    """Where the letter of a disc of `chosen` (`mechanism_details` of the
+    names standing for `knot`) stands far or on something in the drawing
+    `sk` marked with them (its rim walled in: gen 265's crank pivot amid its
+    blocks): the details chosen again on the larger discs only (else none)."""
+    lettered = {n.markup for n in crowded(sk, lang)}
+    walled = [d.radius / mu_l for d in chosen if d.letter in lettered]
+    radii = [r for r in _MECHANISM_RADII if walled and r > min(walled) + 1e-9]
+    if not radii:
+        return ()
+    return mechanism_details(solution, mu_l, knot, letters, most, radii=radii)
+
+
+def _knotted(solution: Solution, mu_l: float, details: Sequence[Detail]) -> bool:
+    """Whether some of `details` (the mechanism's at `mu_l`) leaves the points
+    in its disc nearer than _MECHANISM_APART_MM in its view (`spread`)."""
+    _, points = _mechanism_names(solution, mu_l)
+    for d in details:
+        c, r = np.asarray(d.centre, float) / mu_l, d.radius / mu_l
+        if spread(points[np.hypot(*(points - c).T) <= r]) * d.ratio < _MECHANISM_APART_MM:
+            return True
+    return False
+
+
+def _knot_details(
+    solution: Solution,
+    mu_l: float,
+    crowded: np.ndarray,
+    letters: str,
+    most: int,
+    chosen: Sequence[Detail],
+) -> tuple[Detail, ...]:
+    """Where `chosen` (`mechanism_details` of the names standing for
+    `crowded`) leaves a knot of pivots nearer than _MECHANISM_APART_MM in its
+    view: the details chosen again on smaller discs at GOST 2.302's
+    enlargements past 10:1 (_KNOT_RADII, _KNOT_RATIOS; else none)."""
+    if not chosen or not _knotted(solution, mu_l, chosen):
+        return ()
+    again = mechanism_details(
+        solution, mu_l, crowded, letters, most, radii=_KNOT_RADII, ratios=_KNOT_RATIOS
+    )
+    return () if again == tuple(chosen) else again
 
 
 def _crowded_joints(solution: Solution, namings: Sequence[Naming]) -> np.ndarray:
@@ -1530,6 +1604,11 @@ _MECHANISM_DETAIL_MM = 45.0  # the largest radius of its detail's disc, mm
 _MECHANISM_APART_MM = 7.0  # its detail sets the points this far apart
 _MECHANISM_RADII = (4.0, 6.0, 8.0, 12.0, 16.0)  # the radii of its discs tried, mm
 _MECHANISM_CORE = 0.7  # its disc: the smallest that holds this share of the most any holds
+# a knot of pivots that 10:1 leaves nearer than _MECHANISM_APART_MM (gen 70's
+# P, W, G: 0.4 mm apart at 1:100, their names walled in by the links' main
+# lines at 10:1): a disc of 2 mm too, at GOST 2.302's 20:1 and 40:1
+_KNOT_RADII = (2.0, *_MECHANISM_RADII)
+_KNOT_RATIOS = (*DETAIL_RATIOS, 20.0, 40.0)
 
 
 def _mechanism_names(solution: Solution, mu_l: float) -> tuple[list[Name], np.ndarray]:
@@ -1564,7 +1643,14 @@ def _mechanism_names(solution: Solution, mu_l: float) -> tuple[list[Name], np.nd
 
 
 def mechanism_details(
-    solution: Solution, mu_l: float, crowded: np.ndarray, letters: str, most: int = 1
+    solution: Solution,
+    mu_l: float,
+    crowded: np.ndarray,
+    letters: str,
+    most: int = 1,
+    *,
+    radii: Sequence[float] = _MECHANISM_RADII,
+    ratios: Sequence[float] = DETAIL_RATIOS,
 ) -> tuple[Detail, ...]:
     """The detail views the mechanism at `mu_l` needs where the names standing
     for `crowded` (mm, `crowded_names` of the mechanism drawn without details)
@@ -1573,7 +1659,7 @@ def mechanism_details(
     most of the crowd left, drawn at the ratio of the series that sets its
     points _MECHANISM_APART_MM apart and leaves its names room, lettered by
     `letters` (a disc past the first may hold one name: a walled-in joint's,
-    which no leader reaches).
+    which no leader reaches); its discs' radii of `radii`, its ratios of `ratios`.
     Each crowded name stands for the point of the mechanism nearest what it
     names (an ω or ε for a joint of its link, beside which its arc is drawn):
     the disc goes round the knot of joints, not round the arcs' heads."""
@@ -1593,8 +1679,9 @@ def mechanism_details(
         spacing=_MECHANISM_APART_MM,
         widest=_MECHANISM_DETAIL_MM,
         tightest=_MECHANISM_CORE,
-        radii=_MECHANISM_RADII,
+        radii=radii,
         fewest=1,
+        ratios=ratios,
     )
 
 
