@@ -2504,7 +2504,7 @@ class _Composer:
             again = was.grows or lever or name.startswith("force-mechanism")
             hows: tuple[Again, ...] = ("grow", "box") if lever else ("grow",)
             chosen: tuple[Sketch, Rect] | None = None
-            for how in hows if was.far and again else ():
+            for how in hows if was.far and again and not lever else ():
                 grown = self.regrown(name, scales, how)
                 if grown is None:
                     break
@@ -2515,6 +2515,8 @@ class _Composer:
                 if moved is not None:
                     chosen = (grown, moved)
                     break
+            if lever and was.far:
+                chosen = self._lever_again(name, sketches[name], layout, placed[name], scales)
             if chosen is None:
                 continue
             sketches[name], placed[name] = chosen
@@ -2524,6 +2526,56 @@ class _Composer:
                 if e.name != "title-block":
                     layout.register(e.name, placed.get(e.name, e.footprint), e.kind)
         return layout, placed
+
+    def _lever_again(
+        self, name: str, sketch: Sketch, layout: SheetLayout, rect: Rect, scales: dict[str, float]
+    ) -> tuple[Sketch, Rect] | None:
+        """The lever's view `name` (`sketch`, placed at `rect`) lettered
+        again (`regrown`: in the orders that letter it best whatever box that
+        takes, then in those that keep its box), each with every arm named on
+        its own and with the arms along one line from p named by one label
+        (`_one_per_line`): of those with fewer names far than `sketch`, none
+        more on something, that find room on the sheet, the one leaving
+        fewest names crowded (of as many, the first), where it goes. A view
+        lettered so is weighed by the room the laid-out sheet has for it, not
+        by its box (gen 163 uk, view B: h_{13,15,17,18,19,20,21} along p's
+        horizontal, 9 mm wider than its arms named each on its own, in the
+        room right of it: names far 4 -> 3)."""
+        was = _counts(sketch)
+        best: tuple[int, Sketch, Rect] | None = None
+        for how in ("grow", "box"):
+            for grown in self._lever_letterings(name, scales, how):
+                now = _counts(grown)
+                if now.far >= was.far or now.unsettled > was.unsettled:
+                    continue
+                crowd = len(list(crowded(grown, self.lang)))
+                if best is not None and crowd >= best[0]:
+                    continue
+                moved = self._room_for(name, sketch, grown, layout, rect)
+                if moved is not None:
+                    best = (crowd, grown, moved)
+        return None if best is None else best[1:]
+
+    def _lever_letterings(self, name: str, scales: dict[str, float], how: Again) -> list[Sketch]:
+        """The lever's view `name` lettered again (`regrown`) as `sketch_lever`
+        picks, then as it does not: every arm named on its own, or the arms
+        along one line from p by one label (where that saves a label)."""
+        picked = self.regrown(name, scales, how)
+        if picked is None:
+            return []
+        mu_V = scales["mu_V"]
+        detail = next((v for v in self.details if name == detail_gid(self.details, v)), None)
+        details = self.details if detail is None else (detail,)
+        lines: list[int] = []
+        own = _lever_view(
+            self.fa, mu_V, self.look, self.lang, [], details, detail, lines=lines, again=how
+        )
+        if not lines[0]:
+            return [picked]
+        merged = _lever_view(
+            self.fa, mu_V, self.look, self.lang, [], details, detail, merge_arms=True, again=how
+        )
+        return [picked, merged if picked is own else own]
 
     def _room_for(
         self, name: str, sketch: Sketch, grown: Sketch, layout: SheetLayout, rect: Rect
