@@ -573,9 +573,12 @@ class _ArcPlacer:
             for tip, markup, room in zip(tips, markups, picked)
             if room is not None
         ]
-        near = [q for q in self.queued if float(np.hypot(*(q[0] - centre))) <= _BEFORE_MM]
-        roomed = [q for q in near if q[3] is not None] + mine
-        for tip, markup, towards, room in roomed + [q for q in near if q[3] is None]:
+        near = [
+            q
+            for q in self.queued
+            if q[3] is not None and float(np.hypot(*(q[0] - centre))) <= _BEFORE_MM
+        ]
+        for tip, markup, towards, room in near + mine:
             labels.place(tip, markup, towards=towards, first=room)
 
     def _beside(
