@@ -205,8 +205,14 @@ _ROOM_TRIES = 16
 _ROOM_X, _ROOM_DOWN, _ROOM_UP = 3.7, 3.45, 2.4
 # where a link's best arcs leave a label no room near its arrowhead: how many
 # of the arcs tried, cheapest first, are drawn for a trial of whether that
-# label finds a place all the same (on the fine grid, or led past the lines)
-_LED_TRIES = 6
+# label finds a place all the same (on the fine grid, or led past the lines):
+# all of them, mostly (up to 45 are asked in a link's tries; of a link round
+# nearly one place at both plan positions, the 6 cheapest may all fail where
+# the 9th or the 31st does)
+_LED_TRIES = 48
+# how far (mm) from a link's arcs the ω/ε labels written before its own may
+# stand and take their places: a leader reaches 36 mm out (FINE_LEADER_RINGS)
+_BEFORE_MM = 50.0
 # a link's arcs as `_ArcPlacer.beside` tries them: their cost, centre, start
 # angle (deg), the labels' rooms (None: none near), mm larger and span (deg)
 _Arcs = tuple[float, np.ndarray, float, list["np.ndarray | None"], float, float]
@@ -314,6 +320,10 @@ class _ArcPlacer:
         # arc is not drawn over a slider); `lacking`: some found no room
         self.far = far
         self.lacking = False
+        # the ω/ε labels of the links placed so far, as the drawing will write
+        # them (tip, label, towards, the room kept for it): `_led`'s trial
+        # writes those near first, as the final lettering does
+        self.queued: list[tuple[np.ndarray, str, np.ndarray, np.ndarray | None]] = []
         self._seen = 0
         self._shapes: list[Any] = []
         self._weights: list[float] = []
@@ -504,7 +514,9 @@ class _ArcPlacer:
         `beside`), the cheapest _LED_TRIES drawn in turn for a trial, the
         first where every such label finds a place all the same (on the
         placer's fine grid near it, or led to it past the lines round it:
-        `Labels.finds_place`); `best` where none does (its label then stands
+        `Labels.finds_place`) once the labels the drawing writes before it
+        stand written (`_written_before`: else it may find only a place
+        another takes first); `best` where none does (its label then stands
         far). Arcs other than `best` keep their labels' places (box and
         leader) free of the arcs drawn after them."""
         # (a place out of the drawing's box would grow it: a drawing is fitted
@@ -529,16 +541,48 @@ class _ArcPlacer:
                 ]
                 # (arcs other than the best, drawn anyway, do not grow it either)
                 fits = arcs is best or self.sk.extent() == ext
+                if fits:
+                    self._written_before(labels, centre, tips, markups, picked)
                 for tip, markup, room in zip(tips, markups, picked):
                     if fits and room is None:
                         found = labels.finds_place(tip, markup, towards=tip - centre)
                         fits = found is not None and all(inside.covers(f) for f in found)
                         kept += found or []
+                        if fits:  # (written: the link's next label keeps off it)
+                            labels.place(tip, markup, towards=tip - centre)
             if fits:
                 if arcs is not best:
                     self._add(kept, "room")
                 return arcs
         return best
+
+    def _written_before(
+        self,
+        labels: Labels,
+        centre: np.ndarray,
+        tips: Sequence[np.ndarray],
+        markups: Sequence[str],
+        picked: Sequence[np.ndarray | None],
+    ) -> None:
+        """For `_led`'s trial of a link's arcs (their arrowheads `tips`):
+        written as the drawing's lettering will write them before the link's
+        labels without room, the labels with a room kept (the `queued` of
+        the links before within _BEFORE_MM of the arcs' centre: no further
+        one reaches a place near them; then the link's own). (Those without
+        room, written after them, are left out: each a leader search, they
+        cost more than half the trials.)"""
+        mine = [
+            (tip, markup, room - tip, room)
+            for tip, markup, room in zip(tips, markups, picked)
+            if room is not None
+        ]
+        near = [
+            q
+            for q in self.queued
+            if q[3] is not None and float(np.hypot(*(q[0] - centre))) <= _BEFORE_MM
+        ]
+        for tip, markup, towards, room in near + mine:
+            labels.place(tip, markup, towards=towards, first=room)
 
     def _beside(
         self,
@@ -1350,7 +1394,7 @@ def _lettered_mechanism(
             ]
         )
         # (tip, label, towards, the room kept for it)
-        queued: list[tuple[np.ndarray, str, np.ndarray, np.ndarray | None]] = []
+        queued = arcs.queued
         for i in arcs_at:
             k = solution.entry(i)
             for lid, link in mech.links.items():
