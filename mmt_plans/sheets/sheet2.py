@@ -697,10 +697,32 @@ def _loaded_view(
         past += max(0.0, box.y - ext.y) + max(0.0, ext.top - box.top)
         return len(list(crowded(sk, lang))), round(past, 3)
 
+    # the points a longer arrow's head must not end on (a pin, a centre of
+    # mass drawn as a dot would hide it: eleven links' G9 in a block's S)
+    state = fa.loads.state
+    mu = mu_l / detail.ratio if detail is not None else mu_l
+    points = [
+        _xy(_c(state.point(next(iter(o)), n))) / mu for n, o in state.mech.point_owners.items()
+    ]
+    points += [_xy(_c(ll.centre_of_mass)) / mu for ll in fa.loads.links.values() if ll.mass]
+    dots = np.array(points, dtype=float).reshape(-1, 2)
+
+    def clear(sk: Sketch) -> bool:
+        heads = [
+            c.naming.end
+            for c in sk.calls
+            if c.naming is not None and c.naming.kind == "arrow" and c.naming.markup in walled
+        ]
+        return all(
+            not len(dots) or float(np.min(np.hypot(*(dots - head).T))) > _HEAD_CLEAR_MM
+            for head in heads
+            if head is not None
+        )
+
     best = weighed(sk)
     for by in _LONGER_MM:
         longer = drawn(dict.fromkeys(walled, by), True)
-        if weighed(longer) < best:
+        if clear(longer) and weighed(longer) < best:
             sk, best = longer, weighed(longer)
     return sk
 
@@ -761,6 +783,7 @@ def _loaded_drawing(
 # in turn, where its name found no place: drawn to direction only, it
 # may reach out of the knot its head ends in
 _LONGER_MM = (8.0, 16.0)
+_HEAD_CLEAR_MM = 2.5  # and its head kept this far from every point drawn (mm)
 _LOADED_DETAILS = 2  # the most detail views of the loaded mechanism
 # a second detail view only for a crowd of its own: this many names far or on
 # something that the first leaves at least (gen 5 uk: six round its crank; gen
