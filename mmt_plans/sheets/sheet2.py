@@ -301,8 +301,12 @@ class _Drawing:
         details: Sequence[Detail] = (),
         detail: Detail | None = None,
         labelling: dict[str, Any] = _LABELLING,
+        longer: Mapping[str, float] | None = None,
     ) -> None:
         self.sk = Sketch(look)
+        # the forces whose arrows are drawn longer (mm, by their names'
+        # markup): a name walled in by its head (`_loaded_view`)
+        self.longer = longer or {}
         # `details` (their discs in m): what stands in a disc is drawn but
         # lettered only in its detail view; with `detail`, this drawing is that
         # view (its lines cut at the disc's edge), else the disc is marked
@@ -376,7 +380,7 @@ class _Drawing:
         if size <= 1e-9 * max(largest, 1e-300) or not self.here(at):
             return
         u = np.asarray(F, float) / size
-        end = at + _arrow_length(size, largest) * u
+        end = at + (_arrow_length(size, largest) + self.longer.get(force_markup(label), 0.0)) * u
         # forces along one line of action (F_PR, F_in and G on a slider) side by side
         for _ in range(6):
             if not any(_coincident(at, end, s, e) for s, e in self._arrows):
@@ -659,15 +663,73 @@ def _loaded_view(
     view `detail`: ω1's arc turned where it leaves room for the names inside its
     circle too (a short crank's S1 and pin, gen 141), kept so where that
     letters the drawing better than the arc turned for ω1 and the pivot's name
-    alone (gen 165's detail: S3, ω1 and h5 then went far)."""
-    sk, turned = _loaded_drawing(fa, mu_l, look, lang, compact, grow, details, detail, True)
-    if not turned:
+    alone (gen 165's detail: S3, ω1 and h5 then went far). With `grow`
+    (lettered again on the laid-out sheet), where names of forces crowd on
+    the drawing as the sheet was laid out with it (the sheet linter finds
+    them far or on something), those forces' arrows drawn longer too
+    (_LONGER_MM, in turn): kept where fewer names crowd, or as few and the
+    drawing reaches less past the box it was laid out with (gen 97 uk: 'G8'
+    10.4 mm off its arrow, its head on a guide; lettered again, the drawing
+    grew 9 mm taller and found no room; its arrow 8 mm longer, 'G8' is
+    written by its head within the box)."""
+
+    def drawn(longer: Mapping[str, float], grow: bool) -> Sketch:
+        sk, turned = _loaded_drawing(
+            fa, mu_l, look, lang, compact, grow, details, detail, True, longer
+        )
+        if not turned:
+            return sk
+        plain, _ = _loaded_drawing(
+            fa, mu_l, look, lang, compact, grow, details, detail, False, longer
+        )
+        assert sk.label_counts is not None and plain.label_counts is not None
+        counts, plain_counts = sk.label_counts, plain.label_counts
+        better = (counts.unsettled, counts.far) < (plain_counts.unsettled, plain_counts.far)
+        return sk if better else plain
+
+    sk = drawn({}, grow)
+    if not grow:
         return sk
-    plain, _ = _loaded_drawing(fa, mu_l, look, lang, compact, grow, details, detail, False)
-    assert sk.label_counts is not None and plain.label_counts is not None
-    counts, plain_counts = sk.label_counts, plain.label_counts
-    better = (counts.unsettled, counts.far) < (plain_counts.unsettled, plain_counts.far)
-    return sk if better else plain
+    laid_out = drawn({}, False)
+    walled = {n.markup for n in crowded(laid_out, lang) if n.kind == "arrow"}
+    if not walled:
+        return sk
+    box = laid_out.extent()
+
+    def weighed(sk: Sketch) -> tuple[int, float]:
+        ext = sk.extent()
+        past = max(0.0, box.x - ext.x) + max(0.0, ext.right - box.right)
+        past += max(0.0, box.y - ext.y) + max(0.0, ext.top - box.top)
+        return len(list(crowded(sk, lang))), round(past, 3)
+
+    # the points a longer arrow's head must not end on (a pin, a centre of
+    # mass drawn as a dot would hide it: eleven links' G9 in a block's S)
+    state = fa.loads.state
+    mu = mu_l / detail.ratio if detail is not None else mu_l
+    points = [
+        _xy(_c(state.point(next(iter(o)), n))) / mu for n, o in state.mech.point_owners.items()
+    ]
+    points += [_xy(_c(ll.centre_of_mass)) / mu for ll in fa.loads.links.values() if ll.mass]
+    dots = np.array(points, dtype=float).reshape(-1, 2)
+
+    def clear(sk: Sketch) -> bool:
+        heads = [
+            c.naming.end
+            for c in sk.calls
+            if c.naming is not None and c.naming.kind == "arrow" and c.naming.markup in walled
+        ]
+        return all(
+            not len(dots) or float(np.min(np.hypot(*(dots - head).T))) > _HEAD_CLEAR_MM
+            for head in heads
+            if head is not None
+        )
+
+    best = weighed(sk)
+    for by in _LONGER_MM:
+        longer = drawn(dict.fromkeys(walled, by), True)
+        if clear(longer) and weighed(longer) < best:
+            sk, best = longer, weighed(longer)
+    return sk
 
 
 def _loaded_drawing(
@@ -680,9 +742,11 @@ def _loaded_drawing(
     details: Sequence[Detail],
     detail: Detail | None,
     enclosed: bool,
+    longer: Mapping[str, float],
 ) -> tuple[Sketch, bool]:
     """`_loaded_view`'s drawing, ω1's arc turned with `enclosed` as
-    _Drawing.moment's; and whether `enclosed` turned it elsewhere."""
+    _Drawing.moment's, the arrows of `longer` drawn longer (_Drawing's);
+    and whether `enclosed` turned it elsewhere."""
     state = fa.loads.state
     mech = state.mech
     mu = mu_l / detail.ratio if detail is not None else mu_l
@@ -696,6 +760,7 @@ def _loaded_drawing(
         details=details,
         detail=detail,
         labelling=_LOADED_AGAIN if grow else _LABELLING,
+        longer=longer,
     )
     gid = loaded_detail_gid(details, detail) if detail is not None else "force-mechanism"
     with d.sk.group(gid, "mechanism"):
@@ -719,6 +784,11 @@ def _loaded_drawing(
     return sk, d.turned_for_enclosed
 
 
+# how much longer (mm) a force's arrow on the loaded mechanism is tried,
+# in turn, where its name found no place: drawn to direction only, it
+# may reach out of the knot its head ends in
+_LONGER_MM = (8.0, 16.0)
+_HEAD_CLEAR_MM = 2.5  # and its head kept this far from every point drawn (mm)
 _LOADED_DETAILS = 2  # the most detail views of the loaded mechanism
 # a second detail view only for a crowd of its own: this many names far or on
 # something that the first leaves at least (gen 5 uk: six round its crank; gen
