@@ -114,17 +114,26 @@ def _shot(driver, name):
 def _click_to_next_page(driver, element, timeout=30):
     """Click `element` and wait until the page it leads to has replaced this
     one (a click returns before the next page is there, and the index and
-    the variant page both hold the student form)."""
-    from selenium.webdriver.common.by import By
-    from selenium.webdriver.support import expected_conditions
+    the variant page both hold the student form): the old page's window
+    carries a mark the new one has not."""
+    from selenium.common.exceptions import WebDriverException
     from selenium.webdriver.support.ui import WebDriverWait
 
-    page = driver.find_element(By.TAG_NAME, "html")
+    driver.execute_script("window.mmtOldPage = true")
     element.click()
-    WebDriverWait(driver, timeout).until(expected_conditions.staleness_of(page))
-    WebDriverWait(driver, timeout).until(
-        lambda d: d.execute_script("return document.readyState") == "complete"
-    )
+
+    def arrived(d):
+        # While the old page is torn down, chromedriver may answer with
+        # any WebDriverException (not only a stale element: "Node with
+        # given id does not belong to the document"); that is "not yet".
+        try:
+            return d.execute_script(
+                "return window.mmtOldPage === undefined && document.readyState === 'complete'"
+            )
+        except WebDriverException:
+            return False
+
+    WebDriverWait(driver, timeout).until(arrived)
 
 
 def test_a_student_checks_values_in_a_real_browser(browser, tmp_path):
