@@ -523,6 +523,8 @@ class _ArcPlacer:
         # on its sheet by its box)
         ext = self.sk.extent()
         inside = shapely.box(ext.left, ext.bottom, ext.right, ext.top)
+        # (each trial measures only the arcs it draws against what stood before)
+        drawn, bounds = len(self.sk.calls), self.sk.bounds()
         for arcs in sorted(tried, key=lambda a: a[0])[:_LED_TRIES]:
             _, centre, start, picked, wider, span = arcs
             kept: list[Any] = []  # the places its labels find
@@ -540,7 +542,7 @@ class _ArcPlacer:
                     for (radius, sense), line in zip(spins, lines)
                 ]
                 # (arcs other than the best, drawn anyway, do not grow it either)
-                fits = arcs is best or self.sk.extent() == ext
+                fits = arcs is best or self.sk.extent_since(bounds, drawn) == ext
                 if fits:
                     self._written_before(labels, centre, tips, markups, picked)
                 for tip, markup, room in zip(tips, markups, picked):
