@@ -7,6 +7,7 @@ so that the sheets stay byte-identical."""
 from __future__ import annotations
 
 import numpy as np
+import shapely
 
 from mmt_plans.drawing.labels import Labels, _ObstacleIndex
 from mmt_plans.drawing.sketch import Sketch
@@ -84,3 +85,29 @@ def test_a_trial_symbol_measured_alone_gives_the_extent_measured_whole() -> None
         assert sk.extent() == whole_before
     empty = Sketch(RecordingBackend().look)
     assert empty.extent_since(None, 0) == empty.extent()
+
+
+def test_arcs_near_what_is_drawn_are_the_trees_own_pairs() -> None:
+    # _ArcPlacer._near_arcs leaves the segments wholly inside or beyond an
+    # arc unasked: the pairs are those of the tree's "dwithin" query, every
+    # radius and sweep of a link's ω/ε arcs, round a crowd and inside it
+    from mmt_plans.sheets.sheet1 import _ArcPlacer
+
+    labels, rng = _crowd(4)
+    placer = _ArcPlacer(labels.sketch)
+    for radius, sweep in ((6.0, 150.0), (9.0, 100.0), (14.0, 120.0), (21.0, 70.0)):
+        centres = rng.uniform(-5.0, 65.0, size=(80, 2))
+        starts = rng.uniform(0.0, 360.0, size=80)
+        ang = np.radians(starts[:, None] + np.linspace(0.0, sweep, 24)[None, :])
+        xy = np.stack(
+            [
+                centres[:, :1] + radius * np.cos(ang),
+                centres[:, 1:] + radius * np.sin(ang),
+            ],
+            -1,
+        )
+        lines = shapely.linestrings(xy)
+        got = placer._near_arcs(lines, centres, radius, sweep, 0.6)
+        want = placer._near_all(lines, 0.6)
+        assert np.array_equal(got[0], want[0]) and np.array_equal(got[1], want[1])
+        assert want[0].size and len(set(want[0].tolist())) < 80  # (some near, some not)
