@@ -127,6 +127,9 @@ _FOOT_CLEAR = 0.15
 # what touches a leader's foot lies within 0.05 mm of it: only what has its box
 # this near the foot (rounding kept) is measured
 _AT_FOOT = 0.05 + 1e-9
+# how many obstacle indexes a placer keeps (`_index`): the one before a
+# trial, and those of the trials nested in it
+_INDEXES_KEPT = 4
 # a distance measured in numpy is taken as shapely's where it is this far (mm)
 # from the one it is compared with: nearer, shapely is asked (both are exact
 # to far less: the same answer)
@@ -263,6 +266,13 @@ class Labels:
         self._leaders: set[int] = set()  # which obstacles are leaders (never crossed)
         self._outlines: list[BaseGeometry] = []  # filled polygons drawn (blocks): see `enclosing`
         self._tree: _ObstacleIndex | None = None
+        # each obstacle's serial (never given twice): the obstacles up to one
+        # are the same shapes while it stands at the same place in the list
+        # (the lists only grow at the end or are cut back), so an index built
+        # of them serves again when a trial is undone (`_index`)
+        self._serials: list[int] = []
+        self._next_serial = 0
+        self._indexes: dict[tuple[int, int], tuple[_ObstacleIndex, np.ndarray]] = {}
         self._grown: BaseGeometry | None = None
         self._covered: dict[
             bytes, float
@@ -286,6 +296,8 @@ class Labels:
         self._obstacles.append(shape)
         self._clearance.append(clearance)
         self._heavy.append(heavy)
+        self._serials.append(self._next_serial)
+        self._next_serial += 1
         self._tree = None
         self._grown = None
 
@@ -975,6 +987,8 @@ class Labels:
         self._obstacles.extend(obstacles)
         self._clearance.extend(clearance)
         self._heavy.extend(heavy)
+        self._serials.extend(range(self._next_serial, self._next_serial + len(obstacles)))
+        self._next_serial += len(obstacles)
         self._outlines.extend(outlines)
 
     def _restore(self, state: tuple[Any, ...]) -> None:
@@ -984,6 +998,7 @@ class Labels:
         del self.boxes[boxes:], self._texts[boxes:]
         self._boxes_changed()
         del self._obstacles[obstacles:], self._clearance[obstacles:], self._heavy[obstacles:]
+        del self._serials[obstacles:]
         del self._outlines[outlines:]
         self._counts_back(leaders, unsettled, far)
 
@@ -1311,10 +1326,21 @@ class Labels:
         return self._index().boxes_clear(x0, y0, x1, y1)
 
     def _index(self) -> _ObstacleIndex:
-        """The obstacles as segments and solids in a tree (built again after a change)."""
+        """The obstacles as segments and solids in a tree (built again after a
+        change; the last few built kept: one built before a trial serves again
+        once the trial is undone, the same obstacles by their serials)."""
         if self._tree is None:
-            self._tree = _ObstacleIndex(self._obstacles, self._clearance, self._heavy)
-            self._reach = np.array(self._clearance)
+            key = (len(self._obstacles), self._serials[-1] if self._serials else -1)
+            built = self._indexes.pop(key, None)  # (kept again as the newest)
+            if built is None:
+                built = (
+                    _ObstacleIndex(self._obstacles, self._clearance, self._heavy),
+                    np.array(self._clearance),
+                )
+            self._indexes[key] = built
+            while len(self._indexes) > _INDEXES_KEPT:
+                del self._indexes[next(iter(self._indexes))]
+            self._tree, self._reach = built
         return cast(_ObstacleIndex, self._tree)
 
     def _label_cost(

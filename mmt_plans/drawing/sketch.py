@@ -45,8 +45,26 @@ class Sketch(RecordingBackend):
         self._bounds[id(c)] = (c, bounds)  # the call is kept, so its id stays its own
         return bounds
 
+    def bounds(self, start: int = 0) -> tuple[float, float, float, float] | None:
+        """The bounds (x0, y0, x1, y1, no PAD) of the calls from `start` on;
+        None: none of them draws anything."""
+        found = [b for b in map(self._call_bounds, self.calls[start:]) if b is not None]
+        if not found:
+            return None
+        x0 = min(b[0] for b in found)
+        y0 = min(b[1] for b in found)
+        x1 = max(b[2] for b in found)
+        y1 = max(b[3] for b in found)
+        return x0, y0, x1, y1
+
     def extent(self) -> Rect:
-        found = [b for b in map(self._call_bounds, self.calls) if b is not None]
+        return self.extent_since(None, 0)
+
+    def extent_since(self, before: tuple[float, float, float, float] | None, start: int) -> Rect:
+        """`extent` where the calls before `start` are known to have the
+        `bounds` `before` (and are unchanged since): only the calls drawn
+        after them measured (a trial's symbol, drawn and undone many times)."""
+        found = [b for b in (before, self.bounds(start)) if b is not None]
         if not found:
             return Rect(0.0, 0.0, 1.0, 1.0)
         x0 = min(b[0] for b in found)

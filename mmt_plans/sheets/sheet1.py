@@ -44,6 +44,7 @@ from ..drawing.labels import (
     NEAR_MM,
     LabelCounts,
     Labels,
+    _point_segment,
     arc_line,
     drawn_shapes,
     segments_meet_boxes,
@@ -210,6 +211,9 @@ _ROOM_X, _ROOM_DOWN, _ROOM_UP = 3.7, 3.45, 2.4
 # nearly one place at both plan positions, the 6 cheapest may all fail where
 # the 9th or the 31st does)
 _LED_TRIES = 48
+# a segment farther than a query's distance by this much (mm) is apart from an
+# arc however the distance is rounded (`_ArcPlacer._near_arcs`)
+_APART_MARGIN = 1e-6
 # how far (mm) from a link's arcs the ω/ε labels written before its own may
 # stand and take their places: a leader reaches 36 mm out (FINE_LEADER_RINGS)
 _BEFORE_MM = 50.0
@@ -381,10 +385,49 @@ class _ArcPlacer:
             pairs = self._touching(geoms)
         if pairs.ndim == 1:
             return unique_ints(self._owner[pairs])
+        return self._owned(pairs)
+
+    def _owned(self, pairs: np.ndarray) -> np.ndarray:
+        """(query, part) pairs as (query, drawn shape) pairs, each once, sorted."""
         if pairs.shape[1] == 0:
             return pairs
         keyed = unique_ints(pairs[0] * len(self._shapes) + self._owner[pairs[1]])
         return np.stack([keyed // len(self._shapes), keyed % len(self._shapes)])
+
+    def _near_arcs(
+        self, lines: np.ndarray, centres: np.ndarray, radius: float, sweep: float, distance: float
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """`_near_all(lines, distance)` of arcs drawn as polylines of 24 points
+        `radius` mm from their `centres`, spanning `sweep` deg: the same pairs,
+        found cheaper. The tree's boxes near each arc's box first; of those a
+        segment that lies wholly inside the circle its chords keep out of, or
+        wholly beyond the arc's radius, by more than `distance` (and a margin
+        for rounding far above it) is left without asking; the rest asked as
+        the tree's query asks them (the arc prepared, within `distance`)."""
+        if not self._sync() or len(lines) == 0:
+            return np.zeros(0, dtype=int), np.zeros(0, dtype=int)
+        reach = distance + _APART_MARGIN
+        b = shapely.bounds(lines)
+        grown = shapely.box(b[:, 0] - reach, b[:, 1] - reach, b[:, 2] + reach, b[:, 3] + reach)
+        qi, pj = np.asarray(self._tree.query(grown)).reshape(2, -1)
+        sg = self._segs[pj]
+        seg = np.flatnonzero(~np.isnan(sg[:, 0]))
+        c, s = centres[qi[seg]], sg[seg]
+        farthest = np.maximum(
+            np.hypot(s[:, 0] - c[:, 0], s[:, 1] - c[:, 1]),
+            np.hypot(s[:, 2] - c[:, 0], s[:, 3] - c[:, 1]),
+        )
+        nearest = _point_segment(c[:, 0], c[:, 1], s)
+        # (a chord of the polyline comes no nearer its centre than this)
+        inner = radius * math.cos(math.radians(sweep / 23.0 / 2.0))
+        apart = (farthest < inner - reach) | (nearest > radius + reach)
+        keep = np.ones(len(qi), dtype=bool)
+        keep[seg[apart]] = False
+        qi, pj = qi[keep], pj[keep]
+        shapely.prepare(lines)
+        hit = np.asarray(shapely.dwithin(lines[qi], self._parts[pj], distance), dtype=bool)
+        pairs = self._owned(np.stack([qi[hit], pj[hit]]))
+        return pairs[0], pairs[1]
 
     def _touching(self, boxes: np.ndarray) -> np.ndarray:
         """(box, part) pairs of axis-parallel `boxes` and the drawn parts they
@@ -523,6 +566,8 @@ class _ArcPlacer:
         # on its sheet by its box)
         ext = self.sk.extent()
         inside = shapely.box(ext.left, ext.bottom, ext.right, ext.top)
+        # (each trial measures only the arcs it draws against what stood before)
+        drawn, bounds = len(self.sk.calls), self.sk.bounds()
         for arcs in sorted(tried, key=lambda a: a[0])[:_LED_TRIES]:
             _, centre, start, picked, wider, span = arcs
             kept: list[Any] = []  # the places its labels find
@@ -540,7 +585,7 @@ class _ArcPlacer:
                     for (radius, sense), line in zip(spins, lines)
                 ]
                 # (arcs other than the best, drawn anyway, do not grow it either)
-                fits = arcs is best or self.sk.extent() == ext
+                fits = arcs is best or self.sk.extent_since(bounds, drawn) == ext
                 if fits:
                     self._written_before(labels, centre, tips, markups, picked)
                 for tip, markup, room in zip(tips, markups, picked):
@@ -645,7 +690,7 @@ class _ArcPlacer:
             sweep = (span - 2.0 * inset) % 360.0 or 360.0
             ang = np.radians((st + inset)[:, None] + np.linspace(0.0, sweep, 24)[None, :])
             xy = np.stack([cs[:, :1] + radius * np.cos(ang), cs[:, 1:] + radius * np.sin(ang)], -1)
-            i, j = self._near_all(shapely.linestrings(xy), 0.6)
+            i, j = self._near_arcs(shapely.linestrings(xy), cs, radius, sweep, 0.6)
             if i.size:
                 score += np.bincount(i, weights=self._w[j], minlength=m)
                 if wider in _FAR_WIDER:  # an arc that large never over a name written
