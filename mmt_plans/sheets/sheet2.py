@@ -621,6 +621,7 @@ def sketch_loaded_mechanism(
     compact: bool = False,
     grow: bool = False,
     details: Sequence[Detail] = (),
+    laid_out: Sketch | None = None,
 ) -> Sketch:
     """The mechanism with every load, F_bal and ω1 at `mu_l`; on a compact sheet
     (`_Composer`, many groups: every drawing near its coarsest scale) its
@@ -629,8 +630,10 @@ def sketch_loaded_mechanism(
     `grow` as _Drawing's, its names tried at 2.5 mm too (_LOADED_AGAIN).
     With `details`, what stands in a detail's disc (its
     points' names, the loads applied there) is drawn only in its detail view
-    (`sketch_loaded_detail`); the disc is marked by a thin circle and its letter."""
-    return _loaded_view(fa, mu_l, look, lang, compact, grow, details, None)
+    (`sketch_loaded_detail`); the disc is marked by a thin circle and its letter.
+    With `grow`, `laid_out` is the drawing as the sheet was laid out with it
+    (these arguments without `grow`: the composer's), drawn here if not given."""
+    return _loaded_view(fa, mu_l, look, lang, compact, grow, details, None, laid_out)
 
 
 def sketch_loaded_detail(
@@ -641,12 +644,13 @@ def sketch_loaded_detail(
     detail: Detail,
     compact: bool = False,
     grow: bool = False,
+    laid_out: Sketch | None = None,
 ) -> Sketch:
     """The detail view `detail` of the loaded mechanism drawn at `mu_l`: its
     disc at μl / ratio, titled "A (4:1)", the links cut at the disc's edge, the
     loads applied inside it (to direction, as on the mechanism) and every name
-    there; `grow` as `sketch_loaded_mechanism`'s."""
-    return _loaded_view(fa, mu_l, look, lang, compact, grow, (detail,), detail)
+    there; `grow` and `laid_out` as `sketch_loaded_mechanism`'s."""
+    return _loaded_view(fa, mu_l, look, lang, compact, grow, (detail,), detail, laid_out)
 
 
 def _loaded_view(
@@ -658,6 +662,7 @@ def _loaded_view(
     grow: bool,
     details: Sequence[Detail],
     detail: Detail | None,
+    laid_out: Sketch | None = None,
 ) -> Sketch:
     """The loaded mechanism with `details` marked (`detail` None), or the detail
     view `detail`: ω1's arc turned where it leaves room for the names inside its
@@ -671,7 +676,8 @@ def _loaded_view(
     drawing reaches less past the box it was laid out with (gen 97 uk: 'G8'
     10.4 mm off its arrow, its head on a guide; lettered again, the drawing
     grew 9 mm taller and found no room; its arrow 8 mm longer, 'G8' is
-    written by its head within the box)."""
+    written by its head within the box). `laid_out`, the drawing without
+    `grow` where the caller has it (the composer's), is not drawn again."""
 
     def drawn(longer: Mapping[str, float], grow: bool) -> Sketch:
         sk, turned = _loaded_drawing(
@@ -690,7 +696,8 @@ def _loaded_view(
     sk = drawn({}, grow)
     if not grow:
         return sk
-    laid_out = drawn({}, False)
+    if laid_out is None:
+        laid_out = drawn({}, False)
     walled = {n.markup for n in crowded(laid_out, lang) if n.kind == "arrow"}
     if not walled:
         return sk
@@ -727,8 +734,10 @@ def _loaded_view(
     best = weighed(sk)
     for by in _LONGER_MM:
         longer = drawn(dict.fromkeys(walled, by), True)
-        if clear(longer) and weighed(longer) < best:
-            sk, best = longer, weighed(longer)
+        if clear(longer):
+            weight = weighed(longer)
+            if weight < best:
+                sk, best = longer, weight
     return sk
 
 
@@ -2670,13 +2679,26 @@ class _Composer:
         for v in self.details:
             if name == detail_gid(self.details, v):
                 return sketch_lever_detail(fa, mu_V, look, lang, v, again=how)
+        # the loaded mechanism and its views as laid out (`sketches`' own) are
+        # not drawn again to find the names that crowd there
         if name == "force-mechanism":
+            laid_out = self.cache.get(("force-mechanism", mu_l, self.mechanism_details))
             return sketch_loaded_mechanism(
-                fa, mu_l, look, lang, self.compact, grow=True, details=self.mechanism_details
+                fa,
+                mu_l,
+                look,
+                lang,
+                self.compact,
+                grow=True,
+                details=self.mechanism_details,
+                laid_out=laid_out,
             )
         for d in self.mechanism_details:
             if name == loaded_detail_gid(self.mechanism_details, d):
-                return sketch_loaded_detail(fa, mu_l, look, lang, d, self.compact, grow=True)
+                laid_out = self.cache.get(("force-mechanism-detail", d, mu_l))
+                return sketch_loaded_detail(
+                    fa, mu_l, look, lang, d, self.compact, grow=True, laid_out=laid_out
+                )
         if name == "driving-link":
             mu_d = scales[f"mu_l {fa.driving_link.link}"]
             return self._noted(sketch_driving_link(fa, mu_d, look, lang, grow=True), mu_d, mu_l)
@@ -3346,21 +3368,22 @@ def _loaded_placed(
     # the mechanism marks its details' discs whatever their ratios
     discs = tuple(dataclasses.replace(d, ratio=1.0) for d in details)
 
-    def lettered(draw: Callable[[bool], Sketch]) -> list[Sketch]:
+    def lettered(draw: Callable[[bool, Sketch | None], Sketch]) -> list[Sketch]:
         """The drawing lettered as it comes, and with `grow` where its names
-        stand far: the one that letters it better first."""
-        sk = draw(False)
+        stand far (that drawing not drawn again to find them): the one that
+        letters it better first."""
+        sk = draw(False, None)
         if not _counts(sk).far:
             return [sk]
-        grown = draw(True)
+        grown = draw(True, sk)
         better = len(list(crowded(grown, lang))) < len(list(crowded(sk, lang)))
         return [grown, sk] if better else [sk, grown]
 
     mechanisms = lettered(
-        lambda grow: composer.memo(
+        lambda grow, laid_out: composer.memo(
             ("force-mechanism", mu_l, discs) + (("grow",) if grow else ()),
             lambda: sketch_loaded_mechanism(
-                fa, mu_l, look, lang, compact, grow=grow, details=details
+                fa, mu_l, look, lang, compact, grow=grow, details=details, laid_out=laid_out
             ),
         )
     )
@@ -3376,10 +3399,12 @@ def _loaded_placed(
     drawn = {"force-mechanism": mechanism}
     for d in details:
 
-        def detail_view(grow: bool, d: Detail = d) -> Sketch:
+        def detail_view(grow: bool, laid_out: Sketch | None, d: Detail = d) -> Sketch:
             return composer.memo(
                 ("force-mechanism-detail", d, mu_l) + (("grow",) if grow else ()),
-                lambda: sketch_loaded_detail(fa, mu_l, look, lang, d, compact, grow=grow),
+                lambda: sketch_loaded_detail(
+                    fa, mu_l, look, lang, d, compact, grow=grow, laid_out=laid_out
+                ),
             )
 
         view = lettered(detail_view)[0]
