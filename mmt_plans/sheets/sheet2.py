@@ -1768,13 +1768,14 @@ def _lever_view(
     merge_arms: bool = False,
     lines: list[int] | None = None,
     again: Again | None = None,
-    orders: int | None = None,
+    orders: int = _RETRY_ORDERS,
 ) -> Sketch:
     """The lever with `details` marked (`detail` None), or the detail view
     `detail`; with `merge_arms`, the arms along one line from p named by
     one label (`_one_per_line`); `lines` receives how many labels that saves;
     with `again`, lettered as on the laid-out sheet (_LEVER_AGAIN); its
-    labels written again in `orders` orders at most (None: _RETRY_ORDERS)."""
+    labels written again in `orders` orders at most (`_view_kept` gives
+    _RETRY_ORDERS for None)."""
     in_detail = detail is not None
     lever = fa.lever
     mech = fa.loads.state.mech
@@ -1900,7 +1901,7 @@ def _lever_view(
             lines.append(len(feet) - len(merged))
         for foot, numbers in merged if merge_arms else feet.values():
             labels.later_along(np.zeros(2), foot, f"h_{{{','.join(numbers)}}}", _ARM_ALONG)
-        labels.write_later(retry=_RETRY_ORDERS if orders is None else orders, grow=again == "grow")
+        labels.write_later(retry=orders, grow=again == "grow")
         sk.label_counts = labels.counts()
         ext = sk.extent()
         if detail is not None:
