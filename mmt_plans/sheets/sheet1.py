@@ -1480,8 +1480,13 @@ def _lettered_mechanism(
         reach = max(float(np.hypot(*v)) for v in crank)
         found = _crank_arc(arcs, labels, centre, sense, reach) if here(centre) else None
         if found is None and here(centre):  # walled in by the spokes: outside the crank's circle
-            outside = [reach + d for d in _CRANK_OUTSIDE]
-            found = _crank_arc(arcs, labels, centre, sense, reach, outside)
+            # (in a detail view, only within its disc: the crank's circle at the
+            # view's ratio may be far larger than the view, gen 81's 10:1 of a
+            # pivot 19 mm off its pin, an arc of 386 mm)
+            outside = [
+                reach + d for d in _CRANK_OUTSIDE if own is None or reach + d + _TEXT <= own[1]
+            ]
+            found = _crank_arc(arcs, labels, centre, sense, reach, outside) if outside else None
         if found is not None:
             # the arc where its label finds room beside its arrowhead
             radius, start_deg, room = found
@@ -1573,6 +1578,24 @@ def sketch_mechanism_details(
 ) -> tuple[Sketch, list[Sketch]] | None:
     """The mechanism (`plain`: as `sketch_mechanism` drew it at `mu_l`) whose
     names crowd, with its crowd marked by a circle and a letter, and its
+    detail views (a sketch each): the first of `mechanism_detail_options`,
+    the one leaving fewest names crowded. None where no name crowds so, or
+    where no detail view letters the drawing better."""
+    options = mechanism_detail_options(solution, mu_l, look, lang, letters, plain, views)
+    return options[0] if options else None
+
+
+def mechanism_detail_options(
+    solution: Solution,
+    mu_l: float,
+    look: Any,
+    lang: Language,
+    letters: str,
+    plain: Sketch,
+    views: Views = None,
+) -> list[tuple[Sketch, list[Sketch]]]:
+    """The mechanism (`plain`: as `sketch_mechanism` drew it at `mu_l`) whose
+    names crowd, with its crowd marked by a circle and a letter, and its
     detail views (a sketch each): the crowd drawn again at a larger scale of
     the standard series, lettered there (`mechanism_details`, by the first of
     `letters`), where _MECHANISM_CROWD of its names at least stand far or
@@ -1582,9 +1605,13 @@ def sketch_mechanism_details(
     fan of its positions, that no leader reaches without crossing a main
     line). Where a view so chosen leaves names crowded and a knot of pivots
     nearer than _MECHANISM_APART_MM in it, its discs are chosen again at the
-    enlargements past 10:1 (`_knot_details`), and the next crowd tried too:
-    the views leaving fewest names crowded kept. None where no name crowds
-    so, or where no detail view letters the drawing better."""
+    enlargements past 10:1 (`_knot_details`), and the next crowd tried too.
+    Every choice that letters the drawing better than `plain`, those leaving
+    fewest names crowded first (the order tried on a tie): the sheet takes
+    the first whose views find room on it, as a draughtsman takes the
+    enlargement that fits (gen 81: the 10:1 view of its knot where the
+    20:1 one finds none). Empty where no name crowds so, or where no detail
+    view letters the drawing better."""
     namings = list(crowded(plain, lang))
     crowd = stand_for(namings)
     lettered_badly = len(crowd)
@@ -1598,33 +1625,44 @@ def sketch_mechanism_details(
             # apart: no leader reaches it, however few they are
             yield joints, _MECHANISM_DETAILS
 
-    # (left crowded, the drawing, its views, whether a view's points stand too near)
-    best: tuple[int, Sketch, list[Sketch], bool] | None = None
+    # (left crowded, the drawing, its views) of every choice lettering better
+    better: list[tuple[int, Sketch, list[Sketch]]] = []
+    knotted = False  # whether the best so far leaves a view's points too near
+    # (each choice drawn and measured once, however many crowds choose it)
+    drawn_once: dict[tuple[Detail, ...], tuple[Sketch, list[Sketch], set[str], int]] = {}
     for knot, most in crowds():
         chosen = mechanism_details(solution, mu_l, knot, letters, most)
         variants = [chosen]
         for details in variants:  # (the chosen's variants appended once it is drawn)
             if not details:
                 continue
-            sk = sketch_mechanism(solution, mu_l, look, lang, details, views=views)
-            drawn = [
-                sketch_mechanism(solution, mu_l, look, lang, details, d, views) for d in details
-            ]
-            for view, d in zip(drawn, details):
-                view.detail_of = (d.centre[0] / mu_l, d.centre[1] / mu_l)
-            left = sum(len(crowded_names(v, lang)) for v in (sk, *drawn))
-            if left < (lettered_badly if best is None else best[0]):
-                best = (left, sk, drawn, left > 0 and _knotted(solution, mu_l, details))
+            again = details in drawn_once
+            if not again:
+                sk = sketch_mechanism(solution, mu_l, look, lang, details, views=views)
+                drawn = [
+                    sketch_mechanism(solution, mu_l, look, lang, details, d, views) for d in details
+                ]
+                for view, d in zip(drawn, details):
+                    view.detail_of = (d.centre[0] / mu_l, d.centre[1] / mu_l)
+                # (the drawing's crowd measured once: its count, and its discs' letters)
+                namings_left = list(crowded(sk, lang))
+                marked = {n.markup for n in namings_left}
+                left = len(namings_left) + sum(len(crowded_names(v, lang)) for v in drawn)
+                drawn_once[details] = (sk, drawn, marked, left)
+            sk, drawn, marked, left = drawn_once[details]
+            if left < lettered_badly and not again:
+                if not better or left < min(b[0] for b in better):
+                    knotted = left > 0 and _knotted(solution, mu_l, details)
+                better.append((left, sk, drawn))
             if details is chosen and left:
-                if best is None or best[3]:
+                if not better or knotted:
                     variants.append(_knot_details(solution, mu_l, knot, letters, most, chosen))
-                variants.append(
-                    _grown_details(solution, mu_l, knot, letters, most, chosen, sk, lang)
-                )
-        if best is not None and not best[3]:
+                variants.append(_grown_details(solution, mu_l, knot, letters, most, chosen, marked))
+        if better and not knotted:
             break
     # (none where no detail view letters the drawing better)
-    return None if best is None else (best[1], best[2])
+    better.sort(key=lambda b: b[0])  # (stable: the order tried on a tie)
+    return [(sk, drawn) for _, sk, drawn in better]
 
 
 def _grown_details(
@@ -1634,14 +1672,13 @@ def _grown_details(
     letters: str,
     most: int,
     chosen: Sequence[Detail],
-    sk: Sketch,
-    lang: Language,
+    lettered: set[str],
 ) -> tuple[Detail, ...]:
     """Where the letter of a disc of `chosen` (`mechanism_details` of the
     names standing for `knot`) stands far or on something in the drawing
-    `sk` marked with them (its rim walled in: gen 265's crank pivot amid its
-    blocks): the details chosen again on the larger discs only (else none)."""
-    lettered = {n.markup for n in crowded(sk, lang)}
+    marked with them (`lettered`: the markups of its names crowded there;
+    its rim walled in: gen 265's crank pivot amid its blocks): the details
+    chosen again on the larger discs only (else none)."""
     walled = [d.radius / mu_l for d in chosen if d.letter in lettered]
     radii = [r for r in _MECHANISM_RADII if walled and r > min(walled) + 1e-9]
     if not radii:
@@ -1851,7 +1888,8 @@ def sketch_plan_details(
             break
         sk, _ = _plan_view(solution, index, mu, kind, look, lang, note, details)
         views = [
-            _plan_view(solution, index, mu, kind, look, lang, note, details, d)[0] for d in details
+            _plan_detail_view(solution, index, mu, kind, look, lang, note, details, d)
+            for d in details
         ]
         # (a component is named in the view whose disc holds its head)
         moved = crowded_ends(sk, lang)[:, 2:]
@@ -1864,6 +1902,43 @@ def sketch_plan_details(
     if best is None or best[0] >= first:
         return None  # the details letter the crowd no better
     return best[1], best[2], best[3]
+
+
+def _plan_detail_view(
+    solution: Solution,
+    index: int,
+    mu: float,
+    kind: str,
+    look: Any,
+    lang: Language,
+    note: str,
+    details: Sequence[Detail],
+    detail: Detail,
+) -> Sketch:
+    """The detail view `detail` of the plan (`_plan_view`) at its ratio; where
+    its names crowd there (`crowded_names`), at the other ratios of the
+    series, the nearest first, as a draughtsman takes another enlargement:
+    the first that leaves none crowded, else the one leaving fewest (gen 20's
+    acceleration plan 4: s5 walled in at 4:1, free at 2.5:1 and 5:1)."""
+    view = _plan_view(solution, index, mu, kind, look, lang, note, details, detail)[0]
+    left = len(crowded_names(view, lang))
+    if not left:
+        return view
+    k = DETAIL_RATIOS.index(detail.ratio) if detail.ratio in DETAIL_RATIOS else 0
+    others = sorted(
+        (r for r in DETAIL_RATIOS if r != detail.ratio),
+        key=lambda r: (abs(DETAIL_RATIOS.index(r) - k), -r),
+    )
+    for ratio in others:
+        d = dataclasses.replace(detail, ratio=ratio)
+        again = tuple(d if x is detail else x for x in details)
+        other = _plan_view(solution, index, mu, kind, look, lang, note, again, d)[0]
+        crowd = len(crowded_names(other, lang))
+        if crowd < left:
+            view, left = other, crowd
+            if not left:
+                break
+    return view
 
 
 _PLAN_CROWD = 3  # a plan's detail past its first holds this many crowded names (a crowd of its own)
@@ -3215,13 +3290,16 @@ def _with_diagrams(layout: SheetLayout, page: Page, gap: float, rect: Rect) -> S
 
 
 def _mechanism_options(
-    sketches: Mapping[str, Sketch], plain: Sketch, detailed: tuple[Sketch, list[Sketch]] | None
+    sketches: Mapping[str, Sketch],
+    plain: Sketch,
+    detailed: Sequence[tuple[Sketch, list[Sketch]]],
 ) -> Iterator[dict[str, Sketch]]:
     """The sheet's drawings with the mechanism lettered: with its detail
-    views ("mechanism-detail", `sketch_mechanism_details`) where it has
-    them, then (where the sheet has no room for them) as drawn plain."""
-    if detailed is not None:
-        sk, views = detailed
+    views ("mechanism-detail", `mechanism_detail_options`) where it has
+    them, each choice in turn (those lettering best first: the sheet takes
+    the first whose views find room), then (where the sheet has room for
+    none) as drawn plain."""
+    for sk, views in detailed:
         out = {**sketches, "mechanism": sk}
         for k, view in enumerate(views):
             out["mechanism-detail" + (f"-{k + 1}" if k else "")] = view
@@ -3316,18 +3394,18 @@ def compose_sheet1(
 
     used = {n[:1].upper() for n in solution.mechanism.point_owners}
 
-    def detailed(mu_l: float, sketches: Mapping[str, Sketch]) -> tuple[Sketch, list[Sketch]] | None:
+    def detailed(mu_l: float, sketches: Mapping[str, Sketch]) -> list[tuple[Sketch, list[Sketch]]]:
         # lettered by the first letter that names no point and no plan's detail
         taken = _detail_letters(sketches)
         letters = "".join(x for x in DETAIL_LETTERS if x not in used and x not in taken)
         if not letters:
-            return None
+            return []
         key = ("mechanism-details " + letters, mu_l)
         if key not in cache:
-            cache[key] = sketch_mechanism_details(
+            cache[key] = mechanism_detail_options(
                 solution, mu_l, look, lang, letters, mechanism(mu_l), apart(mu_l)
             )
-        return cast("tuple[Sketch, list[Sketch]] | None", cache[key])
+        return cast("list[tuple[Sketch, list[Sketch]]]", cache[key])
 
     def unlettered(mu_l: float) -> Sketch:
         if ("unlettered", mu_l) not in cache:
