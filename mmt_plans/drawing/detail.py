@@ -28,7 +28,6 @@ from .labels import NEAR_MM
 
 __all__ = [
     "DETAIL_LETTERS",
-    "RIM_ANGLES",
     "Detail",
     "Name",
     "choose_details",
@@ -77,10 +76,6 @@ ARM_NAMED_MM = 6.0  # the shortest arm a detail names along it, mm
 # a detail's letter: a capital that names no point, force or arm (G, F, R, M, S,
 # K, P, O, I, Q, J read as loads, images or digits)
 DETAIL_LETTERS = "ABCDEHLNTUVWXYZ"
-# where round a detail's disc its letter is tried, in turn (rad): up and right
-# first, then round the rim (sheet 1's discs, the lever's: gen 90's A walled in
-# at the upper right of its disc by the lever's lines stood 10 mm off)
-RIM_ANGLES = tuple(math.radians(a) for a in (45.0, 135.0, -45.0, -135.0, 90.0, 0.0, 180.0, -90.0))
 LETTER_W = 2.3  # mm per character of a 3.5 mm name, a bound for counting room
 _TEXT = 3.5
 

@@ -39,7 +39,6 @@ from ..drawing.detail import (
     DETAIL_MM,
     DETAIL_RATIOS,
     NAME_SHARE,
-    RIM_ANGLES,
     Detail,
     Name,
     choose_details,
@@ -1890,8 +1889,10 @@ def _lever_view(
                 # forces on one line of action share their arm: one label, h_{10,11}
                 key = (round(float(foot[0]) * 2), round(float(foot[1]) * 2))
                 feet.setdefault(key, (foot, []))[1].append(str(len(arms)))
-        for c, r in discs if not in_detail else ():
+        for d, (c, r) in zip(details if not in_detail else (), discs):
             sk.circle(c, r, "thin")
+            rim = c + r * np.array([math.sqrt(0.5), math.sqrt(0.5)])
+            labels.later(rim, d.letter, rim - c)
         for at, names in marks.values():
             pole = float(np.hypot(*at)) < 0.5
             labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
@@ -1904,13 +1905,6 @@ def _lever_view(
             sk.arrow(start, end, "main", **_ARROW)  # type: ignore[arg-type]
             markup = ", ".join(force_markup(n) for n in names)
             labels.later_arrow(start, end, markup, _SHAFT_ALONG)
-        # each disc's letter by its rim where it stands near it, up and right
-        # first (RIM_ANGLES, as on sheet 1): written once every line and arrow
-        # is drawn, before the names (gen 90: A at the upper right, walled in
-        # by the lever's lines, stood 10 mm off; at the lower right it is near)
-        for d, (c, r) in zip(details if not in_detail else (), discs):
-            rims = [c + r * np.array([math.cos(a), math.sin(a)]) for a in RIM_ANGLES]
-            labels.place_first([(rim, rim - c) for rim in rims], d.letter)
         merged = _one_per_line(feet)
         if lines is not None:
             lines.append(len(feet) - len(merged))
