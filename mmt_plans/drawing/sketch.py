@@ -3,6 +3,7 @@ then replayed where the layout puts it."""
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any
 
 from ..render.recording import RecordingBackend
@@ -48,14 +49,7 @@ class Sketch(RecordingBackend):
     def bounds(self, start: int = 0) -> tuple[float, float, float, float] | None:
         """The bounds (x0, y0, x1, y1, no PAD) of the calls from `start` on;
         None: none of them draws anything."""
-        found = [b for b in map(self._call_bounds, self.calls[start:]) if b is not None]
-        if not found:
-            return None
-        x0 = min(b[0] for b in found)
-        y0 = min(b[1] for b in found)
-        x1 = max(b[2] for b in found)
-        y1 = max(b[3] for b in found)
-        return x0, y0, x1, y1
+        return _union(map(self._call_bounds, self.calls[start:]))
 
     def extent(self) -> Rect:
         return self.extent_since(None, 0)
@@ -64,13 +58,10 @@ class Sketch(RecordingBackend):
         """`extent` where the calls before `start` are known to have the
         `bounds` `before` (and are unchanged since): only the calls drawn
         after them measured (a trial's symbol, drawn and undone many times)."""
-        found = [b for b in (before, self.bounds(start)) if b is not None]
-        if not found:
+        union = _union((before, self.bounds(start)))
+        if union is None:
             return Rect(0.0, 0.0, 1.0, 1.0)
-        x0 = min(b[0] for b in found)
-        y0 = min(b[1] for b in found)
-        x1 = max(b[2] for b in found)
-        y1 = max(b[3] for b in found)
+        x0, y0, x1, y1 = union
         return Rect.from_bounds(x0 - PAD, y0 - PAD, x1 + PAD, y1 + PAD)
 
     def group_extents(self) -> list[tuple[float, float, float, float]]:
@@ -90,3 +81,18 @@ class Sketch(RecordingBackend):
         """Splice `other`'s calls into this sketch's last group `group_id`, before its end."""
         end = max(i for i, c in enumerate(self.calls) if c.name == "end_group")
         self.calls[end:end] = [type(c)(c.name, c.args, (group_id,)) for c in other.calls]
+
+
+def _union(
+    boxes: Iterable[tuple[float, float, float, float] | None],
+) -> tuple[float, float, float, float] | None:
+    """The bounds (x0, y0, x1, y1) holding every box of `boxes` (None: none)."""
+    found = [b for b in boxes if b is not None]
+    if not found:
+        return None
+    return (
+        min(b[0] for b in found),
+        min(b[1] for b in found),
+        max(b[2] for b in found),
+        max(b[3] for b in found),
+    )
