@@ -214,6 +214,8 @@ _LED_TRIES = 48
 # a segment farther than a query's distance by this much (mm) is apart from an
 # arc however the distance is rounded (`_ArcPlacer._near_arcs`)
 _APART_MARGIN = 1e-6
+# the points of a candidate ω/ε arc's polyline (`_ArcPlacer._beside`, `_near_arcs`)
+_ARC_POINTS = 24
 # how far (mm) from a link's arcs the ω/ε labels written before its own may
 # stand and take their places: a leader reaches 36 mm out (FINE_LEADER_RINGS)
 _BEFORE_MM = 50.0
@@ -397,7 +399,7 @@ class _ArcPlacer:
     def _near_arcs(
         self, lines: np.ndarray, centres: np.ndarray, radius: float, sweep: float, distance: float
     ) -> tuple[np.ndarray, np.ndarray]:
-        """`_near_all(lines, distance)` of arcs drawn as polylines of 24 points
+        """`_near_all(lines, distance)` of arcs drawn as polylines of _ARC_POINTS points
         `radius` mm from their `centres`, spanning `sweep` deg: the same pairs,
         found cheaper. The tree's boxes near each arc's box first; of those a
         segment that lies wholly inside the circle its chords keep out of, or
@@ -419,7 +421,7 @@ class _ArcPlacer:
         )
         nearest = _point_segment(c[:, 0], c[:, 1], s)
         # (a chord of the polyline comes no nearer its centre than this)
-        inner = radius * math.cos(math.radians(sweep / 23.0 / 2.0))
+        inner = radius * math.cos(math.radians(sweep / (_ARC_POINTS - 1) / 2.0))
         apart = (farthest < inner - reach) | (nearest > radius + reach)
         keep = np.ones(len(qi), dtype=bool)
         keep[seg[apart]] = False
@@ -688,7 +690,7 @@ class _ArcPlacer:
         for radius, _ in spins:
             inset = _inset(radius, _OMEGA_R + wider)
             sweep = (span - 2.0 * inset) % 360.0 or 360.0
-            ang = np.radians((st + inset)[:, None] + np.linspace(0.0, sweep, 24)[None, :])
+            ang = np.radians((st + inset)[:, None] + np.linspace(0.0, sweep, _ARC_POINTS)[None, :])
             xy = np.stack([cs[:, :1] + radius * np.cos(ang), cs[:, 1:] + radius * np.sin(ang)], -1)
             i, j = self._near_arcs(shapely.linestrings(xy), cs, radius, sweep, 0.6)
             if i.size:
