@@ -11,6 +11,7 @@ import numpy as np
 from lettering import near_findings, solved_seed
 
 import mmt_plans
+import mmt_plans.sheets.sheet2 as sheet2
 from mmt_plans.drawing.detail import DETAIL_RATIOS, spread
 from mmt_plans.render.look import load_look
 from mmt_plans.render.recording import Line, RecordingBackend
@@ -87,11 +88,37 @@ def test_the_detail_cuts_its_links_at_the_disc():
                 assert math.dist(p, centre) <= radius + 1e-6
 
 
-def test_the_composed_sheet_draws_it_and_its_mechanism_is_clean():
+def test_the_composed_sheet_draws_it_and_its_mechanism_is_clean(monkeypatch):
     solution = solved_seed(CROWDED)
+    placed, drawn = sheet2._loaded_placed, sheet2.sketch_loaded_detail
+    # (ratio, found room, views lettered again) of each trial of the details chosen again
+    tried: list[tuple[float, bool, int]] = []
+    grown: list[float] = []  # the ratios of the detail views lettered again
+
+    def placed_spy(composer, details, *args):
+        before = len(grown)
+        out = placed(composer, details, *args)
+        tried.append((details[0].ratio, out is not None, len(grown) - before))
+        return out
+
+    def drawn_spy(fa, mu_l, look, lang, detail, compact=False, grow=False, laid_out=None):
+        if grow:
+            grown.append(detail.ratio)
+        return drawn(fa, mu_l, look, lang, detail, compact, grow, laid_out)
+
+    monkeypatch.setattr(sheet2, "_loaded_placed", placed_spy)
+    monkeypatch.setattr(sheet2, "sketch_loaded_detail", drawn_spy)
     for lang in ("en", "uk"):
         backend = RecordingBackend(841.0, 594.0)
+        tried.clear()
         sheet = compose_sheet2(solution, backend, lang)
+        if lang == "en":
+            # the details chosen again find no room at any ratio of the series
+            # (10:1 down to 2:1), so no view is lettered a second time there
+            # (doing so took 345 s of the sheet's 372 s and changed nothing)
+            assert [ratio for ratio, _, _ in tried] == sorted(DETAIL_RATIOS, reverse=True)
+            assert not any(found for _, found, _ in tried)
+            assert [again for _, _, again in tried] == [0] * len(DETAIL_RATIOS)
         assert len(sheet.mechanism_details) == 1
         assert "force-mechanism-detail" in sheet.placed
         view = SheetView.of(backend, lang, f"gen {CROWDED} {lang}")
