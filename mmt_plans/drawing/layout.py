@@ -306,8 +306,35 @@ class SheetLayout:
         """
         if not (width > 0 and height > 0):
             raise ValueError(f"{name}: a drawing needs a positive size, got {width} x {height}")
-        gap = self.gap if gap is None else float(gap)
         region = within if within is not None else self.region
+        rect = self._free(width, height, corner, region, gap, near)
+        if rect is not None:
+            self.register(name, rect, kind)
+            return rect
+        raise LayoutError(
+            f"{name}: no room for {width:.0f} x {height:.0f} mm on the sheet "
+            f"(free region {region.width:.0f} x {region.height:.0f} mm, "
+            f"{len(self._elements)} elements placed)"
+        )
+
+    def room_near(self, width: float, height: float, near: Rect) -> Rect | None:
+        """Where `place` would put a width × height rectangle `near` a
+        rectangle, registering nothing; None where the sheet has no room."""
+        if not (width > 0 and height > 0):
+            return None
+        return self._free(width, height, "top-left", self.region, None, near)
+
+    def _free(
+        self,
+        width: float,
+        height: float,
+        corner: Corner,
+        region: Rect,
+        gap: float | None,
+        near: Rect | None,
+    ) -> Rect | None:
+        """`place`'s search: the free width × height rectangle it takes, or None."""
+        gap = self.gap if gap is None else float(gap)
         boxes = np.array([e.footprint.bounds for e in self._elements.values()]).reshape(-1, 4)
         if all(_is_box(e.footprint) for e in self._elements.values()):
             at = (
@@ -315,21 +342,13 @@ class SheetLayout:
                 if near is None
                 else nearest_free(region, boxes, width, height, gap, near)
             )
-            if at is not None:
-                rect = Rect(at[0], at[1], width, height)
-                self.register(name, rect, kind)
+            return None if at is None else Rect(at[0], at[1], width, height)
+        # a footprint of another shape: each candidate tried against it exactly
+        for x, y in _candidates(region, boxes, width, height, gap, corner):
+            rect = Rect(float(x), float(y), width, height)
+            if self.fits(rect, gap, region):
                 return rect
-        else:  # a footprint of another shape: each candidate tried against it exactly
-            for x, y in _candidates(region, boxes, width, height, gap, corner):
-                rect = Rect(float(x), float(y), width, height)
-                if self.fits(rect, gap, region):
-                    self.register(name, rect, kind)
-                    return rect
-        raise LayoutError(
-            f"{name}: no room for {width:.0f} x {height:.0f} mm on the sheet "
-            f"(free region {region.width:.0f} x {region.height:.0f} mm, "
-            f"{len(self._elements)} elements placed)"
-        )
+        return None
 
     def overlaps(self, clearance: float = 0.0) -> list[tuple[str, str]]:
         """Pairs of registered elements whose footprints overlap."""

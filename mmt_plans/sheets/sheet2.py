@@ -116,6 +116,10 @@ _LOADED_AGAIN: dict[str, Any] = dict(_LABELLING, smaller=2.5)
 # leave it (gen 30 uk, view A at 40:1: 'k10' and 'G9' go between the images'
 # lines 3 mm apart at 2.5 mm, 14 mm off at 3.5 mm)
 _LEVER_AGAIN: dict[str, Any] = dict(_LABELLING, smaller=2.5)
+# the groups and the driving link lettered so again on the laid-out sheet: a
+# short arm's name in a knot of forces (gen 240's group 2-3 at 1:100, h'6 of a
+# 2.8 mm arm 11.7 mm off at 3.5 mm, beside it at 2.5 mm)
+_FORCE_AGAIN: dict[str, Any] = dict(_FORCE_LABELLING, smaller=2.5)
 # how the lever is lettered so: in the order that letters it best whatever box
 # that takes, or in those that keep its box (where the sheet has no more room)
 Again = Literal["grow", "box"]
@@ -339,13 +343,16 @@ class _Drawing:
         inside = any(float(np.hypot(*(at - c))) <= r for c, r in self.discs)
         return inside if self.in_detail else not inside
 
+    def drawn_part(self, a: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+        """The part of the segment a–b this drawing draws: all of it, or in a
+        detail view the part inside its disc (None where none is)."""
+        a, b = np.asarray(a, float), np.asarray(b, float)
+        return clipped(a, b, *self.discs[0]) if self.in_detail else (a, b)
+
     def line(self, a: np.ndarray, b: np.ndarray, kind: LineType = "main") -> None:
-        if self.in_detail:
-            part = clipped(np.asarray(a, float), np.asarray(b, float), *self.discs[0])
-            if part is not None:
-                self.sk.line(part[0], part[1], kind)
-            return
-        self.sk.line(a, b, kind)
+        part = self.drawn_part(a, b)
+        if part is not None:
+            self.sk.line(part[0], part[1], kind)
 
     def _cut(self, first: int) -> None:
         """A detail view's calls from `first` on cut at its disc's edge
@@ -572,7 +579,11 @@ class _Drawing:
                 K = self.mm(sh.point)
                 if float(np.hypot(*(K - S))) >= 1.0 and self.here(S):
                     self.line(S, K, "thin")
-                    self.later_along(S, K, f"h_{{{lid}}}", _ARM_ALONG)
+                    # named along the part drawn: a detail view cuts the arm
+                    # at its disc's edge (gen 240's h6, 4:1, stood 12 mm past it)
+                    part = self.drawn_part(S, K)
+                    if part is not None and float(np.hypot(*(part[1] - part[0]))) >= 1.0:
+                        self.later_along(part[0], part[1], f"h_{{{lid}}}", _ARM_ALONG)
                 self.force(K, ll.inertia_force, f"F_in{lid}", largest)
             elif ll.mass:
                 self.force(S, ll.inertia_force, f"F_in{lid}", largest)
@@ -962,7 +973,9 @@ def _group_view(
     one label; `lines` receives how many labels that saves."""
     state = fa.loads.state
     mech = state.mech
-    d = _Drawing(look, state, mu_l, lang, grow=grow, labelling=_FORCE_LABELLING)
+    d = _Drawing(
+        look, state, mu_l, lang, grow=grow, labelling=_FORCE_AGAIN if grow else _FORCE_LABELLING
+    )
     gid = f"group-{g.name}"
     with d.sk.group(gid, "assur-group"):
         d.links(g.links, frame=False)
@@ -1023,7 +1036,9 @@ def sketch_driving_link(
 ) -> Sketch:
     state = fa.loads.state
     dl = fa.driving_link
-    d = _Drawing(look, state, mu_l, lang, grow=grow, labelling=_FORCE_LABELLING)
+    d = _Drawing(
+        look, state, mu_l, lang, grow=grow, labelling=_FORCE_AGAIN if grow else _FORCE_LABELLING
+    )
     with d.sk.group("driving-link", "driving-link"):
         d.links([dl.link], frame=False)
         forces = [
@@ -2575,13 +2590,15 @@ class _Composer:
         view A's names far 10 -> 4, 4 mm taller grown). `sketches` takes the
         drawings kept."""
         placed = dict(placed)
+        # the drawings of links lettered again at 2.5 mm too (_LOADED_AGAIN, _FORCE_AGAIN)
+        drawn_again = ("force-mechanism", "group-", "driving-link")
         for name in self.drawings:
             was = _counts(sketches[name])
             # lettered again only where `grow` letters it otherwise (no order
-            # was kept from it by its box or cut short, or the loaded
-            # mechanism's and the lever's names tried at 2.5 mm): else the same drawing
+            # was kept from it by its box or cut short, or the names of the
+            # lever and the drawings of links tried at 2.5 mm): else the same drawing
             lever = name.startswith("zhukovsky-lever")
-            again = was.grows or lever or name.startswith("force-mechanism")
+            again = was.grows or lever or name.startswith(drawn_again)
             hows: tuple[Again, ...] = ("grow", "box") if lever else ("grow",)
             chosen: tuple[Sketch, Rect] | None = None
             for how in hows if was.far and again and not lever else ():
@@ -2663,9 +2680,14 @@ class _Composer:
         """Where the drawing `name`, `sketch` placed at `rect`, goes lettered
         again (`grown`): where it was, else moved by as much as it grew past
         a side (the title over a drawing rises with a name written above
-        it), in the field and the layout's gap from the rest; None if not."""
+        it), else in the room nearest it (gen 240's group 2-3 lettered at
+        2.5 mm, 9 mm taller, under the table above it: into the empty
+        column below the driving link), in the field and the layout's gap
+        from the rest; None if not."""
         others = _without(layout, {name})
-        return _moved(self.extent(sketch), self.extent(grown), rect, others)
+        ext = self.extent(grown)
+        moved = _moved(self.extent(sketch), ext, rect, others)
+        return moved if moved is not None else others.room_near(ext.width, ext.height, rect)
 
     def regrown(self, name: str, scales: dict[str, float], how: Again = "grow") -> Sketch | None:
         """The drawing `name` at `scales` with its labels written in the
@@ -3415,11 +3437,7 @@ def _loaded_placed(
 
         def room(view: Sketch) -> bool:
             box = view.extent()
-            try:
-                _without(others, set()).place("detail", box.width, box.height, near=at)
-            except LayoutError:
-                return False
-            return True
+            return others.room_near(box.width, box.height, at) is not None
 
         view = lettered(detail_view, room)[0]
         name, box = loaded_detail_gid(details, d), view.extent()

@@ -128,3 +128,25 @@ def test_placed_near_never_overlaps(sizes, w, h):
         return
     assert layout.region.contains(r, tol=1e-6)
     assert layout.overlaps(clearance=layout.gap - 1e-6) == []
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.floats(20, 300), st.floats(20, 250)), min_size=1, max_size=8),
+       st.floats(20, 120), st.floats(20, 120))
+def test_room_near_is_where_place_near_puts_it_and_registers_nothing(sizes, w, h):
+    layout = SheetLayout(Page.of("A1"))
+    for i, (a, b) in enumerate(sizes):
+        try:
+            layout.place(f"d{i}", a, b)
+        except LayoutError:
+            continue
+    target = layout.elements[-1].bounds
+    before = layout.elements
+    room = layout.room_near(w, h, target)
+    assert layout.elements == before
+    try:
+        placed = layout.place("detail", w, h, near=target)
+    except LayoutError:
+        assert room is None
+        return
+    assert room == placed

@@ -140,3 +140,29 @@ def test_an_uncrowded_mechanism_has_none():
     solution = mmt_plans.solve(mmt_plans.load(ROOT / "samples" / "six_link_press.toml"))
     sheet = compose_sheet2(solution, RecordingBackend(841.0, 594.0), "en")
     assert sheet.mechanism_details == ()
+
+
+def test_an_arm_cut_at_a_detail_views_edge_is_named_along_the_part_drawn():
+    """Gen 240: a disc holding S6 near its edge, K6 (where F_in6 acts) far
+    outside it. The view draws the arm h6 only up to the disc's edge, so its
+    name stands along that part, within the linter's reach of it (it stood
+    at the middle of the whole arm, 12 mm past the edge, at 4:1)."""
+    solution = solved_seed(240)
+    fa = solution.require_forces()
+    ll = fa.loads.links[6]
+    S = np.asarray(ll.centre_of_mass, float).reshape(-1)[:2]
+    K = np.asarray(ll.shifted_inertia_force.point, float).reshape(-1)[:2]
+    mu, ratio = float(solution.mu_l), 4.0
+    r = 6.0 * mu  # 6 mm at the mechanism's scale, 24 mm in the view
+    u = (K - S) / np.hypot(*(K - S))
+    assert np.hypot(*(K - S)) > 2.0 * r  # the arm runs far out of the disc
+    centre = S - 0.8 * r * u  # S inside, near the edge the arm leaves by
+    detail = sheet2.Detail("C", (float(centre[0]), float(centre[1])), r, ratio)
+    view = sketch_loaded_detail(fa, mu, load_look(), "en", detail)
+    arms = {c.naming for c in view.calls if c.naming is not None and c.naming.markup == "h_{6}"}
+    assert len(arms) == 1  # one label (its runs carry the same naming)
+    disc_c, disc_r = centre / (mu / ratio), r / (mu / ratio)
+    (arm,) = arms
+    for end in (arm.anchor, arm.end):
+        assert np.hypot(*(np.asarray(end) - disc_c)) <= disc_r + 1e-6
+    assert not [f for f in near_findings(view) if "h6" in str(f) or "h_{6}" in str(f)]
