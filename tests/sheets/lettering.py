@@ -174,3 +174,19 @@ def near_findings(sketch, lang: str = "en") -> list:
 
     view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
     return [*label_near(view), *label_clear(view)]
+
+
+@functools.cache
+def composed_sheet2(seed: int, lang: str):
+    """Sheet 2 of generated mechanism `seed` recorded on A1, composed once
+    per run: what compose_sheet2 returned, the recorded view and the
+    linter's findings on it."""
+    from mmt_plans.generate import generate_one
+    from mmt_plans.render.recording import RecordingBackend
+    from mmt_plans.sheets.lint import SheetView, lint
+    from mmt_plans.sheets.sheet2 import compose_sheet2
+
+    backend = RecordingBackend(841.0, 594.0)
+    result = compose_sheet2(solved_seed(seed), backend, lang)
+    view = SheetView.of(backend, lang, generate_one(seed).name)
+    return result, view, list(lint(view))

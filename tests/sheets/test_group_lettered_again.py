@@ -10,30 +10,13 @@ table above it, and goes into the empty column below the driving link."""
 
 from __future__ import annotations
 
-from functools import cache
-
-from mmt_plans.generate import generate_one
-from mmt_plans.render.recording import RecordingBackend
-from mmt_plans.sheets.lint import SheetView, lint
-from mmt_plans.sheets.sheet2 import compose_sheet2
-from mmt_plans.solution import solve
-from mmt_plans.spec import loads
+from lettering import composed_sheet2
 
 SMALL_GROUP = 240  # gen 240 (RRR-RRR-RRR-RRR): its group 2-3 drawn small
 
 
-@cache
-def _sheet(seed: int, lang: str):
-    g = generate_one(seed)
-    solution = solve(loads(g.toml, f"{g.name}.toml"))
-    backend = RecordingBackend(841.0, 594.0)
-    result = compose_sheet2(solution, backend, lang)
-    view = SheetView.of(backend, lang, g.name)
-    return result, view, list(lint(view))
-
-
 def test_the_small_groups_arm_names_stand_by_their_arms():
-    result, view, findings = _sheet(SMALL_GROUP, "en")
+    result, view, findings = composed_sheet2(SMALL_GROUP, "en")
     group = result.placed["group-2-3"]
     arms = [lab for lab in view.labels if "group-2-3" in lab.groups and lab.text.startswith("h'")]
     assert arms  # its arms are named

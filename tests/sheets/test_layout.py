@@ -111,16 +111,30 @@ def test_place_near_puts_a_detail_beside_its_drawing(layout):
     assert layout.overlaps(clearance=layout.gap - 1e-6) == []
 
 
-@settings(max_examples=40, deadline=None)
-@given(st.lists(st.tuples(st.floats(20, 300), st.floats(20, 250)), min_size=1, max_size=8),
-       st.floats(20, 120), st.floats(20, 120))
-def test_placed_near_never_overlaps(sizes, w, h):
+# drawings placed from the top left, then a detail of w x h near the last
+_DRAWINGS_AND_DETAIL = (
+    st.lists(st.tuples(st.floats(20, 300), st.floats(20, 250)), min_size=1, max_size=8),
+    st.floats(20, 120),
+    st.floats(20, 120),
+)
+
+
+def _filled(sizes) -> SheetLayout:
+    """An A1 layout with drawings of `sizes` placed from the top left (those
+    that find no room left out)."""
     layout = SheetLayout(Page.of("A1"))
     for i, (a, b) in enumerate(sizes):
         try:
             layout.place(f"d{i}", a, b)
         except LayoutError:
             continue
+    return layout
+
+
+@settings(max_examples=40, deadline=None)
+@given(*_DRAWINGS_AND_DETAIL)
+def test_placed_near_never_overlaps(sizes, w, h):
+    layout = _filled(sizes)
     target = layout.elements[-1].bounds
     try:
         r = layout.place("detail", w, h, near=target)
@@ -131,15 +145,9 @@ def test_placed_near_never_overlaps(sizes, w, h):
 
 
 @settings(max_examples=40, deadline=None)
-@given(st.lists(st.tuples(st.floats(20, 300), st.floats(20, 250)), min_size=1, max_size=8),
-       st.floats(20, 120), st.floats(20, 120))
+@given(*_DRAWINGS_AND_DETAIL)
 def test_room_near_is_where_place_near_puts_it_and_registers_nothing(sizes, w, h):
-    layout = SheetLayout(Page.of("A1"))
-    for i, (a, b) in enumerate(sizes):
-        try:
-            layout.place(f"d{i}", a, b)
-        except LayoutError:
-            continue
+    layout = _filled(sizes)
     target = layout.elements[-1].bounds
     before = layout.elements
     room = layout.room_near(w, h, target)

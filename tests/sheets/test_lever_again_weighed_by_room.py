@@ -10,29 +10,10 @@ stood 14-15 mm off, though the sheet has room right of the view."""
 
 from __future__ import annotations
 
-from functools import cache
-
-from mmt_plans.generate import generate_one
-from mmt_plans.render.recording import RecordingBackend
-from mmt_plans.sheets.lint import SheetView, lint
-from mmt_plans.sheets.sheet2 import compose_sheet2
-from mmt_plans.solution import solve
-from mmt_plans.spec import loads
+from lettering import composed_sheet2
 
 CROWDED = 163  # gen 163 (RPP-RRR-RRP-RRP-RPR): view B of its lever, uk
 VIEW = "zhukovsky-lever-detail"
-
-
-@cache
-def _sheet(seed: int, lang: str):
-    """Sheet 2 of generated mechanism `seed`: the composition, the recorded
-    view and the linter's findings."""
-    g = generate_one(seed)
-    solution = solve(loads(g.toml, f"{g.name}.toml"))
-    backend = RecordingBackend(841.0, 594.0)
-    result = compose_sheet2(solution, backend, lang)
-    view = SheetView.of(backend, lang, g.name)
-    return result, view, list(lint(view))
 
 
 def _in(rect, where) -> bool:
@@ -41,7 +22,7 @@ def _in(rect, where) -> bool:
 
 
 def test_regression_gen163_uk_lever_view_arms_along_one_line_one_label_where_room():
-    result, view, found = _sheet(CROWDED, "uk")
+    result, view, found = composed_sheet2(CROWDED, "uk")
     rect = result.placed[VIEW]
     near = [f for f in found if f.rule in ("label-near", "label-clear") and _in(rect, f.where)]
     # four names far before (k11, Fi11, h14, h21)

@@ -8,27 +8,10 @@ standing 10-26 mm off; grown 4 mm taller it has no room, kept in its box."""
 
 from __future__ import annotations
 
-from functools import cache
-
-from mmt_plans.generate import generate_one
-from mmt_plans.render.recording import RecordingBackend
-from mmt_plans.sheets.lint import SheetView, lint
-from mmt_plans.sheets.sheet2 import compose_sheet2
-from mmt_plans.solution import solve
-from mmt_plans.spec import loads
+from lettering import composed_sheet2
 
 CROWDED = 30  # gen 30 (RRR-RRR-RRR-RRP-RRR): view A of its lever, uk
 VIEW = "zhukovsky-lever-detail"
-
-
-@cache
-def _sheet(seed: int, lang: str):
-    """Sheet 2 of generated mechanism `seed`: the composition and the linter's findings."""
-    g = generate_one(seed)
-    solution = solve(loads(g.toml, f"{g.name}.toml"))
-    backend = RecordingBackend(841.0, 594.0)
-    result = compose_sheet2(solution, backend, lang)
-    return result, list(lint(SheetView.of(backend, lang, g.name)))
 
 
 def _in(rect, finding) -> bool:
@@ -37,7 +20,7 @@ def _in(rect, finding) -> bool:
 
 
 def test_regression_gen30_uk_lever_view_names_far_lettered_again_in_its_box():
-    result, found = _sheet(CROWDED, "uk")
+    result, _, found = composed_sheet2(CROWDED, "uk")
     rect = result.placed[VIEW]
     near = [f for f in found if f.rule in ("label-near", "label-clear") and _in(rect, f)]
     # ten names far and one on a line before
