@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 import shapely
 
+from ..render.backend import PointLike
 from ..render.recording import Arc, Arrow, Call, Circle, Line, Polygon, Polyline
 from .labels import NEAR_MM
 
@@ -76,6 +77,19 @@ ARM_NAMED_MM = 6.0  # the shortest arm a detail names along it, mm
 # a detail's letter: a capital that names no point, force or arm (G, F, R, M, S,
 # K, P, O, I, Q, J read as loads, images or digits)
 DETAIL_LETTERS = "ABCDEHLNTUVWXYZ"
+# where a detail's letter is tried by its disc's rim, in turn: up and right
+# first, then the other diagonals, then up, right, left and down
+_DIAGONAL = math.sqrt(0.5)
+_RIM_DIRECTIONS = (
+    (_DIAGONAL, _DIAGONAL),
+    (-_DIAGONAL, _DIAGONAL),
+    (_DIAGONAL, -_DIAGONAL),
+    (-_DIAGONAL, -_DIAGONAL),
+    (0.0, 1.0),
+    (1.0, 0.0),
+    (-1.0, 0.0),
+    (0.0, -1.0),
+)
 LETTER_W = 2.3  # mm per character of a 3.5 mm name, a bound for counting room
 _TEXT = 3.5
 
@@ -293,3 +307,12 @@ def heads_outside(calls: Sequence[Call], discs: Sequence[tuple[np.ndarray, float
         edge = (float(part[0][0]), float(part[0][1]))
         kept.append(Line("line", {"start": c.start, "end": edge, "line": c.line}, c.groups))
     return kept
+
+
+def rim_anchors(centre: PointLike, radius: float) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Where a detail's letter is tried by its disc (centre, radius, mm):
+    (anchor, towards) pairs on the rim, up and right first, each pointing
+    away from the centre (`Labels.later_first`)."""
+    middle = np.asarray(centre, dtype=float)
+    rims = [middle + radius * np.array(u) for u in _RIM_DIRECTIONS]
+    return [(rim, rim - middle) for rim in rims]

@@ -1108,17 +1108,23 @@ class Labels:
         markup: str,
         *,
         distance: float = 1.5,
+        clear: bool = False,
     ) -> BaseGeometry:
         """Name a thing drawn at several places (a joint at each of a
-        mechanism's positions drawn in main lines), each an (anchor, towards)
-        pair, preferred first: `place` at the first where the name stands
-        near it or is led to it; where it stands far at every one, at the
-        first (as `place` alone writes it)."""
+        mechanism's positions drawn in main lines, a detail's disc by any
+        point of its rim), each an (anchor, towards) pair, preferred first:
+        `place` at the first where the name stands near it or is led to it
+        (with `clear`, and is written on nothing); where it stands far at
+        every one, at the first (as `place` alone writes it)."""
         saved = self._state() if len(anchors) > 1 else None
         for anchor, towards in anchors:
-            before = self.far
+            before = (self.far, self.unsettled)
             footprint = self.place(anchor, markup, towards=towards, distance=distance)
-            if self.far == before or saved is None:
+            if (
+                saved is None
+                or self.far == before[0]
+                and (not clear or self.unsettled == before[1])
+            ):
                 return footprint
             self._restore(saved)
         anchor, towards = anchors[0]

@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 from shapely.geometry import LineString, Point, box
 
+from mmt_plans.drawing.detail import rim_anchors
 from mmt_plans.drawing.labels import NEAR_MM, Labels
 from mmt_plans.drawing.sketch import Sketch
 from mmt_plans.render.recording import Line, RecordingBackend, Text
@@ -294,3 +295,24 @@ def test_regression_gen104_every_leader_ends_at_its_point_under_two_crossed_bloc
         moved = _sketch()
         moved.calls.extend(c.shifted(dx, dy) for c in sk.calls)
         assert _findings(moved, ["label-near", "label-clear"]) == []
+
+
+def test_a_details_letter_walled_in_up_and_right_stands_by_another_point_of_its_rim():
+    """A detail's disc whose rim up and right (the first place tried) lies
+    in the walled corridor: its letter is written by another point of the
+    rim, near it, not 10 mm out with no leader (gen 90's view A on sheet 2)."""
+    r = 30.0
+    centre = np.array([-3.0, 0.0]) - r * np.array([math.sqrt(0.5), math.sqrt(0.5)])
+    anchors = rim_anchors(centre, r)
+    assert np.allclose(anchors[0][0], (-3.0, 0.0))
+    for a, towards in anchors:  # on the rim, pointing out
+        assert math.isclose(math.dist(a, centre), r)
+        assert np.allclose(towards, a - centre)
+    sk = _walled_and_free()
+    sk.circle(tuple(centre), r, "thin")
+    labels = Labels(sk, 3.5)
+    labels.place_first(anchors, "A", clear=True)
+    assert labels.far == 0 and labels.unsettled == 0
+    (text,) = [c for c in sk.calls if isinstance(c, Text)]
+    assert text.naming is not None and math.dist(text.naming.anchor, (-3.0, 0.0)) > 1.0
+    assert _findings(sk, ["label-near", "label-clear"]) == []
