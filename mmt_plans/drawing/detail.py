@@ -312,7 +312,8 @@ def heads_outside(calls: Sequence[Call], discs: Sequence[tuple[np.ndarray, float
 def rim_anchors(centre: PointLike, radius: float) -> list[tuple[np.ndarray, np.ndarray]]:
     """Where a detail's letter is tried by its disc (centre, radius, mm):
     (anchor, towards) pairs on the rim, up and right first, each pointing
-    away from the centre (`Labels.later_first`)."""
+    away from the centre (`Labels.place_first`); the first is where
+    the drawings write it."""
     middle = np.asarray(centre, dtype=float)
     rims = [middle + radius * np.array(u) for u in _RIM_DIRECTIONS]
     return [(rim, rim - middle) for rim in rims]

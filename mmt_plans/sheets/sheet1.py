@@ -35,6 +35,7 @@ from ..drawing.detail import (
     cut_to_disc,
     heads_outside,
     name_area,
+    rim_anchors,
     spread,
 )
 from ..drawing.labels import (
@@ -2127,8 +2128,8 @@ def _plan_view(
         if here(np.zeros(2)):
             placer.place((0.0, 0.0), pole, towards=(-1.0, -1.0))
         for d, (middle, r) in zip(details, discs) if detail is None else ():
-            rim = middle + r * np.array([math.sqrt(0.5), math.sqrt(0.5)])
-            placer.place(rim, d.letter, towards=rim - middle)
+            rim, towards = rim_anchors(middle, r)[0]  # up and right
+            placer.place(rim, d.letter, towards=towards)
         # the images among most lines first (they have the fewest places near
         # them), then the components; where some find no place near: the
         # components shorter than _SHORT_COMPONENT (amid the pole's or an

@@ -366,8 +366,8 @@ class _Drawing:
         """The discs of `details` as thin circles, each with its letter."""
         for d, (c, r) in zip(details, self.discs):
             self.sk.circle(c, r, "thin")
-            rim = c + r * np.array([math.sqrt(0.5), math.sqrt(0.5)])
-            self.labels.later(rim, d.letter, rim - c)
+            rim, towards = rim_anchors(c, r)[0]  # up and right
+            self.labels.later(rim, d.letter, towards)
 
     def later(self, anchor: np.ndarray, markup: str, towards: np.ndarray | None = None) -> None:
         """A label written after every line, so that it can avoid them all
@@ -1907,8 +1907,8 @@ def _lever_view(
                 feet.setdefault(key, (foot, []))[1].append(str(len(arms)))
         for d, (c, r) in zip(details if not in_detail else (), discs):
             sk.circle(c, r, "thin")
-            rim = c + r * np.array([math.sqrt(0.5), math.sqrt(0.5)])
-            labels.later(rim, d.letter, rim - c)
+            rim, towards = rim_anchors(c, r)[0]  # up and right
+            labels.later(rim, d.letter, towards)
         for at, names in marks.values():
             pole = float(np.hypot(*at)) < 0.5
             labels.later(at, ", ".join(names), np.array([-1.0, -1.0]) if pole else at)
@@ -3326,8 +3326,9 @@ def _letters_by_rims(
 
 def _letter_by_rim(sk: Sketch, centre: np.ndarray, r: float, letter: str, lang: Language) -> None:
     """`_letters_by_rims` for one disc of `sk` (its centre and radius in the
-    sketch's mm)."""
-    rim = centre + r * np.array([math.sqrt(0.5), math.sqrt(0.5)])
+    sketch's mm): the letter is found where the drawing wrote it, by the
+    first of `rim_anchors`."""
+    rim, _ = rim_anchors(centre, r)[0]
     runs = [
         i
         for i, c in enumerate(sk.calls)
@@ -3350,14 +3351,7 @@ def _letter_by_rim(sk: Sketch, centre: np.ndarray, r: float, letter: str, lang: 
     labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
     labels.place_first(rim_anchors(centre, r), letter, clear=True)
     now = sk.extent()
-    if (
-        labels.far == 0
-        and labels.unsettled == 0
-        and now.x >= box.x - 1e-9
-        and now.y >= box.y - 1e-9
-        and now.right <= box.right + 1e-9
-        and now.top <= box.top + 1e-9
-    ):
+    if labels.far == 0 and labels.unsettled == 0 and box.contains(now):
         # written where the letter was, in its groups (the drawing's)
         moved = [c.with_changes(groups=kept[0].groups) for c in sk.calls[start:]]
         del sk.calls[start:]
