@@ -4,16 +4,19 @@ a detail view, `drawing.detail`, is drawn round)."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Mapping
+from typing import Any
 
 import numpy as np
 
+from ..drawing.labels import Labels
+from ..drawing.page import Rect
 from ..drawing.sketch import Sketch
 from ..i18n import Language
 from ..render.recording import Naming
 from .lint import SheetView, label_clear, label_near
 
-__all__ = ["crowded", "crowded_ends", "crowded_names", "stand_for"]
+__all__ = ["crowded", "crowded_ends", "crowded_names", "far_names_again", "stand_for"]
 
 
 def crowded(sketch: Sketch, lang: Language) -> Iterator[Naming]:
@@ -53,3 +56,91 @@ def crowded_ends(sketch: Sketch, lang: Language) -> np.ndarray:
         end = n.end if n.kind == "segment" and n.end is not None else n.anchor
         out.append((n.anchor[0], n.anchor[1], end[0], end[1]))
     return np.array(out, dtype=float).reshape(-1, 4)
+
+
+def far_names_again(
+    sketch: Sketch,
+    lang: Language,
+    labelling: Mapping[str, Any],
+    words: Callable[[str], str],
+    fits: Callable[[Rect], bool],
+) -> int:
+    """On a laid-out drawing, each name the sheet linter finds far from what
+    it names written again, alone, among everything else drawn and written
+    there (`Labels` with `labelling` and `words`, at the height it has): kept
+    where the placer finds it a place near or a leader, the drawing's box
+    still `fits`, and the linter then finds fewer names far or on something
+    in the drawing; else put back as it was. While the drawing was lettered,
+    the place near it was taken by a name that went elsewhere later (gen
+    104's view of the loaded mechanism: h2 14.3 mm off its arm, a place by
+    it free on the laid-out sheet). How many it moved."""
+    view = _view(sketch, lang)
+    far = _far(view)
+    crowd = _crowd(view) if far else 0
+    moved = 0
+    for naming, size in far:
+        before = list(sketch.calls)
+        if _written_again(sketch, naming, size, view, labelling, words) and fits(sketch.extent()):
+            now = _view(sketch, lang)
+            left = _crowd(now)
+            if left < crowd:
+                view, crowd, moved = now, left, moved + 1
+                continue
+        sketch.calls[:] = before
+    return moved
+
+
+def _view(sketch: Sketch, lang: Language) -> SheetView:
+    return SheetView(list(sketch.calls), 841.0, 594.0, lang)
+
+
+def _far(view: SheetView) -> list[tuple[Naming, float]]:
+    """What the labels of `view` that the linter finds far from what they
+    name name, with each one's letter height."""
+    found = {f.where for f in label_near(view)}
+    return [
+        (lab.naming, lab.runs[0].size)
+        for lab in view.labels
+        if lab.naming is not None
+        and (round(float(lab.box.centroid.x), 1), round(float(lab.box.centroid.y), 1)) in found
+    ]
+
+
+def _crowd(view: SheetView) -> int:
+    """How many names of `view` the linter finds far or on something."""
+    return sum(1 for _ in label_near(view)) + sum(1 for _ in label_clear(view))
+
+
+def _written_again(
+    sketch: Sketch,
+    naming: Naming,
+    size: float,
+    view: SheetView,
+    labelling: Mapping[str, Any],
+    words: Callable[[str], str],
+) -> bool:
+    """`naming`'s label taken out of `sketch` and written again where it
+    stood among its calls (in its groups): whether the placer found it a
+    place near what it names or a leader to one, on nothing."""
+    at = [i for i, c in enumerate(sketch.calls) if getattr(c, "naming", None) == naming]
+    groups = sketch.calls[at[0]].groups
+    for i in reversed(at):
+        del sketch.calls[i]
+    start = len(sketch.calls)
+    labels = Labels(sketch, size, **labelling, words=words)
+    for lab in view.labels:  # the linter measures a name's runs together
+        if lab.naming != naming:
+            labels.avoid(lab.box, labels.clearance)
+    markup = naming.markup.replace(",\n", ", ")  # names one under another: in one line first
+    if naming.kind == "point":
+        labels.place(naming.anchor, markup)
+    elif naming.kind == "arrow":
+        assert naming.end is not None
+        labels.place_arrow(naming.anchor, naming.end, markup)
+    else:
+        assert naming.end is not None
+        labels.place_along(naming.anchor, naming.end, markup, around=True)
+    written = [c.with_changes(groups=groups) for c in sketch.calls[start:]]
+    del sketch.calls[start:]
+    sketch.calls[at[0] : at[0]] = written
+    return labels.far == 0 and labels.unsettled == 0

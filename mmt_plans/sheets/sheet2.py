@@ -74,7 +74,7 @@ from .common import (
     scale_step,
     title_fields,
 )
-from .crowd import crowded, crowded_ends, crowded_names
+from .crowd import crowded, crowded_ends, crowded_names, far_names_again
 from .scales_record import Sheet2Scales
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
@@ -121,6 +121,8 @@ _LEVER_AGAIN: dict[str, Any] = dict(_LABELLING, smaller=2.5)
 # short arm's name in a knot of forces (gen 240's group 2-3 at 1:100, h'6 of a
 # 2.8 mm arm 11.7 mm off at 3.5 mm, beside it at 2.5 mm)
 _FORCE_AGAIN: dict[str, Any] = dict(_FORCE_LABELLING, smaller=2.5)
+# a name that stands far on the laid-out sheet, written again alone (`_far_names_again`)
+_FAR_AGAIN: dict[str, Any] = dict(_LABELLING, fine=True, smaller=2.5)
 # how the lever is lettered so: in the order that letters it best whatever box
 # that takes, or in those that keep its box (where the sheet has no more room)
 Again = Literal["grow", "box"]
@@ -3324,6 +3326,20 @@ def _letters_by_rims(
             _letter_by_rim(sketches[name], centre, d.radius / mu, d.letter, composer.lang)
 
 
+def _far_names_again(composer: _Composer, sketches: dict[str, Sketch]) -> None:
+    """On the laid-out sheet, each drawing's names that stand far written
+    again one by one among all else written there (`far_names_again`), at
+    GOST's 2.5 mm too and on the fine grid of places, where that keeps the
+    drawing's box: done last, as `_letters_by_rims`, so that views, scales
+    and layout stay as chosen (gen 30's lever view: Fin5 8.9 mm off its
+    arrow, a place by it taken while the view was lettered, free on the
+    laid-out sheet)."""
+    words = _index_words(composer.lang)
+    for name in composer.drawings:
+        sk = sketches[name]
+        far_names_again(sk, composer.lang, _FAR_AGAIN, words, composer.extent(sk).contains)
+
+
 def _letter_by_rim(sk: Sketch, centre: np.ndarray, r: float, letter: str, lang: Language) -> None:
     """`_letters_by_rims` for one disc of `sk` (its centre and radius in the
     sketch's mm): the letter is found where the drawing wrote it, by the
@@ -3588,6 +3604,7 @@ def compose_sheet2(
     layout, placed = composer.given_room(sketches, *arranged, scales)
     layout, placed = _loaded_details_again(composer, sketches, layout, placed, scales)
     _letters_by_rims(composer, sketches, scales)
+    _far_names_again(composer, sketches)
     result = Sheet2(
         fa,
         layout,

@@ -1,0 +1,107 @@
+"""A name that stands far on a laid-out drawing, written again alone (#21).
+
+While a drawing is lettered, the place near a name may be taken by a name
+that goes elsewhere later (lettered again in another order, at another
+height, or moved by the detail views' pass): the name then stands far
+though the laid-out drawing has room by what it names. `far_names_again`
+writes each name the sheet linter finds far once more among all else
+drawn and written there, and keeps it only where the linter then finds
+fewer names far or on something and the drawing's box still fits. Sheet 2
+does so last (`_far_names_again`): gen 30's lever view Fin5 8.9 mm off its
+arrow and gen 104's loaded-mechanism view h2 14.3 mm off its arm, each with
+a place near free on the laid-out sheet."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import shapely
+from lettering import composed_sheet2
+
+from mmt_plans.drawing.labels import NEAR_MM, Labels
+from mmt_plans.drawing.sketch import Sketch
+from mmt_plans.render.recording import RecordingBackend
+from mmt_plans.sheets.crowd import far_names_again
+from mmt_plans.sheets.lint import SheetView, lint
+
+_X = np.array([0.0, 0.0])  # the point named
+# the only free room near it, 3.5 mm above it: room for one name
+_POCKET, _POCKET_HALF = np.array([0.0, 7.0]), np.array([3.2, 3.5])
+_AWAY, _AWAY_HALF = np.array([0.0, -16.0]), np.array([6.0, 6.0])  # free room far from it
+
+
+def _scene(blocked: bool) -> Sketch:
+    """Main lines 2 mm apart over a 90 mm frame, but for a pocket just above
+    the point X and a room 30 mm below it; B, the name of a point at the
+    pocket's top, written first, takes the pocket, so X goes far (to the
+    room below: no leader crosses main lines). Unless `blocked`, B is then
+    rubbed out: the pocket by X is free again."""
+    sk = Sketch(RecordingBackend().look)
+    with sk.group("d", "plan"):
+        for v in np.arange(-45.0, 45.1, 2.0):
+            for along in (0, 1):  # lines along x, then along y
+                cuts = sorted(
+                    (float(c[along] - h[along]), float(c[along] + h[along]))
+                    for c, h in ((_POCKET, _POCKET_HALF), (_AWAY, _AWAY_HALF))
+                    if abs(v - c[1 - along]) < h[1 - along]
+                )
+                lo = -45.0
+                for a, b in [*cuts, (45.0, 45.0)]:
+                    if a > lo:
+                        ends = [(lo, v), (a, v)] if along == 0 else [(v, lo), (v, a)]
+                        sk.line(ends[0], ends[1], "main")
+                    lo = b
+        sk.circle(tuple(_X), 0.6, "main", fill="black")
+        labels = Labels(sk, 3.5)
+        labels.place(_POCKET + (0.0, 3.0), "B")
+        labels.place(_X, "X")
+    assert labels.far == 1, "X is written far, the pocket taken by B"
+    if not blocked:
+        sk.calls[:] = [
+            c for c in sk.calls if getattr(c, "naming", None) is None or c.naming.markup != "B"
+        ]
+    return sk
+
+
+def _x_box(sk: Sketch) -> shapely.Geometry:
+    runs = [c for c in sk.calls if getattr(c, "naming", None) and c.naming.markup == "X"]
+    return shapely.union_all([shapely.box(*sk.text_box(c)) for c in runs if c.name == "text"])
+
+
+def test_a_far_name_with_room_by_what_it_names_is_written_there_in_the_box():
+    sk = _scene(blocked=False)
+    assert _x_box(sk).distance(shapely.Point(_X)) > NEAR_MM
+    box = sk.extent()
+    moved = far_names_again(sk, "en", {}, lambda m: m, box.contains)
+    assert moved == 1
+    assert _x_box(sk).distance(shapely.Point(_X)) <= NEAR_MM
+    assert _x_box(sk).within(shapely.box(*(_POCKET - _POCKET_HALF), *(_POCKET + _POCKET_HALF)))
+    assert sk.extent() == box
+    (x,) = {c.groups for c in sk.calls if getattr(c, "naming", None) and c.naming.markup == "X"}
+    assert x == ("d",)  # in its drawing's group
+    view = SheetView(list(sk.calls), sk.width, sk.height, "en")
+    assert lint(view, ["label-near", "label-clear"]) == []
+
+
+def test_a_far_name_with_no_room_by_what_it_names_is_left_as_it_was():
+    sk = _scene(blocked=True)
+    before = list(sk.calls)
+    assert far_names_again(sk, "en", {}, lambda m: m, sk.extent().contains) == 0
+    assert sk.calls == before
+
+
+def test_a_far_name_is_not_moved_past_the_box_it_must_keep():
+    sk = _scene(blocked=False)
+    before = list(sk.calls)
+    assert far_names_again(sk, "en", {}, lambda m: m, lambda rect: False) == 0
+    assert sk.calls == before
+
+
+@pytest.mark.parametrize(
+    ("seed", "name"),
+    [(30, "Fin5"), (104, "h2")],
+)
+def test_regression_far_names_on_generated_sheets_stand_by_what_they_name(seed, name):
+    _, _, found = composed_sheet2(seed, "en")
+    far = [f for f in found if f.rule == "label-near" and f.message.startswith(f"'{name}' ")]
+    assert far == []
