@@ -16,7 +16,14 @@ from ..i18n import Language
 from ..render.recording import Naming
 from .lint import SheetView, label_clear, label_near
 
-__all__ = ["crowded", "crowded_ends", "crowded_names", "far_names_again", "stand_for"]
+__all__ = [
+    "crowded",
+    "crowded_ends",
+    "crowded_names",
+    "far_names_again",
+    "placer_among",
+    "stand_for",
+]
 
 
 def crowded(sketch: Sketch, lang: Language) -> Iterator[Naming]:
@@ -80,7 +87,7 @@ def far_names_again(
     moved = 0
     for naming, size in far:
         before = list(sketch.calls)
-        if _written_again(sketch, naming, size, view, labelling, words) and fits(sketch.extent()):
+        if _written_again(sketch, naming, size, lang, labelling, words) and fits(sketch.extent()):
             now = _view(sketch, lang)
             left = _crowd(now)
             if left < crowd:
@@ -88,6 +95,24 @@ def far_names_again(
                 continue
         sketch.calls[:] = before
     return moved
+
+
+def placer_among(
+    sketch: Sketch,
+    lang: Language,
+    size: float,
+    labelling: Mapping[str, Any],
+    words: Callable[[str], str],
+) -> Labels:
+    """A placer (`Labels` at `size` with `labelling` and `words`) for one
+    more name on a lettered drawing, each name written there kept off
+    whole: the linter measures the runs of a name (a letter, its index) as
+    one box, the placer each run (gen 262's 'H' by a detail's rim, clear of
+    G6's letter and index, on the box of the two by 0.5 mm²)."""
+    labels = Labels(sketch, size, **labelling, words=words)
+    for lab in _view(sketch, lang).labels:
+        labels.avoid(lab.box, labels.clearance)
+    return labels
 
 
 def _view(sketch: Sketch, lang: Language) -> SheetView:
@@ -115,7 +140,7 @@ def _written_again(
     sketch: Sketch,
     naming: Naming,
     size: float,
-    view: SheetView,
+    lang: Language,
     labelling: Mapping[str, Any],
     words: Callable[[str], str],
 ) -> bool:
@@ -127,10 +152,7 @@ def _written_again(
     for i in reversed(at):
         del sketch.calls[i]
     start = len(sketch.calls)
-    labels = Labels(sketch, size, **labelling, words=words)
-    for lab in view.labels:  # the linter measures a name's runs together
-        if lab.naming != naming:
-            labels.avoid(lab.box, labels.clearance)
+    labels = placer_among(sketch, lang, size, labelling, words)
     markup = naming.markup.replace(",\n", ", ")  # names one under another: in one line first
     if naming.kind == "point":
         labels.place(naming.anchor, markup)

@@ -74,7 +74,7 @@ from .common import (
     scale_step,
     title_fields,
 )
-from .crowd import crowded, crowded_ends, crowded_names, far_names_again
+from .crowd import crowded, crowded_ends, crowded_names, far_names_again, placer_among
 from .scales_record import Sheet2Scales
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
@@ -3364,7 +3364,7 @@ def _letter_by_rim(sk: Sketch, centre: np.ndarray, r: float, letter: str, lang: 
     for i in reversed(runs):
         del sk.calls[i]
     start = len(sk.calls)
-    labels = Labels(sk, _TEXT, **_LABELLING, words=_index_words(lang))
+    labels = placer_among(sk, lang, _TEXT, _LABELLING, _index_words(lang))
     labels.place_first(rim_anchors(centre, r), letter, clear=True)
     now = sk.extent()
     if labels.far == 0 and labels.unsettled == 0 and box.contains(now):

@@ -105,3 +105,22 @@ def test_regression_far_names_on_generated_sheets_stand_by_what_they_name(seed, 
     _, _, found = composed_sheet2(seed, "en")
     far = [f for f in found if f.rule == "label-near" and f.message.startswith(f"'{name}' ")]
     assert far == []
+
+
+def test_a_name_written_among_others_keeps_off_the_box_of_each_names_runs():
+    """The linter measures a name's runs (a letter, its index) as one box;
+    the placer for one more name (`placer_among`, as the detail letters'
+    and the far names' passes write them) keeps off that box, not only off
+    each run: above the index, beside the letter, is no place for it."""
+    from mmt_plans.sheets.crowd import placer_among
+
+    sk = Sketch(RecordingBackend().look)
+    with sk.group("d", "plan"):
+        Labels(sk, 3.5).place((0.0, 0.0), "G_{6}")
+    runs = [sk.text_box(c) for c in sk.calls if c.name == "text"]
+    assert len(runs) == 2  # the letter, then its index, lower and to the right
+    (_, ly0, _, ly1), (ix0, iy0, ix1, iy1) = runs
+    assert iy1 < ly1 - 1.5
+    corner = (ix1 - 0.6, ly1 - 0.6, ix1 - 0.1, ly1 - 0.1)  # in the box of both, on neither
+    assert Labels(sk, 3.5).free(corner)
+    assert not placer_among(sk, "en", 3.5, {}, lambda m: m).free(corner)
