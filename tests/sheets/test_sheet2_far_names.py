@@ -204,14 +204,16 @@ def test_a_lever_whose_details_leave_names_crowded_where_it_reached_has_them_cho
     # gen 112 (RRR-RRR-PRP-RPP-RRR): its lever's detail view, chosen at the
     # textbook scale, leaves the arms' names 'h…' 10-20 mm off at the scale
     # the lever reaches the sheet at; chosen again there, none stands far (the
-    # lever's names lettered again at 2.5 mm on the laid-out sheet, a later
-    # repair, left out of both runs to weigh the choice alone)
+    # lever's names lettered again at 2.5 mm on the laid-out sheet and each far
+    # name written again alone last, later repairs, left out of both runs to
+    # weigh the choice alone)
     regrown = sheet2._Composer.regrown
 
     def not_the_lever(self, name, scales, how="grow"):  # type: ignore[no-untyped-def]
         return None if name.startswith("zhukovsky-lever") else regrown(self, name, scales, how)
 
     monkeypatch.setattr(sheet2._Composer, "regrown", not_the_lever)
+    monkeypatch.setattr(sheet2, "_far_names_again", lambda composer, sketches: None)
     again = _lever_findings(112, "en")
     monkeypatch.setattr(sheet2, "_with_lever_details", lambda c, steps, s: (c, steps))
     once = _lever_findings(112, "en")
