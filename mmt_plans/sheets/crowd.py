@@ -4,7 +4,7 @@ a detail view, `drawing.detail`, is drawn round)."""
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -14,7 +14,7 @@ from ..drawing.page import Rect
 from ..drawing.sketch import Sketch
 from ..i18n import Language
 from ..render.recording import Naming
-from .lint import SheetView, label_clear, label_near
+from .lint import Finding, SheetView, label_clear, label_near
 
 __all__ = [
     "crowded",
@@ -23,18 +23,16 @@ __all__ = [
     "far_names_again",
     "placer_among",
     "stand_for",
+    "written_again",
 ]
 
 
 def crowded(sketch: Sketch, lang: Language) -> Iterator[Naming]:
     """What the names of a drawing that the sheet linter finds far from what
     they name, or on a line or another name, name."""
-    view = SheetView(list(sketch.calls), 841.0, 594.0, lang)
-    found = {f.where for f in (*label_near(view), *label_clear(view))}
-    for lab in view.labels:
-        c = lab.box.centroid
-        if lab.naming is not None and (round(float(c.x), 1), round(float(c.y), 1)) in found:
-            yield lab.naming
+    view = _view(sketch, lang)
+    for naming, _ in _named_at(view, (*label_near(view), *label_clear(view))):
+        yield naming
 
 
 def crowded_names(sketch: Sketch, lang: Language, anchors: bool = False) -> np.ndarray:
@@ -122,7 +120,13 @@ def _view(sketch: Sketch, lang: Language) -> SheetView:
 def _far(view: SheetView) -> list[tuple[Naming, float]]:
     """What the labels of `view` that the linter finds far from what they
     name name, with each one's letter height."""
-    found = {f.where for f in label_near(view)}
+    return _named_at(view, label_near(view))
+
+
+def _named_at(view: SheetView, findings: Iterable[Finding]) -> list[tuple[Naming, float]]:
+    """What the labels of `view` that `findings` are about (a label's
+    finding stands at its box's centre) name, with each one's letter height."""
+    found = {f.where for f in findings}
     return [
         (lab.naming, lab.runs[0].size)
         for lab in view.labels
@@ -144,25 +148,46 @@ def _written_again(
     labelling: Mapping[str, Any],
     words: Callable[[str], str],
 ) -> bool:
-    """`naming`'s label taken out of `sketch` and written again where it
-    stood among its calls (in its groups): whether the placer found it a
-    place near what it names or a leader to one, on nothing."""
+    """`naming`'s label written again (`written_again`) by what it names:
+    whether the placer found it a place near it or a leader to one, on
+    nothing."""
     at = [i for i, c in enumerate(sketch.calls) if getattr(c, "naming", None) == naming]
+    markup = naming.markup.replace(",\n", ", ")  # names one under another: in one line first
+
+    def write(labels: Labels) -> None:
+        if naming.kind == "point":
+            labels.place(naming.anchor, markup)
+        elif naming.kind == "arrow":
+            assert naming.end is not None
+            labels.place_arrow(naming.anchor, naming.end, markup)
+        else:
+            assert naming.end is not None
+            labels.place_along(naming.anchor, naming.end, markup, around=True)
+
+    labels = written_again(sketch, at, lang, size, labelling, words, write)
+    return labels.far == 0 and labels.unsettled == 0
+
+
+def written_again(
+    sketch: Sketch,
+    at: Sequence[int],
+    lang: Language,
+    size: float,
+    labelling: Mapping[str, Any],
+    words: Callable[[str], str],
+    write: Callable[[Labels], object],
+) -> Labels:
+    """The calls of one name (their places `at` in `sketch`) taken out, the
+    name written again by `write` with a `placer_among` (`size`,
+    `labelling`, `words`), and put where it stood among the calls, in its
+    groups (the drawing's); the placer, for its counts."""
     groups = sketch.calls[at[0]].groups
-    for i in reversed(at):
+    for i in sorted(at, reverse=True):
         del sketch.calls[i]
     start = len(sketch.calls)
     labels = placer_among(sketch, lang, size, labelling, words)
-    markup = naming.markup.replace(",\n", ", ")  # names one under another: in one line first
-    if naming.kind == "point":
-        labels.place(naming.anchor, markup)
-    elif naming.kind == "arrow":
-        assert naming.end is not None
-        labels.place_arrow(naming.anchor, naming.end, markup)
-    else:
-        assert naming.end is not None
-        labels.place_along(naming.anchor, naming.end, markup, around=True)
+    write(labels)
     written = [c.with_changes(groups=groups) for c in sketch.calls[start:]]
     del sketch.calls[start:]
     sketch.calls[at[0] : at[0]] = written
-    return labels.far == 0 and labels.unsettled == 0
+    return labels

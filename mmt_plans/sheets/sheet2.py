@@ -74,7 +74,7 @@ from .common import (
     scale_step,
     title_fields,
 )
-from .crowd import crowded, crowded_ends, crowded_names, far_names_again, placer_among
+from .crowd import crowded, crowded_ends, crowded_names, far_names_again, written_again
 from .scales_record import Sheet2Scales
 
 __all__ = ["Sheet2", "compose_sheet2", "force_markup", "guide_side", "GROUPS"]
@@ -3359,23 +3359,19 @@ def _letter_by_rim(sk: Sketch, centre: np.ndarray, r: float, letter: str, lang: 
     written = shapely.union_all([shapely.box(*b) for b in boxes])
     if written.distance(shapely.Point(rim)) <= NEAR_MM:
         return
-    box = sk.extent()
-    kept = [sk.calls[i] for i in runs]
-    for i in reversed(runs):
-        del sk.calls[i]
-    start = len(sk.calls)
-    labels = placer_among(sk, lang, _TEXT, _LABELLING, _index_words(lang))
-    labels.place_first(rim_anchors(centre, r), letter, clear=True)
-    now = sk.extent()
-    if labels.far == 0 and labels.unsettled == 0 and box.contains(now):
-        # written where the letter was, in its groups (the drawing's)
-        moved = [c.with_changes(groups=kept[0].groups) for c in sk.calls[start:]]
-        del sk.calls[start:]
-        sk.calls[runs[0] : runs[0]] = moved
-        return
-    del sk.calls[start:]  # no rim point serves: as it was
-    for i, c in zip(runs, kept):
-        sk.calls.insert(i, c)
+    box, before = sk.extent(), list(sk.calls)
+    anchors = rim_anchors(centre, r)
+    labels = written_again(
+        sk,
+        runs,
+        lang,
+        _TEXT,
+        _LABELLING,
+        _index_words(lang),
+        lambda placer: placer.place_first(anchors, letter, clear=True),
+    )
+    if labels.far or labels.unsettled or not box.contains(sk.extent()):
+        sk.calls[:] = before  # no rim point serves: as it was
 
 
 def _loaded_details_again(
