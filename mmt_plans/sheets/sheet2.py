@@ -959,6 +959,13 @@ def sketch_group(
     return merged if len(list(crowded(merged, lang))) < before else sk
 
 
+def _force_labelling(grow: bool) -> dict[str, Any]:
+    """How a group or the driving link is lettered: as the force polygons
+    (`_FORCE_LABELLING`); lettered again on the laid-out sheet (`grow`), at
+    GOST's 2.5 mm too (`_FORCE_AGAIN`)."""
+    return _FORCE_AGAIN if grow else _FORCE_LABELLING
+
+
 def _group_view(
     fa: ForceAnalysis,
     g: Any,
@@ -976,9 +983,7 @@ def _group_view(
     one label; `lines` receives how many labels that saves."""
     state = fa.loads.state
     mech = state.mech
-    d = _Drawing(
-        look, state, mu_l, lang, grow=grow, labelling=_FORCE_AGAIN if grow else _FORCE_LABELLING
-    )
+    d = _Drawing(look, state, mu_l, lang, grow=grow, labelling=_force_labelling(grow))
     gid = f"group-{g.name}"
     with d.sk.group(gid, "assur-group"):
         d.links(g.links, frame=False)
@@ -1039,9 +1044,7 @@ def sketch_driving_link(
 ) -> Sketch:
     state = fa.loads.state
     dl = fa.driving_link
-    d = _Drawing(
-        look, state, mu_l, lang, grow=grow, labelling=_FORCE_AGAIN if grow else _FORCE_LABELLING
-    )
+    d = _Drawing(look, state, mu_l, lang, grow=grow, labelling=_force_labelling(grow))
     with d.sk.group("driving-link", "driving-link"):
         d.links([dl.link], frame=False)
         forces = [
