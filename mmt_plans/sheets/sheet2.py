@@ -121,8 +121,9 @@ _LEVER_AGAIN: dict[str, Any] = dict(_LABELLING, smaller=2.5)
 # short arm's name in a knot of forces (gen 240's group 2-3 at 1:100, h'6 of a
 # 2.8 mm arm 11.7 mm off at 3.5 mm, beside it at 2.5 mm)
 _FORCE_AGAIN: dict[str, Any] = dict(_FORCE_LABELLING, smaller=2.5)
-# a name that stands far on the laid-out sheet, written again alone (`_far_names_again`)
-_FAR_AGAIN: dict[str, Any] = dict(_LABELLING, fine=True, smaller=2.5)
+# a name that stands far on the laid-out sheet, written again alone (`_far_names_again`),
+# led on the shortest line to a free place where no place near and no ring's leader is
+_FAR_AGAIN: dict[str, Any] = dict(_LABELLING, fine=True, smaller=2.5, shortest_leaders=True)
 # how the lever is lettered so: in the order that letters it best whatever box
 # that takes, or in those that keep its box (where the sheet has no more room)
 Again = Literal["grow", "box"]

@@ -124,3 +124,52 @@ def test_a_name_written_among_others_keeps_off_the_box_of_each_names_runs():
     corner = (ix1 - 0.6, ly1 - 0.6, ix1 - 0.1, ly1 - 0.1)  # in the box of both, on neither
     assert Labels(sk, 3.5).free(corner)
     assert not placer_among(sk, "en", 3.5, {}, lambda m: m).free(corner)
+
+
+# an arm walled in from both sides by filled shapes (no leader crosses them)
+# from its ends on, but for a gap 2.4 mm wide across the wall above it at
+# 93 % of its length: a point no fraction along it that the rings' leaders
+# start from (the tenths, the middle, 0.2, 0.35, 0.65, 0.8) lines up with
+_ARM = ((0.0, 0.0), (60.0, 0.0))
+_GAP_X, _GAP_HALF, _WALL = 55.8, 1.2, 10.0
+
+
+def _walled_arm() -> Sketch:
+    sk = Sketch(RecordingBackend().look)
+    with sk.group("d", "plan"):
+        sk.line(*_ARM, "thin")
+        left, right = _GAP_X - _GAP_HALF, _GAP_X + _GAP_HALF
+        for pts in (
+            [(-12, -_WALL), (72, -_WALL), (72, -0.6), (-12, -0.6)],  # below it
+            [(-12, 0.6), (left, 0.6), (left, _WALL), (-12, _WALL)],  # above, left of the gap
+            [(right, 0.6), (72, 0.6), (72, _WALL), (right, _WALL)],  # above, right of it
+            [(-12, -0.6), (-0.8, -0.6), (-0.8, 0.6), (-12, 0.6)],  # past its ends
+            [(60.8, -0.6), (72, -0.6), (72, 0.6), (60.8, 0.6)],
+        ):
+            sk.polygon(pts, "thin", fill="black")
+    return sk
+
+
+@pytest.mark.parametrize("shortest", [False, True])
+def test_a_name_walled_in_is_led_on_the_shortest_line_through_a_gap(shortest):
+    """No place near the arm is free and no leader of the rings finds the
+    gap: the arm's name stands far. With `shortest_leaders` (the far names'
+    pass), a leader from the nearest point of the arm to each free box round
+    it finds the gap, and the linter takes the leader."""
+    sk = _walled_arm()
+    with sk.group("d", "plan"):
+        labels = Labels(sk, 3.5, wide_leaders=True, shortest_leaders=shortest)
+        labels.place_along(*_ARM, "h_{16}", around=True)
+    view = SheetView(list(sk.calls), sk.width, sk.height, "en")
+    found = lint(view, ["label-near", "label-clear"])
+    leaders = [c for c in sk.calls if c.name == "line" and c.line == "thin"][1:]
+    if not shortest:
+        assert labels.far == 1
+        assert [f.rule for f in found] == ["label-near"]
+        assert leaders == []
+        return
+    assert (labels.far, labels.unsettled) == (0, 0)
+    assert found == []
+    ((sx, sy), (ex, ey)) = (leaders[0].start, leaders[0].end)
+    assert sy == pytest.approx(0.0) and ey > _WALL  # from the arm out through the wall
+    assert abs(sx - _GAP_X) < _GAP_HALF and abs(ex - _GAP_X) < _GAP_HALF  # in the gap
