@@ -3258,6 +3258,10 @@ def _detailed(
         composer.page,
         compact=composer.compact,
         details=bool(composer.details),
+        # the lever's views as they are (those found on the lever as it
+        # reached the sheet are not found again at its textbook scale: gen
+        # 153 uk's A and B, lost to the loaded mechanism's view, left k9 far)
+        lever_views=composer.details or None,
         mechanism_details=found,
         groups=composer.groups,
         held=composer.held,

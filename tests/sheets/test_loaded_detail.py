@@ -166,3 +166,38 @@ def test_an_arm_cut_at_a_detail_views_edge_is_named_along_the_part_drawn():
     for end in (arm.anchor, arm.end):
         assert np.hypot(*(np.asarray(end) - disc_c)) <= disc_r + 1e-6
     assert not [f for f in near_findings(view) if "h6" in str(f) or "h_{6}" in str(f)]
+
+
+def test_the_levers_views_found_as_it_reached_the_sheet_stay_with_the_mechanisms(monkeypatch):
+    """Gen 153 uk: the lever reaches the sheet a step smaller than its
+    textbook scale and gets detail views there (`_with_lever_details`); the
+    loaded mechanism's view is then fitted on a sheet composed again
+    (`_detailed`), which kept the lever's views only where the lever at its
+    textbook scale would choose them itself: it did not, and k9 stood 9.8 mm
+    off its image on a lever with no view. Now both kinds of view reach the
+    sheet, and every name of the lever and its views stands near."""
+    views: list[tuple[object, ...]] = []  # the lever's views of each sheet composed
+    made = sheet2._Composer.__init__
+
+    def spy(self, *args, **kwargs):
+        made(self, *args, **kwargs)
+        views.append(tuple(self.details))
+
+    monkeypatch.setattr(sheet2._Composer, "__init__", spy)
+    backend = RecordingBackend(841.0, 594.0)
+    sheet = compose_sheet2(solved_seed(153), backend, "uk")
+    assert views[0] == ()  # none at the lever's textbook scale
+    assert sheet.details and sheet.mechanism_details
+    assert views[-1] == tuple(sheet.details)  # the last sheet composed kept them
+    view = SheetView.of(backend, "uk", "gen 153 uk")
+    lever = [
+        f
+        for f in lint(view)
+        if f.rule in ("label-near", "label-clear")
+        for lab in view.labels
+        if lab.groups[:1]
+        and lab.groups[0].startswith("zhukovsky-lever")
+        and (round(lab.box.centroid.x, 1), round(lab.box.centroid.y, 1))
+        == (round(f.where[0], 1), round(f.where[1], 1))
+    ]
+    assert lever == []
