@@ -201,3 +201,16 @@ def test_the_levers_views_found_as_it_reached_the_sheet_stay_with_the_mechanisms
         == (round(f.where[0], 1), round(f.where[1], 1))
     ]
     assert lever == []
+
+
+def test_a_sheet_letters_each_detail_view_once(monkeypatch):
+    """Gen 149 en: the loaded mechanism's view took the first letter the
+    lever's views (found as the lever reached the sheet) left free, H; the
+    sheet composed again for it then chose the lever's views afresh at the
+    textbook scale, C and H, and two views named H stood on one sheet. The
+    lever keeps its views now: every view's letter is its own."""
+    backend = RecordingBackend(841.0, 594.0)
+    sheet = compose_sheet2(solved_seed(149), backend, "en")
+    letters = [d.letter for d in (*sheet.details, *sheet.mechanism_details)]
+    assert sheet.details and sheet.mechanism_details
+    assert len(set(letters)) == len(letters), letters
