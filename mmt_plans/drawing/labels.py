@@ -1452,8 +1452,7 @@ class Labels:
             # nearest first (a gap between lines narrower than a ring apart)
             found_near = self._fine_near(names, outline, w, h, drop, markup)
             if found_near is not None:
-                cx, cy = np.array([found_near[0]]), np.array([found_near[1]])
-                x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+                cx, cy, x0, x1, y0, y1 = _one_box(found_near, w, h, drop)
                 k = 0
         if k < 0 and leader is not None:
             # nothing near is free: further out, tied to it by a leader that
@@ -1463,8 +1462,7 @@ class Labels:
                 found = self._wide_leader_place(leader, w, h, drop, names, outline, markup)
             if found is not None:
                 (lx, ly), line = found
-                cx, cy = np.array([lx]), np.array([ly])
-                x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+                cx, cy, x0, x1, y0, y1 = _one_box((lx, ly), w, h, drop)
                 k = 0
         if k < 0 and names is not None and self.fine:
             # the last resort before a place far off: the fine grid again, the
@@ -1473,23 +1471,20 @@ class Labels:
                 names, outline, w - 2 * _TIGHT, h - 2 * _TIGHT, drop, markup
             )
             if found_near is not None:
-                cx, cy = np.array([found_near[0]]), np.array([found_near[1]])
-                x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+                cx, cy, x0, x1, y0, y1 = _one_box(found_near, w, h, drop)
                 k = 0
         if k < 0 and leader is not None and names is not None and self.fine:
             # and before that: a leader further out, from anywhere along what it names
             found = self._leader_place(leader, w, h, drop, names, outline, markup, wide=True)
             if found is not None:
                 (lx, ly), line = found
-                cx, cy = np.array([lx]), np.array([ly])
-                x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+                cx, cy, x0, x1, y0, y1 = _one_box((lx, ly), w, h, drop)
                 k = 0
         if k < 0 and names is not None and self.fine and self.shortest_leaders:
             found = self._shortest_leader_place(names, outline, w, h, drop, markup)
             if found is not None:
                 (lx, ly), line = found
-                cx, cy = np.array([lx]), np.array([ly])
-                x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
+                cx, cy, x0, x1, y0, y1 = _one_box((lx, ly), w, h, drop)
                 k = 0
         if k < 0 and not settle:
             return None
@@ -2430,6 +2425,15 @@ def enclosing(point: PointLike, outlines: Iterable[BaseGeometry]) -> BaseGeometr
         return (round(g.area, 6), round(g.centroid.distance(p), 6), corners)
 
     return min(held, key=order) if held else None
+
+
+def _one_box(
+    at: tuple[float, float], w: float, h: float, drop: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """One candidate centred `at`, as `_write_first_free` holds its candidates:
+    the centre's x and y and the box's x0, x1, y0, y1 (an index hangs `drop` below)."""
+    cx, cy = np.array([at[0]]), np.array([at[1]])
+    return cx, cy, cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2
 
 
 def _gap(
