@@ -2381,6 +2381,25 @@ class _Composer:
             (f"mu_l {dl.link}", self._pin_points({dl.link})),
         ]
 
+    def again(self, solution: Solution, **changes: Any) -> _Composer:
+        """A composer of the same sheet afresh with `changes` (the
+        constructor's keywords), every other choice made so far kept: how
+        compact, whether the lever may have detail views and which it has
+        (those found on the lever as it reached the sheet are not found
+        again at its textbook scale: gen 153 uk's A and B, lost when the
+        sheet was composed again for the loaded mechanism's view, left k9
+        9.8 mm off), the loaded mechanism's views, the groups drawn, whether
+        F_PR's polygon is held."""
+        kept: dict[str, Any] = dict(
+            compact=self.compact,
+            details=self.allows_details,
+            lever_views=self.details or None,
+            mechanism_details=self.mechanism_details,
+            groups=self.groups,
+            held=self.held,
+        )
+        return _Composer(self.fa, solution, self.look, self.lang, self.page, **{**kept, **changes})
+
     def with_mechanism_details(self, details: tuple[Detail, ...]) -> None:
         """The loaded mechanism drawn with `details` from now on: what the
         sheet's fits and packing found forgotten (the sketches are kept: their
@@ -3184,17 +3203,7 @@ def _with_lever_details(
     found = lever_details(fa, mu_V, crowd, crowding, enlarge=True)
     if not found or found == composer.details:
         return composer, steps
-    detailed = _Composer(
-        fa,
-        solution,
-        composer.look,
-        lang,
-        composer.page,
-        compact=composer.compact,
-        lever_views=found,
-        groups=composer.groups,
-        held=composer.held,
-    )
+    detailed = composer.again(solution, lever_views=found)
     return _refitted(composer, detailed, sum(composer.lettered(steps))) or (composer, steps)
 
 
@@ -3239,7 +3248,6 @@ def _detailed(
     its crowd), else fitted again with them (the filled sheet has no room
     left); with how many labels of all its drawings stand far or found no
     free place, where fewer than `was`; else None, `composer` as it was."""
-    fa, lang = composer.fa, composer.lang
     before = composer.mechanism_details
     composer.with_mechanism_details(found)
     for by in (0, 1, 2):
@@ -3250,22 +3258,7 @@ def _detailed(
                 return composer, trial, now
     composer.with_mechanism_details(before)
     # the filled sheet has no room for it: the sheet fitted again with it
-    detailed = _Composer(
-        fa,
-        solution,
-        composer.look,
-        lang,
-        composer.page,
-        compact=composer.compact,
-        details=bool(composer.details),
-        # the lever's views as they are (those found on the lever as it
-        # reached the sheet are not found again at its textbook scale: gen
-        # 153 uk's A and B, lost to the loaded mechanism's view, left k9 far)
-        lever_views=composer.details or None,
-        mechanism_details=found,
-        groups=composer.groups,
-        held=composer.held,
-    )
+    detailed = composer.again(solution, details=bool(composer.details), mechanism_details=found)
     refit = _refitted(composer, detailed, was)
     return None if refit is None else (*refit, sum(refit[0].lettered(refit[1])))
 
@@ -3352,7 +3345,8 @@ def _letter_by_rim(sk: Sketch, centre: np.ndarray, r: float, letter: str, lang: 
     """`_letters_by_rims` for one disc of `sk` (its centre and radius in the
     sketch's mm): the letter is found where the drawing wrote it, by the
     first of `rim_anchors`."""
-    rim, _ = rim_anchors(centre, r)[0]
+    anchors = rim_anchors(centre, r)
+    rim, _ = anchors[0]
     runs = [
         i
         for i, c in enumerate(sk.calls)
@@ -3368,7 +3362,6 @@ def _letter_by_rim(sk: Sketch, centre: np.ndarray, r: float, letter: str, lang: 
     if written.distance(shapely.Point(rim)) <= NEAR_MM:
         return
     box, before = sk.extent(), list(sk.calls)
-    anchors = rim_anchors(centre, r)
     labels = written_again(
         sk,
         runs,
