@@ -19,8 +19,9 @@ with a place on the sheet (mm from its bottom-left corner). The thresholds:
   images of one link's points lie on one line by similarity, as drawn).
 - ``names-unique``: no name written twice for different things in one
   drawing (two labels of the same text more than 1 mm apart that name
-  different places: a point P's image "p" and the pole p), and no pair of
-  look-alike names (O and 0, o and 0, l and 1) within 15 mm of each other.
+  different places: a point P's image "p" and the pole p), no pair of
+  look-alike names (O and 0, o and 0, l and 1) within 15 mm of each other,
+  and no letter of a detail view ("H (2:1)") given to two views of the sheet.
 - ``arrows-named``: every arrow of a plan, force polygon or lever has
   lettering within 8 mm of its shaft.
 - ``letter-height``: every letter, indices included, at least 2.5 mm high
@@ -228,6 +229,9 @@ def label_near(v: SheetView) -> Iterator[Finding]:
     shapes = v.shapes()
     heavy = [s for c, s in shapes if getattr(c, "line", None) == "main" and v.in_drawing(c)]
     tree = STRtree(heavy) if heavy else None
+    # the lettering a leader must not cross (each label's box shrunk as label-clear does)
+    inner = [lab.box.buffer(-CLEAR_SHRINK) for lab in v.labels]
+    letters = STRtree(inner)
     blocks = [s for c, s in shapes if c.name == "polygon" and s.geom_type == "Polygon"]
     for lab in v.labels:
         if lab.naming is None:
@@ -250,9 +254,20 @@ def label_near(v: SheetView) -> Iterator[Finding]:
                 and far.length > 0
                 and len(tree.query(far, predicate="intersects")) > 0
             )
-            if joined and not crossed:
+            through = [
+                v.labels[i].text
+                for i in letters.query(ld, predicate="intersects")
+                if v.labels[i] is not lab and not inner[i].is_empty
+            ]
+            if joined and not crossed and not through:
                 continue
-            why = "its leader crosses a main line" if crossed else "its leader does not reach it"
+            why = (
+                "its leader crosses a main line"
+                if crossed
+                else f"its leader crosses the name {through[0]!r}"
+                if through
+                else "its leader does not reach it"
+            )
             yield Finding("label-near", f"{lab.text!r}: {why}", _at(lab.box), v.name)
             continue
         yield Finding(
@@ -334,6 +349,7 @@ def vectors_apart(v: SheetView) -> Iterator[Finding]:
 
 
 def names_unique(v: SheetView) -> Iterator[Finding]:
+    yield from _detail_letters(v)
     named = [lab for lab in v.labels if lab.naming is not None]
     by_group: dict[str, list[_Label]] = {}
     for lab in named:
@@ -359,6 +375,29 @@ def names_unique(v: SheetView) -> Iterator[Finding]:
                     _at(b.box),
                     v.name,
                 )
+
+
+_DETAIL_TITLE = re.compile(r"^(\S+) \(\d+(?:[.,]\d+)?:1\)$")
+
+
+def _detail_letters(v: SheetView) -> Iterator[Finding]:
+    """A detail view's letter (its title "H (2:1)", GOST 2.305) names one
+    view of the sheet: two views lettered alike read as one."""
+    seen: dict[str, str] = {}
+    for c in v.texts:
+        m = _DETAIL_TITLE.match(c.content)
+        top = v.top_group(c)
+        if m is None or "detail" not in top:
+            continue
+        letter = m.group(1)
+        if letter in seen and seen[letter] != top:
+            yield Finding(
+                "names-unique",
+                f"two detail views are lettered {letter!r} ({seen[letter]} and {top})",
+                (round(c.pos[0], 1), round(c.pos[1], 1)),
+                v.name,
+            )
+        seen.setdefault(letter, top)
 
 
 def arrows_named(v: SheetView) -> Iterator[Finding]:

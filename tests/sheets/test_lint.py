@@ -57,6 +57,24 @@ def test_label_near_what_it_names_or_tied_by_a_leader():
     assert "crosses" in rules(b, "label-near")[0].message
 
 
+def test_a_leader_that_crosses_another_name_does_not_join():
+    # a far name led to its point past another label: the reader follows the
+    # leader into the other name's letters
+    def drawn(other_at):
+        b = RecordingBackend()
+        with b.group("m", "mechanism"):
+            b.circle((100, 100), 1.0)
+            label(b, "D", "point", (110, 106), at=other_at)
+            with b.naming("C", "point", (100, 100)):
+                b.line((100, 100), (118.5, 100), "thin")
+                b.text((120, 100), "C", 3.5, valign="middle")
+        return b
+
+    found = rules(drawn((110, 100)), "label-near")  # "D" written across the leader
+    assert len(found) == 1 and "crosses the name 'D'" in found[0].message
+    assert rules(drawn((110, 104)), "label-near") == []  # "D" 2 mm clear above it
+
+
 def test_a_point_inside_a_slider_block_is_named_beside_the_block():
     """A slider's pin (or mass centre) drawn inside its 12 x 7 mm block: a
     draughtsman writes its name beside the block, so the distance is measured
@@ -152,6 +170,22 @@ def test_one_name_for_one_thing_and_no_look_alikes():
     found = [f.message for f in rules(b, "names-unique")]
     assert any("'p' names two different things" in m for m in found)
     assert any("'O' and '0' read alike" in m for m in found)
+
+
+def test_a_detail_letter_names_one_view_of_the_sheet():
+    def drawn(second):
+        b = RecordingBackend()
+        with b.group("zhukovsky-lever-detail", "lever"):
+            b.text((100, 100), "H (2:1)", 5.0)
+        with b.group("force-mechanism-detail", "mechanism"):
+            b.text((300, 100), f"{second} (10:1)", 5.0)
+        return b
+
+    found = [f.message for f in rules(drawn("H"), "names-unique")]
+    assert found == [
+        "two detail views are lettered 'H' (zhukovsky-lever-detail and force-mechanism-detail)"
+    ]
+    assert rules(drawn("K"), "names-unique") == []
 
 
 def test_letters_and_indices_at_least_2_5_mm():
