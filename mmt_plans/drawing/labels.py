@@ -158,6 +158,9 @@ _WIDE_ALONG = tuple(np.round(np.linspace(0.0, 1.0, 11), 2))
 # from what the label names, each led from the nearest point of it
 _SHORTEST_STEP = 0.5
 _SHORTEST_REACH = 16.0
+# at most this many places on that grid: round a long segment (a link's name,
+# some 250 mm and longer) the grid is made coarser to hold no more
+_SHORTEST_MOST = 250_000
 # how many of the grid's boxes are asked about the obstacles first (then 4 times as many)
 _FINE_BLOCK = 64
 # how many times `write_later(retry=True)` writes the labels again, those that
@@ -1653,7 +1656,8 @@ class Labels:
         markup: str,
     ) -> tuple[tuple[float, float], tuple[tuple[float, float], tuple[float, float]]] | None:
         """`shortest_leaders`: the centre of the free box, on a grid
-        _SHORTEST_STEP mm apart up to _SHORTEST_REACH mm from what the label
+        _SHORTEST_STEP mm apart (coarser where that would hold more than
+        _SHORTEST_MOST places) up to _SHORTEST_REACH mm from what the label
         names, that a leader from the nearest point of it (snapped to every
         _SHORTEST_STEP mm along it) reaches crossing nothing, else the fewest
         thin lines (`_leader_among`), nearest first; with the leader. None
@@ -1667,9 +1671,13 @@ class Labels:
             target = LineString([a, b])
         reach = _SHORTEST_REACH + max(w, h + drop) / 2
         x_lo, y_lo, x_hi, y_hi = target.bounds
+        wide, high = x_hi - x_lo + 2 * reach, y_hi - y_lo + 2 * reach
+        step = _SHORTEST_STEP
+        while (wide / step + 1) * (high / step + 1) > _SHORTEST_MOST:
+            step *= 1.05
         gx, gy = np.meshgrid(
-            np.arange(x_lo - reach, x_hi + reach, _SHORTEST_STEP),
-            np.arange(y_lo - reach, y_hi + reach, _SHORTEST_STEP),
+            np.arange(x_lo - reach, x_hi + reach, step),
+            np.arange(y_lo - reach, y_hi + reach, step),
         )
         cx, cy = gx.ravel(), gy.ravel()
         x0, x1, y0, y1 = cx - w / 2, cx + w / 2, cy - h / 2 - drop, cy + h / 2

@@ -173,3 +173,49 @@ def test_a_name_walled_in_is_led_on_the_shortest_line_through_a_gap(shortest):
     ((sx, sy), (ex, ey)) = (leaders[0].start, leaders[0].end)
     assert sy == pytest.approx(0.0) and ey > _WALL  # from the arm out through the wall
     assert abs(sx - _GAP_X) < _GAP_HALF and abs(ex - _GAP_X) < _GAP_HALF  # in the gap
+
+
+def test_the_shortest_leaders_grid_round_a_long_segment_stays_bounded(monkeypatch):
+    """Round a link 500 mm long the shortest leader's grid at 0.5 mm would
+    hold some 600,000 places (its box's): it is made coarser to hold no more
+    than _SHORTEST_MOST, and the gap in the wall round the link is still found."""
+    from mmt_plans.drawing import labels as labels_module
+
+    u = np.array([0.8, 0.6])  # along the link, 500 mm long
+    n = np.array([-0.6, 0.8])  # across it
+    arm = ((0.0, 0.0), (400.0, 300.0))
+
+    def at(t: float, s: float) -> tuple[float, float]:
+        p = t * u + s * n
+        return float(p[0]), float(p[1])
+
+    gap_t, gap_half = 437.0, 3.0  # 0.874 of it: no fraction the rings' leaders start from
+    sk = Sketch(RecordingBackend().look)
+    with sk.group("d", "plan"):
+        sk.line(*arm, "thin")
+        for quad in (
+            [(-12, -_WALL), (512, -_WALL), (512, -0.6), (-12, -0.6)],
+            [(-12, 0.6), (gap_t - gap_half, 0.6), (gap_t - gap_half, _WALL), (-12, _WALL)],
+            [(gap_t + gap_half, 0.6), (512, 0.6), (512, _WALL), (gap_t + gap_half, _WALL)],
+            [(-12, -0.6), (-0.8, -0.6), (-0.8, 0.6), (-12, 0.6)],
+            [(500.8, -0.6), (512, -0.6), (512, 0.6), (500.8, 0.6)],
+        ):
+            sk.polygon([at(t, s) for t, s in quad], "thin", fill="black")
+    asked: list[int] = []  # how many places each grid round what a name names holds
+    gap_of = labels_module._gap
+
+    def counted(names, x0, *args):
+        asked.append(x0.size)
+        return gap_of(names, x0, *args)
+
+    monkeypatch.setattr(labels_module, "_gap", counted)
+    with sk.group("d", "plan"):
+        labels = Labels(sk, 3.5, wide_leaders=True, shortest_leaders=True)
+        labels.place_along(*arm, "h_{16}", around=True)
+    assert asked and max(asked) <= labels_module._SHORTEST_MOST, asked
+    assert (labels.far, labels.unsettled) == (0, 0)
+    leader = [c for c in sk.calls if c.name == "line" and c.line == "thin"][1]
+    for end in (leader.start, leader.end):  # from the link out through the gap
+        assert abs(float(np.dot(end, u)) - gap_t) < gap_half
+    view = SheetView(list(sk.calls), sk.width, sk.height, "en")
+    assert lint(view, ["label-near", "label-clear"]) == []
