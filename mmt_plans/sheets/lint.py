@@ -6,7 +6,7 @@ with a place on the sheet (mm from its bottom-left corner). The thresholds:
 
 - ``label-near``: a label's box is within NEAR_MM = 6 mm of what it names (a
   point, or the segment of an arrow or a link), or a leader line of its own
-  joins the two and crosses no main (heavy) line and no other lettering.
+  joins the two and crosses no main (heavy) line.
   A point drawn inside a filled outline at most BLOCK_MM = 15 mm across (a
   slider's block round its pin or mass centre) is measured from the outline:
   its name stands beside the block, where a draughtsman writes it.
@@ -14,6 +14,9 @@ with a place on the sheet (mm from its bottom-left corner). The thresholds:
   arc, circle or arrowhead of a drawing but its own leader, and overlaps no
   other label by more than 0.5 mm² (tables, the frame and the title block
   have their own grid).
+- ``leader-clear``: a leader crosses no other name (its box shrunk by
+  0.25 mm). Apart from label-near, which the composers ask where names
+  crowd: this rule judges the sheet only.
 - ``vectors-apart``: no two arrows of one force polygon or lever lie along
   one line (within 1° and 0.4 mm) overlapping by more than 1 mm (a plan's
   images of one link's points lie on one line by similarity, as drawn).
@@ -229,9 +232,6 @@ def label_near(v: SheetView) -> Iterator[Finding]:
     shapes = v.shapes()
     heavy = [s for c, s in shapes if getattr(c, "line", None) == "main" and v.in_drawing(c)]
     tree = STRtree(heavy) if heavy else None
-    # the lettering a leader must not cross (each label's box shrunk as label-clear does)
-    inner = [lab.box.buffer(-CLEAR_SHRINK) for lab in v.labels]
-    letters = STRtree(inner)
     blocks = [s for c, s in shapes if c.name == "polygon" and s.geom_type == "Polygon"]
     for lab in v.labels:
         if lab.naming is None:
@@ -254,20 +254,9 @@ def label_near(v: SheetView) -> Iterator[Finding]:
                 and far.length > 0
                 and len(tree.query(far, predicate="intersects")) > 0
             )
-            through = [
-                v.labels[i].text
-                for i in letters.query(ld, predicate="intersects")
-                if v.labels[i] is not lab and not inner[i].is_empty
-            ]
-            if joined and not crossed and not through:
+            if joined and not crossed:
                 continue
-            why = (
-                "its leader crosses a main line"
-                if crossed
-                else f"its leader crosses the name {through[0]!r}"
-                if through
-                else "its leader does not reach it"
-            )
+            why = "its leader crosses a main line" if crossed else "its leader does not reach it"
             yield Finding("label-near", f"{lab.text!r}: {why}", _at(lab.box), v.name)
             continue
         yield Finding(
@@ -311,6 +300,33 @@ def label_clear(v: SheetView) -> Iterator[Finding]:
                     _at(boxes[i]),
                     v.name,
                 )
+
+
+def leader_clear(v: SheetView) -> Iterator[Finding]:
+    """A leader crosses no other name: the reader following it would run
+    into another name's letters (each label's box shrunk as label-clear
+    does). A rule apart from label-near, which the composers ask where names
+    crowd (crowd.py): this one judges the sheet only."""
+    led = [lab for lab in v.labels if lab.leader is not None]
+    if not led:
+        return
+    inner = [lab.box.buffer(-CLEAR_SHRINK) for lab in v.labels]
+    letters = STRtree(inner)
+    for lab in led:
+        assert lab.leader is not None
+        ld = LineString([lab.leader.start, lab.leader.end])
+        through = [
+            v.labels[i].text
+            for i in letters.query(ld, predicate="intersects")
+            if v.labels[i] is not lab and not inner[i].is_empty
+        ]
+        if through:
+            yield Finding(
+                "leader-clear",
+                f"{lab.text!r}: its leader crosses the name {through[0]!r}",
+                _at(lab.box),
+                v.name,
+            )
 
 
 def vectors_apart(v: SheetView) -> Iterator[Finding]:
@@ -700,6 +716,7 @@ def field_filled(v: SheetView) -> Iterator[Finding]:
 RULES: dict[str, Rule] = {
     "label-near": label_near,
     "label-clear": label_clear,
+    "leader-clear": leader_clear,
     "vectors-apart": vectors_apart,
     "names-unique": names_unique,
     "arrows-named": arrows_named,
