@@ -1,0 +1,146 @@
+"""Work on two cores (mmt_plans.forked): the results are those of working the
+items in turn, whatever the forked child does, and the sheets composed so
+are the sheets composed one after the other, byte for byte."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from mmt_plans import forked
+from mmt_plans.errors import MmtError
+from mmt_plans.forked import can_fork, on_two_cores
+
+ROOT = Path(__file__).resolve().parents[1]
+
+needs_fork = pytest.mark.skipif(
+    not can_fork(), reason="forks only on Linux with two cores or more and one thread running"
+)
+
+
+def _square(x: int) -> int:
+    return x * x
+
+
+@needs_fork
+def test_the_results_come_in_the_items_order_from_both_processes() -> None:
+    pids: dict[int, int] = {}
+
+    def work(x: int) -> tuple[int, int]:
+        return x * x, os.getpid()
+
+    got = on_two_cores(work, range(7))
+    assert [v for v, _ in got] == [x * x for x in range(7)]
+    for k, (_, pid) in enumerate(got):
+        pids[k] = pid
+    # the even places worked in the child, the odd ones here
+    assert {pids[k] for k in range(1, 7, 2)} == {os.getpid()}
+    assert {pids[k] for k in range(0, 7, 2)} != {os.getpid()}
+
+
+@needs_fork
+def test_an_item_that_fails_in_the_child_fails_here_as_it_would_in_turn() -> None:
+    def work(x: int) -> int:
+        if x == 2:
+            raise MmtError("no assembly at 2")
+        return x
+
+    with pytest.raises(MmtError, match="no assembly at 2"):
+        on_two_cores(work, [0, 1, 2, 3])
+
+
+@needs_fork
+def test_a_child_that_dies_leaves_its_items_to_this_process() -> None:
+    parent = os.getpid()
+
+    def work(x: int) -> int:
+        if os.getpid() != parent:
+            os._exit(9)  # killed mid-work, nothing sent
+        return x + 100
+
+    assert on_two_cores(work, [1, 2, 3]) == [101, 102, 103]
+
+
+@needs_fork
+def test_a_result_that_does_not_pickle_is_worked_here() -> None:
+    parent = os.getpid()
+
+    def work(x: int) -> object:
+        # a lambda made in the child cannot be pickled; here it is a plain value
+        return (lambda: x) if os.getpid() != parent else x
+
+    assert on_two_cores(work, [5, 6]) == [5, 6]
+
+
+def test_one_item_or_jobs_one_works_in_turn_here(monkeypatch: pytest.MonkeyPatch) -> None:
+    def work(x: int) -> int:
+        return os.getpid()
+
+    assert on_two_cores(work, [1]) == [os.getpid()]
+    monkeypatch.setenv("MMT_PLANS_JOBS", "1")
+    assert not can_fork()
+    assert on_two_cores(work, [1, 2, 3]) == [os.getpid()] * 3
+
+
+def test_no_fork_while_another_thread_runs() -> None:
+    import threading
+
+    stop = threading.Event()
+    t = threading.Thread(target=stop.wait)
+    t.start()
+    try:
+        assert not can_fork()
+        assert on_two_cores(_square, [1, 2, 3]) == [1, 4, 9]
+    finally:
+        stop.set()
+        t.join()
+
+
+@needs_fork
+def test_read_only_mappings_cross_the_pipe() -> None:
+    from types import MappingProxyType
+
+    def work(x: int) -> MappingProxyType[str, int]:
+        return MappingProxyType({"x": x})
+
+    got = on_two_cores(work, [1, 2])
+    assert [dict(m) for m in got] == [{"x": 1}, {"x": 2}]
+    assert all(isinstance(m, MappingProxyType) for m in got)
+
+
+@needs_fork
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_sheets_composed_on_two_cores_are_those_composed_in_turn(
+    lang: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from mmt_plans.generate import generate_one
+    from mmt_plans.sheets.compose import available_sheets, compose, rendered_composed
+    from mmt_plans.solution import solve
+    from mmt_plans.spec import loads
+
+    forks = []
+    real_fork = os.fork
+
+    def counted() -> int:
+        forks.append(1)
+        return real_fork()
+
+    monkeypatch.setattr(forked.os, "fork", counted)
+    g = generate_one(3)  # four groups, both sheets
+    for text, name in [
+        ((ROOT / "samples" / "six_link_press.toml").read_text(), "six_link_press.toml"),
+        (g.toml, f"{g.name}.toml"),
+    ]:
+        files = {}
+        forks.clear()
+        for jobs in ("1", ""):
+            monkeypatch.setenv("MMT_PLANS_JOBS", jobs)
+            solution = solve(loads(text, name))
+            sheets = sorted(available_sheets(solution))
+            composed = compose(solution, lang, sheets)  # type: ignore[arg-type]
+            files[jobs] = rendered_composed(composed, solution, ("svg",), sheets)
+        assert len(forks) == 2  # composed and rendered on two cores the second time only
+        assert [n for n, _ in files[""]] == [n for n, _ in files["1"]]
+        assert files[""] == files["1"]
