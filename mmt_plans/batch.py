@@ -37,6 +37,7 @@ from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, cast
 
 from .errors import MmtError, shown
+from .forked import FEWER_COLLECTIONS
 from .report import table
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -593,7 +594,7 @@ def _file_size(path: str) -> int:
 # a worker's cyclic garbage collector: the young generation collected every
 # 5,000 allocations of containers instead of 700 (an item makes many
 # short-lived ones: recorded calls, label boxes, points), the older ones as usual
-_WORKER_GC_THRESHOLD = (5_000, 10, 10)
+_WORKER_GC_THRESHOLD = FEWER_COLLECTIONS
 
 
 def _worker_start(parent: int) -> None:

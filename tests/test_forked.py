@@ -144,3 +144,58 @@ def test_sheets_composed_on_two_cores_are_those_composed_in_turn(
         assert len(forks) == 2  # composed and rendered on two cores the second time only
         assert [n for n, _ in files[""]] == [n for n, _ in files["1"]]
         assert files[""] == files["1"]
+
+
+def test_fewer_collections_slows_the_collector_and_restores_its_pace() -> None:
+    import gc
+
+    own = gc.get_threshold()
+    gc.set_threshold(700, 10, 10)  # the interpreter's own pace (another test may have set one)
+    try:
+        _fewer_collections_then_before()
+    finally:
+        gc.set_threshold(*own)
+
+
+def _fewer_collections_then_before() -> None:
+    import gc
+
+    from mmt_plans.forked import FEWER_COLLECTIONS, fewer_collections
+
+    before = gc.get_threshold()
+    with fewer_collections():
+        assert gc.get_threshold() == FEWER_COLLECTIONS
+        with fewer_collections():  # nested: left as it is, and not undone at its end
+            assert gc.get_threshold() == FEWER_COLLECTIONS
+        assert gc.get_threshold() == FEWER_COLLECTIONS
+    assert gc.get_threshold() == before
+    with pytest.raises(RuntimeError), fewer_collections():
+        raise RuntimeError("a sheet that fails")
+    assert gc.get_threshold() == before
+
+
+def test_sheets_are_composed_at_the_slower_pace(monkeypatch: pytest.MonkeyPatch) -> None:
+    import gc
+
+    from mmt_plans.forked import FEWER_COLLECTIONS
+    from mmt_plans.sheets import compose as compose_module
+    from mmt_plans.solution import solve
+    from mmt_plans.spec import load
+
+    seen: list[tuple[int, ...]] = []
+    real = compose_module.on_two_cores
+
+    def spy(work, items):  # type: ignore[no-untyped-def]
+        seen.append(gc.get_threshold())
+        return real(work, items)
+
+    monkeypatch.setattr(compose_module, "on_two_cores", spy)
+    own = gc.get_threshold()
+    gc.set_threshold(700, 10, 10)
+    try:
+        mech = load(ROOT / "samples" / "offset_slider_crank.toml")
+        compose_module.compose(solve(mech), "en", [1])
+        assert seen == [FEWER_COLLECTIONS]
+        assert gc.get_threshold() == (700, 10, 10)
+    finally:
+        gc.set_threshold(*own)

@@ -244,6 +244,7 @@ def note_pdf(
     composed: ComposedSheets | None = None,
 ) -> bytes:
     """The bytes write_note writes."""
+    from ..forked import fewer_collections
     from .pdf import PdfDocument
 
     # drawn straight onto the PDF's pages: the same calls a recording of the
@@ -251,7 +252,8 @@ def note_pdf(
     look = note_look()
     document = PdfDocument()
     try:
-        draw_note(analysis, lambda w, h, title: document.page(w, h, look), lang, form, composed)
-        return document.finish()
+        with fewer_collections():  # (its pages make many short-lived containers)
+            draw_note(analysis, lambda w, h, title: document.page(w, h, look), lang, form, composed)
+            return document.finish()
     finally:
         document.close()

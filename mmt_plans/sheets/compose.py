@@ -24,7 +24,7 @@ from typing import Any
 from ..drawing.page import Page
 from ..errors import MmtError
 from ..files import ensure_dir, write_bytes_atomic
-from ..forked import on_two_cores
+from ..forked import fewer_collections, on_two_cores
 from ..i18n import Language, catalogue
 from ..render.look import Look
 from ..render.output import FORMATS, render
@@ -179,7 +179,8 @@ def compose(
     # (the catalogues read first, by this process: every sheet reads both,
     # for its words and the designation's prefix)
     catalogue("en"), catalogue("uk")
-    made = dict(zip(wanted, on_two_cores(one, wanted), strict=True))
+    with fewer_collections():
+        made = dict(zip(wanted, on_two_cores(one, wanted), strict=True))
     done = {n: m for n, m in made.items() if isinstance(m, ComposedSheet)}
     errors = {n: m for n, m in made.items() if isinstance(m, MmtError)}
     further = tuple(done[n] for n in sorted(done) if n > 2)
@@ -225,7 +226,8 @@ def rendered_composed(
         return [(f"sheet{n}.{fmt}", render(recordings[n], fmt, title)) for fmt in formats]
 
     # each sheet's files apart from the others': on two cores, half in a fork
-    return [file for files in on_two_cores(one, wanted) for file in files]
+    with fewer_collections():
+        return [file for files in on_two_cores(one, wanted) for file in files]
 
 
 def write_sheets(
