@@ -199,3 +199,52 @@ def test_sheets_are_composed_at_the_slower_pace(monkeypatch: pytest.MonkeyPatch)
         assert gc.get_threshold() == (700, 10, 10)
     finally:
         gc.set_threshold(*own)
+
+
+@needs_fork
+def test_the_child_dies_with_a_killed_parent(tmp_path: Path) -> None:
+    """A process killed (SIGKILL) while its fork composes leaves no child
+    working: the kernel ends the child too (PR_SET_PDEATHSIG)."""
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    pids = tmp_path / "pids"
+    script = f"""
+import os, time
+from mmt_plans.forked import on_two_cores
+def work(x):
+    with open({str(pids)!r}, "a") as f:
+        f.write(f"{{os.getpid()}}\\n")
+    time.sleep(60)
+on_two_cores(work, [0, 1])
+"""
+    proc = subprocess.Popen([sys.executable, "-c", script], cwd=ROOT)
+    try:
+        deadline = time.monotonic() + 30
+        while time.monotonic() < deadline and len(_lines(pids)) < 2:
+            time.sleep(0.05)
+        assert len(_lines(pids)) == 2, "both processes started working"
+        os.kill(proc.pid, signal.SIGKILL)
+        proc.wait(10)
+        child = next(int(p) for p in _lines(pids) if int(p) != proc.pid)
+        deadline = time.monotonic() + 10
+        while time.monotonic() < deadline and _alive(child):
+            time.sleep(0.05)
+        assert not _alive(child)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+
+
+def _lines(path: Path) -> list[str]:
+    return path.read_text().split() if path.exists() else []
+
+
+def _alive(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().split(")")[-1].split()[0] != "Z"  # a zombie has ended
+    except FileNotFoundError:
+        return False
