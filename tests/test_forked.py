@@ -140,8 +140,10 @@ def test_sheets_composed_on_two_cores_are_those_composed_in_turn(
             solution = solve(loads(text, name))
             sheets = sorted(available_sheets(solution))
             composed = compose(solution, lang, sheets)  # type: ignore[arg-type]
-            files[jobs] = rendered_composed(composed, solution, ("svg",), sheets)
+            files[jobs] = rendered_composed(composed, solution, ("svg", "pdf"), sheets)
         assert len(forks) == 2  # composed and rendered on two cores the second time only
+        rendered_composed(composed, solution, ("svg",), sheets)
+        assert len(forks) == 2  # SVG alone is written in turn (a fork costs more)
         assert [n for n, _ in files[""]] == [n for n, _ in files["1"]]
         assert files[""] == files["1"]
 

@@ -226,8 +226,14 @@ def rendered_composed(
         return [(f"sheet{n}.{fmt}", render(recordings[n], fmt, title)) for fmt in formats]
 
     # each sheet's files apart from the others': on two cores, half in a fork
+    # (SVG alone in turn: writing it takes less than a fork costs)
+    apart = on_two_cores if set(formats) != {"svg"} else _in_turn
     with fewer_collections():
-        return [file for files in on_two_cores(one, wanted) for file in files]
+        return [file for files in apart(one, wanted) for file in files]
+
+
+def _in_turn(work: Callable[[int], list[tuple[str, bytes]]], items: Sequence[int]) -> list[Any]:
+    return [work(n) for n in items]
 
 
 def write_sheets(
