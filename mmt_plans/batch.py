@@ -37,7 +37,7 @@ from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, cast
 
 from .errors import MmtError, shown
-from .forked import FEWER_COLLECTIONS
+from .forked import FEWER_COLLECTIONS, die_with
 from .report import table
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -550,27 +550,20 @@ def _run(
     return process_file(*args)
 
 
-_PR_SET_PDEATHSIG = 1  # linux/prctl.h
 _PARENT_WATCH_SECONDS = 1.0
 
 
 def _die_with_parent(parent: int, *, pdeathsig: bool = True) -> None:
     """This worker ends when the process `parent` does, even killed by
     SIGKILL (which lets it clean up nothing): on Linux the kernel sends us
-    SIGKILL then (prctl PR_SET_PDEATHSIG); everywhere, a thread that sees
-    our parent change ends us within a second. A batch killed with -9 leaves
-    no worker waiting for ever."""
+    SIGKILL then (prctl PR_SET_PDEATHSIG, forked.die_with); everywhere, a
+    thread that sees our parent change ends us within a second. A batch
+    killed with -9 leaves no worker waiting for ever."""
     import sys
     import threading
 
     if pdeathsig and sys.platform.startswith("linux"):
-        try:
-            import ctypes
-
-            libc = ctypes.CDLL(None, use_errno=True)
-            libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
-        except (OSError, AttributeError):
-            pass  # the watching thread below still ends us
+        die_with(parent)
     if os.getppid() != parent:  # the parent died before prctl took effect
         os._exit(1)
 

@@ -38,7 +38,7 @@ from contextlib import contextmanager
 from types import MappingProxyType
 from typing import Any, TypeVar
 
-__all__ = ["FEWER_COLLECTIONS", "can_fork", "fewer_collections", "on_two_cores"]
+__all__ = ["FEWER_COLLECTIONS", "can_fork", "die_with", "fewer_collections", "on_two_cores"]
 
 T = TypeVar("T")
 R = TypeVar("R")
@@ -91,7 +91,7 @@ def on_two_cores(work: Callable[[T], R], items: Sequence[T]) -> list[R]:
         status = 1
         try:
             os.close(read)
-            _die_with(parent)
+            die_with(parent)
             blob = _dumps([work(items[i]) for i in theirs])
             with os.fdopen(write, "wb") as pipe:
                 pipe.write(blob)
@@ -121,10 +121,11 @@ def on_two_cores(work: Callable[[T], R], items: Sequence[T]) -> list[R]:
 _PR_SET_PDEATHSIG = 1  # linux/prctl.h
 
 
-def _die_with(parent: int) -> None:
-    """This child ends when the process `parent` does, even killed by SIGKILL
-    (the kernel sends it SIGKILL then: prctl PR_SET_PDEATHSIG): no child
-    left composing a sheet nobody will read."""
+def die_with(parent: int) -> None:
+    """This process ends when the process `parent` does, even killed by
+    SIGKILL (on Linux the kernel sends it SIGKILL then: prctl
+    PR_SET_PDEATHSIG): no fork left composing a sheet nobody will read, no
+    batch worker left waiting (batch._die_with_parent)."""
     import ctypes
     import signal
 
