@@ -133,7 +133,8 @@ def die_with(parent: int) -> None:
         libc = ctypes.CDLL(None, use_errno=True)
         libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
     except (OSError, AttributeError):
-        pass  # (it still ends at its first write to the pipe nobody reads)
+        pass  # (without prctl: a fork ends at its first write to a pipe nobody
+        # reads, a batch worker by its thread watching the parent)
     if os.getppid() != parent:  # the parent died before prctl took effect
         os._exit(1)
 

@@ -227,13 +227,9 @@ def rendered_composed(
 
     # each sheet's files apart from the others': on two cores, half in a fork
     # (SVG alone in turn: writing it takes less than a fork costs)
-    apart = on_two_cores if set(formats) != {"svg"} else _in_turn
     with fewer_collections():
-        return [file for files in apart(one, wanted) for file in files]
-
-
-def _in_turn(work: Callable[[int], list[tuple[str, bytes]]], items: Sequence[int]) -> list[Any]:
-    return [work(n) for n in items]
+        made = on_two_cores(one, wanted) if set(formats) != {"svg"} else list(map(one, wanted))
+    return [file for files in made for file in files]
 
 
 def write_sheets(
