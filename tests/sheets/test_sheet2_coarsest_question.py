@@ -59,3 +59,36 @@ def test_the_coarsest_are_asked_about_once_a_step_coarser_fits_nowhere(monkeypat
     assert {a[1]["lever"] for a in before} == {0, 1}
     assert not any(a[2] for a in before)
     assert any(a[1]["lever"] >= 2 for a in after)
+
+
+def test_a_no_with_the_mechanism_as_its_pins_box_is_asked_again_lettered(monkeypatch):
+    # The packer is not monotone: gen 30's mechanism lettered (158 x 146 mm)
+    # packs at scales where the box of its pins (115 x 95 mm) does not. Where
+    # the pins' box finds no arrangement, `could_fit` asks `fits` with the
+    # mechanism lettered before it says the coarsest scales cannot fit.
+    from mmt_plans.generate import generate_one
+    from mmt_plans.sheets.sheet2 import _COARSEST, _Composer
+
+    g = generate_one(30)
+    solution = mmt_plans.solve(mmt_plans.loads(g.toml, f"{g.name}.toml"))
+    fa = solution.require_forces()
+    backend = RecordingBackend(841.0, 594.0)
+    page = sheet2_module.Page.of("A1")
+    composer = _Composer(fa, solution, backend.look, "en", page)
+    coarsest = composer._steps(_COARSEST, _COARSEST)
+    scales = composer.scales(coarsest)
+    sketches = dict(composer._sketched(scales, [], mechanism=False))
+    pins = dict(composer._pin_boxes(scales, empty=True))["force-mechanism"]
+    lettered = composer.extent(composer.sketches(scales)[0]["force-mechanism"])
+    assert pins.width < lettered.width and pins.height < lettered.height
+    assert composer.fits(coarsest), "the coarsest scales fit with the mechanism lettered"
+
+    # a packer that finds no place for the pins' box (as gen 30's at a finer scale)
+    real = _Composer.arrange
+
+    def no_room_for_pins(self, sketches, boxes=None):
+        return None if boxes else real(self, sketches, boxes)
+
+    monkeypatch.setattr(_Composer, "arrange", no_room_for_pins)
+    assert composer.arrange(sketches, {"force-mechanism": pins}) is None
+    assert composer.could_fit(coarsest)
