@@ -822,6 +822,10 @@ _SECOND_CROWD = 3
 # where fewer names stand far (five_dyads uk: 'S5', 'Fi5' in the knot at G where
 # blocks 5 and 6 sit on guide T, 9-11 mm off, beside the first detail's L)
 _SECOND_PAIR = 2
+# or, on the laid-out sheet (`_loaded_details_again`), for a single name left
+# far: weighed there like the others (gen 128 en: 'h7' 10.4 mm off in the knot
+# at S7, outside the first view's disc, gets a view of its own)
+_SECOND_ONE = 1
 _POINTS_APART_MM = 7.0  # a detail of the loaded mechanism sets its points this far apart
 _LOADED_DETAIL_MM = 45.0  # the largest radius of its disc, mm
 _LOADED_RADII = (4.0, 6.0, 8.0, 12.0, 16.0)  # the radii of its discs tried, mm
@@ -3392,7 +3396,9 @@ def _loaded_details_again(
     them (gen 158: a disc of 6 mm at μl 0.01, the mechanism then drawn at
     0.025, the knot round the crank's pivot O lettered 10–15 mm off). Chosen
     again (`loaded_details`) on the mechanism at the scale it reached, drawn
-    without details, and on the names that stand far on the sheet; the
+    without details, and on the names that stand far on the sheet (a second
+    disc for a crowd of _SECOND_CROWD, _SECOND_PAIR or even _SECOND_ONE
+    names, in turn); the
     mechanism drawn with them at that scale where it was (`_loaded_placed`),
     each view in the room left nearest it: kept where fewer of their names
     stand far or on something, no other drawing moved. `sketches` takes the
@@ -3415,7 +3421,7 @@ def _loaded_details_again(
     taken = [d.letter for d in composer.details]
     tried = [before]
     best: tuple[int, tuple[Detail, ...], dict[str, Sketch], SheetLayout] | None = None
-    for fewest in (_SECOND_CROWD, _SECOND_PAIR):
+    for fewest in (_SECOND_CROWD, _SECOND_PAIR, _SECOND_ONE):
         found = loaded_details(fa, mu_l, points, taken, fewest)
         if not found or found in tried:
             continue

@@ -103,6 +103,22 @@ def test_gen_158s_detail_views_are_chosen_again_at_the_scale_the_mechanism_reach
     assert not sheet.layout.problems()
 
 
+# gen 128 (RPR-RRP-RRR-RRP-RRP) en: on the laid-out sheet one name of the
+# loaded mechanism was left far, 'h7' 10.4 mm off in the knot where link 7's
+# arm meets S7, outside the first detail view's disc (B, round link 6's
+# block). A second view was tried only for a crowd of two names or more. A
+# second view for a single name left over, weighed on the laid-out sheet like
+# the others (kept only where fewer names stand far), holds S7 and h7.
+def test_gen_128s_single_name_left_far_gets_a_detail_view_of_its_own():
+    backend = RecordingBackend(841.0, 594.0)
+    sheet = compose_sheet2(solved_seed(128), backend, "en")
+    assert len(sheet.mechanism_details) == 2
+    S7 = _c(sheet.forces.loads.links[7].centre_of_mass)
+    assert any(abs(S7 - complex(*d.centre)) <= d.radius for d in sheet.mechanism_details)
+    assert not _sheet_findings(sheet, backend, "en")
+    assert not sheet.layout.problems()
+
+
 def _walled_name(enclosed: bool) -> tuple[_Drawing, np.ndarray, float]:
     """A pivot at the origin inside a ring of thin lines 13 mm round, 'S1'
     6.5 mm above it, ω1's arc (9 mm) turned with or without `enclosed`:
