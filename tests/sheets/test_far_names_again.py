@@ -30,6 +30,24 @@ _POCKET, _POCKET_HALF = np.array([0.0, 7.0]), np.array([3.2, 3.5])
 _AWAY, _AWAY_HALF = np.array([0.0, -16.0]), np.array([6.0, 6.0])  # free room far from it
 
 
+def _walls(sk: Sketch, rooms: tuple[tuple[np.ndarray, np.ndarray], ...], hi: float) -> None:
+    """Main lines 2 mm apart, along x and along y, from -45 mm to `hi`, but
+    in `rooms` (each a centre and its half sizes)."""
+    for v in np.arange(-45.0, hi + 0.1, 2.0):
+        for along in (0, 1):  # lines along x, then along y
+            cuts = sorted(
+                (float(c[along] - h[along]), float(c[along] + h[along]))
+                for c, h in rooms
+                if abs(v - c[1 - along]) < h[1 - along]
+            )
+            lo = -45.0
+            for a, b in [*cuts, (hi, hi)]:
+                if a > lo:
+                    ends = [(lo, v), (a, v)] if along == 0 else [(v, lo), (v, a)]
+                    sk.line(ends[0], ends[1], "main")
+                lo = b
+
+
 def _scene(blocked: bool) -> Sketch:
     """Main lines 2 mm apart over a 90 mm frame, but for a pocket just above
     the point X and a room 30 mm below it; B, the name of a point at the
@@ -38,19 +56,7 @@ def _scene(blocked: bool) -> Sketch:
     rubbed out: the pocket by X is free again."""
     sk = Sketch(RecordingBackend().look)
     with sk.group("d", "plan"):
-        for v in np.arange(-45.0, 45.1, 2.0):
-            for along in (0, 1):  # lines along x, then along y
-                cuts = sorted(
-                    (float(c[along] - h[along]), float(c[along] + h[along]))
-                    for c, h in ((_POCKET, _POCKET_HALF), (_AWAY, _AWAY_HALF))
-                    if abs(v - c[1 - along]) < h[1 - along]
-                )
-                lo = -45.0
-                for a, b in [*cuts, (45.0, 45.0)]:
-                    if a > lo:
-                        ends = [(lo, v), (a, v)] if along == 0 else [(v, lo), (v, a)]
-                        sk.line(ends[0], ends[1], "main")
-                    lo = b
+        _walls(sk, ((_POCKET, _POCKET_HALF), (_AWAY, _AWAY_HALF)), 45.0)
         sk.circle(tuple(_X), 0.6, "main", fill="black")
         labels = Labels(sk, 3.5)
         labels.place(_POCKET + (0.0, 3.0), "B")
@@ -108,19 +114,7 @@ def _two_walled_in() -> Sketch:
     sk = Sketch(RecordingBackend().look)
     rooms = ((_POCKET, _POCKET_HALF), (_Y_POCKET, _POCKET_HALF), (_LOW, _AWAY_HALF))
     with sk.group("d", "plan"):
-        for v in np.arange(-45.0, 65.1, 2.0):
-            for along in (0, 1):  # lines along x, then along y
-                cuts = sorted(
-                    (float(c[along] - h[along]), float(c[along] + h[along]))
-                    for c, h in rooms
-                    if abs(v - c[1 - along]) < h[1 - along]
-                )
-                lo = -45.0
-                for a, b in [*cuts, (65.0, 65.0)]:
-                    if a > lo:
-                        ends = [(lo, v), (a, v)] if along == 0 else [(v, lo), (v, a)]
-                        sk.line(ends[0], ends[1], "main")
-                    lo = b
+        _walls(sk, rooms, 65.0)
         for point, written in ((_X, _LOW), (_Y, _POCKET)):
             sk.circle(tuple(point), 0.6, "main", fill="black")
             name = "X" if point is _X else "Y"
