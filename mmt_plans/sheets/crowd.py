@@ -86,9 +86,9 @@ def far_names_again(
     view = _view(sketch, lang)
     far = _far(view)
     crowd = _crowd(view) if far else 0
-    moved, passed = 0, -1
-    while far and moved > passed:
-        passed = moved
+    moved = 0
+    while far:
+        was = moved
         for naming, size in far:
             before = list(sketch.calls)
             if _written_again(sketch, naming, size, lang, labelling, words) and fits(
@@ -100,7 +100,9 @@ def far_names_again(
                     view, crowd, moved = now, left, moved + 1
                     continue
             sketch.calls[:] = before
-        far = _far(view) if moved > passed else []
+        if moved == was:  # a pass that moved none: another would move none
+            break
+        far = _far(view)
     return moved
 
 

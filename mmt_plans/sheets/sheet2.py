@@ -3398,11 +3398,10 @@ def _loaded_details_again(
     again (`loaded_details`) on the mechanism at the scale it reached, drawn
     without details, and on the names that stand far on the sheet (a second
     disc for a crowd of _SECOND_CROWD, _SECOND_PAIR or even _SECOND_ONE
-    names, in turn); the
-    mechanism drawn with them at that scale where it was (`_loaded_placed`),
-    each view in the room left nearest it: kept where fewer of their names
-    stand far or on something, no other drawing moved. `sketches` takes the
-    drawings kept, `composer` the details."""
+    names, in turn); the mechanism drawn with them at that scale where it
+    was (`_loaded_placed`), each view in the room left nearest it: kept
+    where fewer of their names stand far or on something, no other drawing
+    moved. `sketches` takes the drawings kept, `composer` the details."""
     fa, lang = composer.fa, composer.lang
     mu_l, before = scales["mu_l"], composer.mechanism_details
     was = _loaded_crowd(sketches, before, lang)
