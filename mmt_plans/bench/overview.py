@@ -11,7 +11,8 @@
   SVG+PDF, results.json, note.pdf), each for the default sample from a loaded
   Mechanism: goals 0.5 s, 1 s, 1 s, 1.5 s (wall time; beside each sheets'
   figure the CPU time of its two processes, the sheets composed on two cores
-  by mmt_plans.forked); beside the note, its own part
+  by mmt_plans.forked, and a fresh `mmt-plans draw` process, what a user
+  waits for); beside the note, its own part
   (its pages from sheets composed beforehand, as in a batch item) and a
   fresh `mmt-plans note` process (imports, fonts and Cairo included), both
   against the note's goal;
@@ -125,6 +126,22 @@ def output_rows(sample_dir: Path, repeat: int) -> list[list[str]]:
             rows.append(_row(f"both sheets {fmt.upper()}", t, "s", "goal", GOALS[f"sheets_{fmt}"]))
             # (on two cores the sheets are composed in two processes: the CPU they take)
             rows.append(_row("  its CPU, both processes", cpu, "s", "goal", GOALS[f"sheets_{fmt}"]))
+            # what a user waits for: `mmt-plans draw` in a fresh process (imports,
+            # the package's bytecode as `make` leaves it, the results' checks)
+            t_draw = median_run(
+                [sys.executable, "-m", "mmt_plans", "draw", str(path), "-o", out]
+                + ["--format", fmt],
+                1 if repeat <= 3 else 3,
+            )
+            rows.append(
+                _row(
+                    f"  a fresh `mmt-plans draw --format {fmt}`",
+                    t_draw,
+                    "s",
+                    "goal",
+                    GOALS[f"sheets_{fmt}"],
+                )
+            )
         t = best_time(lambda: write_note(solve(mech), Path(out) / "note.pdf"), times)
         rows.append(_row("note (PDF)", t, "s", "goal", GOALS["note"]))
         # the note's own part: its pages from sheets composed beforehand (a batch item's note)
