@@ -116,6 +116,7 @@ def output_rows(sample_dir: Path, repeat: int) -> list[list[str]]:
     sheets = sorted(available_sheets())
     rows = []
     times = max(1, repeat // 3)
+    fresh = 1 if repeat <= 3 else 3  # runs of a command in a fresh process (median)
     with tempfile.TemporaryDirectory() as out:
         for fmt in ("svg", "pdf"):
 
@@ -127,11 +128,11 @@ def output_rows(sample_dir: Path, repeat: int) -> list[list[str]]:
             # (on two cores the sheets are composed in two processes: the CPU they take)
             rows.append(_row("  its CPU, both processes", cpu, "s", "goal", GOALS[f"sheets_{fmt}"]))
             # what a user waits for: `mmt-plans draw` in a fresh process (imports,
-            # the package's bytecode as `make` leaves it, the results' checks)
+            # the package's bytecode as `make` leaves it, the file read and solved)
             t_draw = median_run(
                 [sys.executable, "-m", "mmt_plans", "draw", str(path), "-o", out]
                 + ["--format", fmt],
-                1 if repeat <= 3 else 3,
+                fresh,
             )
             rows.append(
                 _row(
@@ -156,7 +157,7 @@ def output_rows(sample_dir: Path, repeat: int) -> list[list[str]]:
         # what a user waits for: `mmt-plans note` in a fresh process (imports, fonts, Cairo)
         t_cli = median_run(
             [sys.executable, "-m", "mmt_plans", "note", str(path), "-o", str(Path(out) / "n.pdf")],
-            1 if repeat <= 3 else 3,
+            fresh,
         )
         rows.append(_row("note, a fresh `mmt-plans note`", t_cli, "s", "goal", GOALS["note"]))
         t = best_time(lambda: process_file(str(path), Path(out) / "item", "en", True), times)
