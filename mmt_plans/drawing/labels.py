@@ -12,9 +12,10 @@ mass centre) is named beside the outline, as a draughtsman writes it: the
 distance is measured to the outline (`enclosing`), and a leader starts on it.
 So where nothing near is free it goes further out and draws a leader from
 the anchor to it (one that crosses nothing first, else a few thin lines;
-never a main line, lettering, an arrowhead or a dot). Where no leader finds
-a place either, it takes the place near the anchor that covers least, so a
-label is never dropped and never far from what it names.
+never a main line, lettering, an arrowhead or a dot; with `across_main`, as
+the last resort, the fewest main lines). Where no leader finds a place
+either, it takes the place near the anchor that covers least, so a label is
+never dropped and never far from what it names.
 
 What is drawn is read from the sketch itself (`follow`): before each label
 the placer takes every call recorded since the last one — lines, hatching,
@@ -118,6 +119,8 @@ _LEADER_ALONG = (1.5, 8.0)  # a leader longer (mm) within this of a line runs al
 # thin lines a leader may cross where none crosses fewer: the last (a pole
 # ringed by a lever's arms and lines of action) before a name stands untied
 _LEADER_CROSSINGS = (2, 6, 12)
+# what crossing a main line counts among them, where a leader may (`across_main`)
+_MAIN_CROSSED = 3
 # a leader's boxes asked about in blocks of this many, nearest first, then 4 times as many
 _LEADER_BLOCK = 256
 # what meets at a leader's foot (the arc and arrowhead of the ω it names, the
@@ -176,7 +179,9 @@ class LabelCounts:
     """How well a drawing is lettered, the less the better (`Labels.counts`)."""
 
     unsettled: int  # labels written where they cover something: no place was free
-    far: int  # labels written far from what they name with no leader: none reached
+    # labels written far from what they name with no leader (none reached), or
+    # led across main lines (`Labels.across_main`)
+    far: int
     # whether `write_later(grow=True)` could letter the drawing otherwise: an
     # order past _RETRIES kept from it by the box, or its orders cut short by
     # many standing far (False: lettered with `grow`, the same drawing); not
@@ -208,8 +213,18 @@ class Labels:
         smaller: float | None = None,
         short_ends: bool = False,
         shortest_leaders: bool = False,
+        across_main: bool = False,
     ) -> None:
         self.sketch = sketch
+        # with `across_main` (and `fine`), a label that finds no free place
+        # near what it names and no leader to one that crosses no main line
+        # is led across main lines (fewest first, each counting
+        # _MAIN_CROSSED thin ones) before it stands far: GOST 2.316 keeps a
+        # leader off the drawing's lines where it can be; a pivot in the fan
+        # of its positions' links has no free side (gen 332's U). It still
+        # counts as far (`far`): a drawing that needs none is preferred
+        self.across_main = across_main
+        self._across = False  # while that last resort is asked
         # with `shortest_leaders` (and `fine`), a label no leader of the rings
         # reaches a place from is led once more, in the last resort before it
         # stands far: to each free box of a grid round what it names, on the
@@ -293,7 +308,9 @@ class Labels:
             bytes, float
         ] = {}  # `covered` of each shape asked, while `_grown` holds
         self.unsettled = 0  # labels written where they cover something: no place was free
-        self.far = 0  # labels written far from what they name with no leader: none reached
+        # labels written far from what they name with no leader (none reached),
+        # or with one across main lines (`across_main`)
+        self.far = 0
         self.grows = False  # LabelCounts.grows: what `grow` would have written otherwise
         self._later: list[tuple[str, Sequence[float], str, PointLike | None, PointLike | None]] = []
         # while `write_later` tries its orders: what each label wrote, by the
@@ -1489,6 +1506,19 @@ class Labels:
                 (lx, ly), line = found
                 cx, cy, x0, x1, y0, y1 = _one_box((lx, ly), w, h, drop)
                 k = 0
+        if k < 0 and settle and self.across_main and names is not None and self.fine:
+            self._across = True
+            try:
+                found = self._shortest_leader_place(names, outline, w, h, drop, markup)
+            finally:
+                self._across = False
+            if found is not None:
+                (lx, ly), line = found
+                cx, cy, x0, x1, y0, y1 = _one_box((lx, ly), w, h, drop)
+                k = 0
+                # led across a main line (not only thin ones, on the grid of
+                # this last resort): a drawing that needs none is preferred
+                self.far += self._across_main_line(line)
         if k < 0 and not settle:
             return None
         if k < 0:
@@ -1819,16 +1849,30 @@ class Labels:
         if not line.size:
             return out
         # a polygon (arrowhead, dot) or another leader: never
-        weight = np.where(self._never(index)[owner], 10**6, 1)
-        np.add.at(out, line, weight)
+        np.add.at(out, line, self._weights(index)[owner])
         return out
 
-    def _never(self, index: _ObstacleIndex) -> np.ndarray:
-        """Which obstacles of `index` no leader crosses (each counts as very
-        many): its uncrossable ones and the leaders."""
-        never = np.array(index.uncrossable, dtype=bool)
-        never[list(self._leaders)] = True
-        return never
+    def _across_main_line(self, line: tuple[PointLike, PointLike]) -> bool:
+        """Whether the leader `line` (from its foot) crosses a main line, as
+        `_leader_among` measures it with none crossable."""
+        (ax, ay), (ex, ey) = line
+        u = np.array([ex - ax, ey - ay]) / math.hypot(ex - ax, ey - ay)
+        led = shapely.linestrings(
+            [[(ax + _LEADER_START * u[0], ay + _LEADER_START * u[1]), (ex, ey)]]
+        )
+        crossed = self._met_at_feet(led, self._crossings(led), np.array([ax]), np.array([ay]))
+        return bool(crossed[0] >= 10**6)
+
+    def _weights(self, index: _ObstacleIndex) -> np.ndarray:
+        """What crossing each obstacle of `index` counts: very many for those
+        no leader crosses (its uncrossable ones and the leaders), 1 for a thin
+        line; while `_across` (the last resort of `across_main`) a main line
+        counts _MAIN_CROSSED."""
+        weight = np.where(index.uncrossable, 10**6, 1)
+        if self._across:
+            weight[index.heavy & ~index.solid] = _MAIN_CROSSED
+        weight[list(self._leaders)] = 10**6
+        return weight
 
     def _met_at_feet(
         self,
@@ -1850,7 +1894,7 @@ class Labels:
         index = self._index()
         shapes, lines, lb = index.shapes, *index.lines_bounds  # a point keeps its clearance
         crossed = crossed.copy()
-        never = self._never(index)
+        weights = self._weights(index)
         for fx, fy in set(zip(ax.tolist(), ay.tolist())):  # each foot once (in any order)
             at = index.at_foot.get((fx, fy))
             if at is None:
@@ -1866,7 +1910,7 @@ class Labels:
             if not at.size:
                 continue
             mine = np.flatnonzero((ax == fx) & (ay == fy))
-            weight = np.where(never[at], 10**6, 1)
+            weight = weights[at]
             if most is not None:  # (no count falls by more than all at the foot weigh)
                 mine = mine[crossed[mine] - int(weight.sum()) <= most]
                 if not mine.size:
@@ -2086,7 +2130,9 @@ class _ObstacleIndex:
         self.at_foot: dict[tuple[float, float], np.ndarray] = {}
         self.reach = np.asarray(clearance, dtype=float)
         # a polygon (measured whole) or a main line: never crossed by a leader
-        self.uncrossable = (kind == 3) | (np.asarray(heavy, dtype=bool) if len(heavy) else False)
+        self.solid = kind == 3
+        self.heavy = np.asarray(heavy, dtype=bool) if len(heavy) else np.zeros(len(shapes), bool)
+        self.uncrossable = self.solid | self.heavy
         lines = np.flatnonzero((kind == 1) | (kind == 2))
         points = np.flatnonzero(kind == 0)
         xy, of = shapely.get_coordinates(shapes[lines], return_index=True)

@@ -31,7 +31,7 @@ def crowded(sketch: Sketch, lang: Language) -> Iterator[Naming]:
     """What the names of a drawing that the sheet linter finds far from what
     they name, or on a line or another name, name."""
     view = _view(sketch, lang)
-    for naming, _ in _named_at(view, (*label_near(view), *label_clear(view))):
+    for naming, _ in _named_at(view, (*label_near(view, strict=True), *label_clear(view))):
         yield naming
 
 
@@ -103,6 +103,25 @@ def far_names_again(
         if moved == was:  # a pass that moved none: another would move none
             break
         far = _far(view)
+    if not far:
+        return moved
+    # the last resort of those still far: led across main lines (`across_main`),
+    # kept where the linter then finds no place near them free (a name walled
+    # in: held-out gen 376's G2 amid its group's forces) and fewer names far
+    # or on something
+    across = dict(labelling, across_main=True, fine=True)
+    crowd = _crowd(view, strict=False)
+    for naming, size in far:
+        before = list(sketch.calls)
+        if _written_again(sketch, naming, size, lang, across, words, led=True) and fits(
+            sketch.extent()
+        ):
+            now = _view(sketch, lang)
+            left = _crowd(now, strict=False)
+            if left < crowd:
+                view, crowd, moved = now, left, moved + 1
+                continue
+        sketch.calls[:] = before
     return moved
 
 
@@ -131,7 +150,7 @@ def _view(sketch: Sketch, lang: Language) -> SheetView:
 def _far(view: SheetView) -> list[tuple[Naming, float]]:
     """What the labels of `view` that the linter finds far from what they
     name name, with each one's letter height."""
-    return _named_at(view, label_near(view))
+    return _named_at(view, label_near(view, strict=True))
 
 
 def _named_at(view: SheetView, findings: Iterable[Finding]) -> list[tuple[Naming, float]]:
@@ -146,9 +165,10 @@ def _named_at(view: SheetView, findings: Iterable[Finding]) -> list[tuple[Naming
     ]
 
 
-def _crowd(view: SheetView) -> int:
-    """How many names of `view` the linter finds far or on something."""
-    return sum(1 for _ in label_near(view)) + sum(1 for _ in label_clear(view))
+def _crowd(view: SheetView, strict: bool = True) -> int:
+    """How many names of `view` the linter finds far or on something (with
+    `strict`, led across a main line too: `label_near`)."""
+    return sum(1 for _ in label_near(view, strict)) + sum(1 for _ in label_clear(view))
 
 
 def _written_again(
@@ -158,9 +178,11 @@ def _written_again(
     lang: Language,
     labelling: Mapping[str, Any],
     words: Callable[[str], str],
+    led: bool = False,
 ) -> bool:
     """`naming`'s label written again (`written_again`) by what it names:
-    whether the placer found it a place near it or a leader to one, on
+    whether the placer found it a place near it or a leader to one (with
+    `led`, any the placer counts far too: one across main lines), on
     nothing."""
     at = [i for i, c in enumerate(sketch.calls) if getattr(c, "naming", None) == naming]
     markup = naming.markup.replace(",\n", ", ")  # names one under another: in one line first
@@ -176,7 +198,7 @@ def _written_again(
             labels.place_along(naming.anchor, naming.end, markup, around=True)
 
     labels = written_again(sketch, at, lang, size, labelling, words, write)
-    return labels.far == 0 and labels.unsettled == 0
+    return (led or labels.far == 0) and labels.unsettled == 0
 
 
 def written_again(

@@ -6,7 +6,11 @@ with a place on the sheet (mm from its bottom-left corner). The thresholds:
 
 - ``label-near``: a label's box is within NEAR_MM = 6 mm of what it names (a
   point, or the segment of an arrow or a link), or a leader line of its own
-  joins the two and crosses no main (heavy) line.
+  joins the two and crosses no main (heavy) line. A leader may cross main
+  lines where no place within NEAR_MM is clear (on a ROOM_STEP = 0.5 mm
+  grid, a box of the name's size ROOM_CLEAR = 0.25 mm off every line and
+  name): GOST 2.316 keeps a leader off the drawing's lines where it can be,
+  and a pivot in the fan of its positions' links has no free side.
   A point drawn inside a filled outline at most BLOCK_MM = 15 mm across (a
   slider's block round its pin or mass centre) is measured from the outline:
   its name stands beside the block, where a draughtsman writes it.
@@ -59,6 +63,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 import numpy as np
+import shapely
 from shapely import STRtree
 from shapely.geometry import LineString, Point, box
 from shapely.geometry.base import BaseGeometry
@@ -81,6 +86,10 @@ __all__ = [
 Language = Literal["en", "uk"]
 
 CLEAR_SHRINK = 0.25
+# the grid on which label-near asks whether a walled-in name had room near,
+# and how far off every line and name that room is (mm): the placer's tightest
+ROOM_STEP = 0.5
+ROOM_CLEAR = 0.25
 LABEL_OVERLAP = 0.5
 COLLINEAR_DEG = 1.0
 COLLINEAR_MM = 0.4
@@ -228,10 +237,15 @@ def _named_shape(n: Naming) -> BaseGeometry:
     return LineString([n.anchor, n.end])
 
 
-def label_near(v: SheetView) -> Iterator[Finding]:
+def label_near(v: SheetView, strict: bool = False) -> Iterator[Finding]:
+    """label-near on `v`: a leader may cross main lines only where no place
+    within NEAR_MM of what the label names is clear (`_room_near`); with
+    `strict` (the composers asking where names crowd: a drawing whose names
+    need no such leader is better), never."""
     shapes = v.shapes()
     heavy = [s for c, s in shapes if getattr(c, "line", None) == "main" and v.in_drawing(c)]
     tree = STRtree(heavy) if heavy else None
+    room: _Room | None = None
     blocks = [s for c, s in shapes if c.name == "polygon" and s.geom_type == "Polygon"]
     for lab in v.labels:
         if lab.naming is None:
@@ -256,7 +270,15 @@ def label_near(v: SheetView) -> Iterator[Finding]:
             )
             if joined and not crossed:
                 continue
-            why = "its leader crosses a main line" if crossed else "its leader does not reach it"
+            if joined and not strict:
+                room = room or _Room(v, shapes)
+                if not room.near(lab, target):
+                    continue  # walled in: GOST 2.316's leader across the drawing's lines
+            why = (
+                "its leader crosses a main line, and a place near it is free"
+                if joined
+                else "its leader does not reach it"
+            )
             yield Finding("label-near", f"{lab.text!r}: {why}", _at(lab.box), v.name)
             continue
         yield Finding(
@@ -266,6 +288,52 @@ def label_near(v: SheetView) -> Iterator[Finding]:
             _at(lab.box),
             v.name,
         )
+
+
+class _Room:
+    """Where a label could stand instead: the drawn shapes of the sheet's
+    drawings and the names written, as label-clear judges a place."""
+
+    def __init__(self, v: SheetView, shapes: Sequence[tuple[Call, BaseGeometry]]) -> None:
+        drawn = [(c, g) for c, g in shapes if v.in_drawing(c)]
+        self.calls = [c for c, _ in drawn]
+        self.shapes = STRtree([g for _, g in drawn]) if drawn else None
+        self.labels = [lab for lab in v.labels if any(v.in_drawing(r) for r in lab.runs)]
+        self.letters = STRtree([lab.box for lab in self.labels]) if self.labels else None
+
+    def near(self, lab: _Label, target: BaseGeometry) -> bool:
+        """Whether a box of `lab`'s size, on a grid ROOM_STEP mm fine, within
+        NEAR_MM of `target` and off it, is clear: touches no drawn shape but
+        `lab`'s own leader and no other name's box, ROOM_CLEAR mm off them.
+        (Grown, not shrunk as label-clear shrinks a box written: a place where
+        a line grazes the letters is not one a draughtsman leaves a walled-in
+        name for.)"""
+        x0, y0, x1, y1 = lab.box.bounds
+        w, h = x1 - x0, y1 - y0
+        tx0, ty0, tx1, ty1 = target.bounds
+        reach = NEAR_MM + max(w, h)
+        gx, gy = np.meshgrid(
+            np.arange(tx0 - reach, tx1 + reach, ROOM_STEP),
+            np.arange(ty0 - reach, ty1 + reach, ROOM_STEP),
+        )
+        cx, cy = gx.ravel(), gy.ravel()
+        gap = shapely.distance(shapely.box(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2), target)
+        keep = np.flatnonzero((gap > 0.0) & (gap <= NEAR_MM))
+        if not keep.size:
+            return False
+        cx, cy = cx[keep], cy[keep]
+        e = ROOM_CLEAR
+        inner = shapely.box(cx - w / 2 - e, cy - h / 2 - e, cx + w / 2 + e, cy + h / 2 + e)
+        blocked = np.zeros(inner.size, dtype=bool)
+        if self.shapes is not None:
+            box_i, hit = self.shapes.query(inner, predicate="intersects")
+            mine = np.array([self.calls[i] is lab.leader for i in hit], dtype=bool)
+            blocked[box_i[~mine]] = True
+        if self.letters is not None:
+            box_i, hit = self.letters.query(inner, predicate="intersects")
+            mine = np.array([self.labels[i] is lab for i in hit], dtype=bool)
+            blocked[box_i[~mine]] = True
+        return not blocked.all()
 
 
 def label_clear(v: SheetView) -> Iterator[Finding]:

@@ -74,7 +74,7 @@ from ..scales import (
 from ..solution import Solution
 from .common import EMPTY_MAX, laid_out_empty_share, length_scale_step, title_fields
 from .common import next_scale as _next_scale
-from .crowd import crowded, crowded_ends, crowded_names, stand_for
+from .crowd import crowded, crowded_ends, crowded_names, far_names_again, stand_for
 from .scales_record import Sheet1Scales
 
 __all__ = ["Sheet1", "compose_sheet1", "GROUPS"]
@@ -158,6 +158,14 @@ def _tidy(mu: float) -> float:
 _OMEGA_R, _EPS_R, _CRANK_R = 5.0, 8.0, 8.0  # radii of the ω, ε arcs and of ω1's, mm
 # a label among many lines may go this much further out, mm, tried in turn
 _MECHANISM_RINGS = (0.0, 1.2, 2.5, 3.5, 4.2, 5.0, 9.0, 14.0, 20.0)
+# a name that stands far on the laid-out mechanism, written again alone (_far_names_led)
+_MECHANISM_AGAIN: dict[str, Any] = dict(
+    rings=_MECHANISM_RINGS,
+    leader_rings=FINE_LEADER_RINGS,
+    leader_dirs=FINE_LEADER_DIRS,
+    leader_group=FINE_LEADER_GROUP,
+    smaller=_SMALL,
+)
 _SPAN = 150.0
 # the rooms kept for an ω/ε label round its arrowhead: near enough that the
 # label written there is within NEAR_MM of it (its box's edge 1.9–4.9 mm off)
@@ -1392,6 +1400,10 @@ def _lettered_mechanism(
             leader_dirs=FINE_LEADER_DIRS,
             leader_group=FINE_LEADER_GROUP,
             smaller=_SMALL if short else None,
+            # led across the lines as the last resort in a drawing with
+            # detail views and in each view, not in the plain drawing: there
+            # a name walled in stands far, and a view is drawn round it
+            across_main=bool(details),
         )
         labels.avoid_drawn(sk.calls)
         for d, (middle, r) in zip(details, discs) if detail is None else ():
@@ -2057,6 +2069,7 @@ def _plan_view(
         leader_group=FINE_LEADER_GROUP,
         smaller=_SMALL if len(solution.mechanism.links) <= _SHORT_LINKS else None,
         short_ends=len(solution.mechanism.links) <= _SHORT_LINKS,
+        across_main=bool(details),  # (see the mechanism's)
     )
     # the acceleration components to name: start, end, name, by the head
     components: list[tuple[np.ndarray, np.ndarray, str, bool]] = []
@@ -3551,6 +3564,8 @@ def _draw(
     result: Sheet1,
     extents: _Extents,
 ) -> Sheet1:
+    if "mechanism" in sketches:
+        sketches = {**sketches, "mechanism": _far_names_led(sketches["mechanism"], lang, extents)}
     for name in order:
         ext, rect = extents(sketches[name]), placed[name]
         dx, dy = rect.x - ext.x, rect.y - ext.y
@@ -3560,6 +3575,21 @@ def _draw(
     result.positions = tuple(solution.plan_positions)
     draw_page(backend, page, title_fields(solution, result.scales["mu_l"], lang, sheet=1), lang)
     return result
+
+
+def _far_names_led(sk: Sketch, lang: Language, extents: _Extents) -> Sketch:
+    """The laid-out mechanism with the names that stand far on it written
+    again one by one among all else written there, then led across main
+    lines where none is free near (`far_names_again`, as sheet 2 does last):
+    a copy, kept in the drawing's box. A name walled in by the lines of the
+    positions where no detail view was taken (held-out gen 386's K); the
+    drawing itself where no name stands far."""
+    out = Sketch(sk.look)
+    out.calls = list(sk.calls)
+    if far_names_again(out, lang, _MECHANISM_AGAIN, lambda m: m, extents(sk).contains):
+        out.label_counts = sk.label_counts
+        return out
+    return sk
 
 
 def _fallback(

@@ -115,3 +115,69 @@ def test_a_point_in_two_blocks_as_large_is_named_by_the_one_centred_nearest():
     assert own.area == other.area
     for outlines in ([own, other], [other, own]):
         assert enclosing((1.5, 1.5), outlines) is own
+
+
+def _fan_sketch(across_main: bool) -> tuple[Sketch, Labels]:
+    """A pivot at the origin in the fan of main lines through it every 30°
+    (a link at each of 6 positions) and a ring of main lines round it 6 mm
+    out: no place near the pivot is free, and every way out crosses a main line."""
+    sk = Sketch(RecordingBackend().look)
+    for a in range(0, 180, 30):
+        d = 30.0 * np.array([math.cos(math.radians(a)), math.sin(math.radians(a))])
+        sk.line(tuple(d), tuple(-d), "main")
+    ring = [6.0 * np.array([math.cos(t), math.sin(t)]) for t in np.linspace(0, 2 * math.pi, 49)]
+    for p, q in zip(ring, ring[1:]):
+        sk.line(tuple(p), tuple(q), "main")
+    sk.circle((0.0, 0.0), 0.8, "main", "white")
+    labels = Labels(sk, 3.5, across_main=across_main)
+    labels.avoid_drawn(sk.calls)
+    labels.place((0.0, 0.0), "U")
+    return sk, labels
+
+
+def test_a_walled_in_name_is_led_across_main_lines_as_the_last_resort():
+    """With `across_main`, a name with no free place near its point and no
+    leader that stays off the main lines is led across them (the fewest),
+    not written far with nothing joining it; it still counts as far, so a
+    drawing that needs no such leader is preferred (gen 332's U)."""
+    sk, labels = _fan_sketch(across_main=True)
+    (leader,) = _leaders(sk)
+    assert math.dist(leader.start, (0.0, 0.0)) < 1e-9
+    assert labels.far == 1
+    # the sheet linter passes it: no place near the pivot is free
+    assert _findings(sk, ["label-near", "label-clear", "leader-clear"]) == []
+    # without it the name stands far, joined to nothing
+    sk, labels = _fan_sketch(across_main=False)
+    assert _leaders(sk) == [] and labels.far == 1
+    assert "stands" in _findings(sk, ["label-near"])[0]
+
+
+def test_held_out_gen_332_leads_its_crank_pivot_name_out_of_the_fan():
+    """Held-out gen 332 (RPR-RPP, near-coincident pivots): the crank's
+    pivot U, 4.7 mm from the pivot S, stands in the fan of its positions'
+    links even in the 10:1 view; its name stood 11 mm off with nothing
+    joining it. The last resort of `across_main` (a grid of places round it,
+    each led from it, the fewest lines crossed first) leads it out between
+    the links, and the sheet linter passes the sheet's names."""
+    g = generate_one(332)
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet1(solve(loads(g.toml, g.name)), backend, "en")
+    view = SheetView.of(backend, "en", g.name)
+    assert lint(view, ["label-near", "label-clear", "leader-clear"]) == []
+    (u,) = [lab for lab in view.labels if lab.text == "U"]
+    assert u.leader is not None
+
+
+def test_held_out_gen_386_leads_a_walled_in_pivot_name_on_the_laid_out_sheet():
+    """Held-out gen 386 (five dyads, near-coincident pivots): no detail view
+    was taken, and the pivot K, in the fan of its positions' links and the
+    blocks round it, was named 16 mm off with nothing joining it. The names
+    still far on the laid-out mechanism are written again last, then led
+    across main lines where no place near is free (`_far_names_led`)."""
+    g = generate_one(386)
+    backend = RecordingBackend(841.0, 594.0)
+    compose_sheet1(solve(loads(g.toml, g.name)), backend, "en")
+    view = SheetView.of(backend, "en", g.name)
+    assert lint(view, ["label-near", "label-clear", "leader-clear"]) == []
+    (k,) = [lab for lab in view.labels if lab.text == "K"]
+    assert k.leader is not None

@@ -8,11 +8,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from mmt_plans.drawing.table import Table, _one_format_per_column
 from mmt_plans.render.recording import RecordingBackend
-from mmt_plans.sheets.lint import SheetView, lint, lint_pair
+from mmt_plans.sheets.lint import SheetView, label_near, lint, lint_pair
 from mmt_plans.sheets.lint_run import Case, lint_case
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -55,6 +56,38 @@ def test_label_near_what_it_names_or_tied_by_a_leader():
             b.line((100, 100), (118.5, 100), "thin")
             b.text((120, 100), "C", 3.5, valign="middle")
     assert "crosses" in rules(b, "label-near")[0].message
+
+
+def _fan(gap_from: float | None = None) -> RecordingBackend:
+    """A pivot at (100, 100) in the fan of main lines through it every 10°
+    (none from `gap_from`° for 60°: a free side), a main line x = 110 across
+    them, and its name "C" led 20 mm out across that line."""
+    b = RecordingBackend()
+    with b.group("m", "mechanism"):
+        for a in range(0, 180, 10):
+            if gap_from is not None and gap_from <= a < gap_from + 60:
+                continue
+            d = 40.0 * np.array([np.cos(np.radians(a)), np.sin(np.radians(a))])
+            b.line(tuple(100.0 + d), tuple(100.0 - d), "main")
+        b.line((110, 60), (110, 140), "main")
+        b.circle((100, 100), 0.8)
+        with b.naming("C", "point", (100, 100)):
+            b.line((100, 100), (118.5, 101.6), "thin")
+            b.text((119, 101.6), "C", 3.5, valign="middle")
+    return b
+
+
+def test_a_walled_in_name_may_be_led_across_main_lines():
+    """GOST 2.316 keeps a leader off the drawing's lines where it can be: a
+    pivot in the fan of its positions' links has no free place near it (gen
+    332's U), and its name led across a main line passes; where a side is
+    free, it does not. The composers ask strictly (a drawing that needs no
+    such leader is better)."""
+    assert rules(_fan(), "label-near") == []
+    strict = list(label_near(view(_fan()), strict=True))
+    assert len(strict) == 1 and "crosses a main line" in strict[0].message
+    found = rules(_fan(gap_from=60), "label-near")  # 60°-120° free: room above the pivot
+    assert len(found) == 1 and "a place near it is free" in found[0].message
 
 
 def test_a_leader_that_crosses_another_name_does_not_join():
