@@ -152,32 +152,20 @@ def test_a_walled_in_name_is_led_across_main_lines_as_the_last_resort():
     assert "stands" in _findings(sk, ["label-near"])[0]
 
 
-def test_held_out_gen_332_leads_its_crank_pivot_name_out_of_the_fan():
-    """Held-out gen 332 (RPR-RPP, near-coincident pivots): the crank's
-    pivot U, 4.7 mm from the pivot S, stands in the fan of its positions'
-    links even in the 10:1 view; its name stood 11 mm off with nothing
-    joining it. The last resort of `across_main` (a grid of places round it,
-    each led from it, the fewest lines crossed first) leads it out between
-    the links, and the sheet linter passes the sheet's names."""
-    g = generate_one(332)
+@pytest.mark.parametrize(("seed", "pivot"), [(332, "U"), (386, "K")])
+def test_held_out_walled_in_pivots_are_led_out(seed, pivot):
+    """Held-out gens whose pivot stands in the fan of its positions' links
+    (near-coincident pivots), its name written 11 mm (332's U, the crank's
+    pivot 4.7 mm from S) and 16 mm (386's K, no detail view taken) off with
+    nothing joining it. 332's is led out between the links in the 10:1 view
+    by the last resort of `across_main` (a grid of places round it, each led
+    from it, the fewest lines crossed first); 386's on the laid-out sheet
+    (`_far_names_led`), across a main line where no place near is free. The
+    sheet linter passes the sheet's names."""
+    g = generate_one(seed)
     backend = RecordingBackend(841.0, 594.0)
     compose_sheet1(solve(loads(g.toml, g.name)), backend, "en")
     view = SheetView.of(backend, "en", g.name)
     assert lint(view, ["label-near", "label-clear", "leader-clear"]) == []
-    (u,) = [lab for lab in view.labels if lab.text == "U"]
-    assert u.leader is not None
-
-
-def test_held_out_gen_386_leads_a_walled_in_pivot_name_on_the_laid_out_sheet():
-    """Held-out gen 386 (five dyads, near-coincident pivots): no detail view
-    was taken, and the pivot K, in the fan of its positions' links and the
-    blocks round it, was named 16 mm off with nothing joining it. The names
-    still far on the laid-out mechanism are written again last, then led
-    across main lines where no place near is free (`_far_names_led`)."""
-    g = generate_one(386)
-    backend = RecordingBackend(841.0, 594.0)
-    compose_sheet1(solve(loads(g.toml, g.name)), backend, "en")
-    view = SheetView.of(backend, "en", g.name)
-    assert lint(view, ["label-near", "label-clear", "leader-clear"]) == []
-    (k,) = [lab for lab in view.labels if lab.text == "K"]
-    assert k.leader is not None
+    (named,) = [lab for lab in view.labels if lab.text == pivot]
+    assert named.leader is not None
