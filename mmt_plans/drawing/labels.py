@@ -221,8 +221,9 @@ class Labels:
         # is led across main lines (fewest first, each counting
         # _MAIN_CROSSED thin ones) before it stands far: GOST 2.316 keeps a
         # leader off the drawing's lines where it can be; a pivot in the fan
-        # of its positions' links has no free side (gen 332's U). It still
-        # counts as far (`far`): a drawing that needs none is preferred
+        # of its positions' links has no free side (gen 332's U). One that
+        # crosses a main line still counts as far (`far`): a drawing that
+        # needs none is preferred
         self.across_main = across_main
         self._across = False  # while that last resort is asked
         # with `shortest_leaders` (and `fine`), a label no leader of the rings

@@ -88,19 +88,9 @@ def far_names_again(
     crowd = _crowd(view) if far else 0
     moved = 0
     while far:
-        was = moved
-        for naming, size in far:
-            before = list(sketch.calls)
-            if _written_again(sketch, naming, size, lang, labelling, words) and fits(
-                sketch.extent()
-            ):
-                now = _view(sketch, lang)
-                left = _crowd(now)
-                if left < crowd:
-                    view, crowd, moved = now, left, moved + 1
-                    continue
-            sketch.calls[:] = before
-        if moved == was:  # a pass that moved none: another would move none
+        view, crowd, now_moved = _one_pass(sketch, far, lang, labelling, words, fits, view, crowd)
+        moved += now_moved
+        if not now_moved:  # a pass that moved none: another would move none
             break
         far = _far(view)
     if not far:
@@ -111,18 +101,42 @@ def far_names_again(
     # or on something
     across = dict(labelling, across_main=True, fine=True)
     crowd = _crowd(view, strict=False)
+    return (
+        moved
+        + _one_pass(sketch, far, lang, across, words, fits, view, crowd, strict=False, led=True)[2]
+    )
+
+
+def _one_pass(
+    sketch: Sketch,
+    far: Sequence[tuple[Naming, float]],
+    lang: Language,
+    labelling: Mapping[str, Any],
+    words: Callable[[str], str],
+    fits: Callable[[Rect], bool],
+    view: SheetView,
+    crowd: int,
+    strict: bool = True,
+    led: bool = False,
+) -> tuple[SheetView, int, int]:
+    """One pass of `far_names_again`: each of `far` written again
+    (`_written_again`, with `led`), kept where the drawing still `fits` and
+    the linter (`strict` or not) then finds fewer than `crowd` names far or
+    on something; else put back. The view and count after it, and how many
+    it moved."""
+    moved = 0
     for naming, size in far:
         before = list(sketch.calls)
-        if _written_again(sketch, naming, size, lang, across, words, led=True) and fits(
+        if _written_again(sketch, naming, size, lang, labelling, words, led) and fits(
             sketch.extent()
         ):
             now = _view(sketch, lang)
-            left = _crowd(now, strict=False)
+            left = _crowd(now, strict)
             if left < crowd:
                 view, crowd, moved = now, left, moved + 1
                 continue
         sketch.calls[:] = before
-    return moved
+    return view, crowd, moved
 
 
 def placer_among(

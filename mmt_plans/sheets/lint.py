@@ -239,7 +239,7 @@ def _named_shape(n: Naming) -> BaseGeometry:
 
 def label_near(v: SheetView, strict: bool = False) -> Iterator[Finding]:
     """label-near on `v`: a leader may cross main lines only where no place
-    within NEAR_MM of what the label names is clear (`_room_near`); with
+    within NEAR_MM of what the label names is clear (`_Room.near`); with
     `strict` (the composers asking where names crowd: a drawing whose names
     need no such leader is better), never."""
     shapes = v.shapes()

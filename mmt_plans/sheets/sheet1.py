@@ -158,14 +158,16 @@ def _tidy(mu: float) -> float:
 _OMEGA_R, _EPS_R, _CRANK_R = 5.0, 8.0, 8.0  # radii of the ω, ε arcs and of ω1's, mm
 # a label among many lines may go this much further out, mm, tried in turn
 _MECHANISM_RINGS = (0.0, 1.2, 2.5, 3.5, 4.2, 5.0, 9.0, 14.0, 20.0)
-# a name that stands far on the laid-out mechanism, written again alone (_far_names_led)
-_MECHANISM_AGAIN: dict[str, Any] = dict(
+# how the mechanism's names are placed (`_lettered_mechanism`)
+_MECHANISM_LABELLING: dict[str, Any] = dict(
     rings=_MECHANISM_RINGS,
     leader_rings=FINE_LEADER_RINGS,
     leader_dirs=FINE_LEADER_DIRS,
     leader_group=FINE_LEADER_GROUP,
-    smaller=_SMALL,
 )
+# a name that stands far on the laid-out mechanism, written again alone
+# (_far_names_led), at 2.5 mm too
+_MECHANISM_AGAIN: dict[str, Any] = dict(_MECHANISM_LABELLING, smaller=_SMALL)
 _SPAN = 150.0
 # the rooms kept for an ω/ε label round its arrowhead: near enough that the
 # label written there is within NEAR_MM of it (its box's edge 1.9–4.9 mm off)
@@ -1395,10 +1397,7 @@ def _lettered_mechanism(
         labels = Labels(
             sk,
             _TEXT,
-            rings=_MECHANISM_RINGS,
-            leader_rings=FINE_LEADER_RINGS,
-            leader_dirs=FINE_LEADER_DIRS,
-            leader_group=FINE_LEADER_GROUP,
+            **_MECHANISM_LABELLING,
             smaller=_SMALL if short else None,
             # led across the lines as the last resort in a drawing with
             # detail views and in each view, not in the plain drawing: there
