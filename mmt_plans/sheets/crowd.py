@@ -27,20 +27,23 @@ __all__ = [
 ]
 
 
-def crowded(sketch: Sketch, lang: Language) -> Iterator[Naming]:
+def crowded(sketch: Sketch, lang: Language, strict: bool = True) -> Iterator[Naming]:
     """What the names of a drawing that the sheet linter finds far from what
-    they name, or on a line or another name, name."""
+    they name, or on a line or another name, name (`strict`: a leader across
+    a main line counted far however walled in its name, as `label_near`)."""
     view = _view(sketch, lang)
-    for naming, _ in _named_at(view, (*label_near(view, strict=True), *label_clear(view))):
+    for naming, _ in _named_at(view, (*label_near(view, strict=strict), *label_clear(view))):
         yield naming
 
 
-def crowded_names(sketch: Sketch, lang: Language, anchors: bool = False) -> np.ndarray:
+def crowded_names(
+    sketch: Sketch, lang: Language, anchors: bool = False, strict: bool = True
+) -> np.ndarray:
     """Where the names of a drawing that the sheet linter finds far from what
     they name, or on a line or another name, stand for (mm, one row each: the
     point, or the middle of the segment, they name; with `anchors`, the
-    segment's start: where a force is applied)."""
-    return stand_for(crowded(sketch, lang), anchors)
+    segment's start: where a force is applied; `strict` as `crowded`'s)."""
+    return stand_for(crowded(sketch, lang, strict), anchors)
 
 
 def stand_for(namings: Iterable[Naming], anchors: bool = False) -> np.ndarray:

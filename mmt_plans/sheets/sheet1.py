@@ -1624,8 +1624,11 @@ def mechanism_detail_options(
     fewest names crowded first (the order tried on a tie): the sheet takes
     the first whose views find room on it, as a draughtsman takes the
     enlargement that fits (gen 81: the 10:1 view of its knot where the
-    20:1 one finds none). Empty where no name crowds so, or where no detail
-    view letters the drawing better."""
+    20:1 one finds none). After them, those that letter it better only as
+    the finished sheet is judged: a name walled in in a view (no place
+    within 6 mm free) led across main lines there (`label_near`, not
+    strict). Empty where no name crowds so, or where no detail view letters
+    the drawing better."""
     namings = list(crowded(plain, lang))
     crowd = stand_for(namings)
     lettered_badly = len(crowd)
@@ -1639,11 +1642,13 @@ def mechanism_detail_options(
             # apart: no leader reaches it, however few they are
             yield joints, _MECHANISM_DETAILS
 
-    # (left crowded, the drawing, its views) of every choice lettering better
-    better: list[tuple[int, Sketch, list[Sketch]]] = []
+    # ((left crowded, as the finished sheet judges it), the drawing, its views)
+    # of every choice lettering better
+    better: list[tuple[tuple[int, int], Sketch, list[Sketch]]] = []
+    fewest: int | None = None  # the fewest left crowded by a choice (strictly)
     knotted = False  # whether the best so far leaves a view's points too near
     # (each choice drawn and measured once, however many crowds choose it)
-    drawn_once: dict[tuple[Detail, ...], tuple[Sketch, list[Sketch], set[str], int]] = {}
+    drawn_once: dict[tuple[Detail, ...], tuple[Sketch, list[Sketch], set[str], int, int]] = {}
     for knot, most in crowds():
         chosen = mechanism_details(solution, mu_l, knot, letters, most)
         variants = [chosen]
@@ -1662,20 +1667,32 @@ def mechanism_detail_options(
                 namings_left = list(crowded(sk, lang))
                 marked = {n.markup for n in namings_left}
                 left = len(namings_left) + sum(len(crowded_names(v, lang)) for v in drawn)
-                drawn_once[details] = (sk, drawn, marked, left)
-            sk, drawn, marked, left = drawn_once[details]
+                # and as the finished sheet is judged: a view's name walled in
+                # (no place within 6 mm free), led across main lines, lettered
+                led = len(namings_left) + sum(
+                    len(crowded_names(v, lang, strict=False)) for v in drawn
+                )
+                drawn_once[details] = (sk, drawn, marked, left, led)
+            sk, drawn, marked, left, led = drawn_once[details]
             if left < lettered_badly and not again:
-                if not better or left < min(b[0] for b in better):
+                if fewest is None or left < fewest:
+                    fewest = left
                     knotted = left > 0 and _knotted(solution, mu_l, details)
-                better.append((left, sk, drawn))
+                better.append(((left, led), sk, drawn))
+            elif led < lettered_badly and not again:
+                # better only so: after every choice better strictly (held-out
+                # gen 456: the crank's pivot 'p' in the fan of its positions, 21
+                # mm off on the drawing, led out between the spokes in C (4:1))
+                better.append(((left, led), sk, drawn))
             if details is chosen and left:
-                if not better or knotted:
+                if fewest is None or knotted:
                     variants.append(_knot_details(solution, mu_l, knot, letters, most, chosen))
                 variants.append(_grown_details(solution, mu_l, knot, letters, most, chosen, marked))
-        if better and not knotted:
+        if fewest is not None and not knotted:
             break
     # (none where no detail view letters the drawing better)
-    better.sort(key=lambda b: b[0])  # (stable: the order tried on a tie)
+    # (stable: the order tried on a tie; those better only as judged, by that)
+    better.sort(key=lambda b: (b[0][0], b[0][1] if b[0][0] >= lettered_badly else 0))
     return [(sk, drawn) for _, sk, drawn in better]
 
 
@@ -2964,7 +2981,36 @@ def _try_layout(
     `tables_width` mm of the right edge when given (a block, not a row); the
     diagrams from the `diagrams` corner (bottom left, under the mechanism, as
     Appendix A draws them, or bottom right, beside the title block, so that a
-    tall mechanism takes the sheet's height)."""
+    tall mechanism takes the sheet's height). The mechanism's detail views in
+    its field nearest the knots they detail; where the sheet then has no
+    room for the rest, in the field's lowest free place instead (held-out gen
+    441: the view by its knot took the room beside the drawing that a tall
+    velocity plan needs, under the drawing the field was empty)."""
+    args = (page, sketches, order, gap, with_field, tables_width, diagrams, extents, reserved)
+    try:
+        return _layout_once(*args)
+    except LayoutError as err:
+        if str(err).startswith("mechanism:") or not any(
+            n.startswith("mechanism-detail") for n in order
+        ):
+            raise
+        return _layout_once(*args, by_knot=False)
+
+
+def _layout_once(
+    page: Page,
+    sketches: Mapping[str, Sketch],
+    order: Sequence[str],
+    gap: float,
+    with_field: bool,
+    tables_width: float | None,
+    diagrams: str,
+    extents: _Extents | None,
+    reserved: Mapping[str, tuple[float, float]] | None,
+    by_knot: bool = True,
+) -> tuple[SheetLayout, dict[str, Rect], Rect | None]:
+    """_try_layout's one trial: the mechanism's detail views nearest their
+    knots (`by_knot`) or in the field's lowest free place."""
     extent = extents if extents is not None else _Extents()
     layout = SheetLayout(page, gap=gap)
     region = layout.region
@@ -2994,7 +3040,11 @@ def _try_layout(
             # the mechanism's detail view in its own field where the drawing
             # leaves room, nearest the knot it details: the sheet's middle,
             # beside the drawing, is the plans'
-            knot = _detail_place(sketches[name], extent(sketches["mechanism"]), placed["mechanism"])
+            knot = (
+                _detail_place(sketches[name], extent(sketches["mechanism"]), placed["mechanism"])
+                if by_knot
+                else None
+            )
             try:
                 placed[name] = layout.place(
                     name, ext.width, ext.height, corner="bottom-left", within=field, near=knot
@@ -3110,21 +3160,25 @@ _FILL_S_MANTISSAS = ("1", "1.25", "2", "2.5", "4", "5", "8")
 _FILL_POLES_MM = (*ROUND_POLE_DISTANCES_MM, 32.0, 64.0)
 
 
-def _diagram_rooms(layout: SheetLayout, rect: Rect, gap: float) -> list[Rect]:
+def _diagram_rooms(layout: SheetLayout, rect: Rect, gap: float, raised: bool = False) -> list[Rect]:
     """The free rectangles the diagrams' column at `rect` may be redrawn in:
     on its bottom edge, from the region's left edge or `gap` right of an
     element (the mechanism) to the region's right edge or `gap` short of one
     (the title block, a plan, a table), up to `gap` under the lowest element
     above that span; largest first. Each spans the column's width at least
     and three quarters of its height (a wider, lower room where plans come
-    down beside the column)."""
+    down beside the column). With `raised` (a field left too empty) also
+    those standing `gap` above an element beside the column's foot (the
+    title block): a column lifted clear of it may run on to the right."""
     region = layout.region
     others = [e.bounds for e in layout.elements if e.name != "diagrams"]
-    bottom = rect.bottom
+    bottoms = {rect.bottom}
+    if raised:
+        bottoms |= {b.top + gap for b in others if rect.bottom < b.top + gap < rect.top}
     lefts = {region.left, *(b.right + gap for b in others if b.right + gap <= rect.left + 1e-6)}
     rights = {region.right, *(b.left - gap for b in others if b.left - gap >= rect.right - 1e-6)}
     rooms = []
-    for left, right in itertools.product(lefts, rights):
+    for bottom, left, right in itertools.product(bottoms, lefts, rights):
         if right - left < rect.width - 1e-6:
             continue
         top = min(
@@ -3239,7 +3293,7 @@ def _grown_diagrams(
     mu_S_range = (mu_l / FINER_S if finer or fill else mu_l, mu_l * 1e4)
     best: tuple[float, Sketch, Rect, KinematicDiagrams] | None = None
     drawn_parts: dict[tuple[Any, ...], Sketch] = {}
-    for room in _diagram_rooms(layout, rect, gap)[:3]:
+    for room in _diagram_rooms(layout, rect, gap, finer or fill)[:3]:
         if room.width * room.height < max(least, best[0] if best else 0.0):
             continue
         budget = room.height - over_h  # the three diagrams' heights share it
