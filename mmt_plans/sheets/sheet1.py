@@ -3167,7 +3167,8 @@ def _diagram_rooms(layout: SheetLayout, rect: Rect, gap: float, raised: bool = F
     (the title block, a plan, a table), up to `gap` under the lowest element
     above that span; largest first. Each spans the column's width at least
     and three quarters of its height (a wider, lower room where plans come
-    down beside the column). With `raised` (a field left too empty) also
+    down beside the column). With `raised` (_grown_diagrams' last pass,
+    `fill`: a field left too empty) also
     those standing `gap` above an element beside the column's foot (the
     title block): a column lifted clear of it may run on to the right."""
     region = layout.region
@@ -3280,7 +3281,8 @@ def _grown_diagrams(
     μ_l, down to μ_l/FINER_S: S drawn larger than the mechanism, so that a
     short stroke reads (the line under S says so). With `fill` (a field that
     too leaves more than EMPTY_MAX empty) as `finer`, the scales from the
-    whole series (_grown_scales)."""
+    whole series (_grown_scales), and the rooms lifted clear of the title
+    block too (_diagram_rooms' `raised`)."""
     if "diagrams" not in placed:
         return None
     rect = placed["diagrams"]
@@ -3293,7 +3295,7 @@ def _grown_diagrams(
     mu_S_range = (mu_l / FINER_S if finer or fill else mu_l, mu_l * 1e4)
     best: tuple[float, Sketch, Rect, KinematicDiagrams] | None = None
     drawn_parts: dict[tuple[Any, ...], Sketch] = {}
-    for room in _diagram_rooms(layout, rect, gap, finer or fill)[:3]:
+    for room in _diagram_rooms(layout, rect, gap, fill)[:3]:
         if room.width * room.height < max(least, best[0] if best else 0.0):
             continue
         budget = room.height - over_h  # the three diagrams' heights share it

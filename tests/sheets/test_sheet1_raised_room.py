@@ -1,6 +1,7 @@
 """Sheet 1's diagrams lifted clear of the title block where the field is
-left too empty (issue #21, field-filled): the column may then run on to
-the region's right edge over the title block.
+left too empty (issue #21, field-filled; in the last pass, the diagrams'
+scales from the whole series): the column may then run on to the region's
+right edge over the title block.
 
 Held-out gens 411 (en and uk) and 428 (uk) failed the rule before this
 (51 % and 50 % of the field empty): a tall, narrow mechanism whose plans
