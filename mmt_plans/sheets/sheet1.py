@@ -1667,10 +1667,15 @@ def mechanism_detail_options(
                 namings_left = list(crowded(sk, lang))
                 marked = {n.markup for n in namings_left}
                 left = len(namings_left) + sum(len(crowded_names(v, lang)) for v in drawn)
-                # and as the finished sheet is judged: a view's name walled in
-                # (no place within 6 mm free), led across main lines, lettered
-                led = len(namings_left) + sum(
-                    len(crowded_names(v, lang, strict=False)) for v in drawn
+                # where that letters it no better, as the finished sheet is
+                # judged: a view's name walled in (no place within 6 mm free),
+                # led across main lines, lettered (asked only then: it costs a
+                # search for room round each name led so)
+                led = (
+                    left
+                    if left < lettered_badly
+                    else len(namings_left)
+                    + sum(len(crowded_names(v, lang, strict=False)) for v in drawn)
                 )
                 drawn_once[details] = (sk, drawn, marked, left, led)
             sk, drawn, marked, left, led = drawn_once[details]
@@ -1691,8 +1696,9 @@ def mechanism_detail_options(
         if fewest is not None and not knotted:
             break
     # (none where no detail view letters the drawing better)
-    # (stable: the order tried on a tie; those better only as judged, by that)
-    better.sort(key=lambda b: (b[0][0], b[0][1] if b[0][0] >= lettered_badly else 0))
+    # (stable: the order tried on a tie; those better only as judged after
+    # every other, by that)
+    better.sort(key=lambda b: b[0])
     return [(sk, drawn) for _, sk, drawn in better]
 
 

@@ -14,7 +14,7 @@ import functools
 import pytest
 from lettering import solved_seed
 
-from mmt_plans.drawing.layout import LayoutError
+from mmt_plans.drawing.layout import LayoutError, Page
 from mmt_plans.render.recording import RecordingBackend
 from mmt_plans.sheets import sheet1
 from mmt_plans.sheets.lint import SheetView, lint
@@ -88,7 +88,5 @@ def test_the_knots_place_is_tried_first(monkeypatch):
 def _args_with_detail():
     """_try_layout's arguments for an order holding a mechanism detail view
     (the sketches are not reached: _layout_once is replaced)."""
-    from mmt_plans.drawing.layout import Page
-
     order = ["mechanism", "mechanism-detail"]
     return Page.of("A1"), {}, order, 8.0, True
